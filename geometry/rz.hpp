@@ -1,0 +1,15 @@
+#pragma once
+// A point of the lathe's meridian half-plane, the plane every turned shape lives in.
+
+#include <Eigen/Core>
+
+namespace lathesim {
+
+/// (radius mm, Z mm): x() is the distance from the spindle axis — a radius, never a
+/// diameter — and y() is the position along the spindle axis, +Z towards the tailstock.
+/// Programs speak in diameters; interp halves them once, when a move is made.
+using RZ = Eigen::Vector2d;
+
+inline double diameterOf(const RZ& p) { return 2.0 * p.x(); }
+
+}  // namespace lathesim

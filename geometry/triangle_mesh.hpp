@@ -1,0 +1,27 @@
+#pragma once
+// The plain triangle mesh that travels from sim (which owns OpenVDB) to render (which owns
+// VTK), so neither library leaks into the other.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace lathesim {
+
+struct TriangleMesh {
+  std::vector<Eigen::Vector3f> vertices;                // mm, part coordinates (Z = spindle axis)
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
+};
+
+/// Enclosed volume by the divergence theorem (mm³); exact for a closed, consistently
+/// oriented mesh, and positive when the normals point outwards.
+double enclosedVolumeMm3(const TriangleMesh& mesh);
+
+/// True when every edge is shared by exactly two triangles that traverse it in opposite
+/// directions: the mesh is closed and consistently oriented.
+bool isClosedAndOriented(const TriangleMesh& mesh);
+
+}  // namespace lathesim

@@ -1,0 +1,27 @@
+#pragma once
+// A problem in a user's input (a program or a setup file), located to the character.
+
+#include <string>
+#include <string_view>
+
+namespace lathesim::interp {
+
+enum class Severity { Error, Warning };
+
+struct Diagnostic {
+  Severity severity = Severity::Error;
+  std::string file;
+  int line = 0;    // 1-based; 0 when the problem is the file as a whole
+  int column = 0;  // 1-based
+  std::string message;
+  std::string sourceLine;  // the offending line's text, for the caret display
+};
+
+/// "file:line:col: error: message", then the source line and a caret under the column
+/// (the caret counts UTF-8 characters, so it stays aligned after Chinese comments).
+std::string format(const Diagnostic& diagnostic);
+
+/// The text of 1-based line `line` in `text`, without its line ending; empty if absent.
+std::string lineOf(std::string_view text, int line);
+
+}  // namespace lathesim::interp
