@@ -1,0 +1,335 @@
+#include "interp/block_executor.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "interp/g94_cycle.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+
+// The one place where a programmed length becomes millimetres (G20 → inch).
+double lengthMm(const Word& word, bool inch) { return inch ? word.value * kMmPerInch : word.value; }
+
+// The axis words of a block: at most one of X/U and one of Z/W.
+struct AxisWords {
+  std::optional<Word> x, u, z, w;
+  bool any() const { return x || u || z || w; }
+};
+
+class Executor {
+ public:
+  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal)
+      : block_(std::move(block)), state_(std::move(state)), options_(options), ordinal_(ordinal) {}
+
+  Result<BlockOutcome> run();
+
+ private:
+  Error errorAt(int column, std::string message) const {
+    return Error{block_.line, column, std::move(message)};
+  }
+  Result<AxisWords> takeAxisWords();
+  Status applyFeed();
+  Status applySpindleSpeed();
+  Status applyTool();
+  Status applyOneShot(const Code& code);
+  Status applyDwell(const Code& code);
+  Status applyCoordinateSetting(const Code& code);
+  Status applyMotion();
+  Status applyStraightMove(const std::optional<Code>& code);
+  Status applyFaceCycle(const std::optional<Code>& code);
+  Status checkAllWordsUsed() const;
+  void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep);
+
+  ParsedBlock block_;
+  ModalState state_;
+  const InterpreterOptions& options_;
+  int ordinal_;
+  std::vector<Move> moves_;
+};
+
+Result<BlockOutcome> Executor::run() {
+  block_.take('N');  // sequence number: a label only
+  block_.take('O');  // program number
+  if (auto code = block_.gCode(GGroup::Units)) state_.inch = code->number == 20;
+  if (auto code = block_.gCode(GGroup::FeedMode)) {
+    state_.feedMode = code->number == 98 ? FeedMode::PerMinute : FeedMode::PerRevolution;
+  }
+  if (auto code = block_.gCode(GGroup::Plane)) {
+    state_.plane = code->number == 17 ? Plane::XY : code->number == 19 ? Plane::YZ : Plane::ZX;
+  }
+  // G97 (spindle speed in rpm) is the only supported code of its group and changes nothing.
+
+  const auto oneShot = block_.gCode(GGroup::NonModal);
+  const auto motion = block_.gCode(GGroup::Motion);
+  if (oneShot && motion) {
+    return errorAt(motion->column,
+                   fmt::format("{} and {} cannot share a block: the words X, Z, U and W would "
+                               "belong to both; put them in separate blocks",
+                               oneShot->text, motion->text));
+  }
+  if (oneShot) {
+    if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
+  }
+  if (auto status = applyFeed(); !status.ok()) return status.error();
+  if (auto status = applySpindleSpeed(); !status.ok()) return status.error();
+  if (auto status = applyTool(); !status.ok()) return status.error();
+
+  // M03/M04/M08 act before the block's motion, M05/M09 after it (as on the controls).
+  const auto spindle = block_.mCode(MGroup::Spindle);
+  const auto coolant = block_.mCode(MGroup::Coolant);
+  if (spindle && spindle->number != 5) state_.spindleOn = true;
+  if (coolant && coolant->number == 8) state_.coolantOn = true;
+
+  if (auto status = applyMotion(); !status.ok()) return status.error();
+  if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
+
+  if (spindle && spindle->number == 5) state_.spindleOn = false;
+  if (coolant && coolant->number == 9) state_.coolantOn = false;
+  if (block_.mCode(MGroup::ProgramEnd)) state_.ended = true;
+  return BlockOutcome{std::move(state_), std::move(moves_)};
+}
+
+Result<AxisWords> Executor::takeAxisWords() {
+  AxisWords axes{block_.take('X'), block_.take('U'), block_.take('Z'), block_.take('W')};
+  if (axes.x && axes.u) {
+    return errorAt(std::max(axes.x->column, axes.u->column),
+                   fmt::format("{} and {} both give the X axis (X absolute, U incremental); "
+                               "give one of them",
+                               axes.x->text(), axes.u->text()));
+  }
+  if (axes.z && axes.w) {
+    return errorAt(std::max(axes.z->column, axes.w->column),
+                   fmt::format("{} and {} both give the Z axis (Z absolute, W incremental); "
+                               "give one of them",
+                               axes.z->text(), axes.w->text()));
+  }
+  return axes;
+}
+
+Status Executor::applyFeed() {
+  const auto f = block_.take('F');
+  if (!f) return success();
+  if (f->value <= 0) {
+    return errorAt(f->column, fmt::format("{} is not a feed rate: expected a positive number "
+                                          "(mm/rev under G99, mm/min under G98)",
+                                          f->text()));
+  }
+  state_.feed = lengthMm(*f, state_.inch);
+  return success();
+}
+
+Status Executor::applySpindleSpeed() {
+  const auto s = block_.take('S');
+  if (!s) return success();
+  if (s->value < 0) {
+    return errorAt(s->column,
+                   fmt::format("{} is not a spindle speed: expected a number ≥ 0", s->text()));
+  }
+  state_.spindleSpeed = s->value;
+  return success();
+}
+
+Status Executor::applyTool() {
+  const auto t = block_.take('T');
+  if (!t) return success();
+  const bool integral = t->number.find_first_not_of("0123456789") == std::string::npos;
+  if (!integral || t->value > 9999) {
+    return errorAt(t->column, fmt::format("{} is not a tool word: expected T and four digits, "
+                                          "tool number then offset number, e.g. T0101",
+                                          t->text()));
+  }
+  const int toolAndOffset = static_cast<int>(t->value);
+  const int tool = toolAndOffset / 100;
+  const int offset = toolAndOffset % 100;
+  const auto& tools = options_.toolNumbers;
+  if (std::find(tools.begin(), tools.end(), tool) == tools.end()) {
+    std::string defined;
+    for (int number : tools) defined += (defined.empty() ? "" : ", ") + std::to_string(number);
+    return errorAt(t->column,
+                   fmt::format("tool {} ({}) is not defined in the setup; defined tools: {} "
+                               "(T is written tool number then offset number, e.g. T0101)",
+                               tool, t->text(), defined.empty() ? "none" : defined));
+  }
+  state_.tool = tool;
+  state_.toolOffset = offset;
+  return success();
+}
+
+Status Executor::applyOneShot(const Code& code) {
+  if (code.number == 4) return applyDwell(code);
+  // Every other one-shot code ends the G94 cycle's retained values (GSK 3.21.2 note 2).
+  state_.faceCycle = {};
+  if (code.number == 50) return applyCoordinateSetting(code);
+  return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
+}
+
+Status Executor::applyDwell(const Code& code) {
+  // X and U are seconds, P milliseconds: times, not lengths, so no unit conversion.
+  std::optional<Word> time;
+  for (char letter : {'X', 'U', 'P'}) {
+    auto word = block_.take(letter);
+    if (!word) continue;
+    if (time) {
+      return errorAt(word->column, fmt::format("G04 takes one dwell time, but {} and {} are "
+                                               "both given",
+                                               time->text(), word->text()));
+    }
+    if (word->value < 0) {
+      return errorAt(word->column,
+                     fmt::format("{} is not a dwell time: expected a number ≥ 0", word->text()));
+    }
+    time = word;
+  }
+  if (!time) {
+    return errorAt(code.column,
+                   "G04 needs a dwell time: X or U (seconds) or P (milliseconds)");
+  }
+  return success();
+}
+
+Status Executor::applyCoordinateSetting(const Code& code) {
+  // G50 X(U) Z(W): the tool is declared to stand at these part coordinates; no move.
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  const auto s = block_.take('S');
+  if (!a.any() && !s) {
+    return errorAt(code.column, "G50 needs X(U) and/or Z(W) to set coordinates, or S to "
+                                "limit the spindle speed");
+  }
+  RZ& p = state_.position;
+  if (a.x) p.x() = lengthMm(*a.x, state_.inch) / 2.0;
+  if (a.u) p.x() += lengthMm(*a.u, state_.inch) / 2.0;
+  if (a.z) p.y() = lengthMm(*a.z, state_.inch);
+  if (a.w) p.y() += lengthMm(*a.w, state_.inch);
+  if (s) state_.spindleLimitRpm = s->value;
+  return success();
+}
+
+Status Executor::applyMotion() {
+  const auto code = block_.gCode(GGroup::Motion);
+  if (code) {
+    const MotionMode mode = code->number == 0   ? MotionMode::Rapid
+                            : code->number == 1 ? MotionMode::Linear
+                                                : MotionMode::FaceCycle;
+    // Another group-01 code ends the G94 cycle's retained values (GSK 3.21.2 note 2).
+    if (mode != MotionMode::FaceCycle) state_.faceCycle = {};
+    state_.motion = mode;
+  }
+  if (state_.motion == MotionMode::FaceCycle) return applyFaceCycle(code);
+  return applyStraightMove(code);
+}
+
+Status Executor::applyStraightMove(const std::optional<Code>& code) {
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  if (!a.any()) return success();
+  const RZ from = state_.position;
+  RZ to = from;
+  if (a.x) to.x() = lengthMm(*a.x, state_.inch) / 2.0;
+  if (a.u) to.x() += lengthMm(*a.u, state_.inch) / 2.0;
+  if (a.z) to.y() = lengthMm(*a.z, state_.inch);
+  if (a.w) to.y() += lengthMm(*a.w, state_.inch);
+  const bool feed = state_.motion == MotionMode::Linear;
+  if (feed && !state_.feed) {
+    return errorAt(code ? code->column : block_.column,
+                   "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G01 move");
+  }
+  emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
+  state_.position = to;
+  return success();
+}
+
+Status Executor::applyFaceCycle(const std::optional<Code>& code) {
+  // A block repeats the cycle when it names G94 or gives any of X U Z W R.
+  if (!code && !block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') &&
+      !block_.has('R')) {
+    return success();
+  }
+  const int anchor = code ? code->column : block_.column;
+  if (state_.plane != Plane::ZX) {
+    return errorAt(anchor, fmt::format("G94 under {}: this machine has no Y axis, so a cycle "
+                                       "needs the ZX plane; select it with G18",
+                                       state_.plane == Plane::XY ? "G17" : "G19"));
+  }
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  const auto r = block_.take('R');
+  const RZ start = state_.position;  // A
+  FaceCycleRetained& kept = state_.faceCycle;
+
+  std::optional<double> xDiameterMm = kept.xDiameterMm;
+  if (a.x) xDiameterMm = lengthMm(*a.x, state_.inch);
+  if (a.u) xDiameterMm = diameterOf(start) + lengthMm(*a.u, state_.inch);
+  std::optional<double> zMm = kept.zMm;
+  if (a.z) zMm = lengthMm(*a.z, state_.inch);
+  if (a.w) zMm = start.y() + lengthMm(*a.w, state_.inch);
+  if (!xDiameterMm || !zMm) {
+    return errorAt(anchor, fmt::format("G94 needs X(U) and Z(W): the end point's {} is neither "
+                                       "in this block nor kept from an earlier G94 block",
+                                       !xDiameterMm ? "X(U)" : "Z(W)"));
+  }
+  const double rMm = r ? lengthMm(*r, state_.inch) : kept.rMm.value_or(0.0);
+  if (!state_.feed) {
+    return errorAt(anchor, "feed rate F is not set: G94 cuts at feed; give F (e.g. F0.2 "
+                           "mm/rev) in this block or before it");
+  }
+  if (auto problem = faceCycleTaperProblem(*zMm - start.y(), rMm)) {
+    const int column = r ? r->column : a.z ? a.z->column : a.w ? a.w->column : anchor;
+    return errorAt(column, *problem);
+  }
+  kept = FaceCycleRetained{xDiameterMm, zMm, rMm};
+  const RZ end(*xDiameterMm / 2.0, *zMm);  // C
+  for (const CycleLeg& leg : faceCycleLegs(start, end, rMm)) {
+    emit(leg.kind, leg.from, leg.to, leg.step);
+  }
+  return success();  // the cycle ends at A: the position is unchanged
+}
+
+Status Executor::checkAllWordsUsed() const {
+  if (block_.words.empty()) return success();
+  // Report the leftover word that comes first in the block.
+  const Word* first = nullptr;
+  for (const auto& [letter, word] : block_.words) {
+    if (first == nullptr || word.column < first->column) first = &word;
+  }
+  return errorAt(first->column, fmt::format("{} is not used by any code in this block; remove "
+                                            "it or add the code that takes {}",
+                                            first->text(), first->letter));
+}
+
+void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep) {
+  if (from == to) return;
+  Move move;
+  move.kind = kind;
+  move.from = from;
+  move.to = to;
+  move.feed = kind == MoveKind::Feed ? *state_.feed : 0.0;
+  move.feedMode = state_.feedMode;
+  move.tool = state_.tool;
+  move.toolOffset = state_.toolOffset;
+  move.spindleOn = state_.spindleOn;
+  move.block = ordinal_;
+  move.line = block_.line;
+  move.column = block_.column;
+  move.cycleStep = cycleStep;
+  moves_.push_back(move);
+}
+
+}  // namespace
+
+Result<BlockOutcome> executeBlock(ParsedBlock block, ModalState state,
+                                  const InterpreterOptions& options, int ordinal) {
+  return Executor(std::move(block), std::move(state), options, ordinal).run();
+}
+
+}  // namespace lathesim::interp

@@ -1,0 +1,25 @@
+#pragma once
+// One parsed block applied to the modal state: the moves it makes and the state after it.
+// The block is validated as a whole before its result is kept: on an error the caller's
+// state is untouched and no move of the block is emitted. Every word must be used by some
+// code of the block; a word left over is an error.
+
+#include <vector>
+
+#include "interp/block_parser.hpp"
+#include "interp/interpreter.hpp"
+#include "interp/modal_state.hpp"
+#include "interp/result.hpp"
+
+namespace lathesim::interp {
+
+struct BlockOutcome {
+  ModalState state;         // the state after the block
+  std::vector<Move> moves;  // in order, zero-length moves left out
+};
+
+/// Runs `block` from `state`. `ordinal` is the block's 0-based number among the blocks read.
+Result<BlockOutcome> executeBlock(ParsedBlock block, ModalState state,
+                                  const InterpreterOptions& options, int ordinal);
+
+}  // namespace lathesim::interp

@@ -1,0 +1,65 @@
+#include "interp/interpreter.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "interp/block_executor.hpp"
+#include "interp/block_parser.hpp"
+#include "interp/lexer.hpp"
+#include "interp/modal_state.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+// Reads blocks until the text ends, M02/M30, or the first error; appends to `toolpath`.
+Status runProgram(std::string_view programText, const InterpreterOptions& options,
+                  Toolpath& toolpath) {
+  ModalState state;
+  state.position = options.startPosition;
+  if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
+
+  BlockReader reader(programText);
+  while (!state.ended) {
+    auto next = reader.next();
+    if (!next.ok()) return next.error();
+    if (!next.value()) break;
+    const RawBlock& raw = *next.value();
+    const int ordinal = toolpath.blockCount++;
+    if (raw.deleted && options.blockDelete) continue;
+
+    auto words = tokenize(raw);
+    if (!words.ok()) return words.error();
+    auto parsed = parseBlock(words.value(), raw.line, raw.column);
+    if (!parsed.ok()) return parsed.error();
+    auto outcome = executeBlock(std::move(parsed).value(), state, options, ordinal);
+    if (!outcome.ok()) return outcome.error();
+
+    state = std::move(outcome.value().state);
+    const auto& moves = outcome.value().moves;
+    toolpath.moves.insert(toolpath.moves.end(), moves.begin(), moves.end());
+  }
+  return success();
+}
+
+}  // namespace
+
+bool InterpretResult::ok() const {
+  return std::none_of(diagnostics.begin(), diagnostics.end(),
+                      [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
+InterpretResult interpret(std::string_view programText, const std::string& fileName,
+                          const InterpreterOptions& options) {
+  InterpretResult result;
+  result.toolpath.programName = fileName;
+  result.toolpath.startPosition = options.startPosition;
+  const Status status = runProgram(programText, options, result.toolpath);
+  if (!status.ok()) {
+    const Error& error = status.error();
+    result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,
+                                  error.message, lineOf(programText, error.line)});
+  }
+  return result;
+}
+
+}  // namespace lathesim::interp

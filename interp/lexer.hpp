@@ -1,0 +1,64 @@
+#pragma once
+// Source text → blocks of words, each located by line and column (columns count UTF-8
+// code points). Two stages, so a deleted block is skipped without being tokenized:
+//   BlockReader::next()  splits the text at ';' and newlines, drops spaces, tabs,
+//                        ( ... ) comments and '%' lines, and notes a leading '/';
+//   tokenize()           turns a block's remaining characters into words like X20.0.
+// The lexer knows nothing of modal state.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interp/result.hpp"
+
+namespace lathesim::interp {
+
+/// One significant character of a block (a whole code point), with its column.
+struct SourceChar {
+  std::string text;  // one code point, usually a single ASCII byte
+  int column = 0;    // 1-based, in code points
+};
+
+/// A block as written, minus spaces and comments.
+struct RawBlock {
+  int line = 0;          // 1-based line of the block
+  int column = 0;        // 1-based column of its first significant character
+  bool deleted = false;  // it started with '/' (block delete)
+  std::vector<SourceChar> chars;  // everything after the '/', spaces and comments removed
+};
+
+/// A letter and its number: "X20 .0" is the word X20.0.
+struct Word {
+  char letter = 0;     // upper case
+  std::string number;  // as written without spaces, e.g. "-5.5", ".5", "0101"
+  double value = 0.0;  // the number as read, in the program's units
+  int column = 0;      // column of the letter
+  std::string text() const { return std::string(1, letter) + number; }
+};
+
+/// Splits program text into blocks, one at a time, so nothing after M30 is ever read.
+class BlockReader {
+ public:
+  explicit BlockReader(std::string_view text) : text_(text) {}
+
+  /// The next block holding anything but spaces and comments; std::nullopt at the end.
+  /// Fails on a comment that is not closed on its line.
+  Result<std::optional<RawBlock>> next();
+
+ private:
+  bool skipPercentLine();  // at a line start: skips a '%' line, returns whether it did
+
+  std::string_view text_;
+  std::size_t at_ = 0;  // byte offset of the next character
+  int line_ = 1;
+  int column_ = 1;
+  bool atLineStart_ = true;
+};
+
+/// The words of a block. Fails on an unexpected character, an unknown letter, a letter
+/// with no number, or a malformed number such as "20.3.".
+Result<std::vector<Word>> tokenize(const RawBlock& block);
+
+}  // namespace lathesim::interp

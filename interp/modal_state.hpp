@@ -1,0 +1,39 @@
+#pragma once
+// What the control remembers between blocks. All lengths are mm; X positions are radii.
+
+#include <optional>
+
+#include "geometry/rz.hpp"
+#include "interp/move.hpp"
+
+namespace lathesim::interp {
+
+enum class MotionMode { Rapid, Linear, FaceCycle };  // group 01: G00, G01, G94
+enum class Plane { XY, ZX, YZ };                      // G17, G18, G19
+
+/// The end point and taper of the last G94 block, reused by a following block that omits
+/// them. Cleared by G00/G01 and by every one-shot (group 00) code except G04.
+struct FaceCycleRetained {
+  std::optional<double> xDiameterMm;  // absolute end X (C), a diameter
+  std::optional<double> zMm;          // absolute end Z (C)
+  std::optional<double> rMm;          // taper: Z at the cut's start minus Z at its end
+};
+
+struct ModalState {
+  MotionMode motion = MotionMode::Rapid;
+  Plane plane = Plane::ZX;
+  bool inch = false;  // G20; every length is converted to mm as it is read
+  FeedMode feedMode = FeedMode::PerRevolution;
+  std::optional<double> feed;  // mm/min (G98) or mm/rev (G99); unset until the first F
+  double spindleSpeed = 0.0;   // S as given (rpm under G97)
+  std::optional<double> spindleLimitRpm;  // G50 S
+  bool spindleOn = false;
+  bool coolantOn = false;
+  int tool = 0;
+  int toolOffset = 0;
+  RZ position{0.0, 0.0};  // where the tool is, part coordinates (radius mm, Z mm)
+  FaceCycleRetained faceCycle;
+  bool ended = false;  // M02/M30 read: nothing after it runs
+};
+
+}  // namespace lathesim::interp

@@ -1,0 +1,2 @@
+(expect: 2:12: error: malformed number in X20.3.)
+(粗车端面) G00 X20.3.;

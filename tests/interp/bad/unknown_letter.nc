@@ -1,0 +1,2 @@
+(expect: 2:9: error: unknown letter 'B')
+G00 X20 B5;

@@ -1,0 +1,66 @@
+// The bad-program corpus: each tests/interp/bad/*.nc opens with the diagnostic it must give,
+//   (expect: LINE:COL: error: part of the message)
+// and interpreting it must give exactly that error, located in that file. The line is a
+// comment to the interpreter too, so the expected text cannot contain a parenthesis.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "interp/interpreter.hpp"
+#include "test_support.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> badPrograms() {
+  std::vector<fs::path> paths;
+  for (const auto& entry : fs::directory_iterator(LATHESIM_INTERP_BAD_DIR)) {
+    if (entry.path().extension() == ".nc") paths.push_back(entry.path());
+  }
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(BadCorpus, HasAtLeastTwelvePrograms) { EXPECT_GE(badPrograms().size(), 12u); }
+
+TEST(BadCorpus, EachProgramGivesItsExpectedDiagnostic) {
+  const std::regex expectLine(R"(^\(expect: (\d+):(\d+): error: (.*)\)\r?$)");
+  for (const fs::path& path : badPrograms()) {
+    SCOPED_TRACE(path.filename().string());
+    const std::string text = readFile(path);
+    const std::string first = text.substr(0, text.find('\n'));
+    std::smatch match;
+    ASSERT_TRUE(std::regex_match(first, match, expectLine)) << "first line: " << first;
+    const int line = std::stoi(match[1]);
+    const int column = std::stoi(match[2]);
+    const std::string part = match[3];
+
+    const std::string name = path.filename().string();
+    const auto result = interpret(text, name, test::defaultOptions());
+    test::expectError(result, line, column, part);
+    if (result.diagnostics.empty()) continue;
+    const std::string shown = format(result.diagnostics[0]);
+    const std::string location = name + ":" + std::to_string(line) + ":" +
+                                 std::to_string(column) + ": error: ";
+    EXPECT_EQ(shown.rfind(location, 0), 0u) << shown;
+  }
+}
+
+}  // namespace
+}  // namespace lathesim::interp

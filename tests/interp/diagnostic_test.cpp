@@ -1,0 +1,40 @@
+#include "interp/diagnostic.hpp"
+
+#include <gtest/gtest.h>
+
+namespace lathesim::interp {
+namespace {
+
+TEST(Diagnostic, FormatShowsLocationMessageLineAndCaret) {
+  const Diagnostic d{Severity::Error, "bad.nc", 3, 10, "something is wrong",
+                     "G94 X108 Z-30 R-10 F1;"};
+  EXPECT_EQ(format(d),
+            "bad.nc:3:10: error: something is wrong\n"
+            "G94 X108 Z-30 R-10 F1;\n"
+            "         ^");
+}
+
+TEST(Diagnostic, CaretCountsCodePointsNotBytes) {
+  // "(粗车)" is 4 code points but 8 bytes; X is column 6.
+  const Diagnostic d{Severity::Error, "a.nc", 1, 6, "m", "(粗车) X20.3."};
+  EXPECT_EQ(format(d), "a.nc:1:6: error: m\n(粗车) X20.3.\n     ^");
+}
+
+TEST(Diagnostic, WarningAndWholeFileForms) {
+  EXPECT_EQ(format({Severity::Warning, "a.nc", 2, 1, "w", "M30"}),
+            "a.nc:2:1: warning: w\nM30\n^");
+  EXPECT_EQ(format({Severity::Error, "a.nc", 0, 0, "cannot read", ""}),
+            "a.nc: error: cannot read");
+}
+
+TEST(Diagnostic, LineOfStripsLineEndings) {
+  const std::string_view text = "first\r\nsecond\nthird";
+  EXPECT_EQ(lineOf(text, 1), "first");
+  EXPECT_EQ(lineOf(text, 2), "second");
+  EXPECT_EQ(lineOf(text, 3), "third");
+  EXPECT_EQ(lineOf(text, 4), "");
+  EXPECT_EQ(lineOf(text, 0), "");
+}
+
+}  // namespace
+}  // namespace lathesim::interp

@@ -1,0 +1,65 @@
+#pragma once
+// Helpers shared by the interp tests: run a program, compare moves with hand-made lists.
+
+#include <gtest/gtest.h>
+
+#include <string_view>
+#include <vector>
+
+#include "interp/interpreter.hpp"
+
+namespace lathesim::interp::test {
+
+/// Tools 1 and 2 defined; the tool starts at X200 (radius 100) Z200.
+inline InterpreterOptions defaultOptions() {
+  InterpreterOptions options;
+  options.startPosition = RZ(100.0, 200.0);
+  options.toolNumbers = {1, 2};
+  return options;
+}
+
+inline InterpretResult run(std::string_view program,
+                           const InterpreterOptions& options = defaultOptions()) {
+  return interpret(program, "test.nc", options);
+}
+
+/// A move as worked out by hand: positions are (radius, Z) in mm.
+struct Expected {
+  MoveKind kind;
+  double r0, z0, r1, z1;
+  double feed;
+  int cycleStep;
+};
+
+constexpr MoveKind kRapid = MoveKind::Rapid;
+constexpr MoveKind kFeed = MoveKind::Feed;
+
+inline void expectMoves(const std::vector<Move>& actual, const std::vector<Expected>& expected) {
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(testing::Message() << "move " << i);
+    const Move& m = actual[i];
+    const Expected& e = expected[i];
+    EXPECT_EQ(m.kind, e.kind);
+    EXPECT_NEAR(m.from.x(), e.r0, 1e-9);
+    EXPECT_NEAR(m.from.y(), e.z0, 1e-9);
+    EXPECT_NEAR(m.to.x(), e.r1, 1e-9);
+    EXPECT_NEAR(m.to.y(), e.z1, 1e-9);
+    EXPECT_NEAR(m.feed, e.feed, 1e-9);
+    EXPECT_EQ(m.cycleStep, e.cycleStep);
+  }
+}
+
+/// The program failed with exactly one error at line:column whose message contains `part`.
+inline void expectError(const InterpretResult& result, int line, int column,
+                        std::string_view part) {
+  EXPECT_FALSE(result.ok());
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  const Diagnostic& d = result.diagnostics[0];
+  EXPECT_EQ(d.severity, Severity::Error);
+  EXPECT_EQ(d.line, line) << d.message;
+  EXPECT_EQ(d.column, column) << d.message;
+  EXPECT_NE(d.message.find(part), std::string::npos) << "message: " << d.message;
+}
+
+}  // namespace lathesim::interp::test

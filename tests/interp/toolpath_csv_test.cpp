@@ -1,0 +1,66 @@
+#include "interp/toolpath_csv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "test_support.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+TEST(ToolpathCsv, NumbersHaveAtMostFourDecimalsAndNoTrailingZeros) {
+  EXPECT_EQ(csvNumber(130.0), "130");
+  EXPECT_EQ(csvNumber(62.5), "62.5");
+  EXPECT_EQ(csvNumber(0.1), "0.1");
+  EXPECT_EQ(csvNumber(-110.0), "-110");
+  EXPECT_EQ(csvNumber(0.0), "0");
+  EXPECT_EQ(csvNumber(-0.00001), "0");
+  EXPECT_EQ(csvNumber(1.23456), "1.2346");
+  EXPECT_EQ(csvNumber(12.7), "12.7");
+}
+
+TEST(ToolpathCsv, WritesDiametersOneRowPerMove) {
+  const auto result = test::run("G00 X130 Z5\nG94 X120 Z-110 F300\n");
+  ASSERT_TRUE(result.ok());
+  std::ostringstream out;
+  writeToolpathCsv(result.toolpath, out);
+  EXPECT_EQ(out.str(),
+            "line,kind,x0,z0,x1,z1,feed\n"
+            "1,rapid,200,200,130,5,0\n"
+            "2,rapid,130,5,130,-110,0\n"
+            "2,feed,130,-110,120,-110,300\n"
+            "2,feed,120,-110,120,5,300\n"
+            "2,rapid,120,5,130,5,0\n");
+}
+
+TEST(ToolpathCsv, ReadsWhatItWrote) {
+  std::istringstream in(
+      "line,kind,x0,z0,x1,z1,feed\n"
+      "1,rapid,200,200,130,5,0\n"
+      "2,feed,130,-110,120,-110.5,0.25\n");
+  const auto rows = readToolpathCsv(in);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].line, 1);
+  EXPECT_EQ(rows[0].kind, "rapid");
+  EXPECT_DOUBLE_EQ(rows[0].x1, 130);
+  EXPECT_EQ(rows[1].kind, "feed");
+  EXPECT_DOUBLE_EQ(rows[1].x0, 130);
+  EXPECT_DOUBLE_EQ(rows[1].z0, -110);
+  EXPECT_DOUBLE_EQ(rows[1].x1, 120);
+  EXPECT_DOUBLE_EQ(rows[1].z1, -110.5);
+  EXPECT_DOUBLE_EQ(rows[1].feed, 0.25);
+}
+
+TEST(ToolpathCsv, RejectsMissingHeaderAndBadRows) {
+  std::istringstream noHeader("1,rapid,0,0,1,1,0\n");
+  EXPECT_THROW(readToolpathCsv(noHeader), std::runtime_error);
+  std::istringstream badKind("line,kind,x0,z0,x1,z1,feed\n1,arc,0,0,1,1,0\n");
+  EXPECT_THROW(readToolpathCsv(badKind), std::runtime_error);
+  std::istringstream badNumber("line,kind,x0,z0,x1,z1,feed\n1,feed,a,0,1,1,0\n");
+  EXPECT_THROW(readToolpathCsv(badNumber), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace lathesim::interp
