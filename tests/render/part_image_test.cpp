@@ -1,0 +1,131 @@
+#include "render/part_image.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+
+#include "tests/render/test_meshes.hpp"
+
+namespace lathesim::render {
+namespace {
+
+struct Rgb {
+  int r, g, b;
+};
+
+/// The PNG as read back; pixel (0, 0) is the lower-left corner, as VTK stores it.
+class Png {
+ public:
+  explicit Png(const std::filesystem::path& file) {
+    const std::string name = file.string();
+    reader_->SetFileName(name.c_str());
+    reader_->Update();
+    image_ = reader_->GetOutput();
+  }
+  int width() const { return image_->GetDimensions()[0]; }
+  int height() const { return image_->GetDimensions()[1]; }
+  Rgb at(int x, int y) const {
+    const auto* p = static_cast<const unsigned char*>(image_->GetScalarPointer(x, y, 0));
+    return {p[0], p[1], p[2]};
+  }
+  /// Pixels in x ∈ [x0, x1), y ∈ [y0, y1) for which `test` holds.
+  template <class Test>
+  int count(int x0, int x1, int y0, int y1, Test test) const {
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) n += test(at(x, y)) ? 1 : 0;
+    return n;
+  }
+
+ private:
+  vtkNew<vtkPNGReader> reader_;
+  vtkImageData* image_ = nullptr;
+};
+
+bool blue(const Rgb& c) { return c.b > 150 && c.b > c.r + 80 && c.b > c.g + 60; }
+bool red(const Rgb& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
+int distance(const Rgb& a, const Rgb& b) {
+  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+}
+
+TEST(PartImagePng, ShadedPartWithBlueFeedAndRedRapidWithoutDisplay) {
+  ::unsetenv("DISPLAY");  // the private-Xvfb path, as under CI
+  const TriangleMesh part = test::cylinder(30.0, 60.0, 96, 8);
+  const interp::Toolpath path = test::rapidThenFeed();
+  test::TempDir dir;
+  const auto file = dir.path() / "part.png";
+  writePartImagePng(part, path, PartImageOptions{1600, 1200, "cylinder.nc"}, file);
+
+  Png png(file);
+  ASSERT_EQ(png.width(), 1600);
+  ASSERT_EQ(png.height(), 1200);
+  // The part fills the middle; the corner shows background.
+  const Rgb corner = png.at(1590, 1190);
+  const Rgb centre = png.at(800, 600);
+  EXPECT_GT(distance(centre, corner), 40)
+      << "centre " << centre.r << "," << centre.g << "," << centre.b << " corner " << corner.r
+      << "," << corner.g << "," << corner.b;
+  // The path, away from the legend in the lower-left corner.
+  EXPECT_GT(png.count(400, 1600, 0, 1200, blue), 500);
+  EXPECT_GT(png.count(400, 1600, 0, 1200, red), 100);
+}
+
+TEST(PartImagePng, EmptyMeshStillShowsTheToolpath) {
+  ::unsetenv("DISPLAY");
+  test::TempDir dir;
+  const auto file = dir.path() / "path-only.png";
+  writePartImagePng(TriangleMesh{}, test::rapidThenFeed(), PartImageOptions{800, 600, "t"},
+                    file);
+  Png png(file);
+  ASSERT_EQ(png.width(), 800);
+  EXPECT_GT(png.count(200, 800, 0, 600, blue), 200);
+  EXPECT_GT(png.count(200, 800, 0, 600, red), 50);
+}
+
+TEST(PartImagePng, UnwritablePathThrows) {
+  test::TempDir dir;
+  EXPECT_THROW(writePartImagePng(test::cylinder(30, 60, 16), test::rapidThenFeed(),
+                                 PartImageOptions{320, 240, "t"}, dir.path() / "no" / "x.png"),
+               std::runtime_error);
+}
+
+TEST(PartImagePng, RevolvedProfileIsClosed) {  // the helper the timing test draws
+  const TriangleMesh shaft =
+      test::revolved({{0, 0}, {30, 0}, {30, 20}, {22, 25}, {22, 45}, {15, 50}, {15, 60}, {0, 60}},
+                     64, 3);
+  EXPECT_TRUE(isClosedAndOriented(shaft));
+  EXPECT_GT(enclosedVolumeMm3(shaft), 0.0);
+}
+
+// Timing for the lead, not a check: run with --gtest_also_run_disabled_tests.
+// LATHESIM_RENDER_KEEP=<path> keeps a copy of the picture.
+TEST(PartImagePng, DISABLED_MillionTrianglesTiming) {
+  // A stepped shaft of ~1 M triangles, roughed in passes of 2 mm from Ø64 bar.
+  const TriangleMesh part = test::revolved(
+      {{0, 0}, {30, 0}, {30, 20}, {22, 25}, {22, 45}, {15, 50}, {15, 60}, {0, 60}}, 1800, 40);
+  interp::Toolpath path;
+  path.programName = "shaft.nc";
+  using interp::MoveKind;
+  for (double r = 30.0; r >= 15.0; r -= 2.0) {
+    const double zEnd = r >= 22.0 ? 25.0 : 50.0;
+    path.moves.push_back(test::move(MoveKind::Rapid, 34, 64, r, 64, 10, 0));
+    path.moves.push_back(test::move(MoveKind::Feed, r, 64, r, zEnd, 11, 0.25));
+    path.moves.push_back(test::move(MoveKind::Feed, r, zEnd, r + 1, zEnd, 12, 0.25));
+    path.moves.push_back(test::move(MoveKind::Rapid, r + 1, zEnd, 34, 64, 13, 0));
+  }
+  test::TempDir dir;
+  const char* keep = std::getenv("LATHESIM_RENDER_KEEP");
+  const auto file = keep ? std::filesystem::path(keep) : dir.path() / "big.png";
+  const auto t0 = std::chrono::steady_clock::now();
+  writePartImagePng(part, path, PartImageOptions{1600, 1200, "shaft.nc"}, file);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%zu triangles at 1600x1200: %.2f s\n", part.triangles.size(), s);
+}
+
+}  // namespace
+}  // namespace lathesim::render
