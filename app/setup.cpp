@@ -1,0 +1,363 @@
+// The setup file: TOML text → Setup, or diagnostics that point at the offending key.
+//
+// Every section and key is optional; what the file leaves out keeps defaultSetup()'s value.
+// [[tool]] is the exception to "key by key": if the file lists any tools, they replace the
+// default tool entirely, and each must give its number. All problems in a file are
+// reported together; a file with any error yields no Setup.
+
+#include "app/setup.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+#include <toml++/toml.h>
+
+namespace lathesim::app {
+namespace {
+
+using interp::Diagnostic;
+using interp::Severity;
+
+// The default insert outline, [radial, axial] mm from the programmed point. The programmed
+// point is the sharp tip at (0, 0); the insert lies above and to the right of it (r ≥ 0,
+// z ≥ 0), as for a turning/facing tool that approaches the work from +X and +Z.
+// Both flanks leave the tip at 1 in 10 (≈ 5.7°) rather than along the axes: the lower flank
+// (0,0)→(10,1) clears the face just cut when the tool feeds towards the axis (G94 step 2),
+// and the left flank (0,0)→(1,10) clears the wall just cut when the tool feeds along −Z or
+// retracts along +Z (G94 step 3). With flanks exactly on the axes the body would rub the
+// finished surfaces instead of staying off them.
+constexpr std::array<std::array<double, 2>, 4> kDefaultOutline{{{0, 0}, {10, 1}, {12, 12}, {1, 10}}};
+
+ConvexPolygon defaultOutline() {
+  std::vector<RZ> points;
+  for (const auto& [r, z] : kDefaultOutline) points.emplace_back(r, z);
+  auto checked = ConvexPolygon::fromOutline(points);
+  return *checked.polygon;  // a fixed, known-good outline
+}
+
+/// The text of 1-based line `line`, without its line ending.
+std::string textOfLine(std::string_view text, int line) {
+  if (line < 1) return {};
+  std::size_t start = 0;
+  for (int i = 1; i < line; ++i) {
+    const std::size_t newline = text.find('\n', start);
+    if (newline == std::string_view::npos) return {};
+    start = newline + 1;
+  }
+  std::size_t end = text.find('\n', start);
+  if (end == std::string_view::npos) end = text.size();
+  if (end > start && text[end - 1] == '\r') --end;
+  return std::string(text.substr(start, end - start));
+}
+
+/// A float as TOML would spell it, in the fewest digits that read back the same (-0.2, 5.0).
+std::string floatText(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  std::array<char, 64> buffer{};
+  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  std::string text(buffer.data(), ec == std::errc{} ? end : buffer.data());
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return text;
+}
+
+/// How a value reads in a message: its TOML spelling when short, else what kind it is.
+std::string describe(const toml::node& node) {
+  std::string text;
+  if (node.is_table()) return "a table";
+  if (const auto* array = node.as_array()) {
+    text = "[";
+    for (std::size_t i = 0; i < array->size(); ++i) text += (i ? ", " : "") + describe(*array->get(i));
+    text += "]";
+  } else if (const auto* i = node.as_integer()) {
+    text = std::to_string(i->get());
+  } else if (const auto* f = node.as_floating_point()) {
+    text = floatText(f->get());
+  } else if (const auto* s = node.as_string()) {
+    text = "\"" + s->get() + "\"";
+  } else if (const auto* b = node.as_boolean()) {
+    text = b->get() ? "true" : "false";
+  } else {
+    std::ostringstream out;  // dates and times
+    node.visit([&out](const auto& value) {
+      if constexpr (toml::is_value<decltype(value)>) out << value;
+    });
+    text = out.str();
+  }
+  if (text.size() > 40) return node.is_array() ? "an array" : node.is_string() ? "a long string" : "a long value";
+  return text;
+}
+
+/// Collects diagnostics for one file, each placed at a toml++ source position.
+class Reporter {
+ public:
+  Reporter(std::string_view text, std::string fileName) : text_(text), fileName_(std::move(fileName)) {}
+
+  void at(const toml::source_region& where, std::string message) {
+    Diagnostic d;
+    d.severity = Severity::Error;
+    d.file = fileName_;
+    d.line = static_cast<int>(where.begin.line);
+    d.column = static_cast<int>(where.begin.column);
+    d.message = std::move(message);
+    d.sourceLine = textOfLine(text_, d.line);
+    diagnostics_.push_back(std::move(d));
+  }
+
+  std::vector<Diagnostic> take() { return std::move(diagnostics_); }
+  bool empty() const { return diagnostics_.empty(); }
+
+ private:
+  std::string_view text_;
+  std::string fileName_;
+  std::vector<Diagnostic> diagnostics_;
+};
+
+/// A TOML integer or float as double (integers are accepted where mm are expected).
+std::optional<double> numberOf(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  if (const auto* f = node.as_floating_point()) return f->get();
+  return std::nullopt;
+}
+
+std::string joinKeys(std::initializer_list<std::string_view> keys) {
+  std::string text;
+  std::size_t i = 0;
+  for (std::string_view key : keys) {
+    if (i > 0) text += (i + 1 == keys.size()) ? " or " : ", ";
+    text += key;
+    ++i;
+  }
+  return text;
+}
+
+/// Reports every key of `table` not in `known`, as "unknown key 'prefix.key' (expected …)".
+void rejectUnknownKeys(const toml::table& table, std::string_view prefix,
+                       std::initializer_list<std::string_view> known, Reporter& report) {
+  for (auto&& [key, node] : table) {
+    bool ok = false;
+    for (std::string_view k : known) ok = ok || key.str() == k;
+    if (ok) continue;
+    const std::string what = node.is_table() ? "unknown table '" : "unknown key '";
+    report.at(key.source(), what + std::string(prefix) + std::string(key.str()) + "' (expected " +
+                                joinKeys(known) + ")");
+  }
+}
+
+/// A table-valued key: the table, or a wrong-type diagnostic.
+const toml::table* tableAt(const toml::node& node, const std::string& name, Reporter& report) {
+  if (const auto* table = node.as_table()) return table;
+  report.at(node.source(), name + " must be a table ([" + name + "]), got " + describe(node));
+  return nullptr;
+}
+
+/// A length in mm that must be > 0.
+std::optional<double> positiveMm(const toml::node& node, const std::string& name, Reporter& report) {
+  const auto value = numberOf(node);
+  if (!value || !(*value > 0.0) || !std::isfinite(*value)) {
+    report.at(node.source(), name + " must be a positive number of mm, got " + describe(node));
+    return std::nullopt;
+  }
+  return value;
+}
+
+/// A coordinate in mm: any finite number.
+std::optional<double> finiteMm(const toml::node& node, const std::string& name, Reporter& report) {
+  const auto value = numberOf(node);
+  if (!value || !std::isfinite(*value)) {
+    report.at(node.source(), name + " must be a number of mm, got " + describe(node));
+    return std::nullopt;
+  }
+  return value;
+}
+
+void readStock(const toml::table& table, sim::StockSpec& stock, Reporter& report) {
+  rejectUnknownKeys(table, "stock.", {"diameter", "length", "face_z"}, report);
+  if (const auto* node = table.get("diameter"))
+    if (auto v = positiveMm(*node, "stock.diameter", report)) stock.diameterMm = *v;
+  if (const auto* node = table.get("length"))
+    if (auto v = positiveMm(*node, "stock.length", report)) stock.lengthMm = *v;
+  if (const auto* node = table.get("face_z"))
+    if (auto v = finiteMm(*node, "stock.face_z", report)) stock.faceZMm = *v;
+}
+
+void readMachine(const toml::table& table, RZ& start, Reporter& report) {
+  rejectUnknownKeys(table, "machine.", {"start"}, report);
+  const auto* node = table.get("start");
+  if (!node) return;
+  const auto* array = node->as_array();
+  std::optional<double> x, z;
+  if (array && array->size() == 2) {
+    x = numberOf(*array->get(0));
+    z = numberOf(*array->get(1));
+  }
+  if (!x || !z || !std::isfinite(*x) || !std::isfinite(*z)) {
+    report.at(node->source(), "machine.start must be [X diameter, Z] in mm, got " + describe(*node));
+    return;
+  }
+  if (*x < 0.0) {
+    report.at(node->source(), "machine.start X is a diameter and must not be negative, got " + describe(*node));
+    return;
+  }
+  start = RZ(*x / 2.0, *z);
+}
+
+void readSim(const toml::table& table, std::optional<double>& voxelMm, Reporter& report) {
+  rejectUnknownKeys(table, "sim.", {"voxel"}, report);
+  if (const auto* node = table.get("voxel"))
+    if (auto v = positiveMm(*node, "sim.voxel", report)) voxelMm = *v;
+}
+
+/// One [[tool]] table; `name` is "tool[i]" (1-based, in file order).
+std::optional<ToolDefinition> readTool(const toml::table& table, const std::string& name, Reporter& report) {
+  rejectUnknownKeys(table, name + ".", {"number", "polygon"}, report);
+  ToolDefinition tool{1, defaultOutline()};
+  bool ok = true;
+
+  if (const auto* node = table.get("number")) {
+    const auto* integer = node->as_integer();
+    if (!integer || integer->get() < 1 || integer->get() > 99) {
+      report.at(node->source(), name + ".number must be an integer 1..99, got " + describe(*node));
+      ok = false;
+    } else {
+      tool.number = static_cast<int>(integer->get());
+    }
+  } else {
+    report.at(table.source(), name + " has no number (add number = 1..99)");
+    ok = false;
+  }
+
+  if (const auto* node = table.get("polygon")) {
+    std::vector<RZ> outline;
+    bool shapeOk = node->is_array();
+    if (const auto* points = node->as_array()) {
+      for (const toml::node& point : *points) {
+        const auto* pair = point.as_array();
+        std::optional<double> r, z;
+        if (pair && pair->size() == 2) {
+          r = numberOf(*pair->get(0));
+          z = numberOf(*pair->get(1));
+        }
+        if (!r || !z || !std::isfinite(*r) || !std::isfinite(*z)) {
+          shapeOk = false;
+          break;
+        }
+        outline.emplace_back(*r, *z);
+      }
+    }
+    if (!shapeOk) {
+      report.at(node->source(), name + ".polygon must be a list of [radial, axial] points in mm, got " +
+                                    describe(*node));
+      ok = false;
+    } else {
+      auto checked = ConvexPolygon::fromOutline(outline);
+      if (checked.polygon) {
+        tool.outline = std::move(*checked.polygon);
+      } else {
+        report.at(node->source(), name + ".polygon " + checked.problem);
+        ok = false;
+      }
+    }
+  }
+  if (!ok) return std::nullopt;
+  return tool;
+}
+
+void readTools(const toml::node& node, std::vector<ToolDefinition>& tools, Reporter& report) {
+  const auto* array = node.as_array();
+  if (array && array->empty()) {
+    report.at(node.source(), "tool lists no tools; give at least one [[tool]] or leave tool out");
+    return;
+  }
+  if (!array || !array->is_array_of_tables()) {
+    report.at(node.source(), "tool must be given as [[tool]] tables, got " + describe(node));
+    return;
+  }
+  std::vector<ToolDefinition> read;
+  std::map<int, std::size_t> seen;  // tool number → 1-based index of its first definition
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const auto& table = *array->get(i)->as_table();
+    const std::string name = "tool[" + std::to_string(i + 1) + "]";
+    auto tool = readTool(table, name, report);
+    if (!tool) continue;
+    const auto [first, inserted] = seen.emplace(tool->number, i + 1);
+    if (!inserted) {
+      report.at(table.get("number")->source(),
+                "tool number " + std::to_string(tool->number) + " is defined twice (tool[" +
+                    std::to_string(first->second) + "] and " + name + ")");
+      continue;
+    }
+    read.push_back(std::move(*tool));
+  }
+  tools = std::move(read);
+}
+
+}  // namespace
+
+Setup defaultSetup() {
+  Setup setup;
+  setup.sourceName = "(default setup)";
+  setup.stock = sim::StockSpec{125.0, 112.0, 2.0};
+  setup.startPosition = RZ(100.0, 200.0);  // X200 (diameter) Z200
+  setup.voxelMm = std::nullopt;
+  setup.tools.push_back(ToolDefinition{1, defaultOutline()});
+  return setup;
+}
+
+SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
+  Reporter report(tomlText, fileName);
+  toml::table root;
+  try {
+    root = toml::parse(tomlText, fileName);
+  } catch (const toml::parse_error& error) {
+    report.at(error.source(), "TOML syntax error: " + std::string(error.description()));
+    return {std::nullopt, report.take()};
+  }
+
+  Setup setup = defaultSetup();
+  setup.sourceName = fileName;
+  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool"}, report);
+  if (const auto* node = root.get("stock"))
+    if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
+  if (const auto* node = root.get("machine"))
+    if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup.startPosition, report);
+  if (const auto* node = root.get("sim"))
+    if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
+  if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);
+
+  if (!report.empty()) return {std::nullopt, report.take()};
+  return {std::move(setup), {}};
+}
+
+SetupResult loadSetup(const std::filesystem::path& file) {
+  const std::string fileName = file.string();
+  std::error_code ec;
+  const bool regular = std::filesystem::is_regular_file(file, ec);
+  std::ifstream in;
+  if (regular) in.open(file, std::ios::binary);
+  if (!regular || !in) {
+    Diagnostic d;
+    d.file = fileName;
+    d.message = std::filesystem::exists(file, ec) ? "cannot read the setup file"
+                                                   : "setup file not found";
+    return {std::nullopt, {std::move(d)}};
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    Diagnostic d;
+    d.file = fileName;
+    d.message = "cannot read the setup file";
+    return {std::nullopt, {std::move(d)}};
+  }
+  return parseSetup(text.str(), fileName);
+}
+
+}  // namespace lathesim::app
