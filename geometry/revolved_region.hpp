@@ -1,0 +1,52 @@
+#pragma once
+// The region a group of cuts removes while the spindle turns: a union of convex polygons
+// of the (r, z) plane, revolved about the Z axis.
+//
+// For a 3D point at distance ρ from the axis, the signed distance to the revolved solid is
+// the 2D signed distance of (ρ, z) to the region (the nearest point of a surface of
+// revolution lies in the point's own meridian half-plane). A polygon reaching across the
+// axis (r < 0) revolves together with its mirror image, so (−ρ, z) is measured as well.
+// Outside the union the value is the exact distance; inside it is a lower bound of the
+// depth, which is all a max-based removal needs.
+
+#include <vector>
+
+#include "geometry/convex_polygon.hpp"
+
+namespace lathesim {
+
+class RevolvedRegion {
+ public:
+  explicit RevolvedRegion(const std::vector<ConvexPolygon>& polygons);
+
+  /// Signed distance (mm) of the point (ρ ≥ 0, z). Values beyond `cap` in magnitude are
+  /// returned as ±cap or further: callers that clamp at a narrow band pass the band as cap
+  /// and skip the exact edge search far from the boundary.
+  double signedDistance(double rho, double z, double cap) const;
+
+  RZ lowerBound() const { return lower_; }  // bounds of the polygons (r may be negative)
+  RZ upperBound() const { return upper_; }
+  bool empty() const { return pieces_.empty(); }
+
+  /// The largest distance from the axis of any point of the revolved solid.
+  double maxRadius() const;
+
+ private:
+  struct Edge {
+    double ax, az;      // start vertex
+    double dx, dz;      // edge vector
+    double nx, nz;      // outward unit normal
+    double inverseLengthSquared;
+  };
+  struct Piece {
+    std::vector<Edge> edges;
+    bool crossesAxis;
+  };
+  static double pieceDistance(const Piece& piece, double r, double z, double cap);
+
+  std::vector<Piece> pieces_;
+  RZ lower_{0, 0};
+  RZ upper_{0, 0};
+};
+
+}  // namespace lathesim

@@ -1,0 +1,48 @@
+#pragma once
+// Runs a toolpath through the stock: every move sweeps its tool's outline from start to end,
+// revolved about the spindle axis, and removes what it covers.
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.hpp"
+#include "interp/move.hpp"
+#include "sim/stock.hpp"
+
+namespace lathesim::sim {
+
+struct Collision {
+  int line = 0;
+  int column = 0;
+  std::string kind;  // "rapid_into_stock"
+  double volumeMm3 = 0.0;
+};
+
+struct BlockRemoval {
+  int block = 0;  // ordinal in the program
+  int line = 0;
+  int column = 0;
+  double removedMm3 = 0.0;
+};
+
+struct SimulationResult {
+  std::vector<BlockRemoval> blocks;  // blocks that made moves, in program order
+  std::vector<Collision> collisions;
+};
+
+/// A rapid that removes more than this many voxels' worth of material is a collision;
+/// below it, the removal is rounding at a surface the rapid merely grazes.
+inline constexpr double kCollisionVoxels = 10.0;
+
+using ToolOutlines = std::map<int, ConvexPolygon>;  // tool number → outline (radial, axial) mm
+using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
+
+/// Removes every move's swept region from `stock` in program order. Consecutive feed moves
+/// of one block are united and written once (a cycle's cut and retract overlap heavily);
+/// each rapid is written on its own so that a rapid into material is caught and located.
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress = {});
+
+}  // namespace lathesim::sim

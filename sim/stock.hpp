@@ -1,0 +1,61 @@
+#pragma once
+// The stock as a narrow-band level set. OpenVDB stays behind this interface (compiling a
+// FloatGrid costs seconds and gigabytes per translation unit), so callers see plain types.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "geometry/revolved_region.hpp"
+#include "geometry/triangle_mesh.hpp"
+#include "sim/stock_spec.hpp"
+
+namespace lathesim::sim {
+
+/// Narrow band half-width, in voxels, on each side of the surface.
+inline constexpr int kHalfBandVoxels = 3;
+
+/// Memory the stock's level set is expected to take at this voxel size (bytes), from its
+/// surface area and a per-surface-voxel cost measured on this machine.
+std::uint64_t estimatedStockBytes(const StockSpec& spec, double voxelMm);
+
+/// Why a grid cannot be simulated here (too large for memory, bad voxel), or nullopt.
+std::optional<std::string> gridProblem(const StockSpec& spec, double voxelMm);
+
+class Stock {
+ public:
+  /// Builds the bar's level set leaf by leaf from its analytic distance.
+  Stock(const StockSpec& spec, double voxelMm);
+  ~Stock();
+  Stock(const Stock&) = delete;
+  Stock& operator=(const Stock&) = delete;
+
+  double voxelMm() const;
+
+  /// Removes the solid of revolution of `region`: φ ← max(φ, −ψ). Only leaves near both the
+  /// region's boundary and the material are visited. Returns the volume removed (mm³),
+  /// measured on the level set before and after.
+  double remove(const RevolvedRegion& region);
+
+  /// Volume enclosed by the zero level set (mm³): each voxel counts the fraction
+  /// clamp(½ − φ/h, 0, 1) of itself, and interior tiles count whole.
+  double volumeMm3() const;
+
+  /// Closed surface at φ = 0, outward normals. adaptivity 0 keeps every voxel's facets;
+  /// larger values (up to 1) merge facets on flat and gently curved areas.
+  TriangleMesh mesh(double adaptivity) const;
+
+  /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock".
+  void writeVdb(const std::filesystem::path& file) const;
+
+  std::uint64_t activeVoxelCount() const;
+  std::uint64_t memoryBytes() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lathesim::sim

@@ -1,0 +1,101 @@
+#include "sim/stock.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lathesim::sim {
+namespace {
+
+// Volume measured on a level set is exact up to the discretisation at the surface; a
+// tolerance of a tenth of a voxel layer over the whole surface is generous yet tight enough
+// to catch a wrong cut (which moves whole voxel layers).
+double voxelTolerance(double surfaceMm2, double voxelMm) { return 0.1 * voxelMm * surfaceMm2; }
+
+ConvexPolygon rectangle(double r0, double z0, double r1, double z1) {
+  const std::vector<RZ> corners{{r0, z0}, {r1, z0}, {r1, z1}, {r0, z1}};
+  return ConvexPolygon::hullOf(corners);
+}
+
+class StockAtVoxel : public ::testing::TestWithParam<double> {};
+
+TEST_P(StockAtVoxel, BarVolumeIsTheCylinders) {
+  const double h = GetParam();
+  const StockSpec spec{50.0, 40.0, 2.0};
+  Stock stock(spec, h);
+  const double exact = M_PI * 25.0 * 25.0 * 40.0;
+  const double surface = 2 * M_PI * 25 * 25 + 2 * M_PI * 25 * 40;
+  EXPECT_NEAR(stock.volumeMm3(), exact, voxelTolerance(surface, h));
+}
+
+TEST_P(StockAtVoxel, TurningAShoulderRemovesTheRingExactly) {
+  const double h = GetParam();
+  Stock stock({50.0, 40.0, 2.0}, h);
+  // Turn Φ50 → Φ30 from the face down to Z-20: a ring r 15..25, 22 mm long, removed.
+  const double removed = stock.remove(RevolvedRegion({rectangle(15.0, -20.0, 40.0, 10.0)}));
+  const double ring = M_PI * (25.0 * 25.0 - 15.0 * 15.0) * 22.0;
+  const double surface = 2 * M_PI * 15 * 22 + M_PI * (25 * 25 - 15 * 15);
+  EXPECT_NEAR(removed, ring, voxelTolerance(surface, h));
+  const double remaining = M_PI * 25.0 * 25.0 * 40.0 - ring;
+  EXPECT_NEAR(stock.volumeMm3(), remaining, voxelTolerance(surface + 2 * M_PI * 25 * 40, h));
+}
+
+TEST_P(StockAtVoxel, TaperLeavesAFrustum) {
+  const double h = GetParam();
+  Stock stock({50.0, 30.0, 0.0}, h);
+  // Everything above the line from (r10, z0) to (r25, z-30) goes: a frustum stays.
+  const std::vector<RZ> above{{10.0, 0.0}, {25.0, -30.0}, {40.0, -30.0}, {40.0, 5.0}, {10.0, 5.0}};
+  stock.remove(RevolvedRegion({ConvexPolygon::hullOf(above)}));
+  const double frustum = M_PI * 30.0 / 3.0 * (25.0 * 25.0 + 25.0 * 10.0 + 10.0 * 10.0);
+  const double slant = std::hypot(15.0, 30.0);
+  const double surface = M_PI * (25 + 10) * slant + M_PI * (25 * 25 + 10 * 10);
+  EXPECT_NEAR(stock.volumeMm3(), frustum, voxelTolerance(surface, h));
+}
+
+TEST_P(StockAtVoxel, FacesSharedByTwoCutsLeaveNoGhostSheet) {
+  // Two cuts meet exactly at Z-10 (a face pass repeated from both sides). The zero plateau
+  // they leave there must count as air, and the mesh must agree with the level set.
+  const double h = GetParam();
+  Stock stock({40.0, 30.0, 0.0}, h);
+  stock.remove(RevolvedRegion({rectangle(10.0, -10.0, 30.0, 5.0)}));
+  stock.remove(RevolvedRegion({rectangle(10.0, -20.0, 30.0, -10.0)}));
+  const double exact = M_PI * 20 * 20 * 10 + M_PI * 10 * 10 * 20;
+  const double surface = 2 * M_PI * 20 * 10 + 2 * M_PI * 10 * 20 + 2 * M_PI * 20 * 20;
+  EXPECT_NEAR(stock.volumeMm3(), exact, voxelTolerance(surface, h));
+  const TriangleMesh mesh = stock.mesh(0.0);
+  EXPECT_TRUE(isClosedAndOriented(mesh));
+  EXPECT_NEAR(enclosedVolumeMm3(mesh), exact, voxelTolerance(surface, h));
+}
+
+TEST_P(StockAtVoxel, MeshIsClosedWithOutwardNormalsAndMatchesTheVolume) {
+  const double h = GetParam();
+  Stock stock({50.0, 40.0, 2.0}, h);
+  stock.remove(RevolvedRegion({rectangle(15.0, -20.0, 40.0, 10.0)}));
+  const double exact = M_PI * 25.0 * 25.0 * 18.0 + M_PI * 15.0 * 15.0 * 22.0;
+  const double surface = 2 * M_PI * 25 * 18 + 2 * M_PI * 15 * 22 + 2 * M_PI * 25 * 25;
+  for (double adaptivity : {0.0, 0.1}) {
+    const TriangleMesh mesh = stock.mesh(adaptivity);
+    EXPECT_TRUE(isClosedAndOriented(mesh)) << "adaptivity " << adaptivity;
+    EXPECT_NEAR(enclosedVolumeMm3(mesh), exact, voxelTolerance(surface, h)) << "adaptivity " << adaptivity;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(TwoVoxelSizes, StockAtVoxel, ::testing::Values(0.5, 0.25));
+
+TEST(Stock, CutThroughTheAxisRemovesTheWholeSlice) {
+  // A tool reaching across the axis (r < 0) must not leave a core.
+  Stock stock({40.0, 20.0, 0.0}, 0.25);
+  stock.remove(RevolvedRegion({rectangle(-5.0, -5.0, 30.0, 5.0)}));
+  EXPECT_NEAR(stock.volumeMm3(), M_PI * 20 * 20 * 15, voxelTolerance(2 * M_PI * 20 * 20 + 2 * M_PI * 20 * 15, 0.25));
+}
+
+TEST(Stock, RefusesAGridTooLargeForMemoryAndSaysHowMuch) {
+  const auto problem = gridProblem({125.0, 112.0, 2.0}, 0.002);
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_NE(problem->find("GiB"), std::string::npos) << *problem;
+  EXPECT_FALSE(gridProblem({125.0, 112.0, 2.0}, 0.1).has_value());
+  EXPECT_TRUE(gridProblem({125.0, 112.0, 2.0}, 0.0).has_value());
+}
+
+}  // namespace
+}  // namespace lathesim::sim
