@@ -1,0 +1,37 @@
+#include "app/report.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace lathesim::app {
+
+void writeReportJson(const RunFigures& f, const std::filesystem::path& file) {
+  nlohmann::ordered_json report;
+  report["program"] = f.program;
+  report["setup"] = f.setup;
+  report["voxel_mm"] = f.voxelMm;
+  report["stock_volume_mm3"] = f.stockVolumeMm3;
+  report["final_volume_mm3"] = f.finalVolumeMm3;
+  report["removed_volume_mm3"] = f.stockVolumeMm3 - f.finalVolumeMm3;
+  report["mesh_volume_mm3"] = f.meshVolumeMm3;
+  report["mesh_triangles"] = f.meshTriangles;
+  report["moves"] = f.moves;
+  auto& collisions = report["collisions"] = nlohmann::ordered_json::array();
+  for (const auto& c : f.simulation.collisions)
+    collisions.push_back({{"line", c.line}, {"column", c.column}, {"kind", c.kind}, {"volume_mm3", c.volumeMm3}});
+  auto& blocks = report["blocks"] = nlohmann::ordered_json::array();
+  for (const auto& b : f.simulation.blocks)
+    blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}});
+  auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
+  for (const auto& w : f.warnings) warnings.push_back({{"line", w.line}, {"column", w.column}, {"message", w.message}});
+  report["timing_s"] = {{"parse", f.timing.parseS},
+                        {"simulate", f.timing.simulateS},
+                        {"mesh", f.timing.meshS},
+                        {"render", f.timing.renderS}};
+  std::ofstream out(file);
+  out << report.dump(2) << '\n';
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+}  // namespace lathesim::app

@@ -1,0 +1,33 @@
+#pragma once
+// report.json: what a run measured, for people and for other tools.
+
+#include <filesystem>
+#include <string>
+
+#include "interp/diagnostic.hpp"
+#include "interp/move.hpp"
+#include "sim/simulate.hpp"
+
+namespace lathesim::app {
+
+struct RunTimings {
+  double parseS = 0, simulateS = 0, meshS = 0, renderS = 0;
+};
+
+struct RunFigures {
+  std::string program;
+  std::string setup;
+  double voxelMm = 0;
+  double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
+  double finalVolumeMm3 = 0;  // measured on the level set after the program
+  double meshVolumeMm3 = 0;   // the exported mesh's enclosed volume, as a cross-check
+  std::size_t meshTriangles = 0;
+  std::size_t moves = 0;
+  sim::SimulationResult simulation;
+  std::vector<interp::Diagnostic> warnings;
+  RunTimings timing;
+};
+
+void writeReportJson(const RunFigures& figures, const std::filesystem::path& file);
+
+}  // namespace lathesim::app

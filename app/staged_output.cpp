@@ -1,0 +1,28 @@
+#include "app/staged_output.hpp"
+
+#include <unistd.h>
+
+namespace lathesim::app {
+
+StagedOutput::StagedOutput(std::filesystem::path folder) : folder_(std::move(folder)) {
+  std::filesystem::create_directories(folder_);
+}
+
+StagedOutput::~StagedOutput() {
+  std::error_code ignored;
+  for (const auto& [temp, final] : staged_) std::filesystem::remove(temp, ignored);
+}
+
+std::filesystem::path StagedOutput::stage(const std::string& name) {
+  // The temporary keeps the real extension: some writers choose their format by it.
+  const auto temp = folder_ / (".tmp-" + std::to_string(getpid()) + "-" + name);
+  staged_.emplace_back(temp, folder_ / name);
+  return temp;
+}
+
+void StagedOutput::commit() {
+  for (const auto& [temp, final] : staged_) std::filesystem::rename(temp, final);
+  staged_.clear();
+}
+
+}  // namespace lathesim::app

@@ -1,0 +1,27 @@
+#pragma once
+// Output files appear whole or not at all: each is written under a temporary name in the
+// output folder and renamed into place only when every file of the run is complete.
+
+#include <filesystem>
+#include <vector>
+
+namespace lathesim::app {
+
+class StagedOutput {
+ public:
+  explicit StagedOutput(std::filesystem::path folder);
+  ~StagedOutput();  // removes whatever was staged but not committed
+  StagedOutput(const StagedOutput&) = delete;
+  StagedOutput& operator=(const StagedOutput&) = delete;
+
+  /// Where to write the file that will become `folder/name`.
+  std::filesystem::path stage(const std::string& name);
+  /// Renames every staged file into place.
+  void commit();
+
+ private:
+  std::filesystem::path folder_;
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temp, final
+};
+
+}  // namespace lathesim::app
