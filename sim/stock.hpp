@@ -14,6 +14,8 @@
 
 namespace lathesim::sim {
 
+struct StockGrid;  // the OpenVDB side, in stock_grid.hpp
+
 /// Narrow band half-width, in voxels, on each side of the surface.
 inline constexpr int kHalfBandVoxels = 3;
 
@@ -54,8 +56,7 @@ class Stock {
   std::uint64_t memoryBytes() const;
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<StockGrid> impl_;
 };
 
 }  // namespace lathesim::sim

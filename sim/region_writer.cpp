@@ -1,0 +1,388 @@
+// Writing a revolved region into the stock's level set, touching as little as possible.
+//
+// The work that cannot be avoided is proportional to the surface a cut creates or passes,
+// so the grid is visited coarse to fine: 128³ blocks the region cannot reach are skipped,
+// blocks it covers entirely become one tile, and only the leaves (8³ voxels) near the
+// region's boundary are written voxel by voxel. Reading and writing voxels runs in
+// parallel; changing the tree's shape (adding leaves and tiles) is serial, as OpenVDB
+// requires, but only links nodes that were prepared in parallel.
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <vector>
+
+#include "sim/stock_grid.hpp"
+
+namespace lathesim::sim {
+namespace {
+
+double squared(double v) { return v * v; }
+
+enum class Action {
+  Update,   // an existing leaf the region's boundary passes through
+  Densify,  // a tile the region's boundary passes through: becomes a leaf first
+  Fill,     // a leaf or tile the region covers entirely: becomes one tile
+};
+
+struct Task {
+  Coord origin;
+  int level = 1;  // tree level of a Fill: 1 = one leaf's extent, 2 = a 128³ block
+  Action action = Action::Update;
+  Leaf* leaf = nullptr;      // Update: the leaf; Densify: the leaf made for the tile
+  float tileValue = 0.0f;    // Densify: the value the new leaf starts from
+  double insideBefore = 0;   // Fill: material voxels it held before
+};
+
+class RegionWriter {
+ public:
+  RegionWriter(StockGrid& stock, const RevolvedRegion& region, RegionWrite how)
+      : stock_(stock), region_(region), h_(stock.voxel), bg_(stock.background),
+        sign_(how == RegionWrite::Add ? 1.0 : -1.0), removing_(how == RegionWrite::Remove),
+        leafReach_(0.5 * std::sqrt(3.0) * (kLeafDim - 1) * h_ + bg_),
+        blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_) {}
+
+  double run() {
+    std::vector<Task> tasks = classify();
+    std::vector<Leaf*> leaves = restructure(tasks);
+    std::vector<double> insideLost = writeVoxels(leaves);
+    if (removing_) clearGhostSheets(leaves, insideLost);
+    pruneUniformLeaves(leaves);
+    for (double lost : insideLost) insideLostTotal_ += lost;
+    return insideLostTotal_ * h_ * h_ * h_;
+  }
+
+ private:
+  // u = sign·φ, so that both writes read u ← min(u, ψ): "filled" is u = −bg.
+  double u(float phi) const { return sign_ * phi; }
+  float filledValue() const { return static_cast<float>(-sign_ * bg_); }
+
+  double distanceAtCentre(const Coord& origin, int dim, double cap) const {
+    const double half = 0.5 * (dim - 1);
+    const double x = (origin.x() + half) * h_, y = (origin.y() + half) * h_;
+    return region_.signedDistance(std::sqrt(x * x + y * y), (origin.z() + half) * h_, cap);
+  }
+
+  openvdb::CoordBBox candidateBox() const {
+    const double rMax = region_.maxRadius() + blockReach_;
+    openvdb::CoordBBox box(Coord(stock_.toIndexFloor(-rMax), stock_.toIndexFloor(-rMax),
+                                 stock_.toIndexFloor(region_.lowerBound().y() - blockReach_)),
+                           Coord(stock_.toIndexCeil(rMax), stock_.toIndexCeil(rMax),
+                                 stock_.toIndexCeil(region_.upperBound().y() + blockReach_)));
+    if (removing_) box.intersect(stock_.materialBounds);  // nothing to remove outside it
+    return box;
+  }
+
+  double node1InsideVoxels(const Node1* node, float tileValue) const {
+    if (!node) return insideFraction(tileValue, h_) * Node1::NUM_VOXELS;
+    double sum = 0.0;
+    for (auto it = node->cbeginChildOn(); it; ++it) sum += stock_.leafInsideVoxels(*it);
+    for (auto it = node->cbeginValueAll(); it; ++it) sum += insideFraction(*it, h_) * Leaf::NUM_VOXELS;
+    return sum;
+  }
+
+  // 1. Which blocks and leaves the region changes, and how (parallel, read-only).
+  std::vector<Task> classify() const {
+    const openvdb::CoordBBox box = candidateBox();
+    if (box.empty()) return {};
+    std::vector<Coord> blocks;
+    const auto alignDown = [](int i, int dim) { return i & ~(dim - 1); };
+    for (int x = alignDown(box.min().x(), kNode1Dim); x <= box.max().x(); x += kNode1Dim)
+      for (int y = alignDown(box.min().y(), kNode1Dim); y <= box.max().y(); y += kNode1Dim)
+        for (int z = alignDown(box.min().z(), kNode1Dim); z <= box.max().z(); z += kNode1Dim) blocks.emplace_back(x, y, z);
+
+    tbb::enumerable_thread_specific<std::vector<Task>> found;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size(), 1), [&](const auto& range) {
+      auto accessor = stock_.grid->getAccessor();
+      auto& tasks = found.local();
+      for (std::size_t b = range.begin(); b != range.end(); ++b) {
+        const Coord& block = blocks[b];
+        const double psi = distanceAtCentre(block, kNode1Dim, blockReach_ + h_);
+        if (psi > blockReach_) continue;  // out of reach
+        const Node1* node = accessor.template probeConstNode<Node1>(block);
+        const float tile = accessor.getValue(block);
+        if (!node && u(tile) <= -bg_) continue;  // already entirely in the region's state
+        if (psi < -blockReach_) {
+          if (removing_) tasks.push_back({block, 2, Action::Fill, nullptr, 0.0f, node1InsideVoxels(node, tile)});
+          continue;  // when adding, interiors are flood-filled afterwards
+        }
+        classifyLeaves(block, box, accessor, tasks);
+      }
+    });
+    std::vector<Task> tasks;
+    for (auto& list : found) tasks.insert(tasks.end(), list.begin(), list.end());
+    return tasks;
+  }
+
+  template <typename Accessor>
+  void classifyLeaves(const Coord& block, const openvdb::CoordBBox& box, Accessor& accessor, std::vector<Task>& tasks) const {
+    // 32³ sub-blocks first: a surface crosses a 128³ block as a sheet, so most of its
+    // 4096 leaves lie far from it and are dismissed 64 at a time.
+    constexpr int kSub = 4 * kLeafDim;
+    const double subReach = 0.5 * std::sqrt(3.0) * (kSub - 1) * h_ + bg_;
+    for (int sx = block.x(); sx < block.x() + kNode1Dim; sx += kSub)
+      for (int sy = block.y(); sy < block.y() + kNode1Dim; sy += kSub)
+        for (int sz = block.z(); sz < block.z() + kNode1Dim; sz += kSub) {
+          const Coord sub(sx, sy, sz);
+          if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
+          // Wholly outside the region: nothing to do. Wholly inside: its leaves are only
+          // filled, which adding leaves to the flood fill; removing fills them one by one.
+          const double psi = distanceAtCentre(sub, kSub, subReach + h_);
+          if (psi > subReach || (psi < -subReach && !removing_)) continue;
+          classifyLeavesOf(sub, kSub, box, accessor, tasks);
+        }
+  }
+
+  template <typename Accessor>
+  void classifyLeavesOf(const Coord& block, int dim, const openvdb::CoordBBox& box, Accessor& accessor,
+                        std::vector<Task>& tasks) const {
+    const double rhoMax = region_.maxRadius() + leafReach_;
+    const double rhoMin = region_.lowerBound().x() > 0.0 ? region_.lowerBound().x() - leafReach_ : -1.0;
+    for (int x = block.x(); x < block.x() + dim; x += kLeafDim)
+      for (int y = block.y(); y < block.y() + dim; y += kLeafDim) {
+        // A column of leaves whose footprint lies wholly inside or outside the ring the
+        // region sweeps is skipped before any distance is taken.
+        const double x0 = x * h_, x1 = (x + kLeafDim - 1) * h_, y0 = y * h_, y1 = (y + kLeafDim - 1) * h_;
+        const double nearX = std::clamp(0.0, x0, x1), nearY = std::clamp(0.0, y0, y1);
+        const double farX = std::max(std::abs(x0), std::abs(x1)), farY = std::max(std::abs(y0), std::abs(y1));
+        if (std::sqrt(nearX * nearX + nearY * nearY) > rhoMax || std::sqrt(farX * farX + farY * farY) < rhoMin) continue;
+        for (int z = block.z(); z < block.z() + dim; z += kLeafDim) {
+          const Coord origin(x, y, z);
+          if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
+          const double psi = distanceAtCentre(origin, kLeafDim, leafReach_ + h_);
+          if (psi > leafReach_) continue;
+          Leaf* leaf = accessor.probeLeaf(origin);
+          const float tile = leaf ? 0.0f : accessor.getValue(origin);
+          if (!leaf && u(tile) <= -bg_) continue;
+          const Reach reach = std::abs(psi) < leafReach_ ? reachOfQuarters(origin) : psi > 0 ? Reach::None : Reach::Covers;
+          if (reach == Reach::None) continue;
+          if (reach == Reach::Covers) {
+            if (removing_)
+              tasks.push_back({origin, 1, Action::Fill, nullptr, 0.0f,
+                               leaf ? stock_.leafInsideVoxels(*leaf) : insideFraction(tile, h_) * Leaf::NUM_VOXELS});
+            continue;
+          }
+          tasks.push_back({origin, 1, leaf ? Action::Update : Action::Densify, leaf, tile, 0.0});
+        }
+      }
+  }
+
+  enum class Reach { None, Partly, Covers };
+
+  // A finer look at a leaf the coarse test could not decide: the distance at the centres of
+  // its eight 4³ quarters, each with its own (smaller) reach.
+  Reach reachOfQuarters(const Coord& origin) const {
+    const double quarterReach = 0.5 * std::sqrt(3.0) * 3.0 * h_ + bg_;
+    bool allBeyond = true, allCovered = true;
+    for (int q = 0; q < 8; ++q) {
+      const Coord quarter = origin.offsetBy((q & 1) * 4, ((q >> 1) & 1) * 4, ((q >> 2) & 1) * 4);
+      const double psi = distanceAtCentre(quarter, 4, quarterReach + h_);
+      allBeyond &= psi > quarterReach;
+      allCovered &= psi < -quarterReach;
+    }
+    return allBeyond ? Reach::None : allCovered ? Reach::Covers : Reach::Partly;
+  }
+
+  // 2. Change the tree's shape. Tasks come grouped by 128³ block (classify() emits a
+  //    block's tasks together); each block's node is separate memory, so once the nodes
+  //    exist (serial, one per block), blocks are restructured in parallel.
+  std::vector<Leaf*> restructure(std::vector<Task>& tasks) {
+    struct BlockTasks {
+      std::size_t begin, end;
+      Node1* node = nullptr;
+    };
+    std::vector<BlockTasks> blocks;
+    const auto blockOf = [](const Coord& c) { return c & ~(kNode1Dim - 1); };
+    for (std::size_t t = 0; t < tasks.size(); ++t)
+      if (tasks[t].level == 2) blocks.push_back({t, t + 1});
+      else if (blocks.empty() || tasks[blocks.back().begin].level == 2 ||
+               blockOf(tasks[blocks.back().begin].origin) != blockOf(tasks[t].origin))
+        blocks.push_back({t, t + 1});
+      else blocks.back().end = t + 1;
+
+    auto accessor = stock_.grid->getAccessor();
+    const double filledFraction = insideFraction(filledValue(), h_);
+    for (BlockTasks& block : blocks) {
+      const Task& first = tasks[block.begin];
+      if (first.level == 2) {  // a whole block filled: one tile, no node needed
+        insideLostTotal_ += first.insideBefore - filledFraction * Node1::NUM_VOXELS;
+        accessor.addTile(2, first.origin, filledValue(), false);
+        continue;
+      }
+      block.node = accessor.template probeNode<Node1>(first.origin);
+      if (!block.node) {  // the block is a tile: split it into a node holding the tile's value
+        accessor.addTile(1, first.origin, accessor.getValue(first.origin), accessor.isValueOn(first.origin));
+        block.node = accessor.template probeNode<Node1>(first.origin);
+      }
+    }
+
+    std::vector<std::vector<Leaf*>> leavesOf(blocks.size());
+    std::vector<double> lostOf(blocks.size(), 0.0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size()), [&](const auto& range) {
+      for (std::size_t b = range.begin(); b != range.end(); ++b) {
+        if (!blocks[b].node) continue;
+        Node1& node = *blocks[b].node;
+        for (std::size_t t = blocks[b].begin; t != blocks[b].end; ++t) {
+          Task& task = tasks[t];
+          switch (task.action) {
+            case Action::Fill:
+              lostOf[b] += task.insideBefore - filledFraction * Leaf::NUM_VOXELS;
+              node.addTile(1, task.origin, filledValue(), false);
+              break;
+            case Action::Densify:
+              task.leaf = new Leaf(task.origin, task.tileValue, false);
+              node.addLeaf(task.leaf);  // the tree owns it from here
+              leavesOf[b].push_back(task.leaf);
+              break;
+            case Action::Update:
+              leavesOf[b].push_back(task.leaf);
+              break;
+          }
+        }
+      }
+    });
+    std::vector<Leaf*> leaves;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+      insideLostTotal_ += lostOf[b];
+      leaves.insert(leaves.end(), leavesOf[b].begin(), leavesOf[b].end());
+    }
+    return leaves;
+  }
+
+  // 3. u ← min(u, ψ) voxel by voxel (parallel: leaves are independent). Returns, per leaf,
+  //    the material voxels lost, summed over the voxels that changed.
+  std::vector<double> writeVoxels(const std::vector<Leaf*>& leaves) {
+    changed_.assign(leaves.size(), Leaf::NodeMaskType());
+    std::vector<double> insideLost(leaves.size(), 0.0);
+    // A change smaller than this is rounding between the stock's float values and the
+    // region's double distance (a tool running along a face it cut before), not a cut.
+    const double noChange = 1e-5 * h_;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
+      for (std::size_t l = range.begin(); l != range.end(); ++l) {
+        Leaf& leaf = *leaves[l];
+        const Coord o = leaf.origin();
+        const RevolvedRegion local = region_.near(std::sqrt(squared((o.x() + 3.5) * h_) + squared((o.y() + 3.5) * h_)),
+                                                  (o.z() + 3.5) * h_, leafReach_);
+        if (local.empty()) continue;
+        double lost = 0.0;
+        for (int i = 0; i < kLeafDim; ++i) {
+          const double x = (o.x() + i) * h_;
+          for (int j = 0; j < kLeafDim; ++j) {
+            const openvdb::Index column = (i << 6) | (j << 3);  // LeafNode<float, 3>::coordToOffset
+            bool anyOpen = false;  // a voxel not yet as deep in the region's state as the band allows
+            for (int k = 0; k < kLeafDim; ++k) anyOpen |= u(leaf.getValue(column + k)) > -bg_;
+            if (!anyOpen) continue;
+            double psi[RevolvedRegion::kColumn];
+            local.signedDistanceColumn(std::sqrt(x * x + squared((o.y() + j) * h_)), o.z() * h_, h_, bg_, psi);
+            for (int k = 0; k < kLeafDim; ++k) {
+              const openvdb::Index n = column + k;
+              const float old = leaf.getValue(n);
+              if (u(old) <= -bg_ || psi[k] >= u(old) - noChange) continue;
+              const double uNew = std::max(psi[k], -static_cast<double>(bg_));
+              const auto value = static_cast<float>(sign_ * uNew);
+              leaf.setValueOnly(n, value);
+              leaf.setActiveState(n, std::abs(uNew) < bg_);
+              changed_[l].setOn(n);
+              lost += insideFraction(old, h_) - insideFraction(value, h_);
+            }
+          }
+        }
+        insideLost[l] = lost;
+      }
+    });
+    return insideLost;
+  }
+
+  // 4. Coincident faces of two cuts leave "ghost sheets": voxels at φ ≈ 0 (± rounding)
+  //    with air on both sides. They would count as partly full voxels and, where rounding
+  //    makes them negative, mesh as paper-thin walls. A voxel that is not clearly material
+  //    (φ > −ε) and has no 6-neighbour that clearly is becomes plain air. Real surfaces
+  //    keep their voxels: a face through voxel centres has material one voxel away. Only
+  //    voxels this cut changed, and only those that could count (φ < h/2) or mesh (φ < 0),
+  //    are looked at: a ghost is always made by a cut.
+  void clearGhostSheets(const std::vector<Leaf*>& leaves, std::vector<double>& insideLost) {
+    const auto notMaterial = static_cast<float>(-1e-3 * h_);
+    const auto mightCount = static_cast<float>(0.5 * h_);
+    std::vector<std::vector<openvdb::Index>> ghostsOf(leaves.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
+      auto accessor = stock_.grid->getConstAccessor();
+      for (std::size_t l = range.begin(); l != range.end(); ++l) {
+        const Leaf& leaf = *leaves[l];
+        for (auto it = changed_[l].beginOn(); it; ++it) {
+          const openvdb::Index n = it.pos();
+          const float value = leaf.getValue(n);
+          if (value <= notMaterial || value >= mightCount) continue;
+          const int local[3] = {int(n >> 6), int((n >> 3) & 7), int(n & 7)};
+          const openvdb::Index stride[3] = {64, 8, 1};
+          bool touchesMaterial = false;
+          for (int axis = 0; axis < 3 && !touchesMaterial; ++axis)
+            for (int step : {-1, 1}) {
+              const int moved = local[axis] + step;
+              float neighbour;
+              if (moved >= 0 && moved < kLeafDim) {
+                neighbour = leaf.getValue(step > 0 ? n + stride[axis] : n - stride[axis]);
+              } else {
+                Coord q = leaf.offsetToGlobalCoord(n);
+                q[axis] += step;
+                neighbour = accessor.getValue(q);
+              }
+              if (neighbour <= notMaterial) {
+                touchesMaterial = true;
+                break;
+              }
+            }
+          if (!touchesMaterial) ghostsOf[l].push_back(n);
+        }
+      }
+    });
+    // Cleared only once all are found: the search reads neighbouring leaves.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
+      for (std::size_t l = range.begin(); l != range.end(); ++l)
+        for (openvdb::Index n : ghostsOf[l]) {
+          insideLost[l] += insideFraction(leaves[l]->getValue(n), h_);
+          leaves[l]->setValueOff(n, bg_);
+        }
+    });
+  }
+
+  // 5. Leaves that ended uniform (all air, or all deep material) become tiles.
+  void pruneUniformLeaves(const std::vector<Leaf*>& leaves) {
+    std::vector<char> uniform(leaves.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
+      for (std::size_t l = range.begin(); l != range.end(); ++l) {
+        float first;
+        bool active;
+        uniform[l] = leaves[l]->isConstant(first, active, 0.0f) && !active && std::abs(first) >= bg_;
+      }
+    });
+    auto accessor = stock_.grid->getAccessor();
+    for (std::size_t l = 0; l < leaves.size(); ++l) {
+      if (!uniform[l]) continue;
+      // Copies: addTile takes references and deletes the leaf they would point into.
+      const Coord origin = leaves[l]->origin();
+      const float value = leaves[l]->getFirstValue();
+      accessor.addTile(1, origin, value, false);
+    }
+  }
+
+  StockGrid& stock_;
+  const RevolvedRegion& region_;
+  const double h_;
+  const float bg_;
+  const double sign_;
+  const bool removing_;
+  const double leafReach_;   // a leaf whose centre is farther than this from the boundary is untouched
+  const double blockReach_;  // the same for a 128³ block
+  std::vector<Leaf::NodeMaskType> changed_;  // per leaf: voxels this write changed
+  double insideLostTotal_ = 0.0;
+};
+
+}  // namespace
+
+double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how) {
+  if (region.empty()) return 0.0;
+  return RegionWriter(stock, region, how).run();
+}
+
+}  // namespace lathesim::sim

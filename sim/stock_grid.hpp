@@ -1,0 +1,51 @@
+#pragma once
+// Inside sim only: the OpenVDB grid behind Stock, shared by the files that work on it.
+// Including this header costs OpenVDB's compile time; keep it out of public headers.
+
+#include <openvdb/openvdb.h>
+
+#include <algorithm>
+
+#include "geometry/revolved_region.hpp"
+#include "sim/stock.hpp"
+
+namespace lathesim::sim {
+
+using Grid = openvdb::FloatGrid;
+using Tree = Grid::TreeType;
+using Leaf = Tree::LeafNodeType;                 // 8³ voxels
+using Node1 = Tree::RootNodeType::ChildNodeType::ChildNodeType;  // 128³ voxels, 16³ leaves
+using openvdb::Coord;
+
+inline constexpr int kLeafDim = static_cast<int>(Leaf::DIM);    // 8
+inline constexpr int kNode1Dim = static_cast<int>(Node1::DIM);  // 128
+
+/// The share of a voxel inside the material: a ramp one voxel wide across φ = 0, exact
+/// for a plane and unbiased on average for any smooth surface.
+inline double insideFraction(float value, double voxel) { return std::clamp(0.5 - value / voxel, 0.0, 1.0); }
+
+struct StockGrid {
+  StockSpec spec;
+  double voxel;
+  float background;  // narrow-band half-width in mm: |φ| is clamped to it
+  Grid::Ptr grid;
+  openvdb::CoordBBox materialBounds;  // index box that contains all material, now and later
+
+  StockGrid(const StockSpec& s, double voxelMm);
+
+  int toIndexFloor(double mm) const;
+  int toIndexCeil(double mm) const;
+  double leafInsideVoxels(const Leaf& leaf) const;
+};
+
+/// How a region is written into the level set.
+enum class RegionWrite {
+  Add,     // φ ← min(φ, ψ): the region becomes material (builds the bar)
+  Remove,  // φ ← max(φ, −ψ): the region becomes air (cuts)
+};
+
+/// Writes `region` into the stock's grid; returns the volume that stopped being material
+/// (mm³; negative when material was added). See region_writer.cpp.
+double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how);
+
+}  // namespace lathesim::sim
