@@ -25,6 +25,7 @@ void writeReportJson(const RunFigures& f, const std::filesystem::path& file) {
     blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}});
   auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
   for (const auto& w : f.warnings) warnings.push_back({{"line", w.line}, {"column", w.column}, {"message", w.message}});
+  report["peak_memory_mb"] = f.peakMemoryMb;
   report["timing_s"] = {{"parse", f.timing.parseS},
                         {"simulate", f.timing.simulateS},
                         {"mesh", f.timing.meshS},

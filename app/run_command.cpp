@@ -1,3 +1,5 @@
+#include <sys/resource.h>
+
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -48,7 +50,7 @@ int runCommand(const RunOptions& options) {
     std::cerr << "lathesim: error: " << *problem << '\n';
     return 1;
   }
-  figures.program = options.program.filename().string();
+  figures.program = options.program.string();
   figures.setup = job->setup.sourceName;
   figures.voxelMm = voxel;
   figures.moves = job->toolpath.moves.size();
@@ -81,6 +83,9 @@ int runCommand(const RunOptions& options) {
   image.title = figures.program;
   render::writePartImagePng(part, job->toolpath, image, out.stage("part.png"));
   figures.timing.renderS = clock.lap();
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  figures.peakMemoryMb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB
   writeReportJson(figures, out.stage("report.json"));
   out.commit();
 

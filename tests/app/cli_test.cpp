@@ -1,0 +1,402 @@
+// The lathesim command itself, run as a user runs it: its exit status, what it prints, and
+// the files it writes (or does not write). Every test works in its own temporary folder.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <toml++/toml.h>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "interp/toolpath_csv.hpp"
+
+namespace lathesim::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kBinary = LATHESIM_BINARY;
+const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+/// A fresh folder under the system's temporary directory, removed with everything in it.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& tag) {
+    static int counter = 0;
+    path_ = fs::temp_directory_path() /
+            ("lathesim-cli-" + tag + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+struct Outcome {
+  int status = -1;  // the exit status, or -1 if the process did not exit normally
+  std::string out;
+  std::string err;
+};
+
+std::string quoted(const std::string& arg) {
+  std::string q = "'";
+  for (char c : arg) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Runs lathesim with `args`, capturing stdout and stderr through files in `scratch`.
+Outcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
+  const fs::path outFile = scratch / "stdout.txt";
+  const fs::path errFile = scratch / "stderr.txt";
+  std::string command = quoted(kBinary.string());
+  for (const auto& arg : args) command.append(" ").append(quoted(arg));
+  command.append(" >").append(quoted(outFile.string()));
+  command.append(" 2>").append(quoted(errFile.string()));
+  const int raw = std::system(command.c_str());
+  Outcome outcome;
+  if (raw != -1 && WIFEXITED(raw)) outcome.status = WEXITSTATUS(raw);
+  outcome.out = readFile(outFile);
+  outcome.err = readFile(errFile);
+  fs::remove(outFile);
+  fs::remove(errFile);
+  return outcome;
+}
+
+/// The same bound as parts_test: 5 % of a voxel layer over the bar's whole surface.
+double volumeToleranceMm3(double diameterMm, double lengthMm, double voxelMm) {
+  const double r = diameterMm / 2.0;
+  return 0.05 * voxelMm * (2.0 * M_PI * r * r + 2.0 * M_PI * r * lengthMm);
+}
+
+double expectedFinalVolumeMm3(const std::string& part) {
+  const toml::table table = toml::parse_file((kPartsDir / part / "expected.toml").string());
+  return table["final_volume_mm3"].value<double>().value();
+}
+
+std::vector<interp::CsvRow> goldenToolpath(const std::string& part) {
+  std::ifstream in(kPartsDir / part / "toolpath.csv");
+  return interp::readToolpathCsv(in);
+}
+
+void expectSameRows(const std::vector<interp::CsvRow>& actual, const std::vector<interp::CsvRow>& golden) {
+  ASSERT_EQ(actual.size(), golden.size());
+  for (std::size_t i = 0; i < golden.size(); ++i) {
+    SCOPED_TRACE(testing::Message() << "row " << i + 1);
+    EXPECT_EQ(actual[i].line, golden[i].line);
+    EXPECT_EQ(actual[i].kind, golden[i].kind);
+    EXPECT_NEAR(actual[i].x0, golden[i].x0, 1e-9);
+    EXPECT_NEAR(actual[i].z0, golden[i].z0, 1e-9);
+    EXPECT_NEAR(actual[i].x1, golden[i].x1, 1e-9);
+    EXPECT_NEAR(actual[i].z1, golden[i].z1, 1e-9);
+    EXPECT_NEAR(actual[i].feed, golden[i].feed, 1e-9);
+  }
+}
+
+/// Nothing was written: the folder does not exist, or it is empty.
+bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_empty(folder); }
+
+// ---------------------------------------------------------------------------------------
+// `lathesim run` on seed001-taper-r24 at 0.25 mm: one run, shared by the tests below.
+
+constexpr const char* kPart = "seed001-taper-r24";
+constexpr double kVoxelMm = 0.25;
+// Seed 001's bar: Φ50 × 60 (parts/seed001-taper-r24/setup.toml).
+const double kTolerance = volumeToleranceMm3(50.0, 60.0, kVoxelMm);
+
+class RunSeed001 : public testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir("run");
+    out_ = dir_->path() / "out";
+    outcome_ = new Outcome(lathesim({"run", (kPartsDir / kPart / "program.nc").string(), "--setup",
+                                     (kPartsDir / kPart / "setup.toml").string(), "--out", out_.string(),
+                                     "--voxel", "0.25"},
+                                    dir_->path()));
+  }
+  static void TearDownTestSuite() {
+    delete outcome_;
+    delete dir_;
+  }
+  void SetUp() override { ASSERT_EQ(outcome_->status, 0) << outcome_->err; }
+
+  static nlohmann::json report() { return nlohmann::json::parse(readFile(out_ / "report.json")); }
+
+  static TempDir* dir_;
+  static fs::path out_;
+  static Outcome* outcome_;
+};
+
+TempDir* RunSeed001::dir_ = nullptr;
+fs::path RunSeed001::out_;
+Outcome* RunSeed001::outcome_ = nullptr;
+
+TEST_F(RunSeed001, WritesExactlyTheSixOutputs) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(out_)) names.insert(entry.path().filename().string());
+  const std::set<std::string> expected{"part.stl", "part.png", "toolpath.csv", "toolpath.vtp", "stock.vdb",
+                                       "report.json"};
+  EXPECT_EQ(names, expected);  // no staged .tmp-* file left behind
+  for (const auto& name : expected) EXPECT_GT(fs::file_size(out_ / name), 0u) << name;
+}
+
+TEST_F(RunSeed001, ReportHasTheRunsFigures) {
+  const nlohmann::json r = report();
+  // The program as given on the command line (or its file name: either names it).
+  EXPECT_EQ(fs::path(r.at("program").get<std::string>()).filename(), "program.nc");
+  EXPECT_EQ(r.at("voxel_mm").get<double>(), 0.25);
+  // The untouched Φ50 × 60 bar: 37500 π.
+  EXPECT_NEAR(r.at("stock_volume_mm3").get<double>(), 37500.0 * M_PI, kTolerance);
+  const double finalVolume = r.at("final_volume_mm3").get<double>();
+  EXPECT_NEAR(finalVolume, expectedFinalVolumeMm3(kPart), kTolerance);
+  EXPECT_NEAR(r.at("removed_volume_mm3").get<double>(), r.at("stock_volume_mm3").get<double>() - finalVolume,
+              1e-6);
+  EXPECT_NEAR(r.at("removed_volume_mm3").get<double>(), 13000.0 / 3.0 * M_PI, kTolerance);
+
+  std::ifstream csv(out_ / "toolpath.csv");
+  const auto csvRows = interp::readToolpathCsv(csv);
+  EXPECT_EQ(r.at("moves").get<std::size_t>(), csvRows.size());
+  EXPECT_EQ(r.at("moves").get<std::size_t>(), 5u);
+  EXPECT_EQ(r.at("collisions"), nlohmann::json::array());
+
+  const auto& blocks = r.at("blocks");
+  ASSERT_TRUE(blocks.is_array());
+  ASSERT_FALSE(blocks.empty());
+  double blocksRemoved = 0;
+  for (const auto& block : blocks) {
+    EXPECT_TRUE(block.at("line").is_number_integer());
+    blocksRemoved += block.at("removed_volume_mm3").get<double>();
+  }
+  // Line 2 (the G94) does all the cutting; the blocks' removals add up to the total.
+  EXPECT_EQ(blocks.back().at("line"), 2);
+  EXPECT_NEAR(blocksRemoved, r.at("removed_volume_mm3").get<double>(), kTolerance);
+
+  const auto& timing = r.at("timing_s");
+  for (const char* stage : {"parse", "simulate", "mesh", "render"}) {
+    ASSERT_TRUE(timing.contains(stage)) << stage;
+    EXPECT_GE(timing.at(stage).get<double>(), 0.0) << stage;
+  }
+}
+
+TEST_F(RunSeed001, ToolpathCsvIsTheGoldenToolpath) {
+  std::ifstream in(out_ / "toolpath.csv");
+  expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart));
+}
+
+/// A binary STL's triangles, as read from the file.
+using Vertex = std::array<float, 3>;
+using Triangle = std::array<Vertex, 3>;
+
+std::vector<Triangle> readBinaryStl(const std::string& bytes) {
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, 4);
+  std::vector<Triangle> triangles(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(i) + 12;  // past the normal
+    for (int v = 0; v < 3; ++v) std::memcpy(triangles[i][v].data(), facet + 12 * v, 12);
+  }
+  return triangles;
+}
+
+TEST_F(RunSeed001, PartStlIsClosedAndHoldsTheExpectedVolume) {
+  const std::string bytes = readFile(out_ / "part.stl");
+  ASSERT_GE(bytes.size(), 84u);
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, 4);
+  ASSERT_GT(count, 0u);
+  ASSERT_EQ(bytes.size(), 84u + 50u * count);
+  const std::vector<Triangle> triangles = readBinaryStl(bytes);
+
+  // Weld by exact position, then every undirected edge must be used by exactly two
+  // triangles, once in each direction: closed and consistently oriented.
+  std::map<Vertex, int> ids;
+  const auto id = [&](const Vertex& v) { return ids.emplace(v, static_cast<int>(ids.size())).first->second; };
+  std::map<std::pair<int, int>, int> directed;
+  int degenerate = 0;
+  for (const Triangle& t : triangles) {
+    const std::array<int, 3> v{id(t[0]), id(t[1]), id(t[2])};
+    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) ++degenerate;
+    for (int k = 0; k < 3; ++k) ++directed[{v[k], v[(k + 1) % 3]}];
+  }
+  EXPECT_EQ(degenerate, 0);
+  int badEdges = 0;
+  for (const auto& [edge, uses] : directed) {
+    const auto reverse = directed.find({edge.second, edge.first});
+    if (uses != 1 || reverse == directed.end() || reverse->second != 1) ++badEdges;
+  }
+  EXPECT_EQ(badEdges, 0) << "of " << directed.size() << " directed edges";
+
+  // Divergence theorem: V = Σ v0 · (v1 × v2) / 6 over outward-oriented triangles.
+  double volume = 0;
+  for (const Triangle& t : triangles) {
+    const auto& a = t[0];
+    const auto& b = t[1];
+    const auto& c = t[2];
+    const double cx = double(b[1]) * c[2] - double(b[2]) * c[1];
+    const double cy = double(b[2]) * c[0] - double(b[0]) * c[2];
+    const double cz = double(b[0]) * c[1] - double(b[1]) * c[0];
+    volume += (a[0] * cx + a[1] * cy + a[2] * cz) / 6.0;
+  }
+  EXPECT_NEAR(volume, expectedFinalVolumeMm3(kPart), kTolerance);
+}
+
+std::uint32_t bigEndian32(const std::string& bytes, std::size_t at) {
+  std::uint32_t value = 0;
+  for (int i = 0; i < 4; ++i) value = (value << 8) | static_cast<unsigned char>(bytes[at + i]);
+  return value;
+}
+
+TEST_F(RunSeed001, PartPngIs1600By1200) {
+  const std::string bytes = readFile(out_ / "part.png");
+  ASSERT_GE(bytes.size(), 24u);
+  EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(bytes.substr(12, 4), "IHDR");  // the first chunk
+  EXPECT_EQ(bigEndian32(bytes, 16), 1600u);
+  EXPECT_EQ(bigEndian32(bytes, 20), 1200u);
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad input: exit status 1, the diagnostic on stderr, nothing written.
+
+TEST(Cli, BadNumberIsReportedWithItsLocationAndCaretAndWritesNothing) {
+  TempDir dir("bad");
+  const fs::path program = dir.path() / "bad.nc";
+  writeFile(program, "G00 X60 Z5;\nG00 X20.3. Z5;\n");
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", program.string(), "--out", out.string(), "--voxel", "0.5"}, dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  const auto lines = linesOf(outcome.err);
+  ASSERT_GE(lines.size(), 3u) << outcome.err;
+  EXPECT_EQ(lines[0], program.string() +
+                         ":2:5: error: malformed number in X20.3.: expected an optional sign, then digits with "
+                         "at most one decimal point");
+  EXPECT_EQ(lines[1], "G00 X20.3. Z5;");
+  EXPECT_EQ(lines[2], "    ^");  // under the X at column 5
+  EXPECT_TRUE(noOutputs(out));
+}
+
+// The O0006 part (parts/seed004-o0006): with W = +3 alarms at N40's R word.
+TEST(Cli, O0006AlarmsAtN40AndWritesNothing) {
+  TempDir dir("o0006");
+  const fs::path program = kPartsDir / "seed004-o0006" / "program.nc";
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", program.string(), "--setup", (kPartsDir / "seed004-o0006" / "setup.toml").string(),
+                                    "--out", out.string(), "--voxel", "0.5"},
+                                   dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  const auto lines = linesOf(outcome.err);
+  ASSERT_GE(lines.size(), 3u) << outcome.err;
+  EXPECT_EQ(lines[0].rfind(program.string() + ":5:21: error: R-5.5 and W3 have opposite signs and |R| > |W|", 0), 0u)
+      << lines[0];
+  EXPECT_EQ(lines[1], "N40 G94 X20 .0 Z5.0 R-5 .5 F100;");
+  EXPECT_EQ(lines[2], std::string(20, ' ') + "^");
+  EXPECT_TRUE(noOutputs(out));
+}
+
+TEST(Cli, ExpandPrintsExactlyTheGoldenToolpath) {
+  TempDir dir("expand");
+  const Outcome outcome = lathesim({"expand", (kPartsDir / kPart / "program.nc").string(), "--setup",
+                                    (kPartsDir / kPart / "setup.toml").string()},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const auto lines = linesOf(outcome.out);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], "line,kind,x0,z0,x1,z1,feed");
+  std::istringstream in(outcome.out);
+  expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart));
+  EXPECT_EQ(lines.size(), 1 + goldenToolpath(kPart).size());  // nothing else on stdout
+}
+
+TEST(Cli, UnknownSetupKeyIsNamedAndWritesNothing) {
+  TempDir dir("setup");
+  const fs::path setup = dir.path() / "setup.toml";
+  writeFile(setup, "[stock]\ndiameter = 50\nlength = 60\nface_z = 0\ncolour = \"red\"\n");
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", (kPartsDir / kPart / "program.nc").string(), "--setup", setup.string(),
+                                    "--out", out.string(), "--voxel", "0.5"},
+                                   dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("unknown key 'stock.colour'"), std::string::npos) << outcome.err;
+  EXPECT_EQ(outcome.err.rfind(setup.string() + ":5:", 0), 0u) << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+}
+
+TEST(Cli, VoxelTooFineForMemoryIsRefusedAndWritesNothing) {
+  TempDir dir("voxel");
+  const fs::path out = dir.path() / "out";
+  // No --setup: the default Φ125 × 112 bar, which at 1 µm would need terabytes.
+  const Outcome outcome = lathesim(
+      {"run", (kPartsDir / "seed000-face-taper" / "program.nc").string(), "--out", out.string(), "--voxel", "0.001"},
+      dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("lathesim: error: a 0.001 mm voxel needs about"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("GiB"), std::string::npos) << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+}
+
+// Seed 001's bar (Φ50, face Z0). The tool goes to X54 Z5, clear of the bar, then rapids
+// straight to X30 Z-10. The default tool's body lies at r ≥ tip, z ≥ tip and contains the
+// square [1, 10] × [1, 10] mm from the tip, so at the end of the rapid it alone fills the
+// ring r 16..25, Z-9..0 of the bar: π (25² − 16²) · 9 ≈ 10433 mm³, and the sweep more.
+TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
+  TempDir dir("rapid");
+  const fs::path program = dir.path() / "rapid.nc";
+  writeFile(program, "G00 X54 Z5;\nG00 X30 Z-10;\n");
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", program.string(), "--setup", (kPartsDir / kPart / "setup.toml").string(),
+                                    "--out", out.string(), "--voxel", "0.5"},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;  // a collision is a finding, not bad input
+  const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
+  const auto& collisions = r.at("collisions");
+  ASSERT_EQ(collisions.size(), 1u) << collisions.dump();
+  EXPECT_EQ(collisions[0].at("line"), 2);
+  EXPECT_EQ(collisions[0].at("kind"), "rapid_into_stock");
+  const double ringMm3 = M_PI * (25.0 * 25.0 - 16.0 * 16.0) * 9.0;
+  EXPECT_GT(collisions[0].at("volume_mm3").get<double>(), ringMm3 - volumeToleranceMm3(50, 60, 0.5));
+  EXPECT_NEAR(collisions[0].at("volume_mm3").get<double>(), r.at("removed_volume_mm3").get<double>(),
+              volumeToleranceMm3(50, 60, 0.5));
+}
+
+}  // namespace
+}  // namespace lathesim::app
