@@ -27,6 +27,7 @@ RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
   for (const ConvexPolygon& polygon : polygons) {
     const auto& v = polygon.vertices();
     Piece piece;
+    piece.isArea = v.size() >= 3;
     // Across the axis the mirror image counts too, unless it is the polygon itself (a
     // bar's section): then measuring it again would only repeat the same numbers.
     piece.crossesAxis = polygon.lowerBound().x() < 0.0 && !isSymmetricAboutAxis(polygon);
@@ -52,7 +53,7 @@ RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
 }
 
 double RevolvedRegion::pieceDistance(const Piece& piece, double r, double z, double cap) {
-  const bool isArea = piece.edges.size() >= 3;
+  const bool isArea = piece.isArea;
   if (isArea) {
     double maxLine = -std::numeric_limits<double>::infinity();
     for (const Edge& e : piece.edges) maxLine = std::max(maxLine, e.nx * (r - e.ax) + e.nz * (z - e.az));
@@ -87,7 +88,7 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
   double line[kColumn];
   double zOffset[kColumn];
   for (int k = 0; k < kColumn; ++k) zOffset[k] = z0 + dz * k;
-  const bool isArea = piece.edges.size() >= 3;
+  const bool isArea = piece.isArea;
   for (int k = 0; k < kColumn; ++k) line[k] = isArea ? -std::numeric_limits<double>::infinity() : 0.0;
   if (isArea)
     for (const Edge& e : piece.edges) {
@@ -138,7 +139,21 @@ RevolvedRegion RevolvedRegion::near(double rho, double z, double radius) const {
   for (const Piece& piece : pieces_) {
     double d = pieceDistance(piece, rho, z, radius + 1.0);
     if (piece.crossesAxis) d = std::min(d, pieceDistance(piece, -rho, z, radius + 1.0));
-    if (d <= radius) subset.pieces_.push_back(piece);
+    if (d > radius) continue;
+    if (!piece.isArea || piece.crossesAxis) {
+      subset.pieces_.push_back(piece);
+      continue;
+    }
+    // Inside a convex polygon the distance is set by the edge line farthest out; outside,
+    // the nearest point lies on that edge too (or on a vertex it shares). An edge whose line
+    // is more than 2·radius behind the farthest one at the centre cannot become the
+    // farthest anywhere within radius (each line distance changes by at most radius).
+    double farthest = -std::numeric_limits<double>::infinity();
+    for (const Edge& e : piece.edges) farthest = std::max(farthest, e.nx * (rho - e.ax) + e.nz * (z - e.az));
+    Piece kept{{}, true, false};
+    for (const Edge& e : piece.edges)
+      if (e.nx * (rho - e.ax) + e.nz * (z - e.az) >= farthest - 2.0 * radius) kept.edges.push_back(e);
+    subset.pieces_.push_back(std::move(kept));
   }
   return subset;
 }

@@ -31,8 +31,9 @@ class RevolvedRegion {
   void signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const;
 
   /// The part of this region that matters within `radius` of (ρ, z): the pieces that come
-  /// that close. Evaluating it there gives the same values as the whole region wherever
-  /// they are ≤ radius minus the distance to (ρ, z); a leaf's voxels are evaluated with it.
+  /// that close, and of each only the edges that can be nearest there. Evaluating it there
+  /// gives the same values as the whole region wherever they are ≤ radius minus the
+  /// distance to (ρ, z); a leaf's voxels are evaluated with it.
   RevolvedRegion near(double rho, double z, double radius) const;
 
   RZ lowerBound() const { return lower_; }  // bounds of the polygons (r may be negative)
@@ -51,7 +52,8 @@ class RevolvedRegion {
   };
   struct Piece {
     std::vector<Edge> edges;
-    bool crossesAxis;
+    bool isArea;       // a polygon with area (else a point or segment: plain distance)
+    bool crossesAxis;  // its mirror image across the axis counts as well
   };
   static double pieceDistance(const Piece& piece, double r, double z, double cap);
   static void pieceDistanceColumn(const Piece& piece, double r, double z0, double dz, double cap,

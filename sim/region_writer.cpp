@@ -127,15 +127,16 @@ class RegionWriter {
           const Coord sub(sx, sy, sz);
           if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
           // Wholly outside the region: nothing to do. Wholly inside: its leaves are only
-          // filled, which adding leaves to the flood fill; removing fills them one by one.
+          // filled, which adding leaves to the flood fill; removing fills them one by one,
+          // with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
           if (psi > subReach || (psi < -subReach && !removing_)) continue;
-          classifyLeavesOf(sub, kSub, box, accessor, tasks);
+          classifyLeavesOf(sub, kSub, box, psi < -subReach, accessor, tasks);
         }
   }
 
   template <typename Accessor>
-  void classifyLeavesOf(const Coord& block, int dim, const openvdb::CoordBBox& box, Accessor& accessor,
+  void classifyLeavesOf(const Coord& block, int dim, const openvdb::CoordBBox& box, bool covered, Accessor& accessor,
                         std::vector<Task>& tasks) const {
     const double rhoMax = region_.maxRadius() + leafReach_;
     const double rhoMin = region_.lowerBound().x() > 0.0 ? region_.lowerBound().x() - leafReach_ : -1.0;
@@ -150,7 +151,7 @@ class RegionWriter {
         for (int z = block.z(); z < block.z() + dim; z += kLeafDim) {
           const Coord origin(x, y, z);
           if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
-          const double psi = distanceAtCentre(origin, kLeafDim, leafReach_ + h_);
+          const double psi = covered ? -leafReach_ - 1.0 : distanceAtCentre(origin, kLeafDim, leafReach_ + h_);
           if (psi > leafReach_) continue;
           Leaf* leaf = accessor.probeLeaf(origin);
           const float tile = leaf ? 0.0f : accessor.getValue(origin);
@@ -265,24 +266,26 @@ class RegionWriter {
         const RevolvedRegion local = region_.near(std::sqrt(squared((o.x() + 3.5) * h_) + squared((o.y() + 3.5) * h_)),
                                                   (o.z() + 3.5) * h_, leafReach_);
         if (local.empty()) continue;
+        float* values = leaf.buffer().data();  // written in place: the loop is the hot path
+        auto& activeMask = leaf.getValueMask();
         double lost = 0.0;
         for (int i = 0; i < kLeafDim; ++i) {
           const double x = (o.x() + i) * h_;
           for (int j = 0; j < kLeafDim; ++j) {
             const openvdb::Index column = (i << 6) | (j << 3);  // LeafNode<float, 3>::coordToOffset
             bool anyOpen = false;  // a voxel not yet as deep in the region's state as the band allows
-            for (int k = 0; k < kLeafDim; ++k) anyOpen |= u(leaf.getValue(column + k)) > -bg_;
+            for (int k = 0; k < kLeafDim; ++k) anyOpen |= u(values[column + k]) > -bg_;
             if (!anyOpen) continue;
             double psi[RevolvedRegion::kColumn];
             local.signedDistanceColumn(std::sqrt(x * x + squared((o.y() + j) * h_)), o.z() * h_, h_, bg_, psi);
             for (int k = 0; k < kLeafDim; ++k) {
               const openvdb::Index n = column + k;
-              const float old = leaf.getValue(n);
+              const float old = values[n];
               if (u(old) <= -bg_ || psi[k] >= u(old) - noChange) continue;
               const double uNew = std::max(psi[k], -static_cast<double>(bg_));
               const auto value = static_cast<float>(sign_ * uNew);
-              leaf.setValueOnly(n, value);
-              leaf.setActiveState(n, std::abs(uNew) < bg_);
+              values[n] = value;
+              activeMask.set(n, std::abs(uNew) < bg_);
               changed_[l].setOn(n);
               lost += insideFraction(old, h_) - insideFraction(value, h_);
             }
@@ -313,26 +316,7 @@ class RegionWriter {
           const openvdb::Index n = it.pos();
           const float value = leaf.getValue(n);
           if (value <= notMaterial || value >= mightCount) continue;
-          const int local[3] = {int(n >> 6), int((n >> 3) & 7), int(n & 7)};
-          const openvdb::Index stride[3] = {64, 8, 1};
-          bool touchesMaterial = false;
-          for (int axis = 0; axis < 3 && !touchesMaterial; ++axis)
-            for (int step : {-1, 1}) {
-              const int moved = local[axis] + step;
-              float neighbour;
-              if (moved >= 0 && moved < kLeafDim) {
-                neighbour = leaf.getValue(step > 0 ? n + stride[axis] : n - stride[axis]);
-              } else {
-                Coord q = leaf.offsetToGlobalCoord(n);
-                q[axis] += step;
-                neighbour = accessor.getValue(q);
-              }
-              if (neighbour <= notMaterial) {
-                touchesMaterial = true;
-                break;
-              }
-            }
-          if (!touchesMaterial) ghostsOf[l].push_back(n);
+          if (!touchesMaterial(leaf, n, notMaterial, accessor)) ghostsOf[l].push_back(n);
         }
       }
     });
@@ -344,6 +328,32 @@ class RegionWriter {
           leaves[l]->setValueOff(n, bg_);
         }
     });
+  }
+
+  // Whether a 6-neighbour of voxel n is clearly material. Neighbours inside the leaf are
+  // read first; the tree is asked only for those across its faces, and only if needed.
+  template <typename Accessor>
+  static bool touchesMaterial(const Leaf& leaf, openvdb::Index n, float notMaterial, Accessor& accessor) {
+    const float* values = leaf.buffer().data();
+    const int local[3] = {int(n >> 6), int((n >> 3) & 7), int(n & 7)};
+    constexpr openvdb::Index stride[3] = {64, 8, 1};
+    bool crossesFace = false;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (local[axis] > 0 && values[n - stride[axis]] <= notMaterial) return true;
+      if (local[axis] < kLeafDim - 1 && values[n + stride[axis]] <= notMaterial) return true;
+      crossesFace |= local[axis] == 0 || local[axis] == kLeafDim - 1;
+    }
+    if (!crossesFace) return false;
+    const Coord p = leaf.offsetToGlobalCoord(n);
+    for (int axis = 0; axis < 3; ++axis)
+      for (int step : {-1, 1}) {
+        const int moved = local[axis] + step;
+        if (moved >= 0 && moved < kLeafDim) continue;
+        Coord q = p;
+        q[axis] += step;
+        if (accessor.getValue(q) <= notMaterial) return true;
+      }
+    return false;
   }
 
   // 5. Leaves that ended uniform (all air, or all deep material) become tiles.

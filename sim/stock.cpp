@@ -73,8 +73,14 @@ int StockGrid::toIndexFloor(double mm) const { return static_cast<int>(std::floo
 int StockGrid::toIndexCeil(double mm) const { return static_cast<int>(std::ceil(mm / voxel)); }
 
 double StockGrid::leafInsideVoxels(const Leaf& leaf) const {
-  double sum = 0.0;
-  for (auto it = leaf.cbeginValueAll(); it; ++it) sum += insideFraction(*it, voxel);
+  // Straight over the buffer: value iterators cost several times the arithmetic here.
+  const float* values = leaf.buffer().data();
+  const float inverseVoxel = static_cast<float>(1.0 / voxel);
+  float sum = 0.0f;  // at most 512, exact enough in float
+  for (openvdb::Index n = 0; n < Leaf::NUM_VALUES; ++n) {
+    const float fraction = 0.5f - values[n] * inverseVoxel;
+    sum += fraction < 0.0f ? 0.0f : fraction > 1.0f ? 1.0f : fraction;
+  }
   return sum;
 }
 
