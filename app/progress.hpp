@@ -1,6 +1,7 @@
 #pragma once
-// Progress of a long run on a terminal ("blocks 12/40, 3.1 s"); silent when stderr is not a
-// terminal, and silent for the first second so quick runs print nothing.
+// Progress of a long run on a terminal ("simulating part.nc: blocks 12/40, 3.1 s", then
+// "meshing, 5.0 s" …); silent when stderr is not a terminal, and silent for the first
+// second so quick runs print nothing.
 
 #include <chrono>
 #include <string>
@@ -10,8 +11,10 @@ namespace lathesim::app {
 class Progress {
  public:
   explicit Progress(std::string what);
-  ~Progress();  // ends the line if anything was shown
+  ~Progress();  // calls finish()
+  void finish();  // ends the line if anything was shown
   void update(int done, int total);
+  void stage(const std::string& name);  // a step with no count, e.g. "meshing"
 
  private:
   std::string what_;
@@ -19,6 +22,7 @@ class Progress {
   std::chrono::steady_clock::time_point lastShown_;
   bool enabled_;
   bool shown_ = false;
+  void show(const std::string& state, bool force);
 };
 
 }  // namespace lathesim::app

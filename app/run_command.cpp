@@ -56,21 +56,21 @@ int runCommand(const RunOptions& options) {
   figures.moves = job->toolpath.moves.size();
   figures.warnings = job->warnings;
 
+  Progress progress(figures.program);
   sim::Stock stock(job->setup.stock, voxel);
   figures.stockVolumeMm3 = stock.volumeMm3();
-  {
-    Progress progress("simulating " + figures.program);
-    figures.simulation = sim::simulate(job->toolpath, outlinesOf(job->setup), stock,
-                                       [&](int done, int total) { progress.update(done, total); });
-  }
+  figures.simulation = sim::simulate(job->toolpath, outlinesOf(job->setup), stock,
+                                     [&](int done, int total) { progress.update(done, total); });
   figures.finalVolumeMm3 = stock.volumeMm3();
   figures.timing.simulateS = clock.lap();
 
+  progress.stage("meshing");
   const TriangleMesh part = stock.mesh(kExportAdaptivity);
   figures.meshVolumeMm3 = enclosedVolumeMm3(part);
   figures.meshTriangles = part.triangles.size();
   figures.timing.meshS = clock.lap();
 
+  progress.stage("writing STL, VDB and the render");
   StagedOutput out(options.out);
   render::writeBinaryStl(part, out.stage("part.stl"));
   {
@@ -88,6 +88,8 @@ int runCommand(const RunOptions& options) {
   figures.peakMemoryMb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB
   writeReportJson(figures, out.stage("report.json"));
   out.commit();
+  progress.stage("done");
+  progress.finish();
 
   std::cout << figures.program << ": " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << voxel

@@ -42,20 +42,6 @@ ConvexPolygon defaultOutline() {
   return *checked.polygon;  // a fixed, known-good outline
 }
 
-/// The text of 1-based line `line`, without its line ending.
-std::string textOfLine(std::string_view text, int line) {
-  if (line < 1) return {};
-  std::size_t start = 0;
-  for (int i = 1; i < line; ++i) {
-    const std::size_t newline = text.find('\n', start);
-    if (newline == std::string_view::npos) return {};
-    start = newline + 1;
-  }
-  std::size_t end = text.find('\n', start);
-  if (end == std::string_view::npos) end = text.size();
-  if (end > start && text[end - 1] == '\r') --end;
-  return std::string(text.substr(start, end - start));
-}
 
 /// A float as TOML would spell it, in the fewest digits that read back the same (-0.2, 5.0).
 std::string floatText(double value) {
@@ -107,7 +93,7 @@ class Reporter {
     d.line = static_cast<int>(where.begin.line);
     d.column = static_cast<int>(where.begin.column);
     d.message = std::move(message);
-    d.sourceLine = textOfLine(text_, d.line);
+    d.sourceLine = interp::lineOf(text_, d.line);
     diagnostics_.push_back(std::move(d));
   }
 

@@ -27,7 +27,9 @@ awk -F, '
   /^"BM_Floor\/[0-9]+\/iterations/    { split($1, a, "/"); floor[a[2]] = $3 }
   /^"BM_Simulate\/[0-9]+\/iterations/ { split($1, a, "/"); sim[a[2]] = $3 }
   END {
-    printf "%-9s %10s %12s %16s\n", "voxel_mm", "floor_s", "simulate_s", "simulate/floor"
+    # simulate = building the bar + every cut + the final volume; the cuts alone are
+    # simulate minus one floor.
+    printf "%-9s %10s %12s %16s %14s\n", "voxel_mm", "floor_s", "simulate_s", "simulate/floor", "cuts/floor"
     for (um = 200; um >= 100; um -= 100)
-      printf "%-9s %10.3f %12.3f %16.2f\n", um / 1000, floor[um], sim[um], sim[um] / floor[um]
+      printf "%-9s %10.3f %12.3f %16.2f %14.2f\n", um / 1000, floor[um], sim[um], sim[um] / floor[um], (sim[um] - floor[um]) / floor[um]
   }' "$tmp/bench.csv"

@@ -2,6 +2,8 @@
 // the files it writes (or does not write). Every test works in its own temporary folder.
 
 #include <gtest/gtest.h>
+
+#include "tests/support/golden_rows.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -119,19 +121,6 @@ std::vector<interp::CsvRow> goldenToolpath(const std::string& part) {
   return interp::readToolpathCsv(in);
 }
 
-void expectSameRows(const std::vector<interp::CsvRow>& actual, const std::vector<interp::CsvRow>& golden) {
-  ASSERT_EQ(actual.size(), golden.size());
-  for (std::size_t i = 0; i < golden.size(); ++i) {
-    SCOPED_TRACE(testing::Message() << "row " << i + 1);
-    EXPECT_EQ(actual[i].line, golden[i].line);
-    EXPECT_EQ(actual[i].kind, golden[i].kind);
-    EXPECT_NEAR(actual[i].x0, golden[i].x0, 1e-9);
-    EXPECT_NEAR(actual[i].z0, golden[i].z0, 1e-9);
-    EXPECT_NEAR(actual[i].x1, golden[i].x1, 1e-9);
-    EXPECT_NEAR(actual[i].z1, golden[i].z1, 1e-9);
-    EXPECT_NEAR(actual[i].feed, golden[i].feed, 1e-9);
-  }
-}
 
 /// Nothing was written: the folder does not exist, or it is empty.
 bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_empty(folder); }
@@ -220,7 +209,7 @@ TEST_F(RunSeed001, ReportHasTheRunsFigures) {
 
 TEST_F(RunSeed001, ToolpathCsvIsTheGoldenToolpath) {
   std::ifstream in(out_ / "toolpath.csv");
-  expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart));
+  test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv");
 }
 
 /// A binary STL's triangles, as read from the file.
@@ -343,7 +332,7 @@ TEST(Cli, ExpandPrintsExactlyTheGoldenToolpath) {
   ASSERT_FALSE(lines.empty());
   EXPECT_EQ(lines[0], "line,kind,x0,z0,x1,z1,feed");
   std::istringstream in(outcome.out);
-  expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart));
+  test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv");
   EXPECT_EQ(lines.size(), 1 + goldenToolpath(kPart).size());  // nothing else on stdout
 }
 

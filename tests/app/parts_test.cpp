@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/golden_rows.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -141,21 +143,7 @@ TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
   // (1) The golden toolpath, row by row.
   std::ifstream csv(kPartsDir / part / "toolpath.csv");
   ASSERT_TRUE(csv) << part << ": no toolpath.csv";
-  const std::vector<interp::CsvRow> golden = interp::readToolpathCsv(csv);
-  const auto& moves = result.toolpath.moves;
-  EXPECT_EQ(moves.size(), golden.size()) << part;
-  for (std::size_t i = 0; i < std::min(moves.size(), golden.size()); ++i) {
-    const interp::Move& m = moves[i];
-    const interp::CsvRow& g = golden[i];
-    SCOPED_TRACE(testing::Message() << part << "/toolpath.csv row " << i + 1 << " (line " << g.line << ")");
-    EXPECT_EQ(m.line, g.line);
-    EXPECT_EQ(interp::kindName(m.kind), g.kind);
-    EXPECT_NEAR(2.0 * m.from.x(), g.x0, 1e-9);
-    EXPECT_NEAR(m.from.y(), g.z0, 1e-9);
-    EXPECT_NEAR(2.0 * m.to.x(), g.x1, 1e-9);
-    EXPECT_NEAR(m.to.y(), g.z1, 1e-9);
-    EXPECT_NEAR(m.feed, g.feed, 1e-9);
-  }
+  test::expectSameRows(test::rowsOf(result.toolpath), interp::readToolpathCsv(csv), part + "/toolpath.csv");
 
   // (2) The volume left and removed, at two voxel sizes.
   for (const double voxel : {0.5, 0.25}) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/golden_rows.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -30,23 +32,8 @@ void expectMatchesGolden(const std::string& name) {
                                 test::defaultOptions());
   ASSERT_TRUE(result.ok()) << format(result.diagnostics.at(0));
 
-  std::stringstream written;
-  writeToolpathCsv(result.toolpath, written);
-  const auto actual = readToolpathCsv(written);
   std::ifstream goldenFile(dir / (name + ".csv"));
-  const auto expected = readToolpathCsv(goldenFile);
-
-  ASSERT_EQ(actual.size(), expected.size());
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    SCOPED_TRACE(testing::Message() << name << ".csv row " << i + 2);
-    EXPECT_EQ(actual[i].line, expected[i].line);
-    EXPECT_EQ(actual[i].kind, expected[i].kind);
-    EXPECT_NEAR(actual[i].x0, expected[i].x0, 1e-4);
-    EXPECT_NEAR(actual[i].z0, expected[i].z0, 1e-4);
-    EXPECT_NEAR(actual[i].x1, expected[i].x1, 1e-4);
-    EXPECT_NEAR(actual[i].z1, expected[i].z1, 1e-4);
-    EXPECT_NEAR(actual[i].feed, expected[i].feed, 1e-4);
-  }
+  lathesim::test::expectSameRows(lathesim::test::rowsOf(result.toolpath), readToolpathCsv(goldenFile), name + ".csv");
 }
 
 TEST(GoldenToolpath, Seed000FaceCycleExample) { expectMatchesGolden("seed000_g94"); }
