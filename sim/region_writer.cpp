@@ -254,7 +254,6 @@ class RegionWriter {
   // 3. u ← min(u, ψ) voxel by voxel (parallel: leaves are independent). Returns, per leaf,
   //    the material voxels lost, summed over the voxels that changed.
   std::vector<double> writeVoxels(const std::vector<Leaf*>& leaves) {
-    changed_.assign(leaves.size(), Leaf::NodeMaskType());
     std::vector<double> insideLost(leaves.size(), 0.0);
     // A change smaller than this is rounding between the stock's float values and the
     // region's double distance (a tool running along a face it cut before), not a cut.
@@ -286,7 +285,6 @@ class RegionWriter {
               const auto value = static_cast<float>(sign_ * uNew);
               values[n] = value;
               activeMask.set(n, std::abs(uNew) < bg_);
-              changed_[l].setOn(n);
               lost += insideFraction(old, h_) - insideFraction(value, h_);
             }
           }
@@ -297,27 +295,24 @@ class RegionWriter {
     return insideLost;
   }
 
-  // 4. Coincident faces of two cuts leave "ghost sheets": voxels at φ ≈ 0 (± rounding)
-  //    with air on both sides. They would count as partly full voxels and, where rounding
-  //    makes them negative, mesh as paper-thin walls. A voxel that is not clearly material
-  //    (φ > −ε) and has no 6-neighbour that clearly is becomes plain air. Real surfaces
-  //    keep their voxels: a face through voxel centres has material one voxel away. Only
-  //    voxels this cut changed, and only those that could count (φ < h/2) or mesh (φ < 0),
-  //    are looked at: a ghost is always made by a cut.
+  // 4. Coincident faces of two cuts leave "ghost sheets": voxels at φ ≈ 0⁺ with air on
+  //    both sides and no sign change. They would count as partly full voxels (about half
+  //    a voxel layer over the face) and, where rounding makes them negative, mesh as
+  //    paper-thin walls. A ghost is a voxel that could count (−ε < φ < h/2) while none of
+  //    its 6-neighbours lies deeper (φ smaller by more than rounding): on a real surface
+  //    the neighbour towards the material always does. A ghost lies on the boundary of
+  //    the cut that made it, so its leaf is among those this write touched; they are
+  //    scanned whole, since a sheet voxel on a face through voxel centres keeps its own
+  //    value (max(0, 0)) while only its neighbour changes.
   void clearGhostSheets(const std::vector<Leaf*>& leaves, std::vector<double>& insideLost) {
-    const auto notMaterial = static_cast<float>(-1e-3 * h_);
-    const auto mightCount = static_cast<float>(0.5 * h_);
     std::vector<std::vector<openvdb::Index>> ghostsOf(leaves.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
       auto accessor = stock_.grid->getConstAccessor();
       for (std::size_t l = range.begin(); l != range.end(); ++l) {
-        const Leaf& leaf = *leaves[l];
-        for (auto it = changed_[l].beginOn(); it; ++it) {
-          const openvdb::Index n = it.pos();
-          const float value = leaf.getValue(n);
-          if (value <= notMaterial || value >= mightCount) continue;
-          if (!touchesMaterial(leaf, n, notMaterial, accessor)) ghostsOf[l].push_back(n);
-        }
+        const float* values = leaves[l]->buffer().data();
+        for (openvdb::Index n = 0; n < Leaf::NUM_VALUES; ++n)
+          if (values[n] > notMaterial() && values[n] < ghostCeiling() && isGhost(accessor, *leaves[l], n))
+            ghostsOf[l].push_back(n);
       }
     });
     // Cleared only once all are found: the search reads neighbouring leaves.
@@ -330,20 +325,27 @@ class RegionWriter {
     });
   }
 
-  // Whether a 6-neighbour of voxel n is clearly material. Neighbours inside the leaf are
-  // read first; the tree is asked only for those across its faces, and only if needed.
+  static constexpr openvdb::Index kStride[3] = {64, 8, 1};  // offset steps along x, y, z in a leaf
+
+  float ghostCeiling() const { return static_cast<float>(0.5 * h_); }  // at and above: counts nothing
+  float notMaterial() const { return static_cast<float>(-1e-3 * h_); }
+  float rounding() const { return static_cast<float>(1e-3 * h_); }
+
+  // Voxel n of a leaf; neighbours inside the leaf are read from its buffer.
   template <typename Accessor>
-  static bool touchesMaterial(const Leaf& leaf, openvdb::Index n, float notMaterial, Accessor& accessor) {
+  bool isGhost(Accessor& accessor, const Leaf& leaf, openvdb::Index n) const {
     const float* values = leaf.buffer().data();
+    const float value = values[n];
+    if (value <= notMaterial() || value >= ghostCeiling()) return false;
+    const float deeper = value - rounding();
     const int local[3] = {int(n >> 6), int((n >> 3) & 7), int(n & 7)};
-    constexpr openvdb::Index stride[3] = {64, 8, 1};
-    bool crossesFace = false;
+    bool onFace = false;
     for (int axis = 0; axis < 3; ++axis) {
-      if (local[axis] > 0 && values[n - stride[axis]] <= notMaterial) return true;
-      if (local[axis] < kLeafDim - 1 && values[n + stride[axis]] <= notMaterial) return true;
-      crossesFace |= local[axis] == 0 || local[axis] == kLeafDim - 1;
+      if (local[axis] > 0 && values[n - kStride[axis]] < deeper) return false;
+      if (local[axis] < kLeafDim - 1 && values[n + kStride[axis]] < deeper) return false;
+      onFace |= local[axis] == 0 || local[axis] == kLeafDim - 1;
     }
-    if (!crossesFace) return false;
+    if (!onFace) return true;
     const Coord p = leaf.offsetToGlobalCoord(n);
     for (int axis = 0; axis < 3; ++axis)
       for (int step : {-1, 1}) {
@@ -351,9 +353,9 @@ class RegionWriter {
         if (moved >= 0 && moved < kLeafDim) continue;
         Coord q = p;
         q[axis] += step;
-        if (accessor.getValue(q) <= notMaterial) return true;
+        if (accessor.getValue(q) < deeper) return false;
       }
-    return false;
+    return true;
   }
 
   // 5. Leaves that ended uniform (all air, or all deep material) become tiles.
@@ -384,7 +386,6 @@ class RegionWriter {
   const bool removing_;
   const double leafReach_;   // a leaf whose centre is farther than this from the boundary is untouched
   const double blockReach_;  // the same for a 128³ block
-  std::vector<Leaf::NodeMaskType> changed_;  // per leaf: voxels this write changed
   double insideLostTotal_ = 0.0;
 };
 
