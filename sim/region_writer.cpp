@@ -10,6 +10,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -47,7 +48,10 @@ class RegionWriter {
     std::vector<Task> tasks = classify();
     std::vector<Leaf*> leaves = restructure(tasks);
     std::vector<double> insideLost = writeVoxels(leaves);
-    if (removing_) clearGhostSheets(leaves, insideLost);
+    // Only a write that changed something can leave a ghost (a grazing rapid cannot).
+    const bool changedAny = insideLostTotal_ != 0.0 || std::any_of(insideLost.begin(), insideLost.end(),
+                                                                    [](double lost) { return lost != 0.0; });
+    if (removing_ && changedAny) clearGhostSheets(leaves, insideLost);
     pruneUniformLeaves(leaves);
     for (double lost : insideLost) insideLostTotal_ += lost;
     return insideLostTotal_ * h_ * h_ * h_;
@@ -331,30 +335,25 @@ class RegionWriter {
   float notMaterial() const { return static_cast<float>(-1e-3 * h_); }
   float rounding() const { return static_cast<float>(1e-3 * h_); }
 
-  // Voxel n of a leaf; neighbours inside the leaf are read from its buffer.
+  // Voxel n of a leaf. Usually a face neighbour inside the leaf is deeper and settles it
+  // at once; otherwise all 26 neighbours are asked, since where a surface passes exactly
+  // through a voxel centre on an edge (a bar's rim meets grid points at Pythagorean
+  // radii) the material lies only diagonally. A sheet has air on both sides, diagonals
+  // included.
   template <typename Accessor>
   bool isGhost(Accessor& accessor, const Leaf& leaf, openvdb::Index n) const {
     const float* values = leaf.buffer().data();
-    const float value = values[n];
-    if (value <= notMaterial() || value >= ghostCeiling()) return false;
-    const float deeper = value - rounding();
+    const float deeper = values[n] - rounding();
     const int local[3] = {int(n >> 6), int((n >> 3) & 7), int(n & 7)};
-    bool onFace = false;
     for (int axis = 0; axis < 3; ++axis) {
       if (local[axis] > 0 && values[n - kStride[axis]] < deeper) return false;
       if (local[axis] < kLeafDim - 1 && values[n + kStride[axis]] < deeper) return false;
-      onFace |= local[axis] == 0 || local[axis] == kLeafDim - 1;
     }
-    if (!onFace) return true;
     const Coord p = leaf.offsetToGlobalCoord(n);
-    for (int axis = 0; axis < 3; ++axis)
-      for (int step : {-1, 1}) {
-        const int moved = local[axis] + step;
-        if (moved >= 0 && moved < kLeafDim) continue;
-        Coord q = p;
-        q[axis] += step;
-        if (accessor.getValue(q) < deeper) return false;
-      }
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+          if ((dx || dy || dz) && accessor.getValue(p.offsetBy(dx, dy, dz)) < deeper) return false;
     return true;
   }
 
