@@ -63,9 +63,17 @@ class RegionWriter {
   float filledValue() const { return static_cast<float>(-sign_ * bg_); }
 
   double distanceAtCentre(const Coord& origin, int dim, double cap) const {
+    return distanceAtCentre(region_, origin, dim, cap);
+  }
+  double distanceAtCentre(const RevolvedRegion& region, const Coord& origin, int dim, double cap) const {
     const double half = 0.5 * (dim - 1);
     const double x = (origin.x() + half) * h_, y = (origin.y() + half) * h_;
-    return region_.signedDistance(std::sqrt(x * x + y * y), (origin.z() + half) * h_, cap);
+    return region.signedDistance(std::sqrt(x * x + y * y), (origin.z() + half) * h_, cap);
+  }
+  RevolvedRegion near(const Coord& origin, int dim, double radius) const {
+    const double half = 0.5 * (dim - 1);
+    const double x = (origin.x() + half) * h_, y = (origin.y() + half) * h_;
+    return region_.near(std::sqrt(x * x + y * y), (origin.z() + half) * h_, radius);
   }
 
   openvdb::CoordBBox candidateBox() const {
@@ -135,13 +143,15 @@ class RegionWriter {
           // with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
           if (psi > subReach || (psi < -subReach && !removing_)) continue;
-          classifyLeavesOf(sub, kSub, box, psi < -subReach, accessor, tasks);
+          // Within the sub-block only the pieces and edges near it matter.
+          const RevolvedRegion local = near(sub, kSub, subReach + leafReach_ + h_);
+          classifyLeavesOf(local, sub, kSub, box, psi < -subReach, accessor, tasks);
         }
   }
 
   template <typename Accessor>
-  void classifyLeavesOf(const Coord& block, int dim, const openvdb::CoordBBox& box, bool covered, Accessor& accessor,
-                        std::vector<Task>& tasks) const {
+  void classifyLeavesOf(const RevolvedRegion& local, const Coord& block, int dim, const openvdb::CoordBBox& box,
+                        bool covered, Accessor& accessor, std::vector<Task>& tasks) const {
     const double rhoMax = region_.maxRadius() + leafReach_;
     const double rhoMin = region_.lowerBound().x() > 0.0 ? region_.lowerBound().x() - leafReach_ : -1.0;
     for (int x = block.x(); x < block.x() + dim; x += kLeafDim)
@@ -155,12 +165,12 @@ class RegionWriter {
         for (int z = block.z(); z < block.z() + dim; z += kLeafDim) {
           const Coord origin(x, y, z);
           if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
-          const double psi = covered ? -leafReach_ - 1.0 : distanceAtCentre(origin, kLeafDim, leafReach_ + h_);
+          const double psi = covered ? -leafReach_ - 1.0 : distanceAtCentre(local, origin, kLeafDim, leafReach_ + h_);
           if (psi > leafReach_) continue;
           Leaf* leaf = accessor.probeLeaf(origin);
           const float tile = leaf ? 0.0f : accessor.getValue(origin);
           if (!leaf && u(tile) <= -bg_) continue;
-          const Reach reach = std::abs(psi) < leafReach_ ? reachOfQuarters(origin) : psi > 0 ? Reach::None : Reach::Covers;
+          const Reach reach = std::abs(psi) < leafReach_ ? reachOfQuarters(local, origin) : psi > 0 ? Reach::None : Reach::Covers;
           if (reach == Reach::None) continue;
           if (reach == Reach::Covers) {
             if (removing_)
@@ -177,12 +187,12 @@ class RegionWriter {
 
   // A finer look at a leaf the coarse test could not decide: the distance at the centres of
   // its eight 4³ quarters, each with its own (smaller) reach.
-  Reach reachOfQuarters(const Coord& origin) const {
+  Reach reachOfQuarters(const RevolvedRegion& local, const Coord& origin) const {
     const double quarterReach = 0.5 * std::sqrt(3.0) * 3.0 * h_ + bg_;
     bool allBeyond = true, allCovered = true;
     for (int q = 0; q < 8; ++q) {
       const Coord quarter = origin.offsetBy((q & 1) * 4, ((q >> 1) & 1) * 4, ((q >> 2) & 1) * 4);
-      const double psi = distanceAtCentre(quarter, 4, quarterReach + h_);
+      const double psi = distanceAtCentre(local, quarter, 4, quarterReach + h_);
       allBeyond &= psi > quarterReach;
       allCovered &= psi < -quarterReach;
     }
@@ -345,11 +355,22 @@ class RegionWriter {
     const float* values = leaf.buffer().data();
     const float deeper = values[n] - rounding();
     const int local[3] = {int(n >> 6), int((n >> 3) & 7), int(n & 7)};
+    bool onLeafFace = false;
     for (int axis = 0; axis < 3; ++axis) {
       if (local[axis] > 0 && values[n - kStride[axis]] < deeper) return false;
       if (local[axis] < kLeafDim - 1 && values[n + kStride[axis]] < deeper) return false;
+      onLeafFace |= local[axis] == 0 || local[axis] == kLeafDim - 1;
     }
     const Coord p = leaf.offsetToGlobalCoord(n);
+    if (onLeafFace)  // the face neighbours across the leaf's faces settle most of the rest
+      for (int axis = 0; axis < 3; ++axis)
+        for (int step : {-1, 1}) {
+          const int moved = local[axis] + step;
+          if (moved >= 0 && moved < kLeafDim) continue;
+          Coord q = p;
+          q[axis] += step;
+          if (accessor.getValue(q) < deeper) return false;
+        }
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz)

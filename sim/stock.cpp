@@ -114,8 +114,10 @@ double Stock::volumeMm3() const {
       },
       std::plus<double>());
   double tileVoxels = 0.0;
-  for (auto it = tree.cbeginValueOff(); it; ++it)
-    if (it.isTileValue() && *it < 0.0f) tileVoxels += static_cast<double>(it.getVoxelCount());
+  auto it = tree.cbeginValueOff();
+  it.setMaxDepth(decltype(it)::LEAF_DEPTH - 1);  // tiles only: the leaves' voxels are summed above
+  for (; it; ++it)
+    if (*it < 0.0f) tileVoxels += static_cast<double>(it.getVoxelCount());
   return (leafVoxels + tileVoxels) * h * h * h;
 }
 
