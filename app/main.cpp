@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("program", run.program, "the G-code program")->required()->check(CLI::ExistingFile);
   runCmd->add_option("--setup", runSetup, "setup file (TOML): stock, machine, tools");
   runCmd->add_option("--out", run.out, "output folder")->capture_default_str();
-  runCmd->add_option("--voxel", run.voxelMm, "voxel size in mm (overrides [sim] voxel)")->check(CLI::PositiveNumber);
+  runCmd->add_option("--voxel", run.voxelMm, "voxel size in mm (overrides [sim] voxel)");  // checked with the stock
 
   std::filesystem::path expandProgram;
   std::string expandSetup;

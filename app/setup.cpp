@@ -54,29 +54,29 @@ std::string floatText(double value) {
   return text;
 }
 
+/// A value as TOML spells it.
+std::string spelling(const toml::node& node) {
+  if (node.is_table()) return "{…}";
+  if (const auto* array = node.as_array()) {
+    std::string text("[");
+    for (std::size_t i = 0; i < array->size(); ++i) text += (i ? ", " : "") + spelling(*array->get(i));
+    return text + "]";
+  }
+  if (const auto* i = node.as_integer()) return std::to_string(i->get());
+  if (const auto* f = node.as_floating_point()) return floatText(f->get());
+  if (const auto* s = node.as_string()) return "\"" + s->get() + "\"";
+  if (const auto* b = node.as_boolean()) return std::string(b->get() ? "true" : "false");
+  std::ostringstream out;  // dates and times
+  node.visit([&out](const auto& value) {
+    if constexpr (toml::is_value<decltype(value)>) out << value;
+  });
+  return out.str();
+}
+
 /// How a value reads in a message: its TOML spelling when short, else what kind it is.
 std::string describe(const toml::node& node) {
-  std::string text;
   if (node.is_table()) return "a table";
-  if (const auto* array = node.as_array()) {
-    text = "[";
-    for (std::size_t i = 0; i < array->size(); ++i) text += (i ? ", " : "") + describe(*array->get(i));
-    text += "]";
-  } else if (const auto* i = node.as_integer()) {
-    text = std::to_string(i->get());
-  } else if (const auto* f = node.as_floating_point()) {
-    text = floatText(f->get());
-  } else if (const auto* s = node.as_string()) {
-    text = "\"" + s->get() + "\"";
-  } else if (const auto* b = node.as_boolean()) {
-    text = b->get() ? "true" : "false";
-  } else {
-    std::ostringstream out;  // dates and times
-    node.visit([&out](const auto& value) {
-      if constexpr (toml::is_value<decltype(value)>) out << value;
-    });
-    text = out.str();
-  }
+  std::string text = spelling(node);
   if (text.size() > 40) return node.is_array() ? "an array" : node.is_string() ? "a long string" : "a long value";
   return text;
 }

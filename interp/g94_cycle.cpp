@@ -6,7 +6,11 @@
 //   step 2  feed   B → C   the face (a cone when R ≠ 0)
 //   step 3  feed   C → D   back along Z to Z_A
 //   step 4  rapid  D → A   back along X; the cycle ends where it began
-// Alarm: R and W = Z_C − Z_A of opposite signs with |R| > |W|.
+// Alarm: R and W = Z_C − Z_A of opposite signs with |R| > |W|. Seed 003 (the GSK980TDi
+// English page) words the sign test against U, but its own figure cases and seed 000's
+// (U>0/U<0 with R>0, W<0, each marked |R| ≤ |W|) test R against W, and so does the
+// geometry: with opposite signs and |R| > |W| the cut B→C crosses the retract D→A.
+// We follow W; parts/seed004-o0006 is a textbook program that alarms under this rule.
 
 #include "interp/g94_cycle.hpp"
 

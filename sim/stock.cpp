@@ -21,6 +21,9 @@ namespace {
 // estimate allows for three times the bar's own.
 constexpr double kBytesPerSurfaceVoxel = 70.0;
 constexpr double kSurfaceGrowthAllowance = 3.0;
+// Below this many voxels across the bar's smaller dimension, the band (3 voxels each side)
+// swallows the part and the figures mean nothing.
+constexpr double kMinVoxelsAcrossStock = 20.0;
 
 void initializeOpenVdbOnce() {
   static std::once_flag once;
@@ -40,6 +43,13 @@ std::optional<std::string> gridProblem(const StockSpec& spec, double voxelMm) {
   if (!(voxelMm > 0.0) || !std::isfinite(voxelMm)) return "the voxel size must be a positive number of mm";
   const double longest = std::max(spec.diameterMm, spec.lengthMm);
   if (longest / voxelMm > 1.0e6) return "the stock would span more than a million voxels; use a larger voxel";
+  const double shortest = std::min(spec.diameterMm, spec.lengthMm);
+  if (shortest / voxelMm < kMinVoxelsAcrossStock) {
+    char text[160];
+    std::snprintf(text, sizeof text, "a %.3g mm voxel is too coarse for a %.3g mm stock; use at most %.3g mm",
+                  voxelMm, shortest, shortest / kMinVoxelsAcrossStock);
+    return std::string(text);
+  }
   const double needed = static_cast<double>(estimatedStockBytes(spec, voxelMm));
   const double physical = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   const double allowed = 0.6 * physical;  // the mesh and the outputs need the rest

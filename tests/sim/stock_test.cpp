@@ -103,6 +103,16 @@ TEST(Stock, RefusesAGridTooLargeForMemoryAndSaysHowMuch) {
   EXPECT_NE(problem->find("GiB"), std::string::npos) << *problem;
   EXPECT_FALSE(gridProblem({125.0, 112.0, 2.0}, 0.1).has_value());
   EXPECT_TRUE(gridProblem({125.0, 112.0, 2.0}, 0.0).has_value());
+  EXPECT_TRUE(gridProblem({125.0, 112.0, 2.0}, -0.1).has_value());
+  EXPECT_TRUE(gridProblem({125.0, 112.0, 2.0}, std::nan("")).has_value());
+}
+
+TEST(Stock, RefusesAVoxelTooCoarseForTheStock) {
+  // 20 voxels across the bar's smaller dimension at least: Φ50×30 allows 1.5 mm, not 2.
+  EXPECT_FALSE(gridProblem({50.0, 30.0, 0.0}, 1.5).has_value());
+  const auto problem = gridProblem({50.0, 30.0, 0.0}, 2.0);
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_NE(problem->find("too coarse"), std::string::npos) << *problem;
 }
 
 }  // namespace
