@@ -268,6 +268,7 @@ class RegionWriter {
   // 3. u ← min(u, ψ) voxel by voxel (parallel: leaves are independent). Returns, per leaf,
   //    the material voxels lost, summed over the voxels that changed.
   std::vector<double> writeVoxels(const std::vector<Leaf*>& leaves) {
+    ghostCandidates_.assign(leaves.size(), Leaf::NodeMaskType());
     std::vector<double> insideLost(leaves.size(), 0.0);
     // A change smaller than this is rounding between the stock's float values and the
     // region's double distance (a tool running along a face it cut before), not a cut.
@@ -294,12 +295,17 @@ class RegionWriter {
             for (int k = 0; k < kLeafDim; ++k) {
               const openvdb::Index n = column + k;
               const float old = values[n];
-              if (u(old) <= -bg_ || psi[k] >= u(old) - noChange) continue;
-              const double uNew = std::max(psi[k], -static_cast<double>(bg_));
-              const auto value = static_cast<float>(sign_ * uNew);
-              values[n] = value;
-              activeMask.set(n, std::abs(uNew) < bg_);
-              lost += insideFraction(old, h_) - insideFraction(value, h_);
+              if (u(old) <= -bg_) continue;
+              float value = old;
+              if (psi[k] < u(old) - noChange) {
+                const double uNew = std::max(psi[k], -static_cast<double>(bg_));
+                value = static_cast<float>(sign_ * uNew);
+                values[n] = value;
+                activeMask.set(n, std::abs(uNew) < bg_);
+                lost += insideFraction(old, h_) - insideFraction(value, h_);
+              }
+              // A ghost lies on this region's boundary (see clearGhostSheets).
+              if (std::abs(psi[k]) < h_ && value > notMaterial() && value < ghostCeiling()) ghostCandidates_[l].setOn(n);
             }
           }
         }
@@ -313,21 +319,18 @@ class RegionWriter {
   //    both sides and no sign change. They would count as partly full voxels (about half
   //    a voxel layer over the face) and, where rounding makes them negative, mesh as
   //    paper-thin walls. A ghost is a voxel that could count (−ε < φ < h/2) while none of
-  //    its 6-neighbours lies deeper (φ smaller by more than rounding): on a real surface
-  //    the neighbour towards the material always does. A ghost lies on the boundary of
-  //    the cut that made it, so its leaf is among those this write touched; they are
-  //    scanned whole, since a sheet voxel on a face through voxel centres keeps its own
-  //    value (max(0, 0)) while only its neighbour changes.
+  //    its 26 neighbours lies deeper (φ smaller by more than rounding): on a real surface
+  //    the neighbour towards the material always does. A ghost lies on the face the cut
+  //    shares with an earlier one, so within a voxel of this region's boundary: step 3
+  //    marks those voxels as it evaluates them — including a sheet voxel on a face through
+  //    voxel centres, which keeps its own value (max(0, 0)) while only its neighbour goes.
   void clearGhostSheets(const std::vector<Leaf*>& leaves, std::vector<double>& insideLost) {
     std::vector<std::vector<openvdb::Index>> ghostsOf(leaves.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
       auto accessor = stock_.grid->getConstAccessor();
-      for (std::size_t l = range.begin(); l != range.end(); ++l) {
-        const float* values = leaves[l]->buffer().data();
-        for (openvdb::Index n = 0; n < Leaf::NUM_VALUES; ++n)
-          if (values[n] > notMaterial() && values[n] < ghostCeiling() && isGhost(accessor, *leaves[l], n))
-            ghostsOf[l].push_back(n);
-      }
+      for (std::size_t l = range.begin(); l != range.end(); ++l)
+        for (auto it = ghostCandidates_[l].beginOn(); it; ++it)
+          if (isGhost(accessor, *leaves[l], it.pos())) ghostsOf[l].push_back(it.pos());
     });
     // Cleared only once all are found: the search reads neighbouring leaves.
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
@@ -407,6 +410,7 @@ class RegionWriter {
   const double leafReach_;   // a leaf whose centre is farther than this from the boundary is untouched
   const double blockReach_;  // the same for a 128³ block
   double insideLostTotal_ = 0.0;
+  std::vector<Leaf::NodeMaskType> ghostCandidates_;  // per leaf: voxels within a voxel of the boundary that could count
 };
 
 }  // namespace
