@@ -138,8 +138,8 @@ class RegionWriter {
         for (int sz = block.z(); sz < block.z() + kNode1Dim; sz += kSub) {
           const Coord sub(sx, sy, sz);
           if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
-          // Wholly outside the region: nothing to do. Wholly inside: its leaves are only
-          // filled, which adding leaves to the flood fill; removing fills them one by one,
+          // Wholly outside the region: nothing to do. Wholly inside: when adding, the flood
+          // fill sets its interior afterwards; when removing, each of its leaves is filled,
           // with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
           if (psi > subReach || (psi < -subReach && !removing_)) continue;
