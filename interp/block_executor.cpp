@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
 
 namespace lathesim::interp {
@@ -16,6 +19,18 @@ constexpr double kMmPerInch = 25.4;
 
 // The one place where a programmed length becomes millimetres (G20 → inch).
 double lengthMm(const Word& word, bool inch) { return inch ? word.value * kMmPerInch : word.value; }
+
+// What sets G90 and G94 apart; the rest of a single cycle (modal retention, the checks,
+// emitting its legs) is one code path for both.
+struct SingleCycle {
+  std::string_view code;  // "G90" or "G94"
+  bool taperAgainstX;     // the R alarm compares R with U (G90) or with W (G94)
+  std::vector<CycleLeg> (*legs)(const RZ& start, const RZ& end, double rMm);
+  std::optional<std::string> (*taperProblem)(double travelMm, double rMm);
+};
+
+constexpr SingleCycle kAxialCycle{"G90", true, axialCycleLegs, axialCycleTaperProblem};
+constexpr SingleCycle kFaceCycle{"G94", false, faceCycleLegs, faceCycleTaperProblem};
 
 // The axis words of a block: at most one of X/U and one of Z/W.
 struct AxisWords {
@@ -43,7 +58,7 @@ class Executor {
   Status applyCoordinateSetting(const Code& code);
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
-  Status applyFaceCycle(const std::optional<Code>& code);
+  Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep);
 
@@ -164,8 +179,8 @@ Status Executor::applyTool() {
 
 Status Executor::applyOneShot(const Code& code) {
   if (code.number == 4) return applyDwell(code);
-  // Every other one-shot code ends the G94 cycle's retained values (GSK 3.21.2 note 2).
-  state_.faceCycle = {};
+  // Every other one-shot code ends a G90/G94 cycle's retained values (GSK 3.21.2 note 2).
+  state_.cycle = {};
   if (code.number == 50) return applyCoordinateSetting(code);
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
 }
@@ -218,12 +233,20 @@ Status Executor::applyMotion() {
   if (code) {
     const MotionMode mode = code->number == 0   ? MotionMode::Rapid
                             : code->number == 1 ? MotionMode::Linear
-                                                : MotionMode::FaceCycle;
-    // Another group-01 code ends the G94 cycle's retained values (GSK 3.21.2 note 2).
-    if (mode != MotionMode::FaceCycle) state_.faceCycle = {};
+                            : code->number == 90 ? MotionMode::AxialCycle
+                                                 : MotionMode::FaceCycle;
+    // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
+    // G94 are two such codes, so switching between them clears them too. Only a cycle
+    // retains values, so naming the current mode again keeps them.
+    if (mode != state_.motion) state_.cycle = {};
     state_.motion = mode;
   }
-  if (state_.motion == MotionMode::FaceCycle) return applyFaceCycle(code);
+  switch (state_.motion) {
+    case MotionMode::AxialCycle: return applySingleCycle(kAxialCycle, code);
+    case MotionMode::FaceCycle: return applySingleCycle(kFaceCycle, code);
+    case MotionMode::Rapid:
+    case MotionMode::Linear: break;
+  }
   return applyStraightMove(code);
 }
 
@@ -248,24 +271,24 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   return success();
 }
 
-Status Executor::applyFaceCycle(const std::optional<Code>& code) {
-  // A block repeats the cycle when it names G94 or gives any of X U Z W R.
+Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code) {
+  // A block repeats the cycle when it names the cycle's code or gives any of X U Z W R.
   if (!code && !block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') &&
       !block_.has('R')) {
     return success();
   }
   const int anchor = code ? code->column : block_.column;
   if (state_.plane != Plane::ZX) {
-    return errorAt(anchor, fmt::format("G94 under {}: this machine has no Y axis, so a cycle "
+    return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
                                        "needs the ZX plane; select it with G18",
-                                       state_.plane == Plane::XY ? "G17" : "G19"));
+                                       cycle.code, state_.plane == Plane::XY ? "G17" : "G19"));
   }
   auto axes = takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
   const auto r = block_.take('R');
   const RZ start = state_.position;  // A
-  FaceCycleRetained& kept = state_.faceCycle;
+  CycleRetained& kept = state_.cycle;
 
   std::optional<double> xDiameterMm = kept.xDiameterMm;
   if (a.x) xDiameterMm = lengthMm(*a.x, state_.inch);
@@ -274,22 +297,31 @@ Status Executor::applyFaceCycle(const std::optional<Code>& code) {
   if (a.z) zMm = lengthMm(*a.z, state_.inch);
   if (a.w) zMm = start.y() + lengthMm(*a.w, state_.inch);
   if (!xDiameterMm || !zMm) {
-    return errorAt(anchor, fmt::format("G94 needs X(U) and Z(W): the end point's {} is neither "
-                                       "in this block nor kept from an earlier G94 block",
-                                       !xDiameterMm ? "X(U)" : "Z(W)"));
+    return errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
+                                       "in this block nor kept from an earlier {0} block",
+                                       cycle.code, !xDiameterMm ? "X(U)" : "Z(W)"));
   }
   const double rMm = r ? lengthMm(*r, state_.inch) : kept.rMm.value_or(0.0);
   if (!state_.feed) {
-    return errorAt(anchor, "feed rate F is not set: G94 cuts at feed; give F (e.g. F0.2 "
-                           "mm/rev) in this block or before it");
+    return errorAt(anchor, fmt::format("feed rate F is not set: {} cuts at feed; give F (e.g. "
+                                       "F0.2 mm/rev) in this block or before it",
+                                       cycle.code));
   }
-  if (auto problem = faceCycleTaperProblem(*zMm - start.y(), rMm)) {
-    const int column = r ? r->column : a.z ? a.z->column : a.w ? a.w->column : anchor;
+  // The alarm compares R with the travel U (G90, a diameter) or W (G94); without R in this
+  // block it points at that travel's word.
+  const double travelMm = cycle.taperAgainstX ? *xDiameterMm - diameterOf(start) : *zMm - start.y();
+  if (auto problem = cycle.taperProblem(travelMm, rMm)) {
+    const std::optional<Word>& absolute = cycle.taperAgainstX ? a.x : a.z;
+    const std::optional<Word>& incremental = cycle.taperAgainstX ? a.u : a.w;
+    const int column = r             ? r->column
+                       : absolute    ? absolute->column
+                       : incremental ? incremental->column
+                                     : anchor;
     return errorAt(column, *problem);
   }
-  kept = FaceCycleRetained{xDiameterMm, zMm, rMm};
+  kept = CycleRetained{xDiameterMm, zMm, rMm};
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
-  for (const CycleLeg& leg : faceCycleLegs(start, end, rMm)) {
+  for (const CycleLeg& leg : cycle.legs(start, end, rMm)) {
     emit(leg.kind, leg.from, leg.to, leg.step);
   }
   return success();  // the cycle ends at A: the position is unchanged

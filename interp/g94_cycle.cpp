@@ -23,17 +23,12 @@ namespace lathesim::interp {
 std::vector<CycleLeg> faceCycleLegs(const RZ& start, const RZ& end, double rMm) {
   const RZ b(start.x(), end.y() + rMm);
   const RZ d(end.x(), start.y());
-  const CycleLeg legs[] = {
+  return keptLegs({
       {MoveKind::Rapid, start, b, 1},
       {MoveKind::Feed, b, end, 2},
       {MoveKind::Feed, end, d, 3},
       {MoveKind::Rapid, d, start, 4},
-  };
-  std::vector<CycleLeg> kept;
-  for (const CycleLeg& leg : legs) {
-    if (leg.from != leg.to) kept.push_back(leg);
-  }
-  return kept;
+  });
 }
 
 std::optional<std::string> faceCycleTaperProblem(double wMm, double rMm) {

@@ -6,17 +6,9 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/move.hpp"
+#include "interp/cycle_leg.hpp"
 
 namespace lathesim::interp {
-
-/// One leg of a canned cycle, before the interpreter stamps tool, feed and source on it.
-struct CycleLeg {
-  MoveKind kind = MoveKind::Rapid;
-  RZ from{0, 0};
-  RZ to{0, 0};
-  int step = 0;  // 1–4
-};
 
 /// The legs of one G94 pass, zero-length legs left out.
 /// `start` is A and `end` is C, both (radius mm, Z mm); `rMm` is the taper, "Z of the cut's

@@ -31,7 +31,7 @@ constexpr std::array kGCodes{
     GCodeInfo{74, GGroup::NonModal, false, "face peck drilling cycle"},
     GCodeInfo{75, GGroup::NonModal, false, "grooving cycle"},
     GCodeInfo{76, GGroup::NonModal, false, "multiple threading cycle"},
-    GCodeInfo{90, GGroup::Motion, false, "axial cutting cycle"},
+    GCodeInfo{90, GGroup::Motion, true, "axial cutting cycle"},
     GCodeInfo{92, GGroup::Motion, false, "threading cycle"},
     GCodeInfo{94, GGroup::Motion, true, "face cutting cycle"},
     GCodeInfo{96, GGroup::SpindleMode, false, "constant surface speed"},

@@ -8,15 +8,17 @@
 
 namespace lathesim::interp {
 
-enum class MotionMode { Rapid, Linear, FaceCycle };  // group 01: G00, G01, G94
-enum class Plane { XY, ZX, YZ };                      // G17, G18, G19
+enum class MotionMode { Rapid, Linear, AxialCycle, FaceCycle };  // group 01: G00 G01 G90 G94
+enum class Plane { XY, ZX, YZ };                                  // G17, G18, G19
 
-/// The end point and taper of the last G94 block, reused by a following block that omits
-/// them. Cleared by G00/G01 and by every one-shot (group 00) code except G04.
-struct FaceCycleRetained {
+/// The end point and taper of the last G90 or G94 block, reused by a following block of the
+/// same cycle that omits them. Cleared by any other group-01 code (G00, G01, and G94 after
+/// G90 or G90 after G94) and by every one-shot (group 00) code except G04.
+struct CycleRetained {
   std::optional<double> xDiameterMm;  // absolute end X (C), a diameter
   std::optional<double> zMm;          // absolute end Z (C)
-  std::optional<double> rMm;          // taper: Z at the cut's start minus Z at its end
+  std::optional<double> rMm;          // taper: G90 radius at the cut's start minus at its end;
+                                      // G94 Z at the cut's start minus Z at its end
 };
 
 struct ModalState {
@@ -32,7 +34,7 @@ struct ModalState {
   int tool = 0;
   int toolOffset = 0;
   RZ position{0.0, 0.0};  // where the tool is, part coordinates (radius mm, Z mm)
-  FaceCycleRetained faceCycle;
+  CycleRetained cycle;
   bool ended = false;  // M02/M30 read: nothing after it runs
 };
 
