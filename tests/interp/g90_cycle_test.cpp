@@ -12,24 +12,12 @@ namespace lathesim::interp {
 namespace {
 
 using test::Expected;
+using test::expectLegs;
 using test::expectError;
 using test::expectMoves;
 using test::kFeed;
 using test::kRapid;
 using test::run;
-
-void expectLegs(const std::vector<CycleLeg>& legs, const std::vector<Expected>& expected) {
-  ASSERT_EQ(legs.size(), expected.size());
-  for (std::size_t i = 0; i < legs.size(); ++i) {
-    SCOPED_TRACE(testing::Message() << "leg " << i);
-    EXPECT_EQ(legs[i].kind, expected[i].kind);
-    EXPECT_DOUBLE_EQ(legs[i].from.x(), expected[i].r0);
-    EXPECT_DOUBLE_EQ(legs[i].from.y(), expected[i].z0);
-    EXPECT_DOUBLE_EQ(legs[i].to.x(), expected[i].r1);
-    EXPECT_DOUBLE_EQ(legs[i].to.y(), expected[i].z1);
-    EXPECT_EQ(legs[i].step, expected[i].cycleStep);
-  }
-}
 
 // Case 1: U<0 R<0, the usual OD taper. A = X60 Z2 (radius 30), C = X40 Z-20 (radius 20),
 // B = (X30, Z2) = radius 15, D = (30, -20).

@@ -11,21 +11,9 @@ namespace lathesim::interp {
 namespace {
 
 using test::Expected;
+using test::expectLegs;
 using test::kFeed;
 using test::kRapid;
-
-void expectLegs(const std::vector<CycleLeg>& legs, const std::vector<Expected>& expected) {
-  ASSERT_EQ(legs.size(), expected.size());
-  for (std::size_t i = 0; i < legs.size(); ++i) {
-    SCOPED_TRACE(testing::Message() << "leg " << i);
-    EXPECT_EQ(legs[i].kind, expected[i].kind);
-    EXPECT_DOUBLE_EQ(legs[i].from.x(), expected[i].r0);
-    EXPECT_DOUBLE_EQ(legs[i].from.y(), expected[i].z0);
-    EXPECT_DOUBLE_EQ(legs[i].to.x(), expected[i].r1);
-    EXPECT_DOUBLE_EQ(legs[i].to.y(), expected[i].z1);
-    EXPECT_EQ(legs[i].step, expected[i].cycleStep);
-  }
-}
 
 // Case 1: U>0 W<0 R<0. A = X20 Z0 (radius 10), C = X60 Z-10 (radius 30), R-5: B = (10, -15).
 TEST(FaceCycleLegs, OutwardWithNegativeTaper) {

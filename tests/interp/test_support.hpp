@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "interp/cycle_leg.hpp"
 #include "interp/interpreter.hpp"
 
 namespace lathesim::interp::test {
@@ -60,6 +61,20 @@ inline void expectError(const InterpretResult& result, int line, int column,
   EXPECT_EQ(d.line, line) << d.message;
   EXPECT_EQ(d.column, column) << d.message;
   EXPECT_NE(d.message.find(part), std::string::npos) << "message: " << d.message;
+}
+
+/// The legs of a single cycle (G90, G94) against a hand-made list.
+inline void expectLegs(const std::vector<CycleLeg>& legs, const std::vector<Expected>& expected) {
+  ASSERT_EQ(legs.size(), expected.size());
+  for (std::size_t i = 0; i < legs.size(); ++i) {
+    SCOPED_TRACE(testing::Message() << "leg " << i);
+    EXPECT_EQ(legs[i].kind, expected[i].kind);
+    EXPECT_DOUBLE_EQ(legs[i].from.x(), expected[i].r0);
+    EXPECT_DOUBLE_EQ(legs[i].from.y(), expected[i].z0);
+    EXPECT_DOUBLE_EQ(legs[i].to.x(), expected[i].r1);
+    EXPECT_DOUBLE_EQ(legs[i].to.y(), expected[i].z1);
+    EXPECT_EQ(legs[i].step, expected[i].cycleStep);
+  }
 }
 
 }  // namespace lathesim::interp::test
