@@ -1,9 +1,5 @@
 #include "render/part_image.hpp"
 
-#include <chrono>
-#include <cstdlib>
-#include <cstdio>
-
 #include <gtest/gtest.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -94,37 +90,12 @@ TEST(PartImagePng, UnwritablePathThrows) {
                std::runtime_error);
 }
 
-TEST(PartImagePng, RevolvedProfileIsClosed) {  // the helper the timing test draws
+TEST(PartImagePng, RevolvedProfileIsClosed) {  // the test helper that draws shafts
   const TriangleMesh shaft =
       test::revolved({{0, 0}, {30, 0}, {30, 20}, {22, 25}, {22, 45}, {15, 50}, {15, 60}, {0, 60}},
                      64, 3);
   EXPECT_TRUE(isClosedAndOriented(shaft));
   EXPECT_GT(enclosedVolumeMm3(shaft), 0.0);
-}
-
-// Timing for the lead, not a check: run with --gtest_also_run_disabled_tests.
-// LATHESIM_RENDER_KEEP=<path> keeps a copy of the picture.
-TEST(PartImagePng, DISABLED_MillionTrianglesTiming) {
-  // A stepped shaft of ~1 M triangles, roughed in passes of 2 mm from Ø64 bar.
-  const TriangleMesh part = test::revolved(
-      {{0, 0}, {30, 0}, {30, 20}, {22, 25}, {22, 45}, {15, 50}, {15, 60}, {0, 60}}, 1800, 40);
-  interp::Toolpath path;
-  path.programName = "shaft.nc";
-  using interp::MoveKind;
-  for (double r = 30.0; r >= 15.0; r -= 2.0) {
-    const double zEnd = r >= 22.0 ? 25.0 : 50.0;
-    path.moves.push_back(test::move(MoveKind::Rapid, 34, 64, r, 64, 10, 0));
-    path.moves.push_back(test::move(MoveKind::Feed, r, 64, r, zEnd, 11, 0.25));
-    path.moves.push_back(test::move(MoveKind::Feed, r, zEnd, r + 1, zEnd, 12, 0.25));
-    path.moves.push_back(test::move(MoveKind::Rapid, r + 1, zEnd, 34, 64, 13, 0));
-  }
-  test::TempDir dir;
-  const char* keep = std::getenv("LATHESIM_RENDER_KEEP");
-  const auto file = keep ? std::filesystem::path(keep) : dir.path() / "big.png";
-  const auto t0 = std::chrono::steady_clock::now();
-  writePartImagePng(part, path, PartImageOptions{1600, 1200, "shaft.nc"}, file);
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%zu triangles at 1600x1200: %.2f s\n", part.triangles.size(), s);
 }
 
 }  // namespace
