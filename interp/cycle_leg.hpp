@@ -1,6 +1,6 @@
 #pragma once
-// What the single cycles (G90, G94) expand into: legs, before the interpreter stamps tool,
-// feed and source on them.
+// What the cycles expand into: legs, before the interpreter stamps tool, feed and source on
+// them.
 
 #include <initializer_list>
 #include <vector>
@@ -15,7 +15,8 @@ struct CycleLeg {
   MoveKind kind = MoveKind::Rapid;
   RZ from{0, 0};
   RZ to{0, 0};
-  int step = 0;  // 1–4
+  int step = 0;       // the cycle's own step number (1–4 for G90/G94); 0 when it has none
+  RZ center{0, 0};    // arcs only
 };
 
 /// The legs in order, the zero-length ones left out.

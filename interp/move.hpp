@@ -2,6 +2,7 @@
 // The interpreter's output: primitive moves in part coordinates, each traceable to its
 // source. Every cycle is expanded into these, so sim and render never see G-code.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,18 +10,28 @@
 
 namespace lathesim::interp {
 
-enum class MoveKind { Rapid, Feed };
+// Rapid and Feed are straight. ArcCW / ArcCCW are G02 / G03: clockwise / counter-clockwise
+// in the usual drawing view (Z to the right, X up, the upper half of the part), about
+// `center`. A Dwell stands still for `dwellS` (from == to).
+enum class MoveKind { Rapid, Feed, ArcCW, ArcCCW, Dwell };
 enum class FeedMode { PerMinute, PerRevolution };  // G98 / G99 (system A)
+enum class SpindleMode { Rpm, SurfaceSpeed };      // G97 / G96
 
 struct Move {
   MoveKind kind = MoveKind::Rapid;
   RZ from{0, 0};  // (radius mm, Z mm) — halved from the programmed diameter
   RZ to{0, 0};
+  RZ center{0, 0};    // arcs only: the centre (radius mm, Z mm)
+  double dwellS = 0;  // Dwell only: seconds
   double feed = 0.0;  // in feedMode's unit (mm/min or mm/rev), converted to mm; 0 for rapids
   FeedMode feedMode = FeedMode::PerRevolution;
   int tool = 0;        // the tool number mounted (T0101 → 1)
   int toolOffset = 0;  // the offset number in force (T0101 → 1)
   bool spindleOn = false;
+  SpindleMode spindleMode = SpindleMode::Rpm;
+  double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
+  std::optional<double> spindleLimitRpm;  // G50 S, in force under G96
+  double timeS = 0;   // how long the move takes on the machine (see interp/cycle_time.hpp)
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block
   int column = 0;     // 1-based column where that block starts
@@ -34,6 +45,21 @@ struct Toolpath {
   int blockCount = 0;       // blocks read, including those that made no move
 };
 
-inline const char* kindName(MoveKind kind) { return kind == MoveKind::Rapid ? "rapid" : "feed"; }
+inline bool isArc(MoveKind kind) { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }
+
+/// Moves that cut at the programmed feed: straight feeds and arcs.
+inline bool isCutting(MoveKind kind) { return kind == MoveKind::Feed || isArc(kind); }
+
+/// The kind as toolpath.csv and reports name it.
+inline const char* kindName(MoveKind kind) {
+  switch (kind) {
+    case MoveKind::Rapid: return "rapid";
+    case MoveKind::Feed: return "feed";
+    case MoveKind::ArcCW: return "cw";
+    case MoveKind::ArcCCW: return "ccw";
+    case MoveKind::Dwell: return "dwell";
+  }
+  return "unknown";
+}
 
 }  // namespace lathesim::interp

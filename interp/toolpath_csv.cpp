@@ -9,7 +9,19 @@
 namespace lathesim::interp {
 namespace {
 
-constexpr const char* kHeader = "line,kind,x0,z0,x1,z1,feed";
+constexpr std::string_view kContractHeader = "line,kind,x0,z0,x1,z1,feed";
+constexpr std::string_view kHeader = "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s";
+
+bool knownKind(const std::string& kind) {
+  for (MoveKind k : {MoveKind::Rapid, MoveKind::Feed, MoveKind::ArcCW, MoveKind::ArcCCW, MoveKind::Dwell})
+    if (kind == kindName(k)) return true;
+  return false;
+}
+
+std::optional<double> optionalNumber(const std::string& field) {
+  if (field.empty()) return std::nullopt;
+  return std::stod(field);
+}
 
 }  // namespace
 
@@ -24,17 +36,24 @@ std::string csvNumber(double value) {
 void writeToolpathCsv(const Toolpath& toolpath, std::ostream& out) {
   out << kHeader << '\n';
   for (const Move& move : toolpath.moves) {
-    out << move.line << ',' << kindName(move.kind) << ',' << csvNumber(diameterOf(move.from))
-        << ',' << csvNumber(move.from.y()) << ',' << csvNumber(diameterOf(move.to)) << ','
-        << csvNumber(move.to.y()) << ',' << csvNumber(move.feed) << '\n';
+    out << move.line << ',' << kindName(move.kind) << ',' << csvNumber(diameterOf(move.from)) << ','
+        << csvNumber(move.from.y()) << ',' << csvNumber(diameterOf(move.to)) << ',' << csvNumber(move.to.y())
+        << ',' << csvNumber(move.feed) << ',';
+    if (isArc(move.kind)) out << csvNumber(diameterOf(move.center)) << ',' << csvNumber(move.center.y());
+    else out << ',';
+    out << ',' << csvNumber(move.timeS) << '\n';
   }
 }
 
 std::vector<CsvRow> readToolpathCsv(std::istream& in) {
   std::string text;
-  if (!std::getline(in, text) || (text != kHeader && text != std::string(kHeader) + '\r')) {
-    throw std::runtime_error(fmt::format("toolpath CSV: expected the header '{}'", kHeader));
+  if (std::getline(in, text) && !text.empty() && text.back() == '\r') text.pop_back();
+  const bool full = text == kHeader;
+  if (!full && text != kContractHeader) {
+    throw std::runtime_error(
+        fmt::format("toolpath CSV: expected the header '{}' (or its first seven columns)", kHeader));
   }
+  const std::size_t columns = full ? 10 : 7;
   std::vector<CsvRow> rows;
   int lineNumber = 1;
   while (std::getline(in, text)) {
@@ -44,15 +63,28 @@ std::vector<CsvRow> readToolpathCsv(std::istream& in) {
     std::vector<std::string> fields;
     std::stringstream stream(text);
     for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
-    if (fields.size() != 7 || (fields[1] != "rapid" && fields[1] != "feed")) {
-      throw std::runtime_error(
-          fmt::format("toolpath CSV line {}: expected 7 fields line,kind,x0,z0,x1,z1,feed with "
-                      "kind rapid or feed, got '{}'",
-                      lineNumber, text));
+    if (!text.empty() && text.back() == ',') fields.emplace_back();  // getline drops a last empty field
+    if (fields.size() != columns || !knownKind(fields[1])) {
+      throw std::runtime_error(fmt::format(
+          "toolpath CSV line {}: expected {} fields as in the header, with kind rapid, feed, cw, ccw or dwell, "
+          "got '{}'",
+          lineNumber, columns, text));
     }
     try {
-      rows.push_back({std::stoi(fields[0]), fields[1], std::stod(fields[2]), std::stod(fields[3]),
-                      std::stod(fields[4]), std::stod(fields[5]), std::stod(fields[6])});
+      CsvRow row;
+      row.line = std::stoi(fields[0]);
+      row.kind = fields[1];
+      row.x0 = std::stod(fields[2]);
+      row.z0 = std::stod(fields[3]);
+      row.x1 = std::stod(fields[4]);
+      row.z1 = std::stod(fields[5]);
+      row.feed = std::stod(fields[6]);
+      if (full) {
+        row.xc = optionalNumber(fields[7]);
+        row.zc = optionalNumber(fields[8]);
+        row.timeS = optionalNumber(fields[9]);
+      }
+      rows.push_back(row);
     } catch (const std::logic_error&) {
       throw std::runtime_error(
           fmt::format("toolpath CSV line {}: a field is not a number: '{}'", lineNumber, text));

@@ -1,10 +1,14 @@
 #pragma once
 // A Toolpath as CSV, for golden files and for people:
-//   line,kind,x0,z0,x1,z1,feed
-// one row per move; x0/x1 are DIAMETERS (as programs write X), z in mm, feed in the move's
-// feed mode unit (0 for rapids); numbers have at most 4 decimals, trailing zeros stripped.
+//   line,kind,x0,z0,x1,z1,feed,xc,zc,time_s
+// one row per move; kind rapid, feed, cw, ccw (G02/G03) or dwell; x0/x1/xc are DIAMETERS
+// (as programs write X), z in mm, feed in the move's feed mode unit (0 for rapids); xc,zc
+// the centre of an arc (empty otherwise); time_s the move's machine time. Numbers have at
+// most 4 decimals, trailing zeros stripped. The first seven columns are a contract: later
+// columns are only ever added after them, and the reader takes files with just those seven.
 
 #include <istream>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -18,6 +22,8 @@ struct CsvRow {
   std::string kind;  // "rapid" or "feed"
   double x0 = 0, z0 = 0, x1 = 0, z1 = 0;  // x as diameters, mm
   double feed = 0;
+  std::optional<double> xc, zc;  // arcs: the centre, X as a diameter
+  std::optional<double> timeS;   // absent in files with the first seven columns only
 };
 
 /// Writes the header and one row per move, in order.

@@ -27,12 +27,12 @@ TEST(ToolpathCsv, WritesDiametersOneRowPerMove) {
   std::ostringstream out;
   writeToolpathCsv(result.toolpath, out);
   EXPECT_EQ(out.str(),
-            "line,kind,x0,z0,x1,z1,feed\n"
-            "1,rapid,200,200,130,5,0\n"
-            "2,rapid,130,5,130,-110,0\n"
-            "2,feed,130,-110,120,-110,300\n"
-            "2,feed,120,-110,120,5,300\n"
-            "2,rapid,120,5,130,5,0\n");
+            "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s\n"
+            "1,rapid,200,200,130,5,0,,,0\n"
+            "2,rapid,130,5,130,-110,0,,,0\n"
+            "2,feed,130,-110,120,-110,300,,,0\n"
+            "2,feed,120,-110,120,5,300,,,0\n"
+            "2,rapid,120,5,130,5,0,,,0\n");
 }
 
 TEST(ToolpathCsv, ReadsWhatItWrote) {
@@ -53,6 +53,23 @@ TEST(ToolpathCsv, ReadsWhatItWrote) {
   EXPECT_DOUBLE_EQ(rows[1].feed, 0.25);
 }
 
+TEST(ToolpathCsv, ReadsArcCentresAndTimesOfTheFullHeader) {
+  std::istringstream in(
+      "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s\n"
+      "3,ccw,20,0,30,-5,0.1,20,-5,1.25\n"
+      "4,feed,30,-5,30,-9,0.1,,,0.5\n");
+  const auto rows = readToolpathCsv(in);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].kind, "ccw");
+  ASSERT_TRUE(rows[0].xc && rows[0].zc && rows[0].timeS);
+  EXPECT_DOUBLE_EQ(*rows[0].xc, 20);
+  EXPECT_DOUBLE_EQ(*rows[0].zc, -5);
+  EXPECT_DOUBLE_EQ(*rows[0].timeS, 1.25);
+  EXPECT_FALSE(rows[1].xc.has_value());
+  ASSERT_TRUE(rows[1].timeS.has_value());
+  EXPECT_DOUBLE_EQ(*rows[1].timeS, 0.5);
+}
+
 TEST(ToolpathCsv, RejectsMissingHeaderAndBadRows) {
   std::istringstream noHeader("1,rapid,0,0,1,1,0\n");
   EXPECT_THROW(readToolpathCsv(noHeader), std::runtime_error);
@@ -60,6 +77,8 @@ TEST(ToolpathCsv, RejectsMissingHeaderAndBadRows) {
   EXPECT_THROW(readToolpathCsv(badKind), std::runtime_error);
   std::istringstream badNumber("line,kind,x0,z0,x1,z1,feed\n1,feed,a,0,1,1,0\n");
   EXPECT_THROW(readToolpathCsv(badNumber), std::runtime_error);
+  std::istringstream shortRow("line,kind,x0,z0,x1,z1,feed,xc,zc,time_s\n1,feed,0,0,1,1,0\n");
+  EXPECT_THROW(readToolpathCsv(shortRow), std::runtime_error);
 }
 
 }  // namespace
