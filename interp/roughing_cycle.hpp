@@ -16,11 +16,13 @@ struct RoughingParams {
   double allowanceXMm = 0;    // Δu/2: finishing allowance in X as a RADIUS, signed
   double allowanceZMm = 0;    // Δw: finishing allowance in Z, signed
   bool retractAtFeed = true;  // GSK makes the 45° retract at cutting feed; Fanuc-style: rapid
+  bool typeII = false;        // the ns block programs both axes (G71: X(U) and Z(W), W0
+                              // included; G72: Z(W) and X(U)): pockets allowed
 };
 
 /// The moves of G71 from the cycle start `start` (A): roughing passes, the semi-finishing pass
-/// along the contour shifted by the allowances, and the rapid back to A. Type I or II follows
-/// from the contour (type II when its first segment moves both axes). A contour that breaks
+/// along the contour shifted by the allowances, and the rapid back to A. The infeed to each
+/// level is rapid when the ns block is G00 (contour.front().kind), at feed when G01. A contour that breaks
 /// the cycle's rules is an Error located at the offending contour block.
 Result<std::vector<CycleLeg>> turningRoughingLegs(const RZ& start, const Contour& contour,
                                                   const RoughingParams& params);
