@@ -23,14 +23,14 @@ double lengthMm(const Word& word, bool inch) { return inch ? word.value * kMmPer
 // What sets G90 and G94 apart; the rest of a single cycle (modal retention, the checks,
 // emitting its legs) is one code path for both.
 struct SingleCycle {
-  std::string_view code;  // "G90" or "G94"
+  int code;               // the system-A code, 90 or 94 (the dialect may write another)
   bool taperAgainstX;     // the R alarm compares R with U (G90) or with W (G94)
   std::vector<CycleLeg> (*legs)(const RZ& start, const RZ& end, double rMm);
   std::optional<std::string> (*taperProblem)(double travelMm, double rMm);
 };
 
-constexpr SingleCycle kAxialCycle{"G90", true, axialCycleLegs, axialCycleTaperProblem};
-constexpr SingleCycle kFaceCycle{"G94", false, faceCycleLegs, faceCycleTaperProblem};
+constexpr SingleCycle kAxialCycle{90, true, axialCycleLegs, axialCycleTaperProblem};
+constexpr SingleCycle kFaceCycle{94, false, faceCycleLegs, faceCycleTaperProblem};
 
 // The axis words of a block: at most one of X/U and one of Z/W.
 struct AxisWords {
@@ -49,7 +49,10 @@ class Executor {
   Error errorAt(int column, std::string message) const {
     return Error{block_.line, column, std::move(message)};
   }
-  Result<AxisWords> takeAxisWords();
+  // Coordinates a move or cycle goes to follow the distance mode (under G91 X and Z are
+  // incremental, like U and W); coordinates a block declares (G50) are always absolute.
+  enum class Coordinates { Target, Declared };
+  Result<AxisWords> takeAxisWords(Coordinates meaning = Coordinates::Target);
   Status applyFeed();
   Status applySpindleSpeed();
   Status applyTool();
@@ -76,6 +79,7 @@ Result<BlockOutcome> Executor::run() {
   if (auto code = block_.gCode(GGroup::FeedMode)) {
     state_.feedMode = code->number == 98 ? FeedMode::PerMinute : FeedMode::PerRevolution;
   }
+  if (auto code = block_.gCode(GGroup::Distance)) state_.incremental = code->number == kIncrementalDistance;
   if (auto code = block_.gCode(GGroup::Plane)) {
     state_.plane = code->number == 17 ? Plane::XY : code->number == 19 ? Plane::YZ : Plane::ZX;
   }
@@ -111,8 +115,14 @@ Result<BlockOutcome> Executor::run() {
   return BlockOutcome{std::move(state_), std::move(moves_)};
 }
 
-Result<AxisWords> Executor::takeAxisWords() {
+Result<AxisWords> Executor::takeAxisWords(Coordinates meaning) {
   AxisWords axes{block_.take('X'), block_.take('U'), block_.take('Z'), block_.take('W')};
+  if (state_.incremental && meaning == Coordinates::Target) {
+    // Under G91 an X word is a distance like U (and U stays one): both given is the
+    // same two-words-for-one-axis mistake as X with U, and is caught below.
+    if (axes.x && !axes.u) std::swap(axes.x, axes.u);
+    if (axes.z && !axes.w) std::swap(axes.z, axes.w);
+  }
   if (axes.x && axes.u) {
     return errorAt(std::max(axes.x->column, axes.u->column),
                    fmt::format("{} and {} both give the X axis (X absolute, U incremental); "
@@ -211,7 +221,7 @@ Status Executor::applyDwell(const Code& code) {
 
 Status Executor::applyCoordinateSetting(const Code& code) {
   // G50 X(U) Z(W): the tool is declared to stand at these part coordinates; no move.
-  auto axes = takeAxisWords();
+  auto axes = takeAxisWords(Coordinates::Declared);
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
   const auto s = block_.take('S');
@@ -272,21 +282,23 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
 }
 
 Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code) {
+  const char taperLetter = cycleTaperLetter(cycle.code, options_.dialect);
   // A block repeats the cycle when it names the cycle's code or gives any of X U Z W R.
   if (!code && !block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') &&
-      !block_.has('R')) {
+      !block_.has(taperLetter)) {
     return success();
   }
   const int anchor = code ? code->column : block_.column;
+  const std::string name = writtenGCode(cycle.code, GGroup::Motion, options_.dialect);
   if (state_.plane != Plane::ZX) {
     return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
                                        "needs the ZX plane; select it with G18",
-                                       cycle.code, state_.plane == Plane::XY ? "G17" : "G19"));
+                                       name, state_.plane == Plane::XY ? "G17" : "G19"));
   }
   auto axes = takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
-  const auto r = block_.take('R');
+  const auto r = block_.take(taperLetter);
   const RZ start = state_.position;  // A
   CycleRetained& kept = state_.cycle;
 
@@ -299,13 +311,13 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   if (!xDiameterMm || !zMm) {
     return errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
                                        "in this block nor kept from an earlier {0} block",
-                                       cycle.code, !xDiameterMm ? "X(U)" : "Z(W)"));
+                                       name, !xDiameterMm ? "X(U)" : "Z(W)"));
   }
   const double rMm = r ? lengthMm(*r, state_.inch) : kept.rMm.value_or(0.0);
   if (!state_.feed) {
     return errorAt(anchor, fmt::format("feed rate F is not set: {} cuts at feed; give F (e.g. "
                                        "F0.2 mm/rev) in this block or before it",
-                                       cycle.code));
+                                       name));
   }
   // The alarm compares R with the travel U (G90, a diameter) or W (G94); without R in this
   // block it points at that travel's word.

@@ -20,22 +20,20 @@ std::string codeText(char letter, int number) { return fmt::format("{}{:02}", le
 // A known, supported code, or the error saying why the word is not one. `info` is the table
 // entry found for the word's number (nullptr when none); `known` lists valid codes.
 template <class Info>
-Result<Code> checkedCode(const Word& word, int line, const Info* info, std::string_view known) {
+Result<Code> checkedCode(const Word& word, std::optional<int> written, int line, const Info* info,
+                         std::string_view known) {
   if (info == nullptr) {
     return Error{line, word.column,
                  fmt::format("unknown {} code {}: expected one of {}", word.letter, word.text(),
                              known)};
   }
-  const std::string text = codeText(word.letter, info->number);
+  const std::string text = codeText(word.letter, *written);
   if (!info->supported) {
     return Error{line, word.column,
                  fmt::format("{} ({}) is not supported by lathesim yet", text, info->meaning)};
   }
   return Code{info->number, text, word.column};
 }
-
-constexpr std::string_view kSupportedG = "G00 G01 G04 G17 G18 G19 G20 G21 G50 G90 G94 G97 G98 G99";
-constexpr std::string_view kSupportedM = "M02 M03 M04 M05 M08 M09 M30";
 
 Error sameGroupError(int line, const Code& first, const Code& second, std::string_view group) {
   return Error{line, second.column,
@@ -65,22 +63,23 @@ std::optional<Code> ParsedBlock::mCode(MGroup group) const {
   return found->second;
 }
 
-Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column) {
+Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column, Dialect dialect) {
   ParsedBlock block;
   block.line = line;
   block.column = column;
   for (const Word& word : words) {
     if (word.letter == 'G') {
       const auto number = codeNumber(word);
-      const GCodeInfo* info = number ? findGCode(*number) : nullptr;
-      auto code = checkedCode(word, line, info, kSupportedG);
+      const GCodeInfo* info = number ? findGCode(*number, dialect) : nullptr;
+      auto code = checkedCode(word, number, line, info,
+                              fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect)));
       if (!code.ok()) return code.error();
       const auto [where, inserted] = block.gCodes.emplace(info->group, code.value());
       if (!inserted) return sameGroupError(line, where->second, code.value(), groupName(info->group));
     } else if (word.letter == 'M') {
       const auto number = codeNumber(word);
       const MCodeInfo* info = number ? findMCode(*number) : nullptr;
-      auto code = checkedCode(word, line, info, kSupportedM);
+      auto code = checkedCode(word, number, line, info, supportedMCodes());
       if (!code.ok()) return code.error();
       const auto [where, inserted] = block.mCodes.emplace(info->group, code.value());
       if (!inserted) return sameGroupError(line, where->second, code.value(), groupName(info->group));

@@ -14,10 +14,10 @@
 
 namespace lathesim::interp {
 
-/// A G or M code as written.
+/// A G or M code: its meaning and how it was written.
 struct Code {
-  int number = 0;
-  std::string text;  // e.g. "G94"
+  int number = 0;    // the system-A code it means (gcode_table.hpp)
+  std::string text;  // as written, e.g. "G79" for fanuc-b's face cycle
   int column = 0;
 };
 
@@ -36,7 +36,9 @@ struct ParsedBlock {
   std::optional<Code> mCode(MGroup group) const;
 };
 
-/// Sorts a tokenized block. `line` and `column` locate the block's start.
-Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column);
+/// Sorts a tokenized block, reading its G codes as `dialect` writes them. `line` and
+/// `column` locate the block's start.
+Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column,
+                               Dialect dialect = Dialect::FanucA);
 
 }  // namespace lathesim::interp

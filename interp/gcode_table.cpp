@@ -1,6 +1,9 @@
 #include "interp/gcode_table.hpp"
 
 #include <array>
+#include <span>
+
+#include <fmt/format.h>
 
 namespace lathesim::interp {
 namespace {
@@ -54,13 +57,111 @@ constexpr std::array kMCodes{
     MCodeInfo{99, MGroup::Subprogram, false, "subprogram return"},
 };
 
+// Absolute / incremental distance modes: only dialects that write G90/G91 have them.
+constexpr std::array kDistanceCodes{
+    GCodeInfo{kAbsoluteDistance, GGroup::Distance, true, "absolute distance mode"},
+    GCodeInfo{kIncrementalDistance, GGroup::Distance, true, "incremental distance mode"},
+};
+
+// HNC writes the compound cycles in a one-block form of its own (e.g. G71 U R P Q X Z F):
+// the same numbers as system A with other words, which lathesim does not read yet.
+constexpr std::array kHncOwnCompoundCycles{
+    GCodeInfo{70, GGroup::NonModal, false, "finishing cycle; hnc's form is not read yet"},
+    GCodeInfo{71, GGroup::NonModal, false, "OD/ID roughing cycle in hnc's one-block form"},
+    GCodeInfo{72, GGroup::NonModal, false, "face roughing cycle in hnc's one-block form"},
+    GCodeInfo{73, GGroup::NonModal, false, "pattern repeating cycle in hnc's one-block form"},
+    GCodeInfo{74, GGroup::NonModal, false, "face peck drilling cycle in hnc's form"},
+    GCodeInfo{75, GGroup::NonModal, false, "grooving cycle in hnc's form"},
+    GCodeInfo{76, GGroup::NonModal, false, "multiple threading cycle in hnc's form"},
+};
+
+// A code a dialect writes differently from system A. `meaning` is the system-A number,
+// or one of these:
+constexpr int kNoSuchCode = -1;  // the dialect has no such code (or another, non-lathe one)
+constexpr int kAbsolute = -2;
+constexpr int kIncremental = -3;
+constexpr int kHncOwn = -4;  // see kHncOwnCompoundCycles
+struct Renumbered {
+  int written;
+  int meaning;
+};
+
+// Fanuc 0i-T G-code system B (Fanuc's table of G-code systems A/B/C).
+constexpr std::array kFanucB{
+    Renumbered{77, 90}, Renumbered{78, 92}, Renumbered{79, 94}, Renumbered{33, 32},
+    Renumbered{92, 50}, Renumbered{94, 98}, Renumbered{95, 99}, Renumbered{90, kAbsolute},
+    Renumbered{91, kIncremental}, Renumbered{32, kNoSuchCode}, Renumbered{50, kNoSuchCode},
+    Renumbered{98, kNoSuchCode}, Renumbered{99, kNoSuchCode},  // canned-drilling return levels
+};
+
+// Huazhong HNC-21T/818T lathes.
+constexpr std::array kHnc{
+    Renumbered{80, 90}, Renumbered{82, 92}, Renumbered{81, 94}, Renumbered{92, 50},
+    Renumbered{94, 98}, Renumbered{95, 99}, Renumbered{90, kAbsolute}, Renumbered{91, kIncremental},
+    Renumbered{50, kNoSuchCode}, Renumbered{98, kNoSuchCode}, Renumbered{99, kNoSuchCode},
+    Renumbered{70, kHncOwn}, Renumbered{71, kHncOwn}, Renumbered{72, kHncOwn}, Renumbered{73, kHncOwn},
+    Renumbered{74, kHncOwn}, Renumbered{75, kHncOwn}, Renumbered{76, kHncOwn},
+};
+
+std::span<const Renumbered> renumberingOf(Dialect dialect) {
+  switch (dialect) {
+    case Dialect::FanucA: return {};
+    case Dialect::FanucB: return kFanucB;
+    case Dialect::Hnc: return kHnc;
+  }
+  return {};
+}
+
+template <class Table>
+const GCodeInfo* entryNumbered(const Table& table, int number) {
+  for (const auto& code : table)
+    if (code.number == number) return &code;
+  return nullptr;
+}
+
 }  // namespace
 
-const GCodeInfo* findGCode(int number) {
-  for (const auto& code : kGCodes) {
-    if (code.number == number) return &code;
+const GCodeInfo* findGCode(int written, Dialect dialect) {
+  for (const Renumbered& r : renumberingOf(dialect)) {
+    if (r.written != written) continue;
+    switch (r.meaning) {
+      case kNoSuchCode: return nullptr;
+      case kAbsolute: return &kDistanceCodes[0];
+      case kIncremental: return &kDistanceCodes[1];
+      case kHncOwn: return entryNumbered(kHncOwnCompoundCycles, written);
+      default: return entryNumbered(kGCodes, r.meaning);
+    }
   }
-  return nullptr;
+  return entryNumbered(kGCodes, written);
+}
+
+std::string writtenGCode(int number, GGroup group, Dialect dialect) {
+  for (int written = 0; written <= 999; ++written) {
+    const GCodeInfo* info = findGCode(written, dialect);
+    if (info != nullptr && info->number == number && info->group == group) return fmt::format("G{:02}", written);
+  }
+  return fmt::format("G{:02}", number);
+}
+
+char cycleTaperLetter(int cycle, Dialect dialect) {
+  if (dialect != Dialect::Hnc) return 'R';
+  return cycle == 90 ? 'I' : 'K';
+}
+
+std::string supportedGCodes(Dialect dialect) {
+  std::string list;
+  for (int written = 0; written <= 999; ++written) {
+    const GCodeInfo* info = findGCode(written, dialect);
+    if (info != nullptr && info->supported) list += fmt::format("{}G{:02}", list.empty() ? "" : " ", written);
+  }
+  return list;
+}
+
+std::string supportedMCodes() {
+  std::string list;
+  for (const auto& code : kMCodes)
+    if (code.supported) list += fmt::format("{}M{:02}", list.empty() ? "" : " ", code.number);
+  return list;
 }
 
 const MCodeInfo* findMCode(int number) {
@@ -69,7 +170,6 @@ const MCodeInfo* findMCode(int number) {
   }
   return nullptr;
 }
-
 std::string_view groupName(GGroup group) {
   switch (group) {
     case GGroup::NonModal: return "one-shot (group 00)";
@@ -78,7 +178,8 @@ std::string_view groupName(GGroup group) {
     case GGroup::Units: return "unit (G20/G21)";
     case GGroup::NoseRadius: return "nose radius compensation";
     case GGroup::SpindleMode: return "spindle speed mode (G96/G97)";
-    case GGroup::FeedMode: return "feed mode (G98/G99)";
+    case GGroup::FeedMode: return "feed mode";
+    case GGroup::Distance: return "distance mode (absolute/incremental)";
   }
   return "unknown";
 }

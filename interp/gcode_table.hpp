@@ -1,8 +1,12 @@
 #pragma once
-// The dialect: what each G and M code means for Fanuc/GSK system A, as a table.
-// Another dialect (system B/C, Huazhong) would be another table, not scattered ifs.
+// What each G and M code means. The meanings are those of Fanuc/GSK system A; every
+// dialect is a table from the codes it writes to those meanings (interp/dialect.hpp), so a
+// Code carries the system-A number the executor acts on and the text the program wrote.
 
+#include <string>
 #include <string_view>
+
+#include "interp/dialect.hpp"
 
 namespace lathesim::interp {
 
@@ -15,7 +19,13 @@ enum class GGroup {
   NoseRadius,   // 07: G40 G41 G42
   SpindleMode,  // 02: G96 G97
   FeedMode,     // 05: G98 (mm/min) G99 (mm/rev)
+  Distance,     // 03: absolute / incremental (system B and HNC write G90 / G91; system A
+                //     has no such codes: X/Z are absolute, U/W incremental)
 };
+
+/// The numbers of the Distance group's meanings (they have no system-A code).
+inline constexpr int kAbsoluteDistance = 90;
+inline constexpr int kIncrementalDistance = 91;
 
 enum class MGroup {
   ProgramEnd,  // M02 M30
@@ -26,7 +36,7 @@ enum class MGroup {
 };
 
 struct GCodeInfo {
-  int number = 0;
+  int number = 0;  // the system-A code with this meaning (Distance group: see above)
   GGroup group = GGroup::NonModal;
   bool supported = false;  // false: a real code lathesim does not simulate yet
   std::string_view meaning;
@@ -39,8 +49,19 @@ struct MCodeInfo {
   std::string_view meaning;
 };
 
-/// The entry for G`number`, or nullptr when system A has no such code.
-const GCodeInfo* findGCode(int number);
+/// What G`written` means in `dialect`, or nullptr when the dialect has no such code.
+const GCodeInfo* findGCode(int written, Dialect dialect = Dialect::FanucA);
+
+/// How `dialect` writes the system-A code `number` of `group`, e.g. G77 for G90 in fanuc-b.
+std::string writtenGCode(int number, GGroup group, Dialect dialect);
+
+/// The word that gives a single cycle's taper: R on Fanuc and GSK, I (axial) or K (face) on
+/// HNC. `cycle` is the system-A code, 90 or 94.
+char cycleTaperLetter(int cycle, Dialect dialect);
+
+/// The codes `dialect` reads, for error messages: "G00 G01 …".
+std::string supportedGCodes(Dialect dialect);
+std::string supportedMCodes();
 
 /// The entry for M`number`, or nullptr when no such code is known.
 const MCodeInfo* findMCode(int number);

@@ -29,7 +29,7 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
 
     auto words = tokenize(raw);
     if (!words.ok()) return words.error();
-    auto parsed = parseBlock(words.value(), raw.line, raw.column);
+    auto parsed = parseBlock(words.value(), raw.line, raw.column, options.dialect);
     if (!parsed.ok()) return parsed.error();
     auto outcome = executeBlock(std::move(parsed).value(), state, options, ordinal);
     if (!outcome.ok()) return outcome.error();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "interp/diagnostic.hpp"
+#include "interp/dialect.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -15,6 +16,7 @@ struct InterpreterOptions {
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
                                    // T word. A T word naming another number is an error.
   bool blockDelete = true;         // '/' blocks are skipped when true
+  Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
 };
 
 struct InterpretResult {

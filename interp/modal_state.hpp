@@ -25,6 +25,7 @@ struct ModalState {
   MotionMode motion = MotionMode::Rapid;
   Plane plane = Plane::ZX;
   bool inch = false;  // G20; every length is converted to mm as it is read
+  bool incremental = false;  // G91 in dialects that have it: X and Z words are distances
   FeedMode feedMode = FeedMode::PerRevolution;
   std::optional<double> feed;  // mm/min (G98) or mm/rev (G99); unset until the first F
   double spindleSpeed = 0.0;   // S as given (rpm under G97)

@@ -310,7 +310,7 @@ TEST(InterpreterErrors, G94UnderG17OrG19SaysThereIsNoYAxis) {
 TEST(InterpreterErrors, CodesOfOneGroupInOneBlock) {
   expectError(run("G00 G01 X20 F0.1\n"), 1, 5,
               "G00 and G01 are both motion (group 01) codes; a block may hold only one");
-  expectError(run("G98 G99\n"), 1, 5, "G98 and G99 are both feed mode (G98/G99) codes");
+  expectError(run("G98 G99\n"), 1, 5, "G98 and G99 are both feed mode codes");
   expectError(run("M03 M05\n"), 1, 5, "M03 and M05 are both spindle codes");
 }
 
