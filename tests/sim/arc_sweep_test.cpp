@@ -92,6 +92,23 @@ TEST(ArcSweep, ConcaveFilletInOneBlockByPappus) {
   EXPECT_NEAR(result.blocks[0].removedMm3, exact, tolerance(3107.5));
 }
 
+TEST(ArcSweep, BallEndIsAHemisphere) {
+  // Bar Φ20 (r 10), Z -30 … 0. G03 X20 Z-10 R10 from X0 Z0: from (0, 0) to (10, -10) about
+  // (0, -10), a quarter turn counter-clockwise from straight right of the centre to straight
+  // above it. It leaves a hemisphere of radius 10 on the end of the bar:
+  //   removed = cylinder r 10, Z -10…0, minus the hemisphere = 1000π − (2/3)π·1000
+  //           = 1000π/3 = 1047.20 mm³
+  // Changed surfaces: the face π·100 = 314.2, the cylinder band 2π·10·10 = 628.3, the
+  // hemisphere 2π·100 = 628.3; 1570.8 mm² in all, tolerance 39.3 mm³.
+  Stock stock({20.0, 30.0, 0.0}, kVoxelMm);
+  const double before = stock.volumeMm3();
+  interp::Toolpath path;
+  path.blockCount = 1;
+  path.moves.push_back(move(interp::MoveKind::ArcCCW, {0, 0}, {10, -10}, {0, -10}));
+  simulate(path, squareTool(), stock);
+  EXPECT_NEAR(before - stock.volumeMm3(), 1000.0 * M_PI / 3.0, tolerance(1570.8));
+}
+
 TEST(ArcSweep, ArcsAreFollowedByChordsOfBoundedSagittaAndDwellsSweepNothing) {
   // Radius 5 at 0.2 mm voxels: sagitta ≤ 0.01 mm, 13 chords per quarter turn (worked out
   // in tests/geometry/arc_test.cpp).
