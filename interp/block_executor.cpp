@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "interp/arc_move.hpp"
 #include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
 
@@ -61,9 +62,12 @@ class Executor {
   Status applyCoordinateSetting(const Code& code);
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
+  Status applyArc(const std::optional<Code>& code);
+  RZ endPoint(const AxisWords& axes) const;
+  std::optional<ArcWord> arcWord(char letter);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
   Status checkAllWordsUsed() const;
-  void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep);
+  void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
 
   ParsedBlock block_;
   ModalState state_;
@@ -241,8 +245,10 @@ Status Executor::applyCoordinateSetting(const Code& code) {
 Status Executor::applyMotion() {
   const auto code = block_.gCode(GGroup::Motion);
   if (code) {
-    const MotionMode mode = code->number == 0   ? MotionMode::Rapid
-                            : code->number == 1 ? MotionMode::Linear
+    const MotionMode mode = code->number == 0    ? MotionMode::Rapid
+                            : code->number == 1  ? MotionMode::Linear
+                            : code->number == 2  ? MotionMode::ArcCW
+                            : code->number == 3  ? MotionMode::ArcCCW
                             : code->number == 90 ? MotionMode::AxialCycle
                                                  : MotionMode::FaceCycle;
     // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
@@ -254,6 +260,8 @@ Status Executor::applyMotion() {
   switch (state_.motion) {
     case MotionMode::AxialCycle: return applySingleCycle(kAxialCycle, code);
     case MotionMode::FaceCycle: return applySingleCycle(kFaceCycle, code);
+    case MotionMode::ArcCW:
+    case MotionMode::ArcCCW: return applyArc(code);
     case MotionMode::Rapid:
     case MotionMode::Linear: break;
   }
@@ -266,11 +274,7 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   const AxisWords& a = axes.value();
   if (!a.any()) return success();
   const RZ from = state_.position;
-  RZ to = from;
-  if (a.x) to.x() = lengthMm(*a.x, state_.inch) / 2.0;
-  if (a.u) to.x() += lengthMm(*a.u, state_.inch) / 2.0;
-  if (a.z) to.y() = lengthMm(*a.z, state_.inch);
-  if (a.w) to.y() += lengthMm(*a.w, state_.inch);
+  const RZ to = endPoint(a);
   const bool feed = state_.motion == MotionMode::Linear;
   if (feed && !state_.feed) {
     return errorAt(code ? code->column : block_.column,
@@ -278,6 +282,49 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   }
   emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
   state_.position = to;
+  return success();
+}
+
+RZ Executor::endPoint(const AxisWords& a) const {
+  RZ to = state_.position;
+  if (a.x) to.x() = lengthMm(*a.x, state_.inch) / 2.0;
+  if (a.u) to.x() += lengthMm(*a.u, state_.inch) / 2.0;
+  if (a.z) to.y() = lengthMm(*a.z, state_.inch);
+  if (a.w) to.y() += lengthMm(*a.w, state_.inch);
+  return to;
+}
+
+std::optional<ArcWord> Executor::arcWord(char letter) {
+  const auto word = block_.take(letter);
+  if (!word) return std::nullopt;
+  return ArcWord{word->text(), word->column, lengthMm(*word, state_.inch)};  // I: a radius
+}
+
+// G02/G03 (interp/arc_move.hpp): one arc move to the end point; nothing without axis or
+// centre words.
+Status Executor::applyArc(const std::optional<Code>& code) {
+  const bool clockwise = state_.motion == MotionMode::ArcCW;
+  const std::string_view name = clockwise ? "G02" : "G03";
+  const int anchor = code ? code->column : block_.column;
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  ArcRequest arc{name, clockwise, state_.position, endPoint(axes.value()),
+                 arcWord('R'), arcWord('I'), arcWord('K'), block_.line, anchor};
+  if (!axes.value().any() && !arc.r && !arc.i && !arc.k) return success();
+  if (state_.plane != Plane::ZX) {
+    return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so an arc "
+                                       "needs the ZX plane; select it with G18",
+                                       name, state_.plane == Plane::XY ? "G17" : "G19"));
+  }
+  if (!state_.feed) {
+    return errorAt(anchor, fmt::format("feed rate F is not set: give F (e.g. F0.2 mm/rev) "
+                                       "before the first {} move",
+                                       name));
+  }
+  const auto centre = arcCentre(arc);
+  if (!centre.ok()) return centre.error();
+  emit(clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, arc.start, arc.end, 0, centre.value());
+  state_.position = arc.end;
   return success();
 }
 
@@ -351,13 +398,14 @@ Status Executor::checkAllWordsUsed() const {
                                             first->text(), first->letter));
 }
 
-void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep) {
-  if (from == to) return;
+void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center) {
+  if (from == to && !isArc(kind)) return;  // an arc back to its start is a full circle
   Move move;
   move.kind = kind;
   move.from = from;
   move.to = to;
-  move.feed = kind == MoveKind::Feed ? *state_.feed : 0.0;
+  move.center = center;
+  move.feed = isCutting(kind) ? *state_.feed : 0.0;
   move.feedMode = state_.feedMode;
   move.tool = state_.tool;
   move.toolOffset = state_.toolOffset;

@@ -11,8 +11,8 @@ namespace {
 constexpr std::array kGCodes{
     GCodeInfo{0, GGroup::Motion, true, "rapid positioning"},
     GCodeInfo{1, GGroup::Motion, true, "linear feed"},
-    GCodeInfo{2, GGroup::Motion, false, "clockwise arc"},
-    GCodeInfo{3, GGroup::Motion, false, "counter-clockwise arc"},
+    GCodeInfo{2, GGroup::Motion, true, "clockwise arc"},
+    GCodeInfo{3, GGroup::Motion, true, "counter-clockwise arc"},
     GCodeInfo{4, GGroup::NonModal, true, "dwell"},
     GCodeInfo{10, GGroup::NonModal, false, "data setting"},
     GCodeInfo{17, GGroup::Plane, true, "XY plane"},

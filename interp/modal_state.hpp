@@ -8,7 +8,8 @@
 
 namespace lathesim::interp {
 
-enum class MotionMode { Rapid, Linear, AxialCycle, FaceCycle };  // group 01: G00 G01 G90 G94
+// group 01: G00 G01 G02 G03 G90 G94
+enum class MotionMode { Rapid, Linear, ArcCW, ArcCCW, AxialCycle, FaceCycle };
 enum class Plane { XY, ZX, YZ };                                  // G17, G18, G19
 
 /// The end point and taper of the last G90 or G94 block, reused by a following block of the

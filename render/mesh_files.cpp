@@ -19,6 +19,8 @@
 #include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include "render/move_points.hpp"
+
 namespace lathesim::render {
 namespace {
 
@@ -94,13 +96,24 @@ void writeBinaryStl(const TriangleMesh& mesh, const std::filesystem::path& stl) 
   if (!out) throw std::runtime_error("cannot write " + stl.string() + " (disk full?)");
 }
 
+// The `kind` cell value: 0 rapid, 1 feed, 2 clockwise arc (G02), 3 counter-clockwise arc
+// (G03), 4 dwell.
+int vtpKind(interp::MoveKind kind) {
+  switch (kind) {
+    case interp::MoveKind::Rapid: return 0;
+    case interp::MoveKind::Feed: return 1;
+    case interp::MoveKind::ArcCW: return 2;
+    case interp::MoveKind::ArcCCW: return 3;
+    case interp::MoveKind::Dwell: return 4;
+  }
+  return 1;
+}
+
 void writeToolpathVtp(const interp::Toolpath& toolpath, const std::filesystem::path& vtp) {
   const auto moveCount = static_cast<vtkIdType>(toolpath.moves.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(2 * moveCount);
   vtkNew<vtkCellArray> lines;
-  lines->AllocateExact(moveCount, 2 * moveCount);
   vtkNew<vtkIntArray> line;
   line->SetName("line");
   line->SetNumberOfValues(moveCount);
@@ -113,12 +126,12 @@ void writeToolpathVtp(const interp::Toolpath& toolpath, const std::filesystem::p
 
   for (vtkIdType i = 0; i < moveCount; ++i) {
     const interp::Move& m = toolpath.moves[static_cast<std::size_t>(i)];
-    points->SetPoint(2 * i, m.from.x(), 0.0, m.from.y());
-    points->SetPoint(2 * i + 1, m.to.x(), 0.0, m.to.y());
-    const vtkIdType ids[2] = {2 * i, 2 * i + 1};
-    lines->InsertNextCell(2, ids);
+    // One cell per move: a line, or for an arc a polyline through points along it.
+    std::vector<vtkIdType> ids;
+    for (const RZ& p : movePoints(m)) ids.push_back(points->InsertNextPoint(p.x(), 0.0, p.y()));
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     line->SetValue(i, m.line);
-    kind->SetValue(i, m.kind == interp::MoveKind::Rapid ? 0 : 1);
+    kind->SetValue(i, vtpKind(m.kind));
     feed->SetValue(i, m.feed);
   }
 

@@ -30,6 +30,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "render/move_points.hpp"
 #include "render/offscreen_display.hpp"
 
 namespace lathesim::render {
@@ -84,8 +85,8 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh) {
   return polyData;
 }
 
-/// The toolpath as lines at (radius, 0, Z): feeds whole, rapids cut into dashes of
-/// `dashMm` with gaps of half that (core-profile OpenGL has no line stipple).
+/// The toolpath as lines at (radius, 0, Z): feeds whole, arcs as chords, rapids cut into
+/// dashes of `dashMm` with gaps of half that (core-profile OpenGL has no line stipple).
 vtkSmartPointer<vtkPolyData> toolpathLines(const interp::Toolpath& toolpath, double dashMm) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
@@ -101,8 +102,9 @@ vtkSmartPointer<vtkPolyData> toolpathLines(const interp::Toolpath& toolpath, dou
     colours->InsertNextTuple3(255.0 * colour[0], 255.0 * colour[1], 255.0 * colour[2]);
   };
   for (const interp::Move& move : toolpath.moves) {
-    if (move.kind == interp::MoveKind::Feed) {
-      addSegment(move.from, move.to, kFeedColour);
+    if (interp::isCutting(move.kind)) {
+      const std::vector<RZ> drawn = movePoints(move);
+      for (std::size_t i = 1; i < drawn.size(); ++i) addSegment(drawn[i - 1], drawn[i], kFeedColour);
       continue;
     }
     const Eigen::Vector2d delta = move.to - move.from;
@@ -196,10 +198,8 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   const View view = makeView();
   Extent extent;
   for (const Eigen::Vector3f& v : part.vertices) extent.include(view, v.cast<double>());
-  for (const interp::Move& m : toolpath.moves) {
-    extent.include(view, Eigen::Vector3d(m.from.x(), 0.0, m.from.y()));
-    extent.include(view, Eigen::Vector3d(m.to.x(), 0.0, m.to.y()));
-  }
+  for (const interp::Move& m : toolpath.moves)
+    for (const RZ& p : movePoints(m)) extent.include(view, Eigen::Vector3d(p.x(), 0.0, p.y()));
   if (extent.empty()) extent.include(view, Eigen::Vector3d::Zero());
   const double sizeMm = std::hypot(extent.maxRight - extent.minRight, extent.maxUp - extent.minUp);
 

@@ -2,15 +2,17 @@
 
 #include <stdexcept>
 
+#include "sim/move_sweep.hpp"
+
 namespace lathesim::sim {
 namespace {
 
-ConvexPolygon sweptRegion(const interp::Move& move, const ToolOutlines& tools) {
+const ConvexPolygon& toolOf(const interp::Move& move, const ToolOutlines& tools) {
   const auto tool = tools.find(move.tool);
   if (tool == tools.end())  // interp checks T words against the setup; this is a broken invariant
     throw std::logic_error("move on line " + std::to_string(move.line) + " uses undefined tool " +
                            std::to_string(move.tool));
-  return tool->second.sweptAlong(move.from, move.to);
+  return tool->second;
 }
 
 }  // namespace
@@ -29,12 +31,15 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     BlockRemoval& block = result.blocks.back();
 
     std::size_t end = first + 1;
-    if (head.kind == interp::MoveKind::Feed)
-      while (end < moves.size() && moves[end].block == head.block && moves[end].kind == interp::MoveKind::Feed) ++end;
+    if (interp::isCutting(head.kind))
+      while (end < moves.size() && moves[end].block == head.block && interp::isCutting(moves[end].kind)) ++end;
 
     std::vector<ConvexPolygon> pieces;
-    for (std::size_t m = first; m < end; ++m) pieces.push_back(sweptRegion(moves[m], tools));
-    const double removed = stock.remove(RevolvedRegion(pieces));
+    for (std::size_t m = first; m < end; ++m) {
+      const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
+      pieces.insert(pieces.end(), swept.begin(), swept.end());
+    }
+    const double removed = pieces.empty() ? 0.0 : stock.remove(RevolvedRegion(pieces));
     block.removedMm3 += removed;
     if (head.kind == interp::MoveKind::Rapid && removed > kCollisionVoxels * voxelVolume)
       result.collisions.push_back({head.line, head.column, "rapid_into_stock", removed});

@@ -39,9 +39,10 @@ inline constexpr double kCollisionVoxels = 10.0;
 using ToolOutlines = std::map<int, ConvexPolygon>;  // tool number → outline (radial, axial) mm
 using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 
-/// Removes every move's swept region from `stock` in program order. Consecutive feed moves
-/// of one block are united and written once (a cycle's cut and retract overlap heavily);
-/// each rapid is written on its own so that a rapid into material is caught and located.
+/// Removes every move's swept region from `stock` in program order. Consecutive cutting
+/// moves (feeds and arcs) of one block are united and written once (a cycle's cut and
+/// retract overlap heavily); each rapid is written on its own so that a rapid into material
+/// is caught and located; dwells remove nothing.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress = {});
 

@@ -38,5 +38,12 @@ void expectMatchesGolden(const std::string& name) {
 
 TEST(GoldenToolpath, Seed000FaceCycleExample) { expectMatchesGolden("seed000_g94"); }
 
+// Positions (radius, Z). Line 4: (10,-2) → (10,-10), chord 8 leftwards, centres 3 either side
+// of (10,-6); G02 R5 takes the right of the travel, up: (13,-6), X26. Line 5: (10,-10) →
+// (10,-18); G03 R5 would take the left, (7,-14); R-5 takes the other, (13,-14), X26. Line 6
+// (G03 still): (10,-18) → (15,-23) about (10+5, -18) = (15,-18), X30, 5 from both ends.
+// Line 7: I-5 with no end point: a full circle about (10,-23), X20.
+TEST(GoldenToolpath, Arcs) { expectMatchesGolden("arcs"); }
+
 }  // namespace
 }  // namespace lathesim::interp

@@ -35,6 +35,21 @@ TEST(ToolpathCsv, WritesDiametersOneRowPerMove) {
             "2,rapid,120,5,130,5,0,,,0\n");
 }
 
+TEST(ToolpathCsv, WritesArcKindsAndTheirCentresAsDiameters) {
+  // G02 from (10, 0) to (10, -8) with R5: centre (13, -4), written X26 Z-4 (the centres are
+  // worked out in arc_move_test.cpp). G03 back to Z0 with R5: travelling right, the left
+  // (a G03's centre) is up, so the same centre (13, -4): the same groove run backwards.
+  const auto result = test::run("G00 X20 Z0\nG02 Z-8 R5 F0.1\nG03 Z0 R5\n");
+  ASSERT_TRUE(result.ok());
+  std::ostringstream out;
+  writeToolpathCsv(result.toolpath, out);
+  EXPECT_EQ(out.str(),
+            "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s\n"
+            "1,rapid,200,200,20,0,0,,,0\n"
+            "2,cw,20,0,20,-8,0.1,26,-4,0\n"
+            "3,ccw,20,-8,20,0,0.1,26,-4,0\n");
+}
+
 TEST(ToolpathCsv, ReadsWhatItWrote) {
   std::istringstream in(
       "line,kind,x0,z0,x1,z1,feed\n"

@@ -1,9 +1,11 @@
 #include "render/mesh_files.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -123,6 +125,60 @@ TEST(ToolpathVtp, OneCellPerMoveWithLineKindAndFeed) {
   data->GetPoint(ids[1], p);
   EXPECT_EQ(p[0], 29.0);
   EXPECT_EQ(p[2], 10.0);
+}
+
+TEST(ToolpathVtp, ArcIsOnePolylineCellAlongTheCircle) {
+  // G02 a quarter turn of radius 5 about (15, -5), from (20, -5) to (15, 0), then G03 back.
+  // Chords of sagitta ≤ 5/1000 may sweep 2·acos(0.999) = 0.08945 rad: 90° = 1.5708 rad
+  // takes ceil(17.56) = 18 chords, 19 points.
+  interp::Toolpath path = test::rapidThenFeed();
+  auto arc = test::move(interp::MoveKind::ArcCW, 20, -5, 15, 0, 5, 0.1);
+  arc.center = RZ(15, -5);
+  path.moves.push_back(arc);
+  arc.kind = interp::MoveKind::ArcCCW;
+  std::swap(arc.from, arc.to);
+  arc.line = 6;
+  path.moves.push_back(arc);
+  test::TempDir dir;
+  const auto file = dir.path() / "arcs.vtp";
+  writeToolpathVtp(path, file);
+
+  vtkNew<vtkXMLPolyDataReader> reader;
+  const std::string name = file.string();
+  reader->SetFileName(name.c_str());
+  reader->Update();
+  vtkPolyData* data = reader->GetOutput();
+  ASSERT_EQ(data->GetNumberOfCells(), 4);
+  vtkDataArray* kind = data->GetCellData()->GetArray("kind");
+  vtkDataArray* feed = data->GetCellData()->GetArray("feed");
+  EXPECT_EQ(kind->GetTuple1(2), 2);  // cw
+  EXPECT_EQ(kind->GetTuple1(3), 3);  // ccw
+  EXPECT_EQ(feed->GetTuple1(2), 0.1);
+  EXPECT_EQ(data->GetCellData()->GetArray("line")->GetTuple1(3), 6);
+
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  data->GetCellPoints(2, count, ids);
+  ASSERT_EQ(count, 19);
+  double p[3];
+  data->GetPoint(ids[0], p);
+  EXPECT_EQ(p[0], 20.0);
+  EXPECT_EQ(p[2], -5.0);
+  data->GetPoint(ids[count - 1], p);
+  EXPECT_EQ(p[0], 15.0);
+  EXPECT_EQ(p[2], 0.0);
+  for (vtkIdType k = 0; k < count; ++k) {
+    data->GetPoint(ids[k], p);
+    EXPECT_NEAR(std::hypot(p[0] - 15.0, p[2] + 5.0), 5.0, 1e-9);  // on the circle
+    EXPECT_GE(p[0], 15.0 - 1e-9);  // in the quarter between the ends
+    EXPECT_GE(p[2], -5.0 - 1e-9);
+  }
+  // The G03 back runs through the same quarter.
+  data->GetCellPoints(3, count, ids);
+  ASSERT_EQ(count, 19);
+  data->GetPoint(ids[9], p);  // halfway: 45°, (15 + 5/√2, -5 + 5/√2)
+  EXPECT_NEAR(p[0], 15 + 5 * M_SQRT1_2, 1e-9);
+  EXPECT_NEAR(p[2], -5 + 5 * M_SQRT1_2, 1e-9);
 }
 
 TEST(ToolpathVtp, EmptyToolpathReadsBackEmpty) {

@@ -83,6 +83,22 @@ TEST(PartImagePng, EmptyMeshStillShowsTheToolpath) {
   EXPECT_GT(png.count(200, 800, 0, 600, red), 50);
 }
 
+TEST(PartImagePng, ArcsAreDrawnRoundInTheFeedColour) {
+  ::unsetenv("DISPLAY");
+  // Only a rapid and a full circle (G02 with I/K, end = start) of radius 20 about (40, 30):
+  // drawn as 71 chords in blue. As a straight move it would be a point and nothing blue.
+  interp::Toolpath path;
+  path.moves.push_back(test::move(interp::MoveKind::Rapid, 80, 80, 60, 30, 1, 0.0));
+  auto circle = test::move(interp::MoveKind::ArcCW, 60, 30, 60, 30, 2, 0.1);
+  circle.center = RZ(40, 30);
+  path.moves.push_back(circle);
+  test::TempDir dir;
+  const auto file = dir.path() / "circle.png";
+  writePartImagePng(TriangleMesh{}, path, PartImageOptions{800, 600, "t"}, file);
+  Png png(file);
+  EXPECT_GT(png.count(200, 800, 0, 600, blue), 500);
+}
+
 TEST(PartImagePng, UnwritablePathThrows) {
   test::TempDir dir;
   EXPECT_THROW(writePartImagePng(test::cylinder(30, 60, 16), test::rapidThenFeed(),
