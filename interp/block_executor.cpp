@@ -11,6 +11,7 @@
 
 #include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
+#include "interp/subprogram_call.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -40,8 +41,13 @@ struct AxisWords {
 
 class Executor {
  public:
-  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal)
-      : block_(std::move(block)), state_(std::move(state)), options_(options), ordinal_(ordinal) {}
+  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal,
+           const BlockPlace* place)
+      : block_(std::move(block)),
+        state_(std::move(state)),
+        options_(options),
+        ordinal_(ordinal),
+        place_(place) {}
 
   Result<BlockOutcome> run();
 
@@ -59,6 +65,7 @@ class Executor {
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
+  Status applySubprogramCode();
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep);
 
@@ -66,12 +73,15 @@ class Executor {
   ModalState state_;
   const InterpreterOptions& options_;
   int ordinal_;
+  const BlockPlace* place_;
   std::vector<Move> moves_;
+  ProgramFlow flow_;
 };
 
 Result<BlockOutcome> Executor::run() {
   block_.take('N');  // sequence number: a label only
   block_.take('O');  // program number
+  if (auto status = applySubprogramCode(); !status.ok()) return status.error();
   if (auto code = block_.gCode(GGroup::Units)) state_.inch = code->number == 20;
   if (auto code = block_.gCode(GGroup::FeedMode)) {
     state_.feedMode = code->number == 98 ? FeedMode::PerMinute : FeedMode::PerRevolution;
@@ -108,7 +118,20 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number == 5) state_.spindleOn = false;
   if (coolant && coolant->number == 9) state_.coolantOn = false;
   if (block_.mCode(MGroup::ProgramEnd)) state_.ended = true;
-  return BlockOutcome{std::move(state_), std::move(moves_)};
+  return BlockOutcome{std::move(state_), std::move(moves_), flow_};
+}
+
+Status Executor::applySubprogramCode() {
+  const auto code = block_.mCode(MGroup::Subprogram);
+  if (!code) return success();
+  if (code->number == 99) {
+    flow_.returnColumn = code->column;
+    return success();
+  }
+  auto call = takeSubprogramCall(block_, *code);
+  if (!call.ok()) return call.error();
+  flow_.call = call.value();
+  return success();
 }
 
 Result<AxisWords> Executor::takeAxisWords() {
@@ -360,8 +383,9 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep) 
 }  // namespace
 
 Result<BlockOutcome> executeBlock(ParsedBlock block, ModalState state,
-                                  const InterpreterOptions& options, int ordinal) {
-  return Executor(std::move(block), std::move(state), options, ordinal).run();
+                                  const InterpreterOptions& options, int ordinal,
+                                  const BlockPlace* place) {
+  return Executor(std::move(block), std::move(state), options, ordinal, place).run();
 }
 
 }  // namespace lathesim::interp

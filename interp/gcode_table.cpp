@@ -50,8 +50,8 @@ constexpr std::array kMCodes{
     MCodeInfo{8, MGroup::Coolant, true, "coolant on"},
     MCodeInfo{9, MGroup::Coolant, true, "coolant off"},
     MCodeInfo{30, MGroup::ProgramEnd, true, "end of program and rewind"},
-    MCodeInfo{98, MGroup::Subprogram, false, "subprogram call"},
-    MCodeInfo{99, MGroup::Subprogram, false, "subprogram return"},
+    MCodeInfo{98, MGroup::Subprogram, true, "subprogram call"},
+    MCodeInfo{99, MGroup::Subprogram, true, "subprogram return"},
 };
 
 }  // namespace
