@@ -1,0 +1,378 @@
+// G71 stock removal: move lists expanded by hand from lathe-cycles.md §3 (see the step
+// numbers in interp/stock_removal.cpp), the contour rules' errors, and a no-gouge property.
+// Positions are (radius, Z) mm; the programs' X words are diameters, halved in the comments.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "interp/roughing_cycle.hpp"
+#include "roughing_test_support.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+using test::arcSegment;
+using test::expectLegsNear;
+using test::expectRoughingError;
+using test::HandLeg;
+using test::segment;
+
+constexpr MoveKind kRapid = MoveKind::Rapid;
+constexpr MoveKind kFeed = MoveKind::Feed;
+constexpr MoveKind kCw = MoveKind::ArcCW;
+constexpr MoveKind kCcw = MoveKind::ArcCCW;
+
+// A = X100 Z2 (radius 50); N10 G00 X40; N20 G01 Z-30; N30 X60 Z-40; N40 Z-60; N50 X100.
+Contour odTaperContour() {
+  return {segment(kRapid, 50, 2, 20, 2, 10), segment(kFeed, 20, 2, 20, -30, 20),
+          segment(kFeed, 20, -30, 30, -40, 30), segment(kFeed, 30, -40, 30, -60, 40),
+          segment(kFeed, 30, -60, 50, -60, 50)};
+}
+
+RoughingParams params(double depthMm, double retractMm, double allowanceXMm,
+                      double allowanceZMm) {
+  RoughingParams p;
+  p.depthMm = depthMm;
+  p.retractMm = retractMm;
+  p.allowanceXMm = allowanceXMm;
+  p.allowanceZMm = allowanceZMm;
+  return p;
+}
+
+// G71 U2 R0.5; G71 P10 Q50 U0.5 W0.1: Δd 2, e 0.5, allowance (0.25 radius, 0.1).
+// A′ = (50.25, 2.1), B′ = (20.25, 2.1); rough contour B′ → (20.25, -29.9) → taper →
+// (30.25, -39.9) → (30.25, -59.9) → C′ (50.25, -59.9).
+// Depth to cut 50.25 - 20.25 = 30: levels X_k = 50.25 - 2k for k = 1..14 (k = 15 reaches B′).
+// Levels 48.25 … 30.25 meet the contour last on the face Z-59.9 (for 30.25: the end of the
+// floor (30.25, -39.9)–(30.25, -59.9), where the face starts). Levels below 30.25 meet the
+// taper X = 20.25 + t·10, Z = -29.9 - t·10: 28.25 → t 0.8, Z -37.9; 26.25 → -35.9;
+// 24.25 → -33.9; 22.25 → -31.9. Retract: +0.5 in X and +0.5 in Z (back toward A′), at feed.
+TEST(TurningRoughing, OdTypeIWithTaper) {
+  const auto legs = turningRoughingLegs(RZ(50, 2), odTaperContour(), params(2, 0.5, 0.25, 0.1));
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  expectLegsNear(legs.value(), {
+      {kRapid, 50, 2, 50.25, 2.1, 1},
+      {kRapid, 50.25, 2.1, 48.25, 2.1, 2},
+      {kFeed, 48.25, 2.1, 48.25, -59.9, 3},
+      {kFeed, 48.25, -59.9, 48.75, -59.4, 4},
+      {kRapid, 48.75, -59.4, 48.75, 2.1, 5},
+      {kRapid, 48.75, 2.1, 46.25, 2.1, 6},
+      {kFeed, 46.25, 2.1, 46.25, -59.9, 3},
+      {kFeed, 46.25, -59.9, 46.75, -59.4, 4},
+      {kRapid, 46.75, -59.4, 46.75, 2.1, 5},
+      {kRapid, 46.75, 2.1, 44.25, 2.1, 6},
+      {kFeed, 44.25, 2.1, 44.25, -59.9, 3},
+      {kFeed, 44.25, -59.9, 44.75, -59.4, 4},
+      {kRapid, 44.75, -59.4, 44.75, 2.1, 5},
+      {kRapid, 44.75, 2.1, 42.25, 2.1, 6},
+      {kFeed, 42.25, 2.1, 42.25, -59.9, 3},
+      {kFeed, 42.25, -59.9, 42.75, -59.4, 4},
+      {kRapid, 42.75, -59.4, 42.75, 2.1, 5},
+      {kRapid, 42.75, 2.1, 40.25, 2.1, 6},
+      {kFeed, 40.25, 2.1, 40.25, -59.9, 3},
+      {kFeed, 40.25, -59.9, 40.75, -59.4, 4},
+      {kRapid, 40.75, -59.4, 40.75, 2.1, 5},
+      {kRapid, 40.75, 2.1, 38.25, 2.1, 6},
+      {kFeed, 38.25, 2.1, 38.25, -59.9, 3},
+      {kFeed, 38.25, -59.9, 38.75, -59.4, 4},
+      {kRapid, 38.75, -59.4, 38.75, 2.1, 5},
+      {kRapid, 38.75, 2.1, 36.25, 2.1, 6},
+      {kFeed, 36.25, 2.1, 36.25, -59.9, 3},
+      {kFeed, 36.25, -59.9, 36.75, -59.4, 4},
+      {kRapid, 36.75, -59.4, 36.75, 2.1, 5},
+      {kRapid, 36.75, 2.1, 34.25, 2.1, 6},
+      {kFeed, 34.25, 2.1, 34.25, -59.9, 3},
+      {kFeed, 34.25, -59.9, 34.75, -59.4, 4},
+      {kRapid, 34.75, -59.4, 34.75, 2.1, 5},
+      {kRapid, 34.75, 2.1, 32.25, 2.1, 6},
+      {kFeed, 32.25, 2.1, 32.25, -59.9, 3},
+      {kFeed, 32.25, -59.9, 32.75, -59.4, 4},
+      {kRapid, 32.75, -59.4, 32.75, 2.1, 5},
+      {kRapid, 32.75, 2.1, 30.25, 2.1, 6},
+      {kFeed, 30.25, 2.1, 30.25, -59.9, 3},
+      {kFeed, 30.25, -59.9, 30.75, -59.4, 4},
+      {kRapid, 30.75, -59.4, 30.75, 2.1, 5},
+      {kRapid, 30.75, 2.1, 28.25, 2.1, 6},
+      {kFeed, 28.25, 2.1, 28.25, -37.9, 3},
+      {kFeed, 28.25, -37.9, 28.75, -37.4, 4},
+      {kRapid, 28.75, -37.4, 28.75, 2.1, 5},
+      {kRapid, 28.75, 2.1, 26.25, 2.1, 6},
+      {kFeed, 26.25, 2.1, 26.25, -35.9, 3},
+      {kFeed, 26.25, -35.9, 26.75, -35.4, 4},
+      {kRapid, 26.75, -35.4, 26.75, 2.1, 5},
+      {kRapid, 26.75, 2.1, 24.25, 2.1, 6},
+      {kFeed, 24.25, 2.1, 24.25, -33.9, 3},
+      {kFeed, 24.25, -33.9, 24.75, -33.4, 4},
+      {kRapid, 24.75, -33.4, 24.75, 2.1, 5},
+      {kRapid, 24.75, 2.1, 22.25, 2.1, 6},
+      {kFeed, 22.25, 2.1, 22.25, -31.9, 3},
+      {kFeed, 22.25, -31.9, 22.75, -31.4, 4},
+      {kRapid, 22.75, -31.4, 22.75, 2.1, 5},
+      // The next level would reach B′: infeed to B′ (rapid: the ns block is G00), then the
+      // semi-finishing pass along the rough contour and the rapid back to A.
+      {kRapid, 22.75, 2.1, 20.25, 2.1, 6},
+      {kFeed, 20.25, 2.1, 20.25, -29.9, 7},
+      {kFeed, 20.25, -29.9, 30.25, -39.9, 7},
+      {kFeed, 30.25, -39.9, 30.25, -59.9, 7},
+      {kFeed, 30.25, -59.9, 50.25, -59.9, 7},
+      {kRapid, 50.25, -59.9, 50, 2, 8},
+  });
+}
+
+// The same with the Fanuc-style rapid retract: only the kind of the step-4 legs changes.
+TEST(TurningRoughing, RetractAtRapidWhenAsked) {
+  RoughingParams p = params(2, 0.5, 0.25, 0.1);
+  p.retractAtFeed = false;
+  const auto legs = turningRoughingLegs(RZ(50, 2), odTaperContour(), p);
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  int retracts = 0;
+  for (const CycleLeg& leg : legs.value()) {
+    if (leg.step != 4) continue;
+    ++retracts;
+    EXPECT_EQ(leg.kind, kRapid);
+  }
+  EXPECT_EQ(retracts, 14);
+}
+
+// A = X60 Z2 (radius 30); N10 G00 X20; N20 G01 Z-10;
+// N30 G02 X40 Z-20 R10 (concave fillet, centre (20, -10));
+// N40 G03 X60 Z-30 R10 (convex, centre (20, -30)); N50 G01 Z-40.
+Contour odArcContour() {
+  return {segment(kRapid, 30, 2, 10, 2, 10), segment(kFeed, 10, 2, 10, -10, 20),
+          arcSegment(kCw, 10, -10, 20, -20, 20, -10, 30),
+          arcSegment(kCcw, 20, -20, 30, -30, 20, -30, 40), segment(kFeed, 30, -30, 30, -40, 50)};
+}
+
+// Δd 3, e 1, allowance (0.5, 0.2): A′ = (30.5, 2.2), B′ = (10.5, 2.2); the arcs' centres move
+// to (20.5, -9.8) and (20.5, -29.8), radius 10. Depth to cut 20: levels 27.5, 24.5, 21.5,
+// 18.5, 15.5, 12.5. With θ the angle from the centre (X = Xc + 10 sin θ, Z = Zc + 10 cos θ):
+//   convex arc (cos θ ≥ 0): 27.5 → sin 0.7, Z = -29.8 + 10·√0.51 = -22.658571571457152
+//                           24.5 → sin 0.4, Z = -29.8 + 10·√0.84 = -20.63484861008832
+//                           21.5 → sin 0.1, Z = -29.8 + 10·√0.99 = -19.850125628933803
+//   concave arc (cos θ ≤ 0): 18.5 → sin -0.2, Z = -9.8 - 10·√0.96 = -19.597958971132712
+//                           15.5 → sin -0.5, Z = -9.8 - 10·√0.75 = -18.460254037844386
+//                           12.5 → sin -0.8, Z = -9.8 - 10·0.6 = -15.8
+TEST(TurningRoughing, PassesEndOnTheTranslatedArcs) {
+  const auto legs = turningRoughingLegs(RZ(30, 2), odArcContour(), params(3, 1, 0.5, 0.2));
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  std::vector<CycleLeg> cutLegs;
+  std::vector<CycleLeg> semiFinishLegs;
+  for (const CycleLeg& leg : legs.value()) {
+    if (leg.step == 3) cutLegs.push_back(leg);
+    if (leg.step == 7) semiFinishLegs.push_back(leg);
+  }
+  expectLegsNear(cutLegs, {
+      {kFeed, 27.5, 2.2, 27.5, -22.658571571457152, 3},
+      {kFeed, 24.5, 2.2, 24.5, -20.63484861008832, 3},
+      {kFeed, 21.5, 2.2, 21.5, -19.850125628933803, 3},
+      {kFeed, 18.5, 2.2, 18.5, -19.597958971132712, 3},
+      {kFeed, 15.5, 2.2, 15.5, -18.460254037844386, 3},
+      {kFeed, 12.5, 2.2, 12.5, -15.8, 3},
+  });
+  // The arcs stay arcs, about the translated centres.
+  expectLegsNear(semiFinishLegs, {
+      {kFeed, 10.5, 2.2, 10.5, -9.8, 7},
+      {kCw, 10.5, -9.8, 20.5, -19.8, 7, 20.5, -9.8},
+      {kCcw, 20.5, -19.8, 30.5, -29.8, 7, 20.5, -29.8},
+      {kFeed, 30.5, -29.8, 30.5, -39.8, 7},
+  });
+  // Last level 12.5 retracts to (13.5, -14.8), returns to (13.5, 2.2), then infeeds to B′.
+  const CycleLeg& toB = legs.value()[legs.value().size() - 6];
+  EXPECT_EQ(toB.step, 6);
+  EXPECT_NEAR(toB.from.x(), 13.5, 1e-9);
+  EXPECT_NEAR(toB.to.x(), 10.5, 1e-9);
+  EXPECT_NEAR(toB.to.y(), 2.2, 1e-9);
+}
+
+// Boring. A = X20 Z2 (radius 10) inside the drilled hole; N10 G01 X60 (radius 30);
+// N20 Z-20; N30 X40 Z-30 (radius 20); N40 Z-50; N50 X20 (radius 10).
+// G71 U4 R0.5; G71 P10 Q50 U-0.5 W0.1, Fanuc-style rapid retract.
+// Allowance (-0.25, 0.1): A′ = (9.75, 2.1), B′ = (29.75, 2.1): the levels step OUTWARD.
+// Rough contour: B′ → (29.75, -19.9) → (19.75, -29.9) → (19.75, -49.9) → C′ (9.75, -49.9).
+// Depth 20: levels 13.75, 17.75, 21.75, 25.75 (k = 5 reaches B′).
+// 13.75 and 17.75 meet the face Z-49.9 last; the taper X = 29.75 - 10t, Z = -19.9 - 10t
+// meets 21.75 at t 0.8 (Z -27.9) and 25.75 at t 0.4 (Z -23.9).
+// Retract e = 0.5 back toward A: -0.5 in X, +0.5 in Z. Infeed at feed (the ns block is G01).
+TEST(TurningRoughing, IdBoringStepsOutward) {
+  const Contour contour = {segment(kFeed, 10, 2, 30, 2, 10), segment(kFeed, 30, 2, 30, -20, 20),
+                           segment(kFeed, 30, -20, 20, -30, 30),
+                           segment(kFeed, 20, -30, 20, -50, 40),
+                           segment(kFeed, 20, -50, 10, -50, 50)};
+  RoughingParams p = params(4, 0.5, -0.25, 0.1);
+  p.retractAtFeed = false;
+  const auto legs = turningRoughingLegs(RZ(10, 2), contour, p);
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  expectLegsNear(legs.value(), {
+      {kRapid, 10, 2, 9.75, 2.1, 1},
+      {kFeed, 9.75, 2.1, 13.75, 2.1, 2},
+      {kFeed, 13.75, 2.1, 13.75, -49.9, 3},
+      {kRapid, 13.75, -49.9, 13.25, -49.4, 4},
+      {kRapid, 13.25, -49.4, 13.25, 2.1, 5},
+      {kFeed, 13.25, 2.1, 17.75, 2.1, 6},
+      {kFeed, 17.75, 2.1, 17.75, -49.9, 3},
+      {kRapid, 17.75, -49.9, 17.25, -49.4, 4},
+      {kRapid, 17.25, -49.4, 17.25, 2.1, 5},
+      {kFeed, 17.25, 2.1, 21.75, 2.1, 6},
+      {kFeed, 21.75, 2.1, 21.75, -27.9, 3},
+      {kRapid, 21.75, -27.9, 21.25, -27.4, 4},
+      {kRapid, 21.25, -27.4, 21.25, 2.1, 5},
+      {kFeed, 21.25, 2.1, 25.75, 2.1, 6},
+      {kFeed, 25.75, 2.1, 25.75, -23.9, 3},
+      {kRapid, 25.75, -23.9, 25.25, -23.4, 4},
+      {kRapid, 25.25, -23.4, 25.25, 2.1, 5},
+      {kFeed, 25.25, 2.1, 29.75, 2.1, 6},
+      {kFeed, 29.75, 2.1, 29.75, -19.9, 7},
+      {kFeed, 29.75, -19.9, 19.75, -29.9, 7},
+      {kFeed, 19.75, -29.9, 19.75, -49.9, 7},
+      {kFeed, 19.75, -49.9, 9.75, -49.9, 7},
+      {kRapid, 9.75, -49.9, 10, 2, 8},
+  });
+}
+
+// ---- The contour rules --------------------------------------------------------------
+
+TEST(TurningRoughingErrors, DepthMustBePositive) {
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), odTaperContour(), params(0, 0.5, 0, 0)),
+                      10, 1, "G71 depth of cut Δd is 0; expected a depth greater than 0");
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), odTaperContour(), params(-1, 0.5, 0, 0)),
+                      10, 1, "depth of cut Δd is -1");
+}
+
+TEST(TurningRoughingErrors, EmptyContour) {
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), {}, params(2, 0.5, 0, 0)), 0, 0,
+                      "G71 contour is empty");
+}
+
+TEST(TurningRoughingErrors, NsBlockMustNotBeAnArc) {
+  const Contour contour = {arcSegment(kCw, 50, 2, 40, -8, 40, 2, 10),
+                           segment(kFeed, 40, -8, 50, -8, 20)};
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), contour, params(2, 0.5, 0, 0)), 10, 1,
+                      "G71 ns block is an arc; expected G00 or G01");
+}
+
+TEST(TurningRoughingErrors, NsBlockMustMoveX) {
+  const Contour contour = {segment(kFeed, 50, 2, 50, -8, 10), segment(kFeed, 50, -8, 60, -8, 20)};
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), contour, params(2, 0.5, 0, 0)), 10, 1,
+                      "G71 ns block does not move X");
+}
+
+TEST(TurningRoughingErrors, TypeIContourMustBeMonotonicInX) {
+  // N30 goes from radius 30 back down to 25: toward B again (a pocket, type I cannot).
+  Contour contour = odTaperContour();
+  contour[3] = segment(kFeed, 30, -40, 25, -60, 40);
+  contour[4] = segment(kFeed, 25, -60, 50, -60, 50);
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), contour, params(2, 0.5, 0, 0)), 40, 1,
+                      "G71 type I contour must be monotonic in X: this block moves X back "
+                      "toward B");
+}
+
+TEST(TurningRoughingErrors, ContourMustBeMonotonicInZ) {
+  // N40 goes back from Z-40 to Z-35.
+  Contour contour = odTaperContour();
+  contour[3] = segment(kFeed, 30, -40, 30, -35, 40);
+  contour[4] = segment(kFeed, 30, -35, 50, -35, 50);
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), contour, params(2, 0.5, 0, 0)), 40, 1,
+                      "G71 contour must be monotonic in Z: this block moves Z against the "
+                      "blocks before it");
+}
+
+TEST(TurningRoughingErrors, ArcMustNotReverseX) {
+  // N30 G02 from (10, -10) to (10, -30) about (10, -20): a half circle bulging to radius 20,
+  // X rises then falls inside it.
+  const Contour contour = {segment(kRapid, 30, 2, 10, 2, 10), segment(kFeed, 10, 2, 10, -10, 20),
+                           arcSegment(kCw, 10, -10, 10, -30, 10, -20, 30),
+                           segment(kFeed, 10, -30, 30, -30, 40)};
+  expectRoughingError(turningRoughingLegs(RZ(30, 2), contour, params(2, 0.5, 0, 0)), 30, 1,
+                      "G71 type I contour must be monotonic in X: this arc reverses X inside "
+                      "its span");
+}
+
+TEST(TurningRoughingErrors, ArcMustNotReverseZ) {
+  // N30 G02 from (10, -10) to (20, -10) about (15, -10): a half circle dipping to Z-15 and
+  // coming back: Z reverses inside it (its ends have the same Z).
+  const Contour contour = {segment(kRapid, 30, 2, 10, 2, 10), segment(kFeed, 10, 2, 10, -10, 20),
+                           arcSegment(kCw, 10, -10, 20, -10, 15, -10, 30),
+                           segment(kFeed, 20, -10, 20, -30, 40)};
+  expectRoughingError(turningRoughingLegs(RZ(30, 2), contour, params(2, 0.5, 0, 0)), 30, 1,
+                      "G71 contour must be monotonic in Z: this arc reverses Z inside its span");
+}
+
+// ---- Property: the roughing never gouges the rough contour ---------------------------
+
+/// Where the rough contour crosses Z = z: every candidate X (several on a face).
+std::vector<double> contourXsAt(const Contour& contour, double z) {
+  std::vector<double> xs;
+  for (std::size_t i = 1; i < contour.size(); ++i) {
+    const ContourSegment& s = contour[i];
+    const double zLo = std::min(s.from.y(), s.to.y());
+    const double zHi = std::max(s.from.y(), s.to.y());
+    if (z < zLo - 1e-9 || z > zHi + 1e-9) continue;
+    if (!isArc(s.kind)) {
+      if (std::abs(s.to.y() - s.from.y()) < 1e-12) {
+        xs.push_back(s.from.x());
+        xs.push_back(s.to.x());
+      } else {
+        const double t = (z - s.from.y()) / (s.to.y() - s.from.y());
+        xs.push_back(s.from.x() + t * (s.to.x() - s.from.x()));
+      }
+      continue;
+    }
+    // A monotonic arc: of the circle's two X at this Z, the one between the arc's ends.
+    const double r = (s.from - s.center).norm();
+    const double h = std::sqrt(std::max(0.0, r * r - (z - s.center.y()) * (z - s.center.y())));
+    const double xLo = std::min(s.from.x(), s.to.x()) - 1e-9;
+    const double xHi = std::max(s.from.x(), s.to.x()) + 1e-9;
+    for (const double x : {s.center.x() + h, s.center.x() - h}) {
+      if (x >= xLo && x <= xHi) xs.push_back(x);
+    }
+  }
+  return xs;
+}
+
+/// Every point of every roughing feed (steps 3 and 4) lies on A's side of the rough contour:
+/// (X − X_contour(Z))·stepDir ≤ 0, taking on a face the most lenient of its X.
+void expectNoGouge(const std::vector<CycleLeg>& legs, const Contour& rough, double stepDir) {
+  for (const CycleLeg& leg : legs) {
+    if (leg.kind != kFeed || (leg.step != 3 && leg.step != 4)) continue;
+    for (int i = 0; i <= 50; ++i) {
+      const RZ p = leg.from + (leg.to - leg.from) * (i / 50.0);
+      const std::vector<double> xs = contourXsAt(rough, p.y());
+      if (xs.empty()) continue;
+      double lenient = -std::numeric_limits<double>::infinity();
+      for (const double x : xs) lenient = std::max(lenient, stepDir * x);
+      EXPECT_LE(stepDir * p.x() - lenient, 1e-9)
+          << "leg step " << leg.step << " point (" << p.x() << ", " << p.y() << ")";
+    }
+  }
+}
+
+TEST(TurningRoughingProperty, RoughingNeverGougesTheRoughContour) {
+  const Contour contour = odArcContour();
+  for (const double depthMm : {0.7, 1.3, 2.9}) {
+    const RoughingParams p = params(depthMm, 0.4, 0.5, 0.2);
+    const auto legs = turningRoughingLegs(RZ(30, 2), contour, p);
+    ASSERT_TRUE(legs.ok()) << legs.error().message;
+    Contour rough = contour;
+    for (ContourSegment& s : rough) {
+      s.from += RZ(0.5, 0.2);
+      s.to += RZ(0.5, 0.2);
+      s.center += RZ(0.5, 0.2);
+    }
+    expectNoGouge(legs.value(), rough, -1.0);
+  }
+  const Contour taper = odTaperContour();
+  const auto legs = turningRoughingLegs(RZ(50, 2), taper, params(1.7, 0.3, 0.25, 0.1));
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  Contour rough = taper;
+  for (ContourSegment& s : rough) {
+    s.from += RZ(0.25, 0.1);
+    s.to += RZ(0.25, 0.1);
+  }
+  expectNoGouge(legs.value(), rough, -1.0);
+}
+
+}  // namespace
+}  // namespace lathesim::interp
