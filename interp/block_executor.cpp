@@ -9,17 +9,14 @@
 
 #include <fmt/format.h>
 
+#include "interp/compound_cycle.hpp"
 #include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
 #include "interp/subprogram_call.hpp"
+#include "interp/word_units.hpp"
 
 namespace lathesim::interp {
 namespace {
-
-constexpr double kMmPerInch = 25.4;
-
-// The one place where a programmed length becomes millimetres (G20 → inch).
-double lengthMm(const Word& word, bool inch) { return inch ? word.value * kMmPerInch : word.value; }
 
 // What sets G90 and G94 apart; the rest of a single cycle (modal retention, the checks,
 // emitting its legs) is one code path for both.
@@ -65,6 +62,7 @@ class Executor {
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
+  Status applyCompoundCycle(const Code& code);
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep);
@@ -99,7 +97,8 @@ Result<BlockOutcome> Executor::run() {
                                "belong to both; put them in separate blocks",
                                oneShot->text, motion->text));
   }
-  if (oneShot) {
+  const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
+  if (oneShot && !compound) {
     if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
   }
   if (auto status = applyFeed(); !status.ok()) return status.error();
@@ -112,7 +111,9 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number != 5) state_.spindleOn = true;
   if (coolant && coolant->number == 8) state_.coolantOn = true;
 
-  if (auto status = applyMotion(); !status.ok()) return status.error();
+  if (auto status = compound ? applyCompoundCycle(*oneShot) : applyMotion(); !status.ok()) {
+    return status.error();
+  }
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
 
   if (spindle && spindle->number == 5) state_.spindleOn = false;
@@ -348,6 +349,18 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
     emit(leg.kind, leg.from, leg.to, leg.step);
   }
   return success();  // the cycle ends at A: the position is unchanged
+}
+
+// G70–G75 (interp/compound_cycle.hpp) in place of the block's motion.
+Status Executor::applyCompoundCycle(const Code& code) {
+  state_.cycle = {};  // a one-shot code ends G90/G94's retained values
+  auto outcome = runCompoundCycle(code, block_, state_, options_, place_);
+  if (!outcome.ok()) return outcome.error();
+  const CompoundOutcome& done = outcome.value();
+  moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
+  for (const CycleLeg& leg : done.legs) emit(leg.kind, leg.from, leg.to, leg.step);
+  flow_.continueAfter = done.continueAfter;
+  return success();
 }
 
 Status Executor::checkAllWordsUsed() const {

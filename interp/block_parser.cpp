@@ -34,7 +34,7 @@ Result<Code> checkedCode(const Word& word, int line, const Info* info, std::stri
   return Code{info->number, text, word.column};
 }
 
-constexpr std::string_view kSupportedG = "G00 G01 G04 G17 G18 G19 G20 G21 G50 G90 G94 G97 G98 G99";
+constexpr std::string_view kSupportedG = "G00 G01 G04 G17 G18 G19 G20 G21 G50 G70 G71 G72 G73 G74 G75 G90 G94 G97 G98 G99";
 constexpr std::string_view kSupportedM = "M02 M03 M04 M05 M08 M09 M30 M98 M99";
 
 Error sameGroupError(int line, const Code& first, const Code& second, std::string_view group) {
