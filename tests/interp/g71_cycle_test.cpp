@@ -232,6 +232,96 @@ TEST(TurningRoughing, IdBoringStepsOutward) {
   });
 }
 
+// ---- Type II: pockets ------------------------------------------------------------------
+
+// A = X50 Z2 (radius 25). N10 G00 X30 W0 (radius 15: type II); N20 G01 Z-10; N30 X40
+// (radius 20, a shoulder); N40 Z-15; N50 X24 Z-20 (radius 12: down into a pocket); N60 Z-25;
+// N70 X48 Z-30 (radius 24); N80 X50. G71 U4 R1; G71 P10 Q80 U0 W0.
+Contour pocketContour() {
+  return {segment(kRapid, 25, 2, 15, 2, 10),     segment(kFeed, 15, 2, 15, -10, 20),
+          segment(kFeed, 15, -10, 20, -10, 30),  segment(kFeed, 20, -10, 20, -15, 40),
+          segment(kFeed, 20, -15, 12, -20, 50),  segment(kFeed, 12, -20, 12, -25, 60),
+          segment(kFeed, 12, -25, 24, -30, 70),  segment(kFeed, 24, -30, 25, -30, 80)};
+}
+
+// No allowance: A′ = A. Deepest contour point: radius 12, depth 13: levels 21, 17, 13.
+// Wall N50: X = 20 - 8t, Z = -15 - 5t (17 → Z -16.875; 13 → Z -19.375).
+// Wall N70: X = 12 + 12t, Z = -25 - 5t (21 → Z -28.75; 17 → Z -27.083333…; 13 → -25.416666…).
+// Level 21 lies in the material all the way to N70: one interval; climb N70 and N80 up to the
+//   previous level, X_A′ = 25, back off 1 to 26.
+// Level 17: material over Z 2…-10 (the cylinder radius 15) and over the pocket Z -16.875 …
+//   -27.083333 (the shoulder radius 20 sticks out between). First interval: climb the
+//   shoulder face and across its top to (20, -15), where N50 heads down, back off to 21.
+//   The pocket: its entry wall, walked back from (17, -16.875), climbs to (20, -15) and stops
+//   at the flat top; the tool stands right above it, so it feeds the last e onto it, follows
+//   N50 down, cuts, climbs N70 to the level 21 at Z -28.75, backs off to 22.
+// Level 13: only the pocket, Z -19.375 … -25.416666. Entry wall N50 walked back up to the
+//   previous level 17 at Z -16.875: rapid up to 25, along Z, down to 18 (e short), feed to 17,
+//   down the wall, cut, climb N70 to 17 at Z -27.083333, back off to 18.
+// Then back over X 25 to Z 2, infeed to B′ (rapid: G00), the semi-finishing pass, rapid to A.
+TEST(TurningRoughingTypeII, PocketIsEnteredDownItsWallAndLeftUpTheOther) {
+  RoughingParams p = params(4, 1, 0, 0);
+  p.typeII = true;
+  const auto legs = turningRoughingLegs(RZ(25, 2), pocketContour(), p);
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  constexpr double z17 = -25 - 25.0 / 12;  // -27.083333…
+  constexpr double z13 = -25 - 5.0 / 12;   // -25.416666…
+  expectLegsNear(legs.value(), {
+      {kRapid, 25, 2, 21, 2, 2},
+      {kFeed, 21, 2, 21, -28.75, 3},
+      {kFeed, 21, -28.75, 24, -30, 4},
+      {kFeed, 24, -30, 25, -30, 4},
+      {kFeed, 25, -30, 26, -30, 4},
+      {kRapid, 26, -30, 26, 2, 5},
+      {kRapid, 26, 2, 17, 2, 6},
+      {kFeed, 17, 2, 17, -10, 3},
+      {kFeed, 17, -10, 20, -10, 4},
+      {kFeed, 20, -10, 20, -15, 4},
+      {kFeed, 20, -15, 21, -15, 4},
+      {kFeed, 21, -15, 20, -15, 6},
+      {kFeed, 20, -15, 17, -16.875, 6},
+      {kFeed, 17, -16.875, 17, z17, 3},
+      {kFeed, 17, z17, 21, -28.75, 4},
+      {kFeed, 21, -28.75, 22, -28.75, 4},
+      {kRapid, 22, -28.75, 25, -28.75, 5},
+      {kRapid, 25, -28.75, 25, -16.875, 5},
+      {kRapid, 25, -16.875, 18, -16.875, 5},
+      {kFeed, 18, -16.875, 17, -16.875, 6},
+      {kFeed, 17, -16.875, 13, -19.375, 6},
+      {kFeed, 13, -19.375, 13, z13, 3},
+      {kFeed, 13, z13, 17, z17, 4},
+      {kFeed, 17, z17, 18, z17, 4},
+      {kRapid, 18, z17, 25, z17, 5},
+      {kRapid, 25, z17, 25, 2, 5},
+      {kRapid, 25, 2, 15, 2, 6},
+      {kFeed, 15, 2, 15, -10, 7},
+      {kFeed, 15, -10, 20, -10, 7},
+      {kFeed, 20, -10, 20, -15, 7},
+      {kFeed, 20, -15, 12, -20, 7},
+      {kFeed, 12, -20, 12, -25, 7},
+      {kFeed, 12, -25, 24, -30, 7},
+      {kFeed, 24, -30, 25, -30, 7},
+      {kRapid, 25, -30, 25, 2, 8},
+  });
+}
+
+// The same pocket contour is refused as type I: X turns back toward B at N50.
+TEST(TurningRoughingTypeII, PocketNeedsTypeII) {
+  expectRoughingError(turningRoughingLegs(RZ(25, 2), pocketContour(), params(4, 1, 0, 0)), 50,
+                      1, "G71 type I contour must be monotonic in X");
+}
+
+// Type II still needs Z monotonic: N60 turned back to Z-18.
+TEST(TurningRoughingTypeII, ZMustStayMonotonic) {
+  Contour contour = pocketContour();
+  contour[5] = segment(kFeed, 12, -20, 12, -18, 60);
+  contour[6] = segment(kFeed, 12, -18, 24, -30, 70);
+  RoughingParams p = params(4, 1, 0, 0);
+  p.typeII = true;
+  expectRoughingError(turningRoughingLegs(RZ(25, 2), contour, p), 60, 1,
+                      "G71 contour must be monotonic in Z: this block moves Z against");
+}
+
 // ---- The contour rules --------------------------------------------------------------
 
 TEST(TurningRoughingErrors, DepthMustBePositive) {
