@@ -33,7 +33,9 @@
 //   5   rapid up to X_A′ (unless already above the wall's top, see below), rapid in Z to the
 //       top W of the entry wall (walking the contour back from the level while it climbs:
 //       up to the previous level or to a crest — it stops at a flat), rapid to e short of W
-//   6   feed the last e onto W, then down the wall along the contour to the level
+//       but no deeper than the previous level (beside a flat the band between the previous
+//       level and the flat is still there)
+//   6   feed the rest onto W (the last e), then down the wall along the contour to the level
 //   3   feed along Z to the interval's end
 //   4   feed along the contour from there while it climbs back toward A′ (flats included),
 //       up to the previous level, a crest, or C′; then back off e in X (feed if
@@ -371,8 +373,8 @@ class TypeTwo {
   }
 
   /// Into a pocket whose stretch of the level begins at `s0`: over X_A′ to the top W of the
-  /// pocket's entry wall (where it leaves the previous level), rapid to e short of W, feed e
-  /// onto W, then feed down the wall to the level.
+  /// pocket's entry wall (where it leaves the previous level), rapid to e short of W (but not
+  /// below the previous level), feed onto W, then feed down the wall to the level.
   void enterPocket(double levelMm, double previousMm, double s0) {
     Path wall;
     RZ entry(levelMm, zOf(s0));
@@ -384,8 +386,12 @@ class TypeTwo {
       break;
     }
     const RZ top = wall.empty() ? entry : wall.front().from;
-    const double clearanceDepthMm = std::max(0.0, depthOf(top.x()) - plan_.params->retractMm);
-    const RZ aboveTop(xAtDepth(std::min(clearanceDepthMm, depthOf(top.x()))), top.y());
+    // Rapid no deeper than the previous level (below it, beside a flat, stock may be left)
+    // and no higher than A′, and stop e short of W.
+    const double topDepthMm = depthOf(top.x());
+    const double clearDepthMm =
+        std::max(0.0, std::min(topDepthMm - plan_.params->retractMm, depthOf(previousMm)));
+    const RZ aboveTop(xAtDepth(std::min(clearDepthMm, topDepthMm)), top.y());
     if (std::abs(legs_.at().y() - top.y()) > kTolMm) {
       legs_.straight(MoveKind::Rapid, RZ(shiftedStart_.x(), legs_.at().y()), 5);
       legs_.straight(MoveKind::Rapid, RZ(shiftedStart_.x(), top.y()), 5);
