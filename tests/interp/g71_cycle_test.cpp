@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "interp/roughing_cycle.hpp"
@@ -514,6 +515,43 @@ TEST(TurningRoughingProperty, TypeIINeverGougesTheRoughContour) {
         test::expectNoGouge(legs.value(), rough, stepDir);
       }
     }
+  }
+}
+
+// Random contours (fixed seed): type I staircases and tapers toward -Z and out in X, and
+// type II profiles whose X wanders, each with random Δd, e and allowance.
+TEST(TurningRoughingProperty, RandomContoursNeverGouge) {
+  std::mt19937 random(71);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 60; ++trial) {
+    const bool typeII = trial % 2 == 1;
+    const RZ start(30, 2);
+    Contour contour;
+    RZ at(5 + 10 * unit(random), 2);
+    contour.push_back({kRapid, start, at, RZ(0, 0), 10, 1});
+    for (int i = 0; i < 6; ++i) {
+      RZ next = at + RZ(0, -(0.5 + 6 * unit(random)));  // Z always falls
+      if (typeII) {
+        next.x() = 3 + 22 * unit(random);
+      } else {
+        next.x() = std::min(28.0, at.x() + (unit(random) < 0.3 ? 0 : 6 * unit(random)));
+      }
+      if (unit(random) < 0.3) next.y() = at.y();  // a face: X only
+      contour.push_back({kFeed, at, next, RZ(0, 0), 20 + 10 * i, 1});
+      at = next;
+    }
+    RoughingParams p = params(0.3 + 3 * unit(random), 2 * unit(random), unit(random) - 0.3,
+                              typeII ? 0 : 0.3 * unit(random));
+    p.typeII = typeII;
+    const auto legs = turningRoughingLegs(start, contour, p);
+    ASSERT_TRUE(legs.ok()) << legs.error().message;
+    Contour rough = contour;
+    for (ContourSegment& s : rough) {
+      s.from += RZ(p.allowanceXMm, p.allowanceZMm);
+      s.to += RZ(p.allowanceXMm, p.allowanceZMm);
+    }
+    SCOPED_TRACE(testing::Message() << "trial " << trial);
+    test::expectNoGouge(legs.value(), rough, -1.0);
   }
 }
 
