@@ -109,6 +109,123 @@ TEST(FacingRoughing, PassesEndOnTheArcAndTheArcStaysClockwise) {
   });
 }
 
+// Type II, a ring groove in the face. A = X68 Z0 (radius 34). N10 G00 U0 Z-10 (type II);
+// N20 G01 X44 (radius 22); N30 Z-5; N40 X34 (radius 17); N50 X24 Z-13 (radius 12: into the
+// groove); N60 X14 (radius 7); N70 X4 Z-1 (radius 2); N80 Z0. G72 W4 R1; G72 P10 Q80 U0 W0.
+// X falls all along (G72's cutting axis); Z dips into the groove and comes back.
+Contour ringGrooveContour() {
+  return {segment(kRapid, 34, 0, 34, -10, 10), segment(kFeed, 34, -10, 22, -10, 20),
+          segment(kFeed, 22, -10, 22, -5, 30),  segment(kFeed, 22, -5, 17, -5, 40),
+          segment(kFeed, 17, -5, 12, -13, 50),  segment(kFeed, 12, -13, 7, -13, 60),
+          segment(kFeed, 7, -13, 2, -1, 70),    segment(kFeed, 2, -1, 2, 0, 80)};
+}
+
+// This is the G71 pocket of g71_cycle_test.cpp (TurningRoughingTypeII) mirrored: a point
+// (X, Z) there is (radius Z + 32, Z X − 25) here, so its hand expansion carries over leg by
+// leg, with X and Z exchanged. Re-derived in G72's terms: deepest point Z-13, levels Z -4,
+// -8, -12. Wall N50: radius 17 − 5t, Z −5 − 8t (Z-8 → t 3/8, radius 15.125; Z-12 → 12.625).
+// Wall N70: radius 7 − 5t, Z −13 + 12t (Z-4 → t 0.75, radius 3.25; Z-8 → radius
+// 7 − 25/12 = 4.916666…; Z-12 → 7 − 5/12 = 6.583333…). Back off e = 1 in +Z.
+TEST(FacingRoughing, TypeIIRingGrooveInTheFace) {
+  RoughingParams p = params(4, 1, 0, 0);
+  p.typeII = true;
+  const auto legs = facingRoughingLegs(RZ(34, 0), ringGrooveContour(), p);
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  constexpr double r17 = 7 - 25.0 / 12;  // 4.916666…
+  constexpr double r13 = 7 - 5.0 / 12;   // 6.583333…
+  expectLegsNear(legs.value(), {
+      {kRapid, 34, 0, 34, -4, 2},
+      {kFeed, 34, -4, 3.25, -4, 3},
+      {kFeed, 3.25, -4, 2, -1, 4},
+      {kFeed, 2, -1, 2, 0, 4},
+      {kFeed, 2, 0, 2, 1, 4},
+      {kRapid, 2, 1, 34, 1, 5},
+      {kRapid, 34, 1, 34, -8, 6},
+      {kFeed, 34, -8, 22, -8, 3},
+      {kFeed, 22, -8, 22, -5, 4},
+      {kFeed, 22, -5, 17, -5, 4},
+      {kFeed, 17, -5, 17, -4, 4},
+      {kFeed, 17, -4, 17, -5, 6},
+      {kFeed, 17, -5, 15.125, -8, 6},
+      {kFeed, 15.125, -8, r17, -8, 3},
+      {kFeed, r17, -8, 3.25, -4, 4},
+      {kFeed, 3.25, -4, 3.25, -3, 4},
+      {kRapid, 3.25, -3, 3.25, 0, 5},
+      {kRapid, 3.25, 0, 15.125, 0, 5},
+      {kRapid, 15.125, 0, 15.125, -7, 5},
+      {kFeed, 15.125, -7, 15.125, -8, 6},
+      {kFeed, 15.125, -8, 12.625, -12, 6},
+      {kFeed, 12.625, -12, r13, -12, 3},
+      {kFeed, r13, -12, r17, -8, 4},
+      {kFeed, r17, -8, r17, -7, 4},
+      {kRapid, r17, -7, r17, 0, 5},
+      {kRapid, r17, 0, 34, 0, 5},
+      {kRapid, 34, 0, 34, -10, 6},
+      {kFeed, 34, -10, 22, -10, 7},
+      {kFeed, 22, -10, 22, -5, 7},
+      {kFeed, 22, -5, 17, -5, 7},
+      {kFeed, 17, -5, 12, -13, 7},
+      {kFeed, 12, -13, 7, -13, 7},
+      {kFeed, 7, -13, 2, -1, 7},
+      {kFeed, 2, -1, 2, 0, 7},
+      {kRapid, 2, 0, 34, 0, 8},
+  });
+}
+
+/// The legs and the contour with the axes exchanged (arcs change sense), so that G71's
+/// no-gouge check applies: G72's levels step in Z as G71's step in X.
+CycleLeg exchanged(CycleLeg leg) {
+  leg.from = RZ(leg.from.y(), leg.from.x());
+  leg.to = RZ(leg.to.y(), leg.to.x());
+  leg.center = RZ(leg.center.y(), leg.center.x());
+  if (leg.kind == MoveKind::ArcCW) {
+    leg.kind = MoveKind::ArcCCW;
+  } else if (leg.kind == MoveKind::ArcCCW) {
+    leg.kind = MoveKind::ArcCW;
+  }
+  return leg;
+}
+
+// Type I (the taper, the arc corner) and type II (the ring groove), several depths and
+// retracts, with an allowance: no roughing cut crosses the rough contour.
+TEST(FacingRoughingProperty, NeverGougesTheRoughContour) {
+  const Contour arcCorner = {segment(kRapid, 32, 2, 32, -10, 10),
+                             segment(kFeed, 32, -10, 20, -10, 20),
+                             arcSegment(kCw, 20, -10, 10, 0, 10, -10, 30),
+                             segment(kFeed, 10, 0, 0, 0, 40)};
+  struct Case {
+    Contour contour;
+    RZ start;
+    bool typeII;
+  };
+  const std::vector<Case> cases = {{faceContour(), RZ(52, 2), false},
+                                   {arcCorner, RZ(32, 2), false},
+                                   {ringGrooveContour(), RZ(34, 0), true}};
+  const RZ allowance(0.2, 0.3);
+  for (const Case& c : cases) {
+    for (const double depthMm : {0.7, 1.9, 3.3}) {
+      for (const double retractMm : {0.0, 0.6}) {
+        RoughingParams p = params(depthMm, retractMm, allowance.x(), allowance.y());
+        p.typeII = c.typeII;
+        const auto legs = facingRoughingLegs(c.start, c.contour, p);
+        ASSERT_TRUE(legs.ok()) << legs.error().message;
+        std::vector<CycleLeg> inG71Axes;
+        for (const CycleLeg& leg : legs.value()) inG71Axes.push_back(exchanged(leg));
+        Contour rough;
+        for (ContourSegment s : c.contour) {
+          s.from += allowance;
+          s.to += allowance;
+          s.center += allowance;
+          const CycleLeg e = exchanged({s.kind, s.from, s.to, 0, s.center});
+          rough.push_back({e.kind, e.from, e.to, e.center, s.line, s.column});
+        }
+        SCOPED_TRACE(testing::Message() << "depth " << depthMm << " retract " << retractMm);
+        test::expectNoGouge(inG71Axes, rough, -1.0);
+      }
+    }
+  }
+}
+
 TEST(FacingRoughingErrors, NamesTheAxesOfG72) {
   // N30 moves Z back from -2 to -6: the type I contour must be monotonic in Z, G72's step
   // axis.
