@@ -65,6 +65,22 @@ double arcSweepRad(const ContourSegment& arc) {
   return sweep < kAngleTolRad ? kTwoPi : sweep;
 }
 
+double arcTravelRad(const ContourSegment& arc, const RZ& point) {
+  return travelTo(arc, angleAround(arc.center, point));
+}
+
+RZ arcPointAt(const ContourSegment& arc, double angleRad) {
+  const double radius = radiusOf(arc);
+  return arc.center + RZ(radius * std::sin(angleRad), radius * std::cos(angleRad));
+}
+
+ContourSegment reversed(const ContourSegment& segment) {
+  ContourSegment back = segment;
+  back.kind = mirroredKind(segment.kind);
+  std::swap(back.from, back.to);
+  return back;
+}
+
 bool arcPassesAngleInside(const ContourSegment& arc, double angleRad) {
   const double travel = travelTo(arc, angleRad);
   return travel > kAngleTolRad && travel < arcSweepRad(arc) - kAngleTolRad;

@@ -33,6 +33,15 @@ double angleAround(const RZ& center, const RZ& point);
 /// How far an arc turns from its start to its end, in (0, 2π] rad; from == to is a full turn.
 double arcSweepRad(const ContourSegment& arc);
 
+/// How far the arc turns from its start to `point` (a point on its circle), in [0, 2π) rad.
+double arcTravelRad(const ContourSegment& arc, const RZ& point);
+
+/// The point of the arc's circle in direction `angleRad` from its centre.
+RZ arcPointAt(const ContourSegment& arc, double angleRad);
+
+/// The segment run backwards: ends exchanged, ArcCW ↔ ArcCCW.
+ContourSegment reversed(const ContourSegment& segment);
+
 /// True when the arc passes through the direction `angleRad` strictly between its ends,
 /// e.g. π/2 for its highest X: then X reverses inside the arc.
 bool arcPassesAngleInside(const ContourSegment& arc, double angleRad);

@@ -2,10 +2,12 @@
 // numbers in interp/stock_removal.cpp), the contour rules' errors, and a no-gouge property.
 // Positions are (radius, Z) mm; the programs' X words are diameters, halved in the comments.
 
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "interp/roughing_cycle.hpp"
@@ -232,6 +234,158 @@ TEST(TurningRoughing, IdBoringStepsOutward) {
   });
 }
 
+// ---- Type II: pockets ------------------------------------------------------------------
+
+// A = X50 Z2 (radius 25). N10 G00 X30 W0 (radius 15: type II); N20 G01 Z-10; N30 X40
+// (radius 20, a shoulder); N40 Z-15; N50 X24 Z-20 (radius 12: down into a pocket); N60 Z-25;
+// N70 X48 Z-30 (radius 24); N80 X50. G71 U4 R1; G71 P10 Q80 U0 W0.
+Contour pocketContour() {
+  return {segment(kRapid, 25, 2, 15, 2, 10),     segment(kFeed, 15, 2, 15, -10, 20),
+          segment(kFeed, 15, -10, 20, -10, 30),  segment(kFeed, 20, -10, 20, -15, 40),
+          segment(kFeed, 20, -15, 12, -20, 50),  segment(kFeed, 12, -20, 12, -25, 60),
+          segment(kFeed, 12, -25, 24, -30, 70),  segment(kFeed, 24, -30, 25, -30, 80)};
+}
+
+// No allowance: A′ = A. Deepest contour point: radius 12, depth 13: levels 21, 17, 13.
+// Wall N50: X = 20 - 8t, Z = -15 - 5t (17 → Z -16.875; 13 → Z -19.375).
+// Wall N70: X = 12 + 12t, Z = -25 - 5t (21 → Z -28.75; 17 → Z -27.083333…; 13 → -25.416666…).
+// Level 21 lies in the material all the way to N70: one interval; climb N70 and N80 up to the
+//   previous level, X_A′ = 25, back off 1 to 26.
+// Level 17: material over Z 2…-10 (the cylinder radius 15) and over the pocket Z -16.875 …
+//   -27.083333 (the shoulder radius 20 sticks out between). First interval: climb the
+//   shoulder face and across its top to (20, -15), where N50 heads down, back off to 21.
+//   The pocket: its entry wall, walked back from (17, -16.875), climbs to (20, -15) and stops
+//   at the flat top; the tool stands right above it, so it feeds the last e onto it, follows
+//   N50 down, cuts, climbs N70 to the level 21 at Z -28.75, backs off to 22.
+// Level 13: only the pocket, Z -19.375 … -25.416666. Entry wall N50 walked back up to the
+//   previous level 17 at Z -16.875: rapid up to 25, along Z, down to 18 (e short), feed to 17,
+//   down the wall, cut, climb N70 to 17 at Z -27.083333, back off to 18.
+// Then back over X 25 to Z 2, infeed to B′ (rapid: G00), the semi-finishing pass, rapid to A.
+TEST(TurningRoughingTypeII, PocketIsEnteredDownItsWallAndLeftUpTheOther) {
+  RoughingParams p = params(4, 1, 0, 0);
+  p.typeII = true;
+  const auto legs = turningRoughingLegs(RZ(25, 2), pocketContour(), p);
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  constexpr double z17 = -25 - 25.0 / 12;  // -27.083333…
+  constexpr double z13 = -25 - 5.0 / 12;   // -25.416666…
+  expectLegsNear(legs.value(), {
+      {kRapid, 25, 2, 21, 2, 2},
+      {kFeed, 21, 2, 21, -28.75, 3},
+      {kFeed, 21, -28.75, 24, -30, 4},
+      {kFeed, 24, -30, 25, -30, 4},
+      {kFeed, 25, -30, 26, -30, 4},
+      {kRapid, 26, -30, 26, 2, 5},
+      {kRapid, 26, 2, 17, 2, 6},
+      {kFeed, 17, 2, 17, -10, 3},
+      {kFeed, 17, -10, 20, -10, 4},
+      {kFeed, 20, -10, 20, -15, 4},
+      {kFeed, 20, -15, 21, -15, 4},
+      {kFeed, 21, -15, 20, -15, 6},
+      {kFeed, 20, -15, 17, -16.875, 6},
+      {kFeed, 17, -16.875, 17, z17, 3},
+      {kFeed, 17, z17, 21, -28.75, 4},
+      {kFeed, 21, -28.75, 22, -28.75, 4},
+      {kRapid, 22, -28.75, 25, -28.75, 5},
+      {kRapid, 25, -28.75, 25, -16.875, 5},
+      {kRapid, 25, -16.875, 18, -16.875, 5},
+      {kFeed, 18, -16.875, 17, -16.875, 6},
+      {kFeed, 17, -16.875, 13, -19.375, 6},
+      {kFeed, 13, -19.375, 13, z13, 3},
+      {kFeed, 13, z13, 17, z17, 4},
+      {kFeed, 17, z17, 18, z17, 4},
+      {kRapid, 18, z17, 25, z17, 5},
+      {kRapid, 25, z17, 25, 2, 5},
+      {kRapid, 25, 2, 15, 2, 6},
+      {kFeed, 15, 2, 15, -10, 7},
+      {kFeed, 15, -10, 20, -10, 7},
+      {kFeed, 20, -10, 20, -15, 7},
+      {kFeed, 20, -15, 12, -20, 7},
+      {kFeed, 12, -20, 12, -25, 7},
+      {kFeed, 12, -25, 24, -30, 7},
+      {kFeed, 24, -30, 25, -30, 7},
+      {kRapid, 25, -30, 25, 2, 8},
+  });
+}
+
+// A = X50 Z2 (radius 25). N10 G00 X40 W0 (radius 20); N20 G01 Z-10;
+// N30 G02 Z-20 R5 (a round groove about (20, -15), down to radius 15: X reverses inside the
+// arc, which type II allows); N40 G01 Z-30; N50 X50. G71 U3 R0.5; G71 P10 Q50 U0 W0.
+Contour roundGrooveContour() {
+  return {segment(kRapid, 25, 2, 20, 2, 10), segment(kFeed, 20, 2, 20, -10, 20),
+          arcSegment(kCw, 20, -10, 20, -20, 20, -15, 30), segment(kFeed, 20, -20, 20, -30, 40),
+          segment(kFeed, 20, -30, 25, -30, 50)};
+}
+
+// Deepest point radius 15 (depth 10): levels 22, 19, 16. On the groove X = 20 − √(25 − (Z+15)²):
+//   X 19 at Z = -15 ± √24 = -10.101020514433644 (za) and -19.898979485566358 (zb)
+//   X 16 at Z = -15 ± 3 = -12 and -18.
+// Level 22: one interval to the end face at Z-30; climb the face to 25, back off to 25.5.
+// Level 19: the cylinder radius 20 lies above it, so only the groove: its entry wall, walked
+//   back from (19, za), climbs the arc to (20, -10) and stops at the flat cylinder. Rapid
+//   over X 25 to Z-10, down to the previous level 22 (e short of W would be 20.5, below the
+//   level 22, where the band over the cylinder is still uncut), feed to W, down the arc, cut,
+//   climb the arc to (20, -20), across the flat to Z-30 (cutting the band there), up the face
+//   to 22, back off to 22.5.
+// Level 16: entry wall walked back up to the level 19 at za; rapid down to 19.5, feed to 19,
+//   down the arc to (16, -12), cut to -18, climb the arc to 19 at zb, back off to 19.5.
+TEST(TurningRoughingTypeII, RoundGrooveFollowsTheArc) {
+  RoughingParams p = params(3, 0.5, 0, 0);
+  p.typeII = true;
+  const auto legs = turningRoughingLegs(RZ(25, 2), roundGrooveContour(), p);
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  constexpr double za = -10.101020514433644;
+  constexpr double zb = -19.898979485566358;
+  expectLegsNear(legs.value(), {
+      {kRapid, 25, 2, 22, 2, 2},
+      {kFeed, 22, 2, 22, -30, 3},
+      {kFeed, 22, -30, 25, -30, 4},
+      {kFeed, 25, -30, 25.5, -30, 4},
+      {kRapid, 25.5, -30, 25, -30, 5},
+      {kRapid, 25, -30, 25, -10, 5},
+      {kRapid, 25, -10, 22, -10, 5},
+      {kFeed, 22, -10, 20, -10, 6},
+      {kCw, 20, -10, 19, za, 6, 20, -15},
+      {kFeed, 19, za, 19, zb, 3},
+      {kCw, 19, zb, 20, -20, 4, 20, -15},
+      {kFeed, 20, -20, 20, -30, 4},
+      {kFeed, 20, -30, 22, -30, 4},
+      {kFeed, 22, -30, 22.5, -30, 4},
+      {kRapid, 22.5, -30, 25, -30, 5},
+      {kRapid, 25, -30, 25, za, 5},
+      {kRapid, 25, za, 19.5, za, 5},
+      {kFeed, 19.5, za, 19, za, 6},
+      {kCw, 19, za, 16, -12, 6, 20, -15},
+      {kFeed, 16, -12, 16, -18, 3},
+      {kCw, 16, -18, 19, zb, 4, 20, -15},
+      {kFeed, 19, zb, 19.5, zb, 4},
+      {kRapid, 19.5, zb, 25, zb, 5},
+      {kRapid, 25, zb, 25, 2, 5},
+      {kRapid, 25, 2, 20, 2, 6},
+      {kFeed, 20, 2, 20, -10, 7},
+      {kCw, 20, -10, 20, -20, 7, 20, -15},
+      {kFeed, 20, -20, 20, -30, 7},
+      {kFeed, 20, -30, 25, -30, 7},
+      {kRapid, 25, -30, 25, 2, 8},
+  });
+}
+
+// The same pocket contour is refused as type I: X turns back toward B at N50.
+TEST(TurningRoughingTypeII, PocketNeedsTypeII) {
+  expectRoughingError(turningRoughingLegs(RZ(25, 2), pocketContour(), params(4, 1, 0, 0)), 50,
+                      1, "G71 type I contour must be monotonic in X");
+}
+
+// Type II still needs Z monotonic: N60 turned back to Z-18.
+TEST(TurningRoughingTypeII, ZMustStayMonotonic) {
+  Contour contour = pocketContour();
+  contour[5] = segment(kFeed, 12, -20, 12, -18, 60);
+  contour[6] = segment(kFeed, 12, -18, 24, -30, 70);
+  RoughingParams p = params(4, 1, 0, 0);
+  p.typeII = true;
+  expectRoughingError(turningRoughingLegs(RZ(25, 2), contour, p), 60, 1,
+                      "G71 contour must be monotonic in Z: this block moves Z against");
+}
+
 // ---- The contour rules --------------------------------------------------------------
 
 TEST(TurningRoughingErrors, DepthMustBePositive) {
@@ -302,53 +456,6 @@ TEST(TurningRoughingErrors, ArcMustNotReverseZ) {
 
 // ---- Property: the roughing never gouges the rough contour ---------------------------
 
-/// Where the rough contour crosses Z = z: every candidate X (several on a face).
-std::vector<double> contourXsAt(const Contour& contour, double z) {
-  std::vector<double> xs;
-  for (std::size_t i = 1; i < contour.size(); ++i) {
-    const ContourSegment& s = contour[i];
-    const double zLo = std::min(s.from.y(), s.to.y());
-    const double zHi = std::max(s.from.y(), s.to.y());
-    if (z < zLo - 1e-9 || z > zHi + 1e-9) continue;
-    if (!isArc(s.kind)) {
-      if (std::abs(s.to.y() - s.from.y()) < 1e-12) {
-        xs.push_back(s.from.x());
-        xs.push_back(s.to.x());
-      } else {
-        const double t = (z - s.from.y()) / (s.to.y() - s.from.y());
-        xs.push_back(s.from.x() + t * (s.to.x() - s.from.x()));
-      }
-      continue;
-    }
-    // A monotonic arc: of the circle's two X at this Z, the one between the arc's ends.
-    const double r = (s.from - s.center).norm();
-    const double h = std::sqrt(std::max(0.0, r * r - (z - s.center.y()) * (z - s.center.y())));
-    const double xLo = std::min(s.from.x(), s.to.x()) - 1e-9;
-    const double xHi = std::max(s.from.x(), s.to.x()) + 1e-9;
-    for (const double x : {s.center.x() + h, s.center.x() - h}) {
-      if (x >= xLo && x <= xHi) xs.push_back(x);
-    }
-  }
-  return xs;
-}
-
-/// Every point of every roughing feed (steps 3 and 4) lies on A's side of the rough contour:
-/// (X − X_contour(Z))·stepDir ≤ 0, taking on a face the most lenient of its X.
-void expectNoGouge(const std::vector<CycleLeg>& legs, const Contour& rough, double stepDir) {
-  for (const CycleLeg& leg : legs) {
-    if (leg.kind != kFeed || (leg.step != 3 && leg.step != 4)) continue;
-    for (int i = 0; i <= 50; ++i) {
-      const RZ p = leg.from + (leg.to - leg.from) * (i / 50.0);
-      const std::vector<double> xs = contourXsAt(rough, p.y());
-      if (xs.empty()) continue;
-      double lenient = -std::numeric_limits<double>::infinity();
-      for (const double x : xs) lenient = std::max(lenient, stepDir * x);
-      EXPECT_LE(stepDir * p.x() - lenient, 1e-9)
-          << "leg step " << leg.step << " point (" << p.x() << ", " << p.y() << ")";
-    }
-  }
-}
-
 TEST(TurningRoughingProperty, RoughingNeverGougesTheRoughContour) {
   const Contour contour = odArcContour();
   for (const double depthMm : {0.7, 1.3, 2.9}) {
@@ -361,7 +468,7 @@ TEST(TurningRoughingProperty, RoughingNeverGougesTheRoughContour) {
       s.to += RZ(0.5, 0.2);
       s.center += RZ(0.5, 0.2);
     }
-    expectNoGouge(legs.value(), rough, -1.0);
+    test::expectNoGouge(legs.value(), rough, -1.0);
   }
   const Contour taper = odTaperContour();
   const auto legs = turningRoughingLegs(RZ(50, 2), taper, params(1.7, 0.3, 0.25, 0.1));
@@ -371,7 +478,89 @@ TEST(TurningRoughingProperty, RoughingNeverGougesTheRoughContour) {
     s.from += RZ(0.25, 0.1);
     s.to += RZ(0.25, 0.1);
   }
-  expectNoGouge(legs.value(), rough, -1.0);
+  test::expectNoGouge(legs.value(), rough, -1.0);
+}
+
+// Type II, OD and boring, straight and round pockets, several depths and retracts, with an
+// allowance: no roughing cut crosses the rough contour.
+TEST(TurningRoughingProperty, TypeIINeverGougesTheRoughContour) {
+  // A bore (A = X10 Z2, radius 5) with a round groove outward: N10 G00 X20 W0 (radius 10);
+  // N20 G01 Z-10; N30 G03 Z-20 R5 (about (10, -15), out to radius 15); N40 G01 Z-30; N50 X10.
+  const Contour bore = {segment(kRapid, 5, 2, 10, 2, 10), segment(kFeed, 10, 2, 10, -10, 20),
+                        arcSegment(kCcw, 10, -10, 10, -20, 10, -15, 30),
+                        segment(kFeed, 10, -20, 10, -30, 40), segment(kFeed, 10, -30, 5, -30, 50)};
+  struct Case {
+    Contour contour;
+    RZ start;
+    RZ allowance;
+  };
+  const std::vector<Case> cases = {{pocketContour(), RZ(25, 2), RZ(0.3, 0)},
+                                   {roundGrooveContour(), RZ(25, 2), RZ(0.2, 0)},
+                                   {bore, RZ(5, 2), RZ(-0.2, 0)}};
+  for (const Case& c : cases) {
+    const double stepDir = c.contour.front().to.x() > c.start.x() ? 1.0 : -1.0;
+    for (const double depthMm : {0.6, 1.1, 2.3, 3.7}) {
+      for (const double retractMm : {0.0, 0.4, 1.5}) {
+        RoughingParams p = params(depthMm, retractMm, c.allowance.x(), c.allowance.y());
+        p.typeII = true;
+        const auto legs = turningRoughingLegs(c.start, c.contour, p);
+        ASSERT_TRUE(legs.ok()) << legs.error().message;
+        Contour rough = c.contour;
+        for (ContourSegment& s : rough) {
+          s.from += c.allowance;
+          s.to += c.allowance;
+          s.center += c.allowance;
+        }
+        SCOPED_TRACE(testing::Message() << "depth " << depthMm << " retract " << retractMm);
+        test::expectNoGouge(legs.value(), rough, stepDir);
+      }
+    }
+  }
+}
+
+// Random contours (fixed seed): type I staircases and tapers toward -Z and out in X, and
+// type II profiles whose X wanders, each with random Δd, e and allowance.
+TEST(TurningRoughingProperty, RandomContoursNeverGouge) {
+  std::mt19937 random(71);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 60; ++trial) {
+    const bool typeII = trial % 2 == 1;
+    const RZ start(30, 2);
+    Contour contour;
+    RZ at(5 + 10 * unit(random), 2);
+    contour.push_back({kRapid, start, at, RZ(0, 0), 10, 1});
+    for (int i = 0; i < 6; ++i) {
+      RZ next = at + RZ(0, -(0.5 + 6 * unit(random)));  // Z always falls
+      if (typeII) {
+        next.x() = 3 + 22 * unit(random);
+      } else {
+        next.x() = std::min(28.0, at.x() + (unit(random) < 0.3 ? 0 : 6 * unit(random)));
+      }
+      if (unit(random) < 0.3) next.y() = at.y();  // a face: X only
+      contour.push_back({kFeed, at, next, RZ(0, 0), 20 + 10 * i, 1});
+      at = next;
+    }
+    RoughingParams p = params(0.3 + 3 * unit(random), 2 * unit(random), unit(random) - 0.3,
+                              typeII ? 0 : 0.3 * unit(random));
+    p.typeII = typeII;
+    const auto legs = turningRoughingLegs(start, contour, p);
+    ASSERT_TRUE(legs.ok()) << legs.error().message;
+    Contour rough = contour;
+    for (ContourSegment& s : rough) {
+      s.from += RZ(p.allowanceXMm, p.allowanceZMm);
+      s.to += RZ(p.allowanceXMm, p.allowanceZMm);
+    }
+    SCOPED_TRACE(testing::Message() << "trial " << trial);
+    test::expectNoGouge(legs.value(), rough, -1.0);
+  }
+}
+
+// The checker itself: a cut that dips below the contour is caught.
+TEST(TurningRoughingProperty, GougeCheckerCatchesADip) {
+  const Contour rough = odTaperContour();
+  const std::vector<CycleLeg> gouging = {
+      {kFeed, RZ(25, -10), RZ(19, -10), 3}};  // the contour has radius 20 at Z-10
+  EXPECT_NONFATAL_FAILURE(test::expectNoGouge(gouging, rough, -1.0), "leg step 3");
 }
 
 }  // namespace
