@@ -220,6 +220,42 @@ TEST(G71, FirstBlockValuesDefaultToTheParameters) {
               {{kRapid, 20, 2, 19, 2, 0, 2}, {kFeed, 19, 2, 19, -5, 0.2, 3}});
 }
 
+TEST(G72, FirstBlockWIsTheDepthAndPassesRunAlongX) {
+  // G72 W2 R0.5: Δd 2 in Z, e 0.5. A = (22, 2); contour: N10 rapid to (22, -5) (type I: Z
+  // only), N20 a face to the axis. Levels Z 0, -2, -4 (a fourth at -6 would pass B′ at -5);
+  // each cut along X to the contour's end at r 0 (the level never meets the face), a 45°
+  // retract (+0.5, +0.5), rapid back in X to r 22, infeed Δd + e; then to B′, the
+  // semi-finishing face and the rapid back to A.
+  const auto result = run("G00 X44 Z2\nG72 W2 R0.5\nG72 P10 Q20 F0.2\nN10 G00 Z-5\nN20 G01 X0\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 22, 2, 0, 0},
+                                      {kRapid, 22, 2, 22, 0, 0, 2},
+                                      {kFeed, 22, 0, 0, 0, 0.2, 3},
+                                      {kFeed, 0, 0, 0.5, 0.5, 0.2, 4},
+                                      {kRapid, 0.5, 0.5, 22, 0.5, 0, 5},
+                                      {kRapid, 22, 0.5, 22, -2, 0, 6},
+                                      {kFeed, 22, -2, 0, -2, 0.2, 3},
+                                      {kFeed, 0, -2, 0.5, -1.5, 0.2, 4},
+                                      {kRapid, 0.5, -1.5, 22, -1.5, 0, 5},
+                                      {kRapid, 22, -1.5, 22, -4, 0, 6},
+                                      {kFeed, 22, -4, 0, -4, 0.2, 3},
+                                      {kFeed, 0, -4, 0.5, -3.5, 0.2, 4},
+                                      {kRapid, 0.5, -3.5, 22, -3.5, 0, 5},
+                                      {kRapid, 22, -3.5, 22, -5, 0, 6},
+                                      {kFeed, 22, -5, 0, -5, 0.2, 7},
+                                      {kRapid, 0, -5, 22, 2, 0, 8}});
+}
+
+TEST(G71, BothAxesInTheNsBlockMakeTypeII) {
+  // A pocket (X goes down, up, down again) is refused by type I, accepted by type II, which
+  // the ns block selects by giving Z(W) as well as X(U): W0 is enough.
+  const std::string pocket = "N20 G01 Z-10 F0.1\nN30 X26 Z-15\nN40 X20 Z-20\nN50 X40\n";
+  const auto typeI = run("G00 X40 Z2\nG71 P10 Q50 F0.2\nN10 G00 X20\n" + pocket);
+  expectError(typeI, 6, 1, "type I contour must be monotonic");
+  const auto typeII = run("G00 X40 Z2\nG71 P10 Q50 F0.2\nN10 G00 X20 W0\n" + pocket);
+  EXPECT_TRUE(typeII.ok()) << typeII.diagnostics[0].message;
+}
+
 // ---- errors ----
 
 constexpr std::string_view kContour = "M30\nN10 G00 X20\nN20 G01 Z-10 F0.1\n";
