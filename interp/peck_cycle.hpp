@@ -28,6 +28,8 @@ struct PeckParams {
 };
 
 /// The legs from the cycle start `start` (A) to the end point `end`; the cycle ends at A.
+/// The caller checks that `peckMm` > 0 when A and the end differ along the peck axis and
+/// `shiftMm` > 0 when they differ along the other (the plunges would never arrive).
 std::vector<CycleLeg> peckCycleLegs(const PeckCycle& cycle, const RZ& start, const RZ& end,
                                     const PeckParams& params);
 

@@ -99,6 +99,22 @@ TEST(G73, OnePassRunsAsTwo) {
                                       {kRapid, 20, 2, 30, 2, 0, 4}});
 }
 
+TEST(G73, ContourIsFoundInTheCyclesOwnProgram) {
+  // Main and subprogram both have an N10; the subprogram's G73 uses its own (X40), and after
+  // its nf block the subprogram goes on to M99. The legs are those of OnePassRunsAsTwo.
+  const auto result = run(
+      "G00 X60 Z2\nM98 P100\nM30\nN10 G00 X10\n"
+      "O0100\nG73 U2 R1\nG73 P10 Q10 F0.2\nN10 G01 X40\nM99\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 30, 2, 0, 0},
+                                      {kRapid, 30, 2, 32, 2, 0, 1},
+                                      {kFeed, 32, 2, 22, 2, 0.2, 2},
+                                      {kRapid, 22, 2, 30, 2, 0, 1},
+                                      {kFeed, 30, 2, 20, 2, 0.2, 2},
+                                      {kRapid, 20, 2, 30, 2, 0, 4}});
+  EXPECT_EQ(result.toolpath.moves[1].line, 7);
+}
+
 TEST(G74, PeckDrillWithThreePecks) {
   // A = (0, 2), Z end -20, Δk = Q8000 = 8 mm, e = 1: feed to Z-6, back to -5, feed to -14,
   // back to -13, feed the last 6 mm to -20, rapid back to Z2 (= A: no step 6).
