@@ -47,6 +47,13 @@
 // climb out take away the band between two levels next to the walls, so each band is cut
 // whole and every move stays on A′'s side of the rough contour.
 // The legs of zero length are left out.
+//
+// Errors, each at the contour block to blame (the ns block for Δd and e; line 0 for an
+// empty contour): empty contour; Δd ≤ 0; e < 0; ns block an arc; ns block not moving in X;
+// type I: a block moving X back toward B, or an arc turning in X inside its span; both
+// types: a block moving Z against the earlier blocks, or an arc turning in Z inside its span.
+// "Monotonic in X" for type I means: after the ns block, X moves only away from B, toward
+// A's side; the ns block itself (the approach A → B) is exempt.
 
 #include "interp/stock_removal.hpp"
 
@@ -446,6 +453,10 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
   if (!(params.depthMm > 0)) {
     return errorAt(ns, fmt::format("{} depth of cut Δd is {}; expected a depth greater than 0",
                                    cycle, params.depthMm));
+  }
+  if (!(params.retractMm >= 0)) {
+    return errorAt(ns, fmt::format("{} retract e is {}; expected 0 or more", cycle,
+                                   params.retractMm));
   }
   if (isArc(ns.kind)) {
     return errorAt(ns, fmt::format("{} ns block is an arc; expected G00 or G01 (arcs are "

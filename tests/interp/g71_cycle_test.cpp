@@ -395,6 +395,11 @@ TEST(TurningRoughingErrors, DepthMustBePositive) {
                       10, 1, "depth of cut Δd is -1");
 }
 
+TEST(TurningRoughingErrors, RetractMustNotBeNegative) {
+  expectRoughingError(turningRoughingLegs(RZ(50, 2), odTaperContour(), params(2, -0.5, 0, 0)),
+                      10, 1, "G71 retract e is -0.5; expected 0 or more");
+}
+
 TEST(TurningRoughingErrors, EmptyContour) {
   expectRoughingError(turningRoughingLegs(RZ(50, 2), {}, params(2, 0.5, 0, 0)), 0, 0,
                       "G71 contour is empty");
