@@ -1,5 +1,6 @@
 #include "interp/compound_cycle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -30,6 +31,8 @@ class CompoundCycle {
   double length(const Word& word) const { return lengthMm(word, state_.inch); }
   Status positive(const std::optional<Word>& word, std::string_view meaning) const;
   Status notNegative(const std::optional<Word>& word, std::string_view meaning) const;
+  Status oneOf(const std::optional<Word>& absolute, const std::optional<Word>& incremental,
+               std::string_view axis) const;
   Status needFeed() const;
   Result<ContourSpan> contourSpan() const;
   Result<ExtractedContour> contour(ContourSpan span) const;
@@ -82,6 +85,14 @@ Status CompoundCycle::notNegative(const std::optional<Word>& word,
                                              code_.text, word->text(), meaning));
   }
   return success();
+}
+
+Status CompoundCycle::oneOf(const std::optional<Word>& absolute,
+                            const std::optional<Word>& incremental, std::string_view axis) const {
+  if (!absolute || !incremental) return success();
+  return errorAt(std::max(absolute->column, incremental->column),
+                 fmt::format("{} and {} both give the {} axis; give one of them",
+                             absolute->text(), incremental->text(), axis));
 }
 
 Status CompoundCycle::needFeed() const {
@@ -222,14 +233,8 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   const auto p = block_.take('P');
   const auto q = block_.take('Q');
   const auto r = block_.take('R');
-  for (const auto* word : {&x, &z}) {
-    const auto& other = word == &x ? u : w;
-    if (*word && other) {
-      return errorAt(std::max((*word)->column, other->column),
-                     fmt::format("{} and {} both give the {} axis; give one of them",
-                                 (*word)->text(), other->text(), word == &x ? "X" : "Z"));
-    }
-  }
+  if (auto s = oneOf(x, u, "X"); !s.ok()) return s;
+  if (auto s = oneOf(z, w, "Z"); !s.ok()) return s;
   for (const auto* word : {&p, &q, &r}) {
     if (auto s = notNegative(*word, "a distance"); !s.ok()) return s;
   }

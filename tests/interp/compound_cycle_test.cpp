@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "interp/block_executor.hpp"
+#include "interp/lexer.hpp"
 #include "test_support.hpp"
 
 namespace lathesim::interp {
@@ -339,6 +341,43 @@ TEST(CompoundCycleErrors, PatternPassesMustBeAWholeNumber) {
 
 TEST(CompoundCycleErrors, CycleWithoutFeed) {
   expectError(run("G00 X0 Z2\nG74 Z-20 Q8000\n"), 2, 1, "feed rate F is not set: G74 cuts at feed");
+}
+
+TEST(CompoundCycleErrors, PeckEndGivenTwice) {
+  expectError(run("G00 X0 Z2\nG74 Z-20 W-22 Q8000 F0.1\n"), 2, 10,
+              "Z-20 and W-22 both give the Z axis; give one of them");
+}
+
+TEST(CompoundCycleErrors, NegativeRetract) {
+  expectError(run("G71 U1 R-1\n"), 1, 8, "G71 R-1 is not a retract distance e: expected a number ≥ 0");
+}
+
+TEST(CompoundCycleErrors, SequenceNumberWithADecimalPoint) {
+  expectError(run(withContour("G70 P10.5 Q20")), 2, 5, "P10.5 is not a sequence number");
+}
+
+TEST(CompoundCycleErrors, ContourWithoutAMove) {
+  // N10 goes to X60, where the tool already is; N20 only sets F.
+  expectError(run("G00 X60 Z2\nG73 P10 Q20 F0.2\nN10 G00 X60\nN20 F0.1\n"), 2, 1,
+              "the contour of G73 makes no move from the cycle start point");
+}
+
+TEST(CompoundCycleErrors, ContourCycleOnItsOwn) {
+  // A block run without its program (as the contour blocks themselves are) cannot reach a
+  // contour.
+  auto words = tokenize(RawBlock{1, 1, false, {{"G", 1}, {"7", 2}, {"0", 3}, {"P", 4},
+                                               {"1", 5}, {"Q", 6}, {"2", 7}}});
+  ASSERT_TRUE(words.ok());
+  auto block = parseBlock(words.value(), 1, 1);
+  ASSERT_TRUE(block.ok());
+  ModalState state;
+  state.feed = 0.1;
+  const auto outcome = executeBlock(block.value(), state, test::defaultOptions(), 0);
+  ASSERT_FALSE(outcome.ok());
+  EXPECT_NE(outcome.error().message.find("G70 needs its contour blocks, but this block is run "
+                                         "on its own"),
+            std::string::npos)
+      << outcome.error().message;
 }
 
 TEST(CompoundCycleErrors, PeckDepthMissing) {

@@ -124,6 +124,16 @@ TEST(Subprogram, CountGivenTwiceIsAnError) {
   expectError(run(withMain("M98 P21000 L2")), 2, 12, "P21000 and L2 both give the repeat count");
 }
 
+TEST(Subprogram, ZeroRepeatCountIsAnError) {
+  expectError(run(withMain("M98 P01000")), 2, 5,
+              "P01000: the digits before the four-digit program number are the repeat count, "
+              "expected 1 to 9999");
+}
+
+TEST(Subprogram, LMustBeAWholeCount) {
+  expectError(run(withMain("M98 P1000 L0")), 2, 11, "L0 is not a repeat count");
+}
+
 TEST(Subprogram, ProgramNumberWithADecimalPointIsAnError) {
   expectError(run(withMain("M98 P1000.")), 2, 5, "P1000. is not a program number");
 }
