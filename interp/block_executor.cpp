@@ -10,16 +10,14 @@
 #include <fmt/format.h>
 
 #include "interp/arc_move.hpp"
+#include "interp/compound_cycle.hpp"
 #include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
+#include "interp/subprogram_call.hpp"
+#include "interp/word_units.hpp"
 
 namespace lathesim::interp {
 namespace {
-
-constexpr double kMmPerInch = 25.4;
-
-// The one place where a programmed length becomes millimetres (G20 → inch).
-double lengthMm(const Word& word, bool inch) { return inch ? word.value * kMmPerInch : word.value; }
 
 // What sets G90 and G94 apart; the rest of a single cycle (modal retention, the checks,
 // emitting its legs) is one code path for both.
@@ -41,8 +39,13 @@ struct AxisWords {
 
 class Executor {
  public:
-  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal)
-      : block_(std::move(block)), state_(std::move(state)), options_(options), ordinal_(ordinal) {}
+  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal,
+           const BlockPlace* place)
+      : block_(std::move(block)),
+        state_(std::move(state)),
+        options_(options),
+        ordinal_(ordinal),
+        place_(place) {}
 
   Result<BlockOutcome> run();
 
@@ -66,6 +69,8 @@ class Executor {
   RZ endPoint(const AxisWords& axes) const;
   std::optional<ArcWord> arcWord(char letter);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
+  Status applyCompoundCycle(const Code& code);
+  Status applySubprogramCode();
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
 
@@ -73,12 +78,15 @@ class Executor {
   ModalState state_;
   const InterpreterOptions& options_;
   int ordinal_;
+  const BlockPlace* place_;
   std::vector<Move> moves_;
+  ProgramFlow flow_;
 };
 
 Result<BlockOutcome> Executor::run() {
   block_.take('N');  // sequence number: a label only
   block_.take('O');  // program number
+  if (auto status = applySubprogramCode(); !status.ok()) return status.error();
   if (auto code = block_.gCode(GGroup::Units)) state_.inch = code->number == 20;
   if (auto code = block_.gCode(GGroup::FeedMode)) {
     state_.feedMode = code->number == 98 ? FeedMode::PerMinute : FeedMode::PerRevolution;
@@ -97,7 +105,8 @@ Result<BlockOutcome> Executor::run() {
                                "belong to both; put them in separate blocks",
                                oneShot->text, motion->text));
   }
-  if (oneShot) {
+  const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
+  if (oneShot && !compound) {
     if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
   }
   if (auto status = applyFeed(); !status.ok()) return status.error();
@@ -110,13 +119,28 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number != 5) state_.spindleOn = true;
   if (coolant && coolant->number == 8) state_.coolantOn = true;
 
-  if (auto status = applyMotion(); !status.ok()) return status.error();
+  if (auto status = compound ? applyCompoundCycle(*oneShot) : applyMotion(); !status.ok()) {
+    return status.error();
+  }
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
 
   if (spindle && spindle->number == 5) state_.spindleOn = false;
   if (coolant && coolant->number == 9) state_.coolantOn = false;
   if (block_.mCode(MGroup::ProgramEnd)) state_.ended = true;
-  return BlockOutcome{std::move(state_), std::move(moves_)};
+  return BlockOutcome{std::move(state_), std::move(moves_), flow_};
+}
+
+Status Executor::applySubprogramCode() {
+  const auto code = block_.mCode(MGroup::Subprogram);
+  if (!code) return success();
+  if (code->number == 99) {
+    flow_.returnColumn = code->column;
+    return success();
+  }
+  auto call = takeSubprogramCall(block_, *code);
+  if (!call.ok()) return call.error();
+  flow_.call = call.value();
+  return success();
 }
 
 Result<AxisWords> Executor::takeAxisWords(Coordinates meaning) {
@@ -381,9 +405,21 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   kept = CycleRetained{xDiameterMm, zMm, rMm};
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
   for (const CycleLeg& leg : cycle.legs(start, end, rMm)) {
-    emit(leg.kind, leg.from, leg.to, leg.step);
+    emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
   }
   return success();  // the cycle ends at A: the position is unchanged
+}
+
+// G70–G75 (interp/compound_cycle.hpp) in place of the block's motion.
+Status Executor::applyCompoundCycle(const Code& code) {
+  state_.cycle = {};  // a one-shot code ends G90/G94's retained values
+  auto outcome = runCompoundCycle(code, block_, state_, options_, place_);
+  if (!outcome.ok()) return outcome.error();
+  const CompoundOutcome& done = outcome.value();
+  moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
+  for (const CycleLeg& leg : done.legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
+  flow_.continueAfter = done.continueAfter;
+  return success();
 }
 
 Status Executor::checkAllWordsUsed() const {
@@ -420,8 +456,9 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
 }  // namespace
 
 Result<BlockOutcome> executeBlock(ParsedBlock block, ModalState state,
-                                  const InterpreterOptions& options, int ordinal) {
-  return Executor(std::move(block), std::move(state), options, ordinal).run();
+                                  const InterpreterOptions& options, int ordinal,
+                                  const BlockPlace* place) {
+  return Executor(std::move(block), std::move(state), options, ordinal, place).run();
 }
 
 }  // namespace lathesim::interp

@@ -9,6 +9,8 @@
 #include "interp/block_parser.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/modal_state.hpp"
+#include "interp/program.hpp"
+#include "interp/program_flow.hpp"
 #include "interp/result.hpp"
 
 namespace lathesim::interp {
@@ -16,10 +18,20 @@ namespace lathesim::interp {
 struct BlockOutcome {
   ModalState state;         // the state after the block
   std::vector<Move> moves;  // in order, zero-length moves left out
+  ProgramFlow flow;         // M98, M99, or where G71–G73 resume
+};
+
+/// Where a block stands in the whole program; the compound cycles (G70–G73) need it to find
+/// their contour blocks.
+struct BlockPlace {
+  const Program& program;
+  std::size_t index;  // into program.blocks
 };
 
 /// Runs `block` from `state`. `ordinal` is the block's 0-based number among the blocks read.
+/// Without `place` (a block on its own) G70–G73 are errors.
 Result<BlockOutcome> executeBlock(ParsedBlock block, ModalState state,
-                                  const InterpreterOptions& options, int ordinal);
+                                  const InterpreterOptions& options, int ordinal,
+                                  const BlockPlace* place = nullptr);
 
 }  // namespace lathesim::interp

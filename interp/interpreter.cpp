@@ -4,39 +4,53 @@
 #include <utility>
 
 #include "interp/block_executor.hpp"
-#include "interp/block_parser.hpp"
-#include "interp/lexer.hpp"
+#include "interp/call_stack.hpp"
 #include "interp/modal_state.hpp"
+#include "interp/program.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-// Reads blocks until the text ends, M02/M30, or the first error; appends to `toolpath`.
+// Runs the program from its first block until M02/M30, the end of the text, or the first
+// error; appends to `toolpath`. A block's read error is reported when execution reaches it.
 Status runProgram(std::string_view programText, const InterpreterOptions& options,
                   Toolpath& toolpath) {
   ModalState state;
   state.position = options.startPosition;
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
 
-  BlockReader reader(programText);
-  while (!state.ended) {
-    auto next = reader.next();
-    if (!next.ok()) return next.error();
-    if (!next.value()) break;
-    const RawBlock& raw = *next.value();
-    const int ordinal = toolpath.blockCount++;
-    if (raw.deleted && options.blockDelete) continue;
+  const Program program = readProgram(programText, options.blockDelete, options.dialect);
+  CallStack calls(program);
+  std::size_t next = 0;
+  while (!state.ended && next < program.blocks.size()) {
+    const std::size_t index = next++;
+    const ProgramBlock& block = program.blocks[index];
+    toolpath.blockCount = std::max(toolpath.blockCount, block.ordinal + 1);
+    if (block.skipped) continue;
+    if (!block.parsed.ok()) return block.parsed.error();
 
-    auto words = tokenize(raw);
-    if (!words.ok()) return words.error();
-    auto parsed = parseBlock(words.value(), raw.line, raw.column, options.dialect);
-    if (!parsed.ok()) return parsed.error();
-    auto outcome = executeBlock(std::move(parsed).value(), state, options, ordinal);
+    const BlockPlace place{program, index};
+    auto outcome = executeBlock(block.parsed.value(), state, options, block.ordinal, &place);
     if (!outcome.ok()) return outcome.error();
 
-    state = std::move(outcome.value().state);
-    const auto& moves = outcome.value().moves;
-    toolpath.moves.insert(toolpath.moves.end(), moves.begin(), moves.end());
+    BlockOutcome& done = outcome.value();
+    const ProgramFlow& flow = done.flow;
+    if (flow.call) {
+      auto target = calls.call(*flow.call, index);
+      if (!target.ok()) return target.error();
+      next = target.value();
+    } else if (flow.returnColumn) {
+      auto target = calls.giveBack(*flow.returnColumn, index);
+      if (!target.ok()) return target.error();
+      next = target.value();
+    } else if (flow.continueAfter) {
+      next = *flow.continueAfter + 1;
+    }
+    state = std::move(done.state);
+    toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
+  }
+  if (!state.ended) {
+    if (auto error = calls.unfinished()) return *error;
   }
   return success();
 }

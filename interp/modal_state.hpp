@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "geometry/rz.hpp"
+#include "interp/compound_params.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -37,6 +38,7 @@ struct ModalState {
   int toolOffset = 0;
   RZ position{0.0, 0.0};  // where the tool is, part coordinates (radius mm, Z mm)
   CycleRetained cycle;
+  CompoundCycleParams compound;  // G71–G75 first-block values
   bool ended = false;  // M02/M30 read: nothing after it runs
 };
 

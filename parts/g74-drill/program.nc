@@ -1,0 +1,8 @@
+O0074 (G74 peck drilling on the axis)
+T0101
+G99 G97 S800 M03
+G00 X0 Z2.0
+G74 R1.0
+G74 Z-20.0 Q6000 F0.1
+G00 X100.0 Z50.0
+M30

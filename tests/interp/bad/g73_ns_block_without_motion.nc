@@ -1,0 +1,7 @@
+(expect: 6:1: error: must hold G00 or G01)
+G00 X60 Z2
+G73 U2 W0 R2
+G73 P10 Q20 F0.2
+M30
+N10 X20
+N20 G01 Z-10
