@@ -515,7 +515,12 @@ TEST(TurningRoughingProperty, TypeIINeverGougesTheRoughContour) {
     RZ start;
     RZ allowance;
   };
+  // The pocket contour with an ns block that moves Z too: N10 G00 X30 Z0 (from Z2).
+  Contour slantedNs = pocketContour();
+  slantedNs[0].to = RZ(15, 0);
+  slantedNs[1].from = RZ(15, 0);
   const std::vector<Case> cases = {{pocketContour(), RZ(25, 2), RZ(0.3, 0)},
+                                   {slantedNs, RZ(25, 2), RZ(0.3, 0)},
                                    {roundGrooveContour(), RZ(25, 2), RZ(0.2, 0)},
                                    {bore, RZ(5, 2), RZ(-0.2, 0)}};
   for (const Case& c : cases) {
