@@ -18,7 +18,8 @@
 //   4 45° retract by e in both axes, back toward A′      feed if retractAtFeed, else rapid
 //   5 rapid  in Z back to Z_A′
 //   6 infeed Δd + e to the next level (as step 2); after the last level, to B′
-//   7 feed   the semi-finishing pass along the rough contour B′ → C′, arcs as arcs
+//   7 feed   the semi-finishing pass along the rough contour B′ → C′, arcs as arcs (a G00
+//            block inside the contour is cut at feed too)
 //   8 rapid  C′ → A
 // Type II (pockets: Z monotonic, X free) [GSK: "at the end of each level the tool follows the
 // contour, then backs off by e; no 45° escape"; "when it moves on to the next pocket, the last

@@ -475,6 +475,22 @@ TEST(TurningRoughingProperty, RoughingNeverGougesTheRoughContour) {
     }
     test::expectNoGouge(legs.value(), rough, -1.0);
   }
+  // A bore: A = X10 Z2 (radius 5); N10 G00 X40 (radius 20); N20 G01 Z-10;
+  // N30 G03 X20 Z-20 R10 (about (10, -10)); N40 G01 Z-30; N50 X10.
+  const Contour bore = {segment(kRapid, 5, 2, 20, 2, 10), segment(kFeed, 20, 2, 20, -10, 20),
+                        arcSegment(kCcw, 20, -10, 10, -20, 10, -10, 30),
+                        segment(kFeed, 10, -20, 10, -30, 40), segment(kFeed, 10, -30, 5, -30, 50)};
+  for (const double depthMm : {0.9, 2.2, 4.1}) {
+    const auto legs = turningRoughingLegs(RZ(5, 2), bore, params(depthMm, 0.5, -0.3, 0.1));
+    ASSERT_TRUE(legs.ok()) << legs.error().message;
+    Contour rough = bore;
+    for (ContourSegment& s : rough) {
+      s.from += RZ(-0.3, 0.1);
+      s.to += RZ(-0.3, 0.1);
+      s.center += RZ(-0.3, 0.1);
+    }
+    test::expectNoGouge(legs.value(), rough, 1.0);
+  }
   const Contour taper = odTaperContour();
   const auto legs = turningRoughingLegs(RZ(50, 2), taper, params(1.7, 0.3, 0.25, 0.1));
   ASSERT_TRUE(legs.ok()) << legs.error().message;
@@ -499,7 +515,12 @@ TEST(TurningRoughingProperty, TypeIINeverGougesTheRoughContour) {
     RZ start;
     RZ allowance;
   };
+  // The pocket contour with an ns block that moves Z too: N10 G00 X30 Z0 (from Z2).
+  Contour slantedNs = pocketContour();
+  slantedNs[0].to = RZ(15, 0);
+  slantedNs[1].from = RZ(15, 0);
   const std::vector<Case> cases = {{pocketContour(), RZ(25, 2), RZ(0.3, 0)},
+                                   {slantedNs, RZ(25, 2), RZ(0.3, 0)},
                                    {roundGrooveContour(), RZ(25, 2), RZ(0.2, 0)},
                                    {bore, RZ(5, 2), RZ(-0.2, 0)}};
   for (const Case& c : cases) {
