@@ -19,7 +19,8 @@ bool allowedInContour(GGroup group, int number) {
     case GGroup::NonModal: return number == 4;  // G04
     case GGroup::SpindleMode:                   // G96 G97
     case GGroup::FeedMode:                      // G98 G99
-    case GGroup::NoseRadius: return true;       // G40 G41 G42
+    case GGroup::NoseRadius:                    // G40 G41 G42
+    case GGroup::Distance: return true;         // G90/G91 of the dialects that have them
     case GGroup::Plane:
     case GGroup::Units: return false;
   }
