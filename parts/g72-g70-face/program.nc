@@ -1,0 +1,13 @@
+O0072 (G72 face roughing, G70 finishing: a shoulder and a taper toward the face)
+T0101
+G99 G97 S500 M03
+G00 X62.0 Z2.0
+G72 W4.0 R0.5
+G72 P10 Q40 U0.4 W0.2 F0.25
+N10 G00 Z-20.0
+N20 G01 X40.0 F0.1
+N30 Z-10.0
+N40 X24.0 Z0
+G70 P10 Q40
+G00 X100.0 Z50.0
+M30
