@@ -15,7 +15,9 @@ namespace lathesim::interp {
 
 struct BlockOutcome {
   ModalState state;         // the state after the block
-  std::vector<Move> moves;  // in order, zero-length moves left out
+  std::vector<Move> moves;  // in order, zero-length moves left out (a dwell is kept)
+  std::vector<Error> warnings;         // located like errors; they do not stop the program
+  std::vector<CycleStart> cycleStarts;  // the cycle this block ran, if any
 };
 
 /// Runs `block` from `state`. `ordinal` is the block's 0-based number among the blocks read.

@@ -5,15 +5,17 @@
 
 #include "interp/block_executor.hpp"
 #include "interp/block_parser.hpp"
+#include "interp/feed_warnings.hpp"
 #include "interp/lexer.hpp"
 #include "interp/modal_state.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-// Reads blocks until the text ends, M02/M30, or the first error; appends to `toolpath`.
+// Reads blocks until the text ends, M02/M30, or the first error; appends to `toolpath` and
+// `warnings`.
 Status runProgram(std::string_view programText, const InterpreterOptions& options,
-                  Toolpath& toolpath) {
+                  Toolpath& toolpath, std::vector<Error>& warnings) {
   ModalState state;
   state.position = options.startPosition;
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
@@ -37,6 +39,10 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
     state = std::move(outcome.value().state);
     const auto& moves = outcome.value().moves;
     toolpath.moves.insert(toolpath.moves.end(), moves.begin(), moves.end());
+    const auto& starts = outcome.value().cycleStarts;
+    toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), starts.begin(), starts.end());
+    const auto& found = outcome.value().warnings;
+    warnings.insert(warnings.end(), found.begin(), found.end());
   }
   return success();
 }
@@ -53,7 +59,16 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   InterpretResult result;
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
-  const Status status = runProgram(programText, options, result.toolpath);
+  std::vector<Error> warnings;
+  const Status status = runProgram(programText, options, result.toolpath, warnings);
+  for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
+  std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  for (const Error& warning : warnings) {
+    result.diagnostics.push_back({Severity::Warning, fileName, warning.line, warning.column,
+                                  warning.message, lineOf(programText, warning.line)});
+  }
   if (!status.ok()) {
     const Error& error = status.error();
     result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,

@@ -1,11 +1,13 @@
 #pragma once
 // G-code text → Toolpath. The single entry point of the interp module.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "interp/diagnostic.hpp"
+#include "interp/machine_limits.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -15,6 +17,8 @@ struct InterpreterOptions {
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
                                    // T word. A T word naming another number is an error.
   bool blockDelete = true;         // '/' blocks are skipped when true
+  std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
+  MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
 };
 
 struct InterpretResult {
