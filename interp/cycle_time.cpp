@@ -107,7 +107,7 @@ std::optional<double> perRevolutionTimeS(const Move& move, const MachineLimits& 
     return pathLengthMm(move) / (move.feed * rpm) * kSecondsPerMinute;
   }
   constexpr double kMmPerM = 1000.0;
-  const double clampRpm = std::min(move.spindleLimitRpm.value_or(machine.maxRpm), machine.maxRpm);
+  const double clampRpm = surfaceSpeedClampRpm(move.spindleLimitRpm, machine);
   const InverseRpm f{kTwoPi / (kMmPerM * move.spindleS), 1.0 / clampRpm};
   const double minutesTimesFeed = isArc(move.kind) ? arcIntegral(f, move) : lineIntegral(f, move);
   return minutesTimesFeed / move.feed * kSecondsPerMinute;

@@ -35,7 +35,8 @@ struct Move {
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block
   int column = 0;     // 1-based column where that block starts
-  int cycleStep = 0;  // 1–4 inside a G90/G94 cycle (rapid in, cut, retract, rapid back); 0 outside
+  int cycleStep = 0;  // 1–4 inside a G90/G94 cycle (rapid in, cut, retract, rapid back), 1–2 in
+                      // G28 (to the intermediate point, to the reference); 0 outside
 };
 
 /// Where a canned cycle (G90, G94, …) started: its point A, where the tool stands when the

@@ -2,6 +2,7 @@
 // default one: rapids X 6000 and Z 8000 mm/min, max_rpm 3000.
 
 #include "interp/cycle_time.hpp"
+#include "interp/spindle_speed.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,6 +43,17 @@ Move underG96(Move m, double metresPerMin, std::optional<double> limitRpm) {
 }
 
 double timeOf(const Move& m, const MachineLimits& machine = kMachine) { return moveTimeS(m, machine).value(); }
+
+TEST(SpindleSpeed, SurfaceSpeedRpmByHand) {
+  // V 200 at r 20: 200000 / (40π) = 5000/π ≈ 1591.5 rpm, under every clamp.
+  EXPECT_NEAR(surfaceSpeedRpm(200, 20, std::nullopt, kMachine), 5000 / M_PI, 1e-9);
+  EXPECT_NEAR(surfaceSpeedRpm(200, -20, std::nullopt, kMachine), 5000 / M_PI, 1e-9);
+  EXPECT_EQ(surfaceSpeedRpm(200, 20, 1000.0, kMachine), 1000.0);  // the G50 S limit
+  EXPECT_EQ(surfaceSpeedRpm(200, 0, std::nullopt, kMachine), 3000.0);  // max_rpm at the axis
+  EXPECT_EQ(surfaceSpeedRpm(200, 0, 5000.0, kMachine), 3000.0);  // a limit above max_rpm
+  EXPECT_EQ(surfaceSpeedRpm(0, 0, std::nullopt, kMachine), 0.0);
+  EXPECT_EQ(constantRpm(5000, kMachine), 3000.0);
+}
 
 TEST(CycleTime, RapidLimitedByX) {
   // Δr 60 at 6000 mm/min = 0.01 min; ΔZ 40 at 8000 = 0.005 min: X decides, 0.6 s.
