@@ -155,6 +155,42 @@ TEST(CycleTime, G96ArcIsIntegratedAlongTheArc) {
   EXPECT_NEAR(timeOf(m), 300.0 * (psiC / 150.0 + 0.004 * M_PI * std::cos(psiC)), 1e-9);
 }
 
+TEST(CycleTime, G96AboveTheClampRadiusFollowsTheRadiusAlone) {
+  // V 200, f 0.25, G50 S2000: r_c = 50/π ≈ 15.9, so r 50 → 30 never clamps:
+  // 240 · ∫_30^50 π r/100000 dr = 240 · π (2500 − 900) / 200000 = 1.92π s.
+  const Move m = underG96(feed({50, 0}, {30, -5}, 0.25, FeedMode::PerRevolution), 200, 2000);
+  // The taper is longer than its radial travel by L/|Δr| = √(20² + 5²)/20.
+  EXPECT_NEAR(timeOf(m), 1.92 * M_PI * std::sqrt(425.0) / 20.0, 1e-9);
+}
+
+// An arc that is neither centred on the axis nor a quarter, crossing the clamp radius twice:
+// checked against Simpson's rule on t = 60/(f·rpm(r(ψ)))·R over the swept angle, computed
+// here from the definition with no piecewise split (the kinks cost Simpson accuracy, so
+// 400000 panels for 1e-7 relative).
+TEST(CycleTime, G96ArcAgreesWithNumericIntegration) {
+  // Centre (r 12, Z −10), radius 8: r runs from 12 + 8 sin ψ; CCW from ψ = −2.5 to 2.0 rad
+  // passes r 4 .. 20; V 120, G50 S1800: r_c = 120000/(2π·1800) ≈ 10.6.
+  const RZ center(12, -10);
+  const double R = 8, psi0 = -2.5, psi1 = 2.0;
+  Move m = straight(MoveKind::ArcCCW, center + R * RZ(std::sin(psi0), std::cos(psi0)),
+                    center + R * RZ(std::sin(psi1), std::cos(psi1)));
+  m.center = center;
+  m = underG96(m, 120, 1800);
+  m.feed = 0.15;
+  m.feedMode = FeedMode::PerRevolution;
+  auto integrand = [&](double psi) {
+    const double r = center.x() + R * std::sin(psi);
+    const double rpm = std::min(120000.0 / (2 * M_PI * r), 1800.0);
+    return 60.0 / (0.15 * rpm) * R;
+  };
+  const int n = 400000;
+  const double h = (psi1 - psi0) / n;
+  double sum = integrand(psi0) + integrand(psi1);
+  for (int i = 1; i < n; ++i) sum += (i % 2 ? 4 : 2) * integrand(psi0 + i * h);
+  const double simpson = sum * h / 3;
+  EXPECT_NEAR(timeOf(m), simpson, 1e-7 * simpson);
+}
+
 TEST(CycleTime, DwellIsItsOwnTime) {
   Move m = straight(MoveKind::Dwell, {20, 0}, {20, 0});
   m.dwellS = 1.5;
