@@ -61,6 +61,13 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
   const Status status = runProgram(programText, options, result.toolpath, warnings);
+  if (!status.ok()) {
+    // The error alone: it is what must be fixed, and nothing past it ran.
+    const Error& error = status.error();
+    result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,
+                                  error.message, lineOf(programText, error.line)});
+    return result;
+  }
   for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
   std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
     return a.line != b.line ? a.line < b.line : a.column < b.column;
@@ -68,11 +75,6 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   for (const Error& warning : warnings) {
     result.diagnostics.push_back({Severity::Warning, fileName, warning.line, warning.column,
                                   warning.message, lineOf(programText, warning.line)});
-  }
-  if (!status.ok()) {
-    const Error& error = status.error();
-    result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,
-                                  error.message, lineOf(programText, error.line)});
   }
   return result;
 }

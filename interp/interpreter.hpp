@@ -23,7 +23,8 @@ struct InterpreterOptions {
 
 struct InterpretResult {
   Toolpath toolpath;
-  std::vector<Diagnostic> diagnostics;  // errors stop the program; warnings do not
+  std::vector<Diagnostic> diagnostics;  // the error that stopped the program alone, or the
+                                        // warnings of a program that ran, by line
   bool ok() const;
 };
 

@@ -91,6 +91,11 @@ TEST(Warnings, AreShownWithTheirLineAndCaret) {
             "minute)?\nG94 X0 Z0 F200\n^");
 }
 
+TEST(Warnings, AProgramThatStopsReportsItsErrorAlone) {
+  // F200 under G99 on line 2 would warn; the error on line 3 is all that is reported.
+  test::expectError(run("M03 S500\nG94 X0 Z0 F200\nG04\n"), 3, 1, "G04 needs a dwell time");
+}
+
 TEST(CycleStarts, EachCycleBlockRecordsItsStartPoint) {
   const auto result = run("G00 X60 Z2\nG94 X50 Z-5 F0.2\nZ-10\nG00 X70\nG90 X60 Z-20\n");
   ASSERT_TRUE(result.ok());
