@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "interp/cycle_time.hpp"
 #include "interp/interpreter.hpp"
 
 namespace lathesim::app {
@@ -21,8 +22,13 @@ bool hasError(const std::vector<interp::Diagnostic>& diagnostics) {
 
 }  // namespace
 
+interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
+  return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
+          interp::lineOf(programText, line)};
+}
+
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile) {
-  Job job{defaultSetup(), {}, {}};
+  Job job{defaultSetup(), {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     print(loaded.diagnostics);
@@ -40,13 +46,20 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
 
   interp::InterpreterOptions options;
   options.startPosition = job.setup.startPosition;
+  options.referencePosition = job.setup.referencePosition;
+  options.machine = job.setup.machine;
   for (const auto& tool : job.setup.tools) options.toolNumbers.push_back(tool.number);
-  interp::InterpretResult result = interp::interpret(text.str(), program.string(), options);
+  job.programText = text.str();
+  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options);
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
   job.toolpath = std::move(result.toolpath);
+  for (const interp::Error& w : interp::assignMoveTimes(job.toolpath, job.setup.machine)) {
+    job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
+    print({job.warnings.back()});
+  }
   return job;
 }
 

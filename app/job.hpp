@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "app/setup.hpp"
 #include "interp/move.hpp"
@@ -12,8 +14,12 @@ namespace lathesim::app {
 
 struct Job {
   Setup setup;
-  interp::Toolpath toolpath;
+  interp::Toolpath toolpath;  // every move's timeS filled in
   std::vector<interp::Diagnostic> warnings;
+  std::string programText;
+
+  /// A warning located in the program, ready to print and report.
+  interp::Diagnostic warningAt(int line, int column, std::string message) const;
 };
 
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile);

@@ -17,12 +17,13 @@ void writeReportJson(const RunFigures& f, const std::filesystem::path& file) {
   report["mesh_volume_mm3"] = f.meshVolumeMm3;
   report["mesh_triangles"] = f.meshTriangles;
   report["moves"] = f.moves;
+  report["cycle_time_s"] = f.cycleTimeS;
   auto& collisions = report["collisions"] = nlohmann::ordered_json::array();
   for (const auto& c : f.simulation.collisions)
     collisions.push_back({{"line", c.line}, {"column", c.column}, {"kind", c.kind}, {"volume_mm3", c.volumeMm3}});
   auto& blocks = report["blocks"] = nlohmann::ordered_json::array();
   for (const auto& b : f.simulation.blocks)
-    blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}});
+    blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}});
   auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
   for (const auto& w : f.warnings) warnings.push_back({{"line", w.line}, {"column", w.column}, {"message", w.message}});
   report["peak_memory_mb"] = f.peakMemoryMb;

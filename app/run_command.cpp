@@ -9,6 +9,7 @@
 #include "app/progress.hpp"
 #include "app/report.hpp"
 #include "app/staged_output.hpp"
+#include "interp/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
@@ -54,6 +55,7 @@ int runCommand(const RunOptions& options) {
   figures.setup = job->setup.sourceName;
   figures.voxelMm = voxel;
   figures.moves = job->toolpath.moves.size();
+  figures.cycleTimeS = interp::cycleTimeS(job->toolpath);
   figures.warnings = job->warnings;
 
   Progress progress(figures.program);
@@ -63,6 +65,10 @@ int runCommand(const RunOptions& options) {
                                      [&](int done, int total) { progress.update(done, total); });
   figures.finalVolumeMm3 = stock.volumeMm3();
   figures.timing.simulateS = clock.lap();
+  for (const auto& w : figures.simulation.warnings) {
+    figures.warnings.push_back(job->warningAt(w.line, w.column, w.message));
+    std::cerr << interp::format(figures.warnings.back()) << '\n';
+  }
 
   progress.stage("meshing");
   const TriangleMesh part = stock.mesh(kExportAdaptivity);

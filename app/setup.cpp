@@ -174,25 +174,62 @@ void readStock(const toml::table& table, sim::StockSpec& stock, Reporter& report
     if (auto v = finiteMm(*node, "stock.face_z", report)) stock.faceZMm = *v;
 }
 
-void readMachine(const toml::table& table, RZ& start, Reporter& report) {
-  rejectUnknownKeys(table, "machine.", {"start"}, report);
-  const auto* node = table.get("start");
-  if (!node) return;
-  const auto* array = node->as_array();
+/// A position given as [X diameter, Z] in mm, as (radius, Z).
+std::optional<RZ> positionOf(const toml::node& node, const std::string& name, Reporter& report) {
+  const auto* array = node.as_array();
   std::optional<double> x, z;
   if (array && array->size() == 2) {
     x = numberOf(*array->get(0));
     z = numberOf(*array->get(1));
   }
   if (!x || !z || !std::isfinite(*x) || !std::isfinite(*z)) {
-    report.at(node->source(), "machine.start must be [X diameter, Z] in mm, got " + describe(*node));
-    return;
+    report.at(node.source(), name + " must be [X diameter, Z] in mm, got " + describe(node));
+    return std::nullopt;
   }
   if (*x < 0.0) {
-    report.at(node->source(), "machine.start X is a diameter and must not be negative, got " + describe(*node));
+    report.at(node.source(), name + " X is a diameter and must not be negative, got " + describe(node));
+    return std::nullopt;
+  }
+  return RZ(*x / 2.0, *z);
+}
+
+/// A rate or speed that must be > 0; `unit` names it in the message ("mm/min", "rpm").
+std::optional<double> positiveRate(const toml::node& node, const std::string& name, const std::string& unit,
+                                   Reporter& report) {
+  const auto value = numberOf(node);
+  if (!value || !(*value > 0.0) || !std::isfinite(*value)) {
+    report.at(node.source(), name + " must be a positive number of " + unit + ", got " + describe(node));
+    return std::nullopt;
+  }
+  return value;
+}
+
+void readRapid(const toml::node& node, interp::MachineLimits& machine, Reporter& report) {
+  const auto* array = node.as_array();
+  std::optional<double> x, z;
+  if (array && array->size() == 2) {
+    x = numberOf(*array->get(0));
+    z = numberOf(*array->get(1));
+  }
+  if (!x || !z || !(*x > 0.0) || !(*z > 0.0) || !std::isfinite(*x) || !std::isfinite(*z)) {
+    report.at(node.source(), "machine.rapid must be [X, Z] rapid rates, positive numbers of mm/min, got " +
+                                 describe(node));
     return;
   }
-  start = RZ(*x / 2.0, *z);
+  machine.rapidXMmPerMin = *x;
+  machine.rapidZMmPerMin = *z;
+}
+
+void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
+  rejectUnknownKeys(table, "machine.", {"start", "rapid", "max_rpm", "reference"}, report);
+  if (const auto* node = table.get("start"))
+    if (auto p = positionOf(*node, "machine.start", report)) setup.startPosition = *p;
+  setup.referencePosition = setup.startPosition;
+  if (const auto* node = table.get("reference"))
+    if (auto p = positionOf(*node, "machine.reference", report)) setup.referencePosition = *p;
+  if (const auto* node = table.get("rapid")) readRapid(*node, setup.machine, report);
+  if (const auto* node = table.get("max_rpm"))
+    if (auto v = positiveRate(*node, "machine.max_rpm", "rpm", report)) setup.machine.maxRpm = *v;
 }
 
 void readSim(const toml::table& table, std::optional<double>& voxelMm, Reporter& report) {
@@ -292,6 +329,7 @@ Setup defaultSetup() {
   setup.sourceName = "(default setup)";
   setup.stock = sim::StockSpec{125.0, 112.0, 2.0};
   setup.startPosition = RZ(100.0, 200.0);  // X200 (diameter) Z200
+  setup.referencePosition = setup.startPosition;
   setup.voxelMm = std::nullopt;
   setup.tools.push_back(ToolDefinition{1, defaultOutline()});
   return setup;
@@ -313,7 +351,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   if (const auto* node = root.get("stock"))
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
   if (const auto* node = root.get("machine"))
-    if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup.startPosition, report);
+    if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);
   if (const auto* node = root.get("sim"))
     if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
   if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);

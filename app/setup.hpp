@@ -9,6 +9,7 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/diagnostic.hpp"
+#include "interp/machine_limits.hpp"
 #include "sim/stock_spec.hpp"
 
 namespace lathesim::app {
@@ -22,6 +23,8 @@ struct Setup {
   std::string sourceName;  // the file it came from, or "(default setup)"
   sim::StockSpec stock;
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
+  RZ referencePosition{100.0, 200.0};  // G28's reference point (radius, Z); the start if not given
+  interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
 };

@@ -11,13 +11,18 @@
 
 #include "interp/arc_move.hpp"
 #include "interp/compound_cycle.hpp"
+#include "interp/g28_return.hpp"
 #include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
+#include "interp/spindle_speed.hpp"
 #include "interp/subprogram_call.hpp"
 #include "interp/word_units.hpp"
 
 namespace lathesim::interp {
 namespace {
+
+constexpr double kMetresPerFoot = 0.3048;  // G96 S under G20 is in ft/min
+constexpr double kMsPerS = 1000.0;
 
 // What sets G90 and G94 apart; the rest of a single cycle (modal retention, the checks,
 // emitting its legs) is one code path for both.
@@ -58,11 +63,13 @@ class Executor {
   enum class Coordinates { Target, Declared };
   Result<AxisWords> takeAxisWords(Coordinates meaning = Coordinates::Target);
   Status applyFeed();
+  void applySpindleMode();
   Status applySpindleSpeed();
   Status applyTool();
   Status applyOneShot(const Code& code);
   Status applyDwell(const Code& code);
   Status applyCoordinateSetting(const Code& code);
+  Status applyReferenceReturn(const Code& code);
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applyArc(const std::optional<Code>& code);
@@ -73,6 +80,7 @@ class Executor {
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
+  void warnIfSurfaceSpeedUnclamped();
 
   ParsedBlock block_;
   ModalState state_;
@@ -81,6 +89,8 @@ class Executor {
   const BlockPlace* place_;
   std::vector<Move> moves_;
   ProgramFlow flow_;
+  std::vector<Error> warnings_;
+  std::vector<CycleStart> cycleStarts_;
 };
 
 Result<BlockOutcome> Executor::run() {
@@ -95,7 +105,7 @@ Result<BlockOutcome> Executor::run() {
   if (auto code = block_.gCode(GGroup::Plane)) {
     state_.plane = code->number == 17 ? Plane::XY : code->number == 19 ? Plane::YZ : Plane::ZX;
   }
-  // G97 (spindle speed in rpm) is the only supported code of its group and changes nothing.
+  applySpindleMode();
 
   const auto oneShot = block_.gCode(GGroup::NonModal);
   const auto motion = block_.gCode(GGroup::Motion);
@@ -127,7 +137,7 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number == 5) state_.spindleOn = false;
   if (coolant && coolant->number == 9) state_.coolantOn = false;
   if (block_.mCode(MGroup::ProgramEnd)) state_.ended = true;
-  return BlockOutcome{std::move(state_), std::move(moves_), flow_};
+  return BlockOutcome{std::move(state_), std::move(moves_), std::move(warnings_), std::move(cycleStarts_), flow_};
 }
 
 Status Executor::applySubprogramCode() {
@@ -178,6 +188,22 @@ Status Executor::applyFeed() {
   return success();
 }
 
+// G96 / G97 (lathe-cycles.md §7). G97 with no S after G96 keeps the rpm the spindle turns
+// at here, where G96 leaves it; the G96 surface speed is remembered for the next G96.
+void Executor::applySpindleMode() {
+  const auto code = block_.gCode(GGroup::SpindleMode);
+  if (!code) return;
+  const SpindleMode mode = code->number == 96 ? SpindleMode::SurfaceSpeed : SpindleMode::Rpm;
+  if (mode == SpindleMode::Rpm && state_.spindleMode == SpindleMode::SurfaceSpeed) {
+    state_.spindleSpeed = surfaceSpeedRpm(state_.surfaceSpeedMPerMin, state_.position.x(),
+                                          state_.spindleLimitRpm, options_.machine);
+  }
+  if (mode == SpindleMode::SurfaceSpeed && state_.spindleMode == SpindleMode::Rpm)
+    state_.surfaceSpeedAwaitingMove = std::pair{block_.line, code->column};
+  if (mode == SpindleMode::Rpm) state_.surfaceSpeedAwaitingMove.reset();
+  state_.spindleMode = mode;
+}
+
 Status Executor::applySpindleSpeed() {
   const auto s = block_.take('S');
   if (!s) return success();
@@ -185,7 +211,11 @@ Status Executor::applySpindleSpeed() {
     return errorAt(s->column,
                    fmt::format("{} is not a spindle speed: expected a number ≥ 0", s->text()));
   }
-  state_.spindleSpeed = s->value;
+  // Under G96, S is a surface speed: m/min, or ft/min under G20.
+  if (state_.spindleMode == SpindleMode::SurfaceSpeed)
+    state_.surfaceSpeedMPerMin = state_.inch ? s->value * kMetresPerFoot : s->value;
+  else
+    state_.spindleSpeed = s->value;
   return success();
 }
 
@@ -220,6 +250,7 @@ Status Executor::applyOneShot(const Code& code) {
   // Every other one-shot code ends a G90/G94 cycle's retained values (GSK 3.21.2 note 2).
   state_.cycle = {};
   if (code.number == 50) return applyCoordinateSetting(code);
+  if (code.number == 28) return applyReferenceReturn(code);
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
 }
 
@@ -244,6 +275,9 @@ Status Executor::applyDwell(const Code& code) {
     return errorAt(code.column,
                    "G04 needs a dwell time: X or U (seconds) or P (milliseconds)");
   }
+  const double seconds = time->letter == 'P' ? time->value / kMsPerS : time->value;
+  emit(MoveKind::Dwell, state_.position, state_.position, 0);
+  moves_.back().dwellS = seconds;
   return success();
 }
 
@@ -263,6 +297,27 @@ Status Executor::applyCoordinateSetting(const Code& code) {
   if (a.z) p.y() = lengthMm(*a.z, state_.inch);
   if (a.w) p.y() += lengthMm(*a.w, state_.inch);
   if (s) state_.spindleLimitRpm = s->value;
+  return success();
+}
+
+Status Executor::applyReferenceReturn(const Code& code) {
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  if (!a.any()) {
+    return errorAt(code.column, "G28 needs X(U) and/or Z(W): the intermediate point of the axes "
+                                "to return (G28 U0 W0 returns both straight from here)");
+  }
+  const RZ& p = state_.position;
+  std::optional<double> radiusMm, zMm;
+  if (a.x) radiusMm = lengthMm(*a.x, state_.inch) / 2.0;
+  if (a.u) radiusMm = p.x() + lengthMm(*a.u, state_.inch) / 2.0;
+  if (a.z) zMm = lengthMm(*a.z, state_.inch);
+  if (a.w) zMm = p.y() + lengthMm(*a.w, state_.inch);
+  const RZ reference = options_.referencePosition.value_or(options_.startPosition);
+  const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
+  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step);
+  if (!legs.empty()) state_.position = legs.back().to;
   return success();
 }
 
@@ -403,6 +458,7 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
     return errorAt(column, *problem);
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
+  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, name});
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
   for (const CycleLeg& leg : cycle.legs(start, end, rMm)) {
     emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
@@ -413,9 +469,13 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
 // G70–G75 (interp/compound_cycle.hpp) in place of the block's motion.
 Status Executor::applyCompoundCycle(const Code& code) {
   state_.cycle = {};  // a one-shot code ends G90/G94's retained values
+  const RZ start = state_.position;  // A
   auto outcome = runCompoundCycle(code, block_, state_, options_, place_);
   if (!outcome.ok()) return outcome.error();
   const CompoundOutcome& done = outcome.value();
+  // The parameter block of a two-block cycle (G71 U R; …) moves nothing and starts nothing.
+  if (!done.legs.empty() || !done.contourMoves.empty())
+    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
   for (const CycleLeg& leg : done.legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
   flow_.continueAfter = done.continueAfter;
@@ -435,7 +495,9 @@ Status Executor::checkAllWordsUsed() const {
 }
 
 void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center) {
-  if (from == to && !isArc(kind)) return;  // an arc back to its start is a full circle
+  // An arc back to its start is a full circle, a dwell stands still: both are kept.
+  if (from == to && !isArc(kind) && kind != MoveKind::Dwell) return;
+  warnIfSurfaceSpeedUnclamped();
   Move move;
   move.kind = kind;
   move.from = from;
@@ -446,11 +508,28 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   move.tool = state_.tool;
   move.toolOffset = state_.toolOffset;
   move.spindleOn = state_.spindleOn;
+  move.spindleMode = state_.spindleMode;
+  const bool surfaceSpeed = state_.spindleMode == SpindleMode::SurfaceSpeed;
+  move.spindleS = surfaceSpeed ? state_.surfaceSpeedMPerMin : state_.spindleSpeed;
+  if (surfaceSpeed) move.spindleLimitRpm = state_.spindleLimitRpm;
   move.block = ordinal_;
   move.line = block_.line;
   move.column = block_.column;
   move.cycleStep = cycleStep;
   moves_.push_back(move);
+}
+
+// The first move after G96 tells whether G50 S was given in time to limit it.
+void Executor::warnIfSurfaceSpeedUnclamped() {
+  const auto g96 = state_.surfaceSpeedAwaitingMove;
+  if (!g96) return;
+  state_.surfaceSpeedAwaitingMove.reset();
+  if (state_.spindleLimitRpm) return;
+  warnings_.push_back({g96->first, g96->second,
+                       fmt::format("G96 with no G50 S before its first move: the spindle speed is "
+                                   "limited only by the machine's max_rpm ({:g} rpm); give G50 S "
+                                   "(the rpm limit) before G96",
+                                   options_.machine.maxRpm)});
 }
 
 }  // namespace

@@ -17,7 +17,9 @@ namespace lathesim::interp {
 
 struct BlockOutcome {
   ModalState state;         // the state after the block
-  std::vector<Move> moves;  // in order, zero-length moves left out
+  std::vector<Move> moves;  // in order, zero-length moves left out (a dwell is kept)
+  std::vector<Error> warnings;         // located like errors; they do not stop the program
+  std::vector<CycleStart> cycleStarts;  // the cycle this block ran, if any
   ProgramFlow flow;         // M98, M99, or where G71–G73 resume
 };
 

@@ -5,6 +5,7 @@
 
 #include "interp/block_executor.hpp"
 #include "interp/call_stack.hpp"
+#include "interp/feed_warnings.hpp"
 #include "interp/modal_state.hpp"
 #include "interp/program.hpp"
 
@@ -12,9 +13,10 @@ namespace lathesim::interp {
 namespace {
 
 // Runs the program from its first block until M02/M30, the end of the text, or the first
-// error; appends to `toolpath`. A block's read error is reported when execution reaches it.
+// error; appends to `toolpath` and `warnings`. A block's read error is reported when
+// execution reaches it.
 Status runProgram(std::string_view programText, const InterpreterOptions& options,
-                  Toolpath& toolpath) {
+                  Toolpath& toolpath, std::vector<Error>& warnings) {
   ModalState state;
   state.position = options.startPosition;
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
@@ -48,6 +50,8 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
     }
     state = std::move(done.state);
     toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
+    toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
+    warnings.insert(warnings.end(), done.warnings.begin(), done.warnings.end());
   }
   if (!state.ended) {
     if (auto error = calls.unfinished()) return *error;
@@ -67,11 +71,22 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   InterpretResult result;
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
-  const Status status = runProgram(programText, options, result.toolpath);
+  std::vector<Error> warnings;
+  const Status status = runProgram(programText, options, result.toolpath, warnings);
   if (!status.ok()) {
+    // The error alone: it is what must be fixed, and nothing past it ran.
     const Error& error = status.error();
     result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,
                                   error.message, lineOf(programText, error.line)});
+    return result;
+  }
+  for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
+  std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  for (const Error& warning : warnings) {
+    result.diagnostics.push_back({Severity::Warning, fileName, warning.line, warning.column,
+                                  warning.message, lineOf(programText, warning.line)});
   }
   return result;
 }

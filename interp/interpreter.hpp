@@ -1,12 +1,14 @@
 #pragma once
 // G-code text → Toolpath. The single entry point of the interp module.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "interp/diagnostic.hpp"
 #include "interp/dialect.hpp"
+#include "interp/machine_limits.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -17,11 +19,14 @@ struct InterpreterOptions {
                                    // T word. A T word naming another number is an error.
   bool blockDelete = true;         // '/' blocks are skipped when true
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
+  std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
+  MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
 };
 
 struct InterpretResult {
   Toolpath toolpath;
-  std::vector<Diagnostic> diagnostics;  // errors stop the program; warnings do not
+  std::vector<Diagnostic> diagnostics;  // the error that stopped the program alone, or the
+                                        // warnings of a program that ran, by line
   bool ok() const;
 };
 

@@ -2,6 +2,7 @@
 // What the control remembers between blocks. All lengths are mm; X positions are radii.
 
 #include <optional>
+#include <utility>
 
 #include "geometry/rz.hpp"
 #include "interp/compound_params.hpp"
@@ -30,8 +31,12 @@ struct ModalState {
   bool incremental = false;  // G91 in dialects that have it: X and Z words are distances
   FeedMode feedMode = FeedMode::PerRevolution;
   std::optional<double> feed;  // mm/min (G98) or mm/rev (G99); unset until the first F
-  double spindleSpeed = 0.0;   // S as given (rpm under G97)
-  std::optional<double> spindleLimitRpm;  // G50 S
+  SpindleMode spindleMode = SpindleMode::Rpm;  // G97 is the power-on state
+  double spindleSpeed = 0.0;                   // rpm under G97 (S, or kept from G96)
+  double surfaceSpeedMPerMin = 0.0;            // G96 S, remembered across G97 periods
+  std::optional<double> spindleLimitRpm;       // G50 S
+  std::optional<std::pair<int, int>> surfaceSpeedAwaitingMove;  // (line, column) of a G96
+                                                                // that has made no move yet
   bool spindleOn = false;
   bool coolantOn = false;
   int tool = 0;

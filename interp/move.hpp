@@ -35,7 +35,18 @@ struct Move {
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block
   int column = 0;     // 1-based column where that block starts
-  int cycleStep = 0;  // 1–4 inside a G90/G94 cycle (rapid in, cut, retract, rapid back); 0 outside
+  int cycleStep = 0;  // 1–4 inside a G90/G94 cycle (rapid in, cut, retract, rapid back), 1–2 in
+                      // G28 (to the intermediate point, to the reference); 0 outside
+};
+
+/// Where a canned cycle (G90, G94, …) started: its point A, where the tool stands when the
+/// block is read. sim checks that it lies outside the stock as it is at that moment.
+struct CycleStart {
+  int block = 0;  // 0-based ordinal of the cycle's block
+  int line = 0;
+  int column = 0;
+  RZ point{0, 0};    // (radius mm, Z mm)
+  std::string code;  // "G90", "G94", …
 };
 
 struct Toolpath {
@@ -43,6 +54,7 @@ struct Toolpath {
   RZ startPosition{0, 0};   // where the tool stood before the first move
   std::vector<Move> moves;
   int blockCount = 0;       // blocks read, including those that made no move
+  std::vector<CycleStart> cycleStarts;  // every cycle block run, in program order
 };
 
 inline bool isArc(MoveKind kind) { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }

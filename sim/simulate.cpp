@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "sim/move_sweep.hpp"
+#include "sim/simulation_warnings.hpp"
 
 namespace lathesim::sim {
 namespace {
@@ -23,11 +24,16 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
   const int totalBlocks = toolpath.blockCount;
+  auto cycleStart = toolpath.cycleStarts.begin();
+  int spindleWarnedBlock = -1;  // one spindle warning per block
 
   for (std::size_t first = 0; first < moves.size();) {
     const interp::Move& head = moves[first];
-    if (result.blocks.empty() || result.blocks.back().block != head.block)
-      result.blocks.push_back({head.block, head.line, head.column, 0.0});
+    if (result.blocks.empty() || result.blocks.back().block != head.block) {
+      result.blocks.push_back({head.block, head.line, head.column, 0.0, 0.0});
+      for (; cycleStart != toolpath.cycleStarts.end() && cycleStart->block <= head.block; ++cycleStart)
+        if (auto warning = cycleStartInStock(*cycleStart, stock)) result.warnings.push_back(*warning);
+    }
     BlockRemoval& block = result.blocks.back();
 
     std::size_t end = first + 1;
@@ -38,9 +44,14 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     for (std::size_t m = first; m < end; ++m) {
       const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
       pieces.insert(pieces.end(), swept.begin(), swept.end());
+      block.timeS += moves[m].timeS;
     }
     const double removed = pieces.empty() ? 0.0 : stock.remove(RevolvedRegion(pieces));
     block.removedMm3 += removed;
+    if (auto warning = cutWithSpindleStopped(head, removed, stock.voxelMm()); warning && spindleWarnedBlock != head.block) {
+      result.warnings.push_back(*warning);
+      spindleWarnedBlock = head.block;
+    }
     if (head.kind == interp::MoveKind::Rapid && removed > kCollisionVoxels * voxelVolume)
       result.collisions.push_back({head.line, head.column, "rapid_into_stock", removed});
 

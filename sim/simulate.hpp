@@ -25,16 +25,30 @@ struct BlockRemoval {
   int line = 0;
   int column = 0;
   double removedMm3 = 0.0;
+  double timeS = 0.0;  // the machine time of the block's moves
+};
+
+/// Something the program does that a machine would let it do, but a machinist would not
+/// want: cutting with the spindle stopped, a cycle started inside the material.
+struct SimulationWarning {
+  int line = 0;
+  int column = 0;
+  std::string message;
 };
 
 struct SimulationResult {
-  std::vector<BlockRemoval> blocks;  // blocks that made moves, in program order
+  std::vector<BlockRemoval> blocks;  // blocks that made moves (a dwell counts), in program order
   std::vector<Collision> collisions;
+  std::vector<SimulationWarning> warnings;
 };
 
 /// A rapid that removes more than this many voxels' worth of material is a collision;
 /// below it, the removal is rounding at a surface the rapid merely grazes.
 inline constexpr double kCollisionVoxels = 10.0;
+
+/// A cycle start point deeper in the material than this many voxels is inside the stock
+/// (one voxel: points on the surface, such as a corner just cut, are not).
+inline constexpr double kInsideStockVoxels = 1.0;
 
 using ToolOutlines = std::map<int, ConvexPolygon>;  // tool number → outline (radial, axial) mm
 using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;

@@ -2,6 +2,7 @@
 
 #include "sim/stock.hpp"
 
+#include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <tbb/parallel_reduce.h>
@@ -129,6 +130,11 @@ double Stock::volumeMm3() const {
   for (; it; ++it)
     if (*it < 0.0f) tileVoxels += static_cast<double>(it.getVoxelCount());
   return (leafVoxels + tileVoxels) * h * h * h;
+}
+
+double Stock::signedDistanceAt(const RZ& point) const {
+  const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
+  return sampler.wsSample(openvdb::Vec3d(point.x(), 0.0, point.y()));
 }
 
 TriangleMesh Stock::mesh(double adaptivity) const {

@@ -45,6 +45,10 @@ class Stock {
   /// clamp(½ − φ/h, 0, 1) of itself, and interior tiles count whole.
   double volumeMm3() const;
 
+  /// φ at the point at radius ρ = point.x(), Z = point.y() (mm), trilinearly sampled:
+  /// negative inside the material, positive outside; beyond the narrow band it is ±3 voxels.
+  double signedDistanceAt(const RZ& point) const;
+
   /// Closed surface at φ = 0, outward normals. adaptivity 0 keeps every voxel's facets;
   /// larger values (up to 1) merge facets on flat and gently curved areas.
   TriangleMesh mesh(double adaptivity) const;

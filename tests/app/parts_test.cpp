@@ -1,8 +1,9 @@
 // The bundled parts, end to end through the library: every directory in parts/ is read as
 // the command would read it (setup.toml, program.nc), and its program either gives the
 // diagnostic expected.toml states, or expands to the golden toolpath.csv and, simulated at
-// two voxel sizes, leaves the volume expected.toml derives by hand. A new part directory is
-// picked up without touching this file.
+// two voxel sizes, leaves the volume expected.toml derives by hand, and takes the cycle time
+// expected.toml works out by hand (when it states one). A new part directory is picked up
+// without touching this file.
 
 #include <gtest/gtest.h>
 
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "app/setup.hpp"
+#include "interp/cycle_time.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "sim/simulate.hpp"
@@ -52,6 +54,7 @@ struct Expected {
   std::optional<std::string> diagnostic;
   double finalVolumeMm3 = 0;
   double removedVolumeMm3 = 0;
+  std::optional<double> cycleTimeS;
 };
 
 Expected readExpected(const std::string& part) {
@@ -67,6 +70,7 @@ Expected readExpected(const std::string& part) {
     throw std::runtime_error(part + "/expected.toml: needs diagnostic, or final_volume_mm3 and removed_volume_mm3");
   expected.finalVolumeMm3 = *finalVolume;
   expected.removedVolumeMm3 = *removedVolume;
+  expected.cycleTimeS = table["cycle_time_s"].value<double>();
   return expected;
 }
 
@@ -76,13 +80,21 @@ Setup loadPartSetup(const std::string& part) {
   return *loaded.setup;
 }
 
-/// Interprets the part's program as loadJob does, naming the file "program.nc".
+/// Interprets the part's program as loadJob does, naming the file "program.nc", and times
+/// its moves.
 interp::InterpretResult interpretPart(const std::string& part, const Setup& setup) {
   interp::InterpreterOptions options;
   options.startPosition = setup.startPosition;
+  options.referencePosition = setup.referencePosition;
+  options.machine = setup.machine;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
-  return interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", options);
+  interp::InterpretResult result = interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", options);
+  if (result.ok()) (void)interp::assignMoveTimes(result.toolpath, setup.machine);
+  return result;
 }
+
+/// How far a cycle time may stray from the hand-worked one: 0.5 %.
+constexpr double kCycleTimeTolerance = 0.005;
 
 sim::ToolOutlines outlinesOf(const Setup& setup) {
   sim::ToolOutlines tools;
@@ -145,7 +157,13 @@ TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
   ASSERT_TRUE(csv) << part << ": no toolpath.csv";
   test::expectSameRows(test::rowsOf(result.toolpath), interp::readToolpathCsv(csv), part + "/toolpath.csv");
 
-  // (2) The volume left and removed, at two voxel sizes.
+  // (2) The cycle time, when expected.toml works it out.
+  if (expected.cycleTimeS) {
+    EXPECT_NEAR(interp::cycleTimeS(result.toolpath), *expected.cycleTimeS, kCycleTimeTolerance * *expected.cycleTimeS)
+        << part;
+  }
+
+  // (3) The volume left and removed, at two voxel sizes.
   for (const double voxel : {0.5, 0.25}) {
     SCOPED_TRACE(testing::Message() << part << " at " << voxel << " mm voxels");
     const Simulated simulated = simulatePart(setup, result.toolpath, voxel);

@@ -106,6 +106,56 @@ polygon = [[0, 0], [4, -1], [5, 5]]
   EXPECT_DOUBLE_EQ(setup.tools[1].outline.area(), 0.5 * (4 * 5 - (-1) * 5));
 }
 
+TEST(ParseSetup, MachineLimitsAndReferenceDefault) {
+  const app::Setup setup = defaultSetup();
+  EXPECT_DOUBLE_EQ(setup.machine.rapidXMmPerMin, 6000.0);
+  EXPECT_DOUBLE_EQ(setup.machine.rapidZMmPerMin, 8000.0);
+  EXPECT_DOUBLE_EQ(setup.machine.maxRpm, 3000.0);
+  EXPECT_EQ(setup.referencePosition, setup.startPosition);
+  // Without reference, G28 returns to the start the file gives.
+  const SetupResult result = parse("[machine]\nstart = [54, 5.5]\n");
+  ASSERT_TRUE(result.setup.has_value());
+  EXPECT_EQ(result.setup->referencePosition, RZ(27.0, 5.5));
+}
+
+TEST(ParseSetup, MachineRapidMaxRpmAndReference) {
+  const SetupResult result = parse("[machine]\nrapid = [4000, 10000.5]\nmax_rpm = 2500\nreference = [300, 150]\n");
+  ASSERT_TRUE(result.setup.has_value()) << result.diagnostics[0].message;
+  const app::Setup& setup = *result.setup;
+  EXPECT_DOUBLE_EQ(setup.machine.rapidXMmPerMin, 4000.0);
+  EXPECT_DOUBLE_EQ(setup.machine.rapidZMmPerMin, 10000.5);
+  EXPECT_DOUBLE_EQ(setup.machine.maxRpm, 2500.0);
+  EXPECT_EQ(setup.referencePosition, RZ(150.0, 150.0));  // X300 is a diameter
+  EXPECT_EQ(setup.startPosition, RZ(100.0, 200.0));      // start keeps its default
+}
+
+TEST(ParseSetupErrors, RapidMustBeTwoPositiveRates) {
+  for (const char* value : {"[6000]", "[6000, 0]", "[-1, 8000]", "6000", "[\"fast\", 8000]"}) {
+    const Diagnostic d = onlyError(std::string("[machine]\nrapid = ") + value + "\n");
+    EXPECT_EQ(d.message.rfind("machine.rapid must be [X, Z] rapid rates, positive numbers of mm/min, got ", 0), 0u)
+        << d.message;
+    EXPECT_EQ(d.line, 2);
+  }
+}
+
+TEST(ParseSetupErrors, MaxRpmMustBePositive) {
+  const Diagnostic d = onlyError("[machine]\n\nmax_rpm = 0\n");
+  EXPECT_EQ(d.message, "machine.max_rpm must be a positive number of rpm, got 0");
+  EXPECT_EQ(d.line, 3);
+}
+
+TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
+  EXPECT_EQ(onlyError("[machine]\nreference = [200]\n").message,
+            "machine.reference must be [X diameter, Z] in mm, got [200]");
+  EXPECT_EQ(onlyError("[machine]\nreference = [-2, 200]\n").message,
+            "machine.reference X is a diameter and must not be negative, got [-2, 200]");
+}
+
+TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
+  const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
+  EXPECT_EQ(d.message, "unknown key 'machine.rapids' (expected start, rapid, max_rpm or reference)");
+}
+
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
   const SetupResult result = parse("[[tool]]\nnumber = 1\npolygon = [[0, 0], [0, 12], [12, 12], [12, 0]]\n");
   ASSERT_TRUE(result.setup.has_value());

@@ -156,7 +156,7 @@ TEST(AxialCycleProgram, NamingG90AgainKeepsTheRetainedValues) {
 TEST(AxialCycleProgram, DwellKeepsTheRetainedValues) {
   const auto result = run("G00 X60 Z2\nG90 X50 Z-20 F0.2\nG04 X1.5\nX40\n");
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
-  EXPECT_EQ(result.toolpath.moves.size(), 9u);
+  EXPECT_EQ(result.toolpath.moves.size(), 10u);  // 1 rapid, 4 legs, the dwell, 4 legs
 }
 
 TEST(AxialCycleProgram, RapidClearsTheRetainedValues) {

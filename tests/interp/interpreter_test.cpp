@@ -150,8 +150,10 @@ TEST(Interpreter, BlockWithoutCycleWordsDoesNotRepeatTheCycle) {
 TEST(Interpreter, DwellKeepsTheRetainedValues) {
   const auto result = run("G00 X60 Z2\nG94 X50 Z-5 F0.2\nG04 X1.5\nZ-10\n");
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
-  ASSERT_EQ(result.toolpath.moves.size(), 9u);
-  expectMoves({result.toolpath.moves[6]}, {{kFeed, 30, -10, 25, -10, 0.2, 2}});
+  // 1 rapid, 4 legs, the dwell at A (30, 2), 4 legs.
+  ASSERT_EQ(result.toolpath.moves.size(), 10u);
+  expectMoves({result.toolpath.moves[5]}, {{MoveKind::Dwell, 30, 2, 30, 2, 0, 0}});
+  expectMoves({result.toolpath.moves[7]}, {{kFeed, 30, -10, 25, -10, 0.2, 2}});
 }
 
 TEST(Interpreter, RapidClearsTheRetainedValues) {

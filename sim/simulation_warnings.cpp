@@ -1,0 +1,36 @@
+#include "sim/simulation_warnings.hpp"
+
+#include <cstdio>
+#include <string>
+
+namespace lathesim::sim {
+namespace {
+
+std::string number(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+}  // namespace
+
+std::optional<SimulationWarning> cycleStartInStock(const interp::CycleStart& start, const Stock& stock) {
+  if (stock.signedDistanceAt(start.point) >= -kInsideStockVoxels * stock.voxelMm()) return std::nullopt;
+  return SimulationWarning{start.line, start.column,
+                           start.code + " starts at X" + number("%g", diameterOf(start.point)) + " Z" +
+                               number("%g", start.point.y()) +
+                               " (the cycle start point), which is inside the stock: the cycle's "
+                               "rapid legs start in material; start the cycle clear of the blank"};
+}
+
+std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head, double removedMm3,
+                                                       double voxelMm) {
+  if (!interp::isCutting(head.kind) || head.spindleOn) return std::nullopt;
+  if (removedMm3 <= kCollisionVoxels * voxelMm * voxelMm * voxelMm) return std::nullopt;
+  return SimulationWarning{head.line, head.column,
+                           "cutting with the spindle stopped: this block removes " + number("%.1f", removedMm3) +
+                               " mm³ with no M03/M04 in force (or after M05); start the spindle "
+                               "before cutting"};
+}
+
+}  // namespace lathesim::sim

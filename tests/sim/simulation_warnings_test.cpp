@@ -1,0 +1,117 @@
+// The simulation's warnings: cutting with the spindle stopped, a cycle started inside the
+// stock; and the stock query they rest on.
+
+#include <gtest/gtest.h>
+
+#include "sim/simulate.hpp"
+
+namespace lathesim::sim {
+namespace {
+
+constexpr double kVoxelMm = 0.25;
+
+interp::Move feedMove(RZ from, RZ to, bool spindleOn) {
+  interp::Move m;
+  m.kind = interp::MoveKind::Feed;
+  m.from = from;
+  m.to = to;
+  m.feed = 0.1;
+  m.tool = 1;
+  m.block = 0;
+  m.line = 4;
+  m.column = 2;
+  m.spindleOn = spindleOn;
+  return m;
+}
+
+ToolOutlines squareTool() {
+  const std::vector<RZ> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  ToolOutlines tools;
+  tools.emplace(1, *ConvexPolygon::fromOutline(square).polygon);
+  return tools;
+}
+
+TEST(StockQuery, SignedDistanceIsNegativeInsidePositiveOutsideZeroOnTheSurface) {
+  // Φ40 × 30, face at Z0: r ≤ 20, −30 ≤ Z ≤ 0.
+  const Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  EXPECT_LT(stock.signedDistanceAt(RZ(10, -10)), -2 * kVoxelMm);  // deep inside: the band's −3 voxels
+  EXPECT_GT(stock.signedDistanceAt(RZ(30, -10)), 2 * kVoxelMm);
+  EXPECT_NEAR(stock.signedDistanceAt(RZ(19.5, -10)), -0.5, 0.5 * kVoxelMm);  // 0.5 mm under the OD
+  EXPECT_NEAR(stock.signedDistanceAt(RZ(10, 0.5)), 0.5, 0.5 * kVoxelMm);     // 0.5 mm above the face
+}
+
+TEST(SimulationWarnings, CuttingWithTheSpindleStopped) {
+  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  interp::Toolpath path;
+  path.blockCount = 1;
+  // A face cut to the axis at Z-2 (removes π·20²·2 ≈ 2513 mm³), with the spindle stopped.
+  path.moves.push_back(feedMove({25, -2}, {0, -2}, false));
+  path.moves.push_back(feedMove({0, -2}, {0, 5}, false));
+  const SimulationResult result = simulate(path, squareTool(), stock);
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_EQ(result.warnings[0].line, 4);
+  EXPECT_EQ(result.warnings[0].column, 2);
+  EXPECT_NE(result.warnings[0].message.find("cutting with the spindle stopped: this block removes 25"),
+            std::string::npos)
+      << result.warnings[0].message;
+}
+
+TEST(SimulationWarnings, NoneWhenTheSpindleTurnsOrNothingIsCut) {
+  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  interp::Toolpath path;
+  path.blockCount = 2;
+  path.moves.push_back(feedMove({25, -2}, {0, -2}, true));
+  interp::Move air = feedMove({25, 10}, {0, 10}, false);  // above the face: cuts nothing
+  air.block = 1;
+  path.moves.push_back(air);
+  EXPECT_TRUE(simulate(path, squareTool(), stock).warnings.empty());
+}
+
+TEST(SimulationWarnings, CycleStartInsideTheStockAsItIsThen) {
+  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  interp::Toolpath path;
+  path.blockCount = 3;
+  // Block 0 faces the bar down to Z-2. Block 1 is a "cycle" starting at (10, -1): material
+  // before block 0, air after it. Block 2 starts at (10, -5): inside.
+  path.moves.push_back(feedMove({25, -2}, {0, -2}, true));
+  path.moves.push_back(feedMove({0, -2}, {0, 5}, true));
+  for (int block : {1, 2}) {
+    interp::Move m = feedMove({30, 5}, {30, 6}, true);
+    m.block = block;
+    m.line = 10 + block;
+    path.moves.push_back(m);
+  }
+  path.cycleStarts.push_back({1, 11, 1, RZ(10, -1), "G94"});
+  path.cycleStarts.push_back({2, 12, 1, RZ(10, -5), "G90"});
+  const SimulationResult result = simulate(path, squareTool(), stock);
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_EQ(result.warnings[0].line, 12);
+  EXPECT_EQ(result.warnings[0].message,
+            "G90 starts at X20 Z-5 (the cycle start point), which is inside the stock: the cycle's rapid "
+            "legs start in material; start the cycle clear of the blank");
+}
+
+TEST(Simulate, BlockTimesAreTheirMovesTimesAndADwellRemovesNothing) {
+  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  interp::Toolpath path;
+  path.blockCount = 2;
+  interp::Move cut = feedMove({25, -2}, {0, -2}, true);
+  cut.timeS = 2.0;
+  interp::Move back = feedMove({0, -2}, {0, 5}, true);
+  back.timeS = 0.5;
+  interp::Move dwell = feedMove({0, 5}, {0, 5}, true);
+  dwell.kind = interp::MoveKind::Dwell;
+  dwell.block = 1;
+  dwell.line = 5;
+  dwell.dwellS = dwell.timeS = 1.5;
+  path.moves = {cut, back, dwell};
+  const SimulationResult result = simulate(path, squareTool(), stock);
+  ASSERT_EQ(result.blocks.size(), 2u);
+  EXPECT_DOUBLE_EQ(result.blocks[0].timeS, 2.5);
+  EXPECT_EQ(result.blocks[1].line, 5);  // a dwell-only block is listed, with its time
+  EXPECT_DOUBLE_EQ(result.blocks[1].timeS, 1.5);
+  EXPECT_EQ(result.blocks[1].removedMm3, 0.0);
+}
+
+}  // namespace
+}  // namespace lathesim::sim
