@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <optional>
 
+#include "interp/dialect.hpp"
+
 namespace lathesim::app {
 
 /// The voxel size used when neither --voxel nor [sim] voxel says: the default part runs in
@@ -22,10 +24,12 @@ struct RunOptions {
   std::optional<std::filesystem::path> setup;
   std::filesystem::path out = "out";
   std::optional<double> voxelMm;
+  std::optional<interp::Dialect> dialect;  // overrides [machine] dialect
 };
 
 int runCommand(const RunOptions& options);
 
-int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup);
+int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
+                  std::optional<interp::Dialect> dialect = std::nullopt);
 
 }  // namespace lathesim::app

@@ -27,7 +27,8 @@ interp::Diagnostic Job::warningAt(int line, int column, std::string message) con
           interp::lineOf(programText, line)};
 }
 
-std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile) {
+std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
+                           std::optional<interp::Dialect> dialect) {
   Job job{defaultSetup(), {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
@@ -48,6 +49,9 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
   options.startPosition = job.setup.startPosition;
   options.referencePosition = job.setup.referencePosition;
   options.machine = job.setup.machine;
+  if (dialect) job.setup.dialect = *dialect;
+  options.dialect = job.setup.dialect;
+  options.initialFeedMode = job.setup.initialFeedMode;
   for (const auto& tool : job.setup.tools) options.toolNumbers.push_back(tool.number);
   job.programText = text.str();
   interp::InterpretResult result = interp::interpret(job.programText, program.string(), options);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/setup.hpp"
+#include "interp/dialect.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::app {
@@ -22,6 +23,8 @@ struct Job {
   interp::Diagnostic warningAt(int line, int column, std::string message) const;
 };
 
-std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile);
+/// `dialect`, when given (--dialect), overrides the setup's [machine] dialect.
+std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
+                           std::optional<interp::Dialect> dialect = std::nullopt);
 
 }  // namespace lathesim::app

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "interp/dialect.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli{"lathesim — simulates a lathe program on a bar and shows the part it makes"};
@@ -24,16 +25,27 @@ int main(int argc, char** argv) {
   expandCmd->add_option("program", expandProgram, "the G-code program")->required()->check(CLI::ExistingFile);
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
 
+  std::string runDialect, expandDialect;
+  std::vector<std::string> dialects;
+  for (auto dialect : lathesim::interp::kDialects) dialects.emplace_back(lathesim::interp::dialectName(dialect));
+  runCmd->add_option("--dialect", runDialect, "G-code dialect (overrides [machine] dialect)")->check(CLI::IsMember(dialects));
+  expandCmd->add_option("--dialect", expandDialect, "G-code dialect (overrides [machine] dialect)")
+      ->check(CLI::IsMember(dialects));
+
   CLI11_PARSE(cli, argc, argv);
+  const auto optionalDialect = [](const std::string& s) {
+    return s.empty() ? std::nullopt : lathesim::interp::dialectNamed(s);
+  };
   const auto optionalPath = [](const std::string& s) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
   };
   try {
     if (*runCmd) {
       run.setup = optionalPath(runSetup);
+      run.dialect = optionalDialect(runDialect);
       return lathesim::app::runCommand(run);
     }
-    return lathesim::app::expandCommand(expandProgram, optionalPath(expandSetup));
+    return lathesim::app::expandCommand(expandProgram, optionalPath(expandSetup), optionalDialect(expandDialect));
   } catch (const std::exception& e) {  // I/O failures and broken invariants
     std::cerr << "lathesim: error: " << e.what() << '\n';
     return 1;

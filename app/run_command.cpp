@@ -42,7 +42,7 @@ sim::ToolOutlines outlinesOf(const Setup& setup) {
 int runCommand(const RunOptions& options) {
   Stopwatch clock;
   RunFigures figures;
-  std::optional<Job> job = loadJob(options.program, options.setup);
+  std::optional<Job> job = loadJob(options.program, options.setup, options.dialect);
   if (!job) return 1;
   figures.timing.parseS = clock.lap();
 
@@ -106,8 +106,9 @@ int runCommand(const RunOptions& options) {
   return 0;
 }
 
-int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup) {
-  const std::optional<Job> job = loadJob(program, setup);
+int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
+                  std::optional<interp::Dialect> dialect) {
+  const std::optional<Job> job = loadJob(program, setup, dialect);
   if (!job) return 1;
   interp::writeToolpathCsv(job->toolpath, std::cout);
   return 0;

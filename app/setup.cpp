@@ -220,8 +220,34 @@ void readRapid(const toml::node& node, interp::MachineLimits& machine, Reporter&
   machine.rapidZMmPerMin = *z;
 }
 
+// A string key that must be one of `choices`; the index of the one given.
+std::optional<std::size_t> choiceOf(const toml::node& node, const std::string& name,
+                                    std::initializer_list<std::string_view> choices, Reporter& report) {
+  if (const auto* text = node.as_string()) {
+    std::size_t index = 0;
+    for (std::string_view choice : choices) {
+      if (text->get() == choice) return index;
+      ++index;
+    }
+  }
+  std::string listed;
+  for (std::string_view choice : choices) listed += std::string(listed.empty() ? "" : ", ") + '"' + std::string(choice) + '"';
+  report.at(node.source(), name + " must be one of " + listed + ", got " + describe(node));
+  return std::nullopt;
+}
+
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
-  rejectUnknownKeys(table, "machine.", {"start", "rapid", "max_rpm", "reference"}, report);
+  rejectUnknownKeys(table, "machine.", {"start", "rapid", "max_rpm", "reference", "dialect", "initial_feed_mode"},
+                    report);
+  if (const auto* node = table.get("dialect")) {
+    using interp::kDialects, interp::dialectName;
+    if (auto i = choiceOf(*node, "machine.dialect",
+                          {dialectName(kDialects[0]), dialectName(kDialects[1]), dialectName(kDialects[2])}, report))
+      setup.dialect = kDialects[*i];
+  }
+  if (const auto* node = table.get("initial_feed_mode"))
+    if (auto i = choiceOf(*node, "machine.initial_feed_mode", {"per_revolution", "per_minute"}, report))
+      setup.initialFeedMode = *i == 0 ? interp::FeedMode::PerRevolution : interp::FeedMode::PerMinute;
   if (const auto* node = table.get("start"))
     if (auto p = positionOf(*node, "machine.start", report)) setup.startPosition = *p;
   setup.referencePosition = setup.startPosition;

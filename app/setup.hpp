@@ -9,7 +9,9 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/diagnostic.hpp"
+#include "interp/dialect.hpp"
 #include "interp/machine_limits.hpp"
+#include "interp/move.hpp"
 #include "sim/stock_spec.hpp"
 
 namespace lathesim::app {
@@ -25,6 +27,10 @@ struct Setup {
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
   RZ referencePosition{100.0, 200.0};  // G28's reference point (radius, Z); the start if not given
   interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm
+  interp::Dialect dialect = interp::Dialect::FanucA;  // [machine] dialect
+  // [machine] initial_feed_mode: the G98/G99 state before the program sets one. Fanuc lathes
+  // power on in G99 (mm/rev); a GSK980TDi in G98 (mm/min).
+  interp::FeedMode initialFeedMode = interp::FeedMode::PerRevolution;
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
 };

@@ -3,7 +3,7 @@
 namespace lathesim::interp {
 
 std::optional<Dialect> dialectNamed(std::string_view name) {
-  for (Dialect dialect : {Dialect::FanucA, Dialect::FanucB, Dialect::Hnc})
+  for (Dialect dialect : kDialects)
     if (name == dialectName(dialect)) return dialect;
   return std::nullopt;
 }

@@ -4,6 +4,7 @@
 // means which system-A code (see gcode_table.cpp), plus absolute/incremental distance
 // modes, which system A expresses with X/U and Z/W alone.
 
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -15,7 +16,7 @@ enum class Dialect {
   Hnc,     // "hnc": Huazhong HNC lathe: G80/G81/G82 cycles, G90/G91 abs/inc, G94/G95 feed modes
 };
 
-inline constexpr std::string_view kDialectNames = "fanuc-a, fanuc-b, hnc";
+inline constexpr std::array kDialects{Dialect::FanucA, Dialect::FanucB, Dialect::Hnc};
 
 std::optional<Dialect> dialectNamed(std::string_view name);
 std::string_view dialectName(Dialect dialect);

@@ -19,6 +19,7 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
                   Toolpath& toolpath, std::vector<Error>& warnings) {
   ModalState state;
   state.position = options.startPosition;
+  state.feedMode = options.initialFeedMode;
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
 
   const Program program = readProgram(programText, options.blockDelete, options.dialect);

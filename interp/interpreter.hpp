@@ -19,6 +19,7 @@ struct InterpreterOptions {
                                    // T word. A T word naming another number is an error.
   bool blockDelete = true;         // '/' blocks are skipped when true
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
+  FeedMode initialFeedMode = FeedMode::PerRevolution;  // G98/G99 before the program sets one
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
 };

@@ -144,6 +144,25 @@ TEST(ParseSetupErrors, MaxRpmMustBePositive) {
   EXPECT_EQ(d.line, 3);
 }
 
+TEST(ParseSetup, DialectAndInitialFeedMode) {
+  const SetupResult defaults = parse("");
+  ASSERT_TRUE(defaults.setup.has_value());
+  EXPECT_EQ(defaults.setup->dialect, interp::Dialect::FanucA);
+  EXPECT_EQ(defaults.setup->initialFeedMode, interp::FeedMode::PerRevolution);  // Fanuc's G99
+  const SetupResult result = parse("[machine]\ndialect = \"hnc\"\ninitial_feed_mode = \"per_minute\"\n");
+  ASSERT_TRUE(result.setup.has_value()) << result.diagnostics[0].message;
+  EXPECT_EQ(result.setup->dialect, interp::Dialect::Hnc);
+  EXPECT_EQ(result.setup->initialFeedMode, interp::FeedMode::PerMinute);
+}
+
+TEST(ParseSetupErrors, DialectAndFeedModeAreNamedChoices) {
+  const Diagnostic d = onlyError("[machine]\ndialect = \"fanuc-c\"\n");
+  EXPECT_EQ(d.message, "machine.dialect must be one of \"fanuc-a\", \"fanuc-b\", \"hnc\", got \"fanuc-c\"");
+  EXPECT_EQ(d.line, 2);
+  EXPECT_EQ(onlyError("[machine]\ninitial_feed_mode = 99\n").message,
+            "machine.initial_feed_mode must be one of \"per_revolution\", \"per_minute\", got 99");
+}
+
 TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
   EXPECT_EQ(onlyError("[machine]\nreference = [200]\n").message,
             "machine.reference must be [X diameter, Z] in mm, got [200]");
