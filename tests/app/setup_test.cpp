@@ -172,7 +172,8 @@ TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
 
 TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
   const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
-  EXPECT_EQ(d.message, "unknown key 'machine.rapids' (expected start, rapid, max_rpm or reference)");
+  EXPECT_EQ(d.message,
+            "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, dialect or initial_feed_mode)");
 }
 
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
