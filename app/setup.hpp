@@ -15,7 +15,10 @@ namespace lathesim::app {
 
 struct ToolDefinition {
   int number = 1;
-  ConvexPolygon outline;  // [radial, axial] mm from the programmed point
+  ConvexPolygon outline;  // the cutter: [radial, axial] mm from the programmed point; swept and removed
+  std::optional<ConvexPolygon> holderBody;  // catalogue tools: the holder's head and shank; never cuts
+  int tipNumber = 3;          // Fanuc imaginary tip 0–9: the programmed point relative to the nose
+  double noseRadiusMm = 0.0;  // 0 for a polygon tool
 };
 
 struct Setup {
