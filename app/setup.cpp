@@ -208,6 +208,16 @@ void readSim(const toml::table& table, std::optional<double>& voxelMm, Reporter&
     if (auto v = positiveMm(*node, "sim.voxel", report)) voxelMm = *v;
 }
 
+void readChuck(const toml::table& table, sim::ChuckSpec& chuck, Reporter& report) {
+  rejectUnknownKeys(table, "chuck.", {"grip_length", "jaw_diameter", "face_z"}, report);
+  if (const auto* node = table.get("grip_length"))
+    if (auto v = positiveMm(*node, "chuck.grip_length", report)) chuck.gripLengthMm = *v;
+  if (const auto* node = table.get("jaw_diameter"))
+    if (auto v = positiveMm(*node, "chuck.jaw_diameter", report)) chuck.jawDiameterMm = *v;
+  if (const auto* node = table.get("face_z"))
+    if (auto v = finiteMm(*node, "chuck.face_z", report)) chuck.faceZMm = *v;
+}
+
 /// One [[tool]] table; `name` is "tool[i]" (1-based, in file order).
 std::optional<ToolDefinition> readTool(const toml::table& table, const std::string& name, Reporter& report) {
   std::vector<std::string_view> known{"number", "polygon"};
@@ -324,7 +334,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck"}, report);
   if (const auto* node = root.get("stock"))
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
   if (const auto* node = root.get("machine"))
@@ -332,6 +342,11 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   if (const auto* node = root.get("sim"))
     if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
   if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);
+  if (const auto* node = root.get("chuck"))
+    if (const auto* table = tableAt(*node, "chuck", report)) readChuck(*table, setup.chuck, report);
+  if (setup.chuck.jawDiameterMm && *setup.chuck.jawDiameterMm <= setup.stock.diameterMm)
+    report.at(root.get("chuck")->as_table()->get("jaw_diameter")->source(),
+              "chuck.jaw_diameter must exceed the stock's diameter (" + floatText(setup.stock.diameterMm) + " mm)");
 
   if (report.hasErrors()) return {std::nullopt, report.take()};
   return {std::move(setup), report.take()};  // warnings only

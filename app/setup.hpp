@@ -9,6 +9,7 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/diagnostic.hpp"
+#include "sim/chuck_spec.hpp"
 #include "sim/stock_spec.hpp"
 
 namespace lathesim::app {
@@ -27,6 +28,7 @@ struct Setup {
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
+  sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
 };
 
 struct SetupResult {

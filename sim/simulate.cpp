@@ -16,7 +16,7 @@ ConvexPolygon sweptRegion(const interp::Move& move, const ToolOutlines& tools) {
 }  // namespace
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress) {
+                          const BlockProgress& progress, const CollisionChecks* checks) {
   SimulationResult result;
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
@@ -38,6 +38,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     block.removedMm3 += removed;
     if (head.kind == interp::MoveKind::Rapid && removed > kCollisionVoxels * voxelVolume)
       result.collisions.push_back({head.line, head.column, "rapid_into_stock", removed});
+    if (checks) checkMoves(*checks, std::span(moves).subspan(first, end - first), stock, result.collisions);
 
     first = end;
     if (progress && (first == moves.size() || moves[first].block != head.block)) progress(head.block + 1, totalBlocks);

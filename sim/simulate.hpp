@@ -9,6 +9,7 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/move.hpp"
+#include "sim/holder_check.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::sim {
@@ -16,7 +17,7 @@ namespace lathesim::sim {
 struct Collision {
   int line = 0;
   int column = 0;
-  std::string kind;  // "rapid_into_stock"
+  std::string kind;  // "rapid_into_stock", "holder_into_stock", "into_chuck"
   double volumeMm3 = 0.0;
 };
 
@@ -42,7 +43,8 @@ using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 /// Removes every move's swept region from `stock` in program order. Consecutive feed moves
 /// of one block are united and written once (a cycle's cut and retract overlap heavily);
 /// each rapid is written on its own so that a rapid into material is caught and located.
+/// With `checks`, each move is also checked for holder and chuck collisions (holder_check.hpp).
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress = {});
+                          const BlockProgress& progress = {}, const CollisionChecks* checks = nullptr);
 
 }  // namespace lathesim::sim

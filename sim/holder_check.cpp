@@ -1,0 +1,62 @@
+#include "sim/holder_check.hpp"
+
+#include <algorithm>
+
+#include "geometry/convex_overlap.hpp"
+#include "sim/simulate.hpp"
+
+namespace lathesim::sim {
+namespace {
+
+/// Adds a collision, or grows the last one when it is the same line and kind.
+void record(std::vector<Collision>& collisions, const interp::Move& move, const char* kind, double volumeMm3) {
+  if (!collisions.empty()) {
+    Collision& last = collisions.back();
+    if (last.line == move.line && last.column == move.column && last.kind == kind) {
+      last.volumeMm3 += volumeMm3;
+      return;
+    }
+  }
+  collisions.push_back({move.line, move.column, kind, volumeMm3});
+}
+
+double chuckVolume(const std::vector<ConvexPolygon>& chuck, const ConvexPolygon& swept) {
+  double volume = 0.0;
+  for (const ConvexPolygon& part : chuck) volume += revolvedVolumeMm3(overlapOf(swept, part));
+  return volume;
+}
+
+}  // namespace
+
+std::vector<ConvexPolygon> chuckRegions(const ChuckSpec& chuck, const StockSpec& stock) {
+  const double bar = stock.diameterMm / 2.0;
+  const double jaw = chuck.jawDiameterMm.value_or(stock.diameterMm + 40.0) / 2.0;
+  const double face = chuck.faceZMm.value_or(stock.faceZMm - stock.lengthMm + chuck.gripLengthMm);
+  const double back = face - chuck.gripLengthMm;
+  const std::vector<RZ> jaws{{bar, back}, {jaw, back}, {jaw, face}, {bar, face}};
+  const std::vector<RZ> body{{0.0, back - 100.0}, {jaw, back - 100.0}, {jaw, back}, {0.0, back}};
+  return {ConvexPolygon::hullOf(jaws), ConvexPolygon::hullOf(body)};
+}
+
+void checkMoves(const CollisionChecks& checks, std::span<const interp::Move> moves, const Stock& stock,
+                std::vector<Collision>& collisions) {
+  const double h = stock.voxelMm();
+  for (const interp::Move& move : moves) {
+    if (move.kind == interp::MoveKind::Dwell) continue;
+    const auto holder = checks.holders.find(move.tool);
+    std::optional<ConvexPolygon> holderSwept;
+    if (holder != checks.holders.end()) holderSwept = holder->second.sweptAlong(move.from, move.to);
+    if (holderSwept) {
+      const double inside = stock.materialInside(*holderSwept, h);
+      if (inside > kCollisionVoxels * h * h * h) record(collisions, move, "holder_into_stock", inside);
+    }
+    if (checks.chuck.empty()) continue;
+    double chuck = 0.0;
+    if (const auto cutter = checks.cutters.find(move.tool); cutter != checks.cutters.end())
+      chuck = chuckVolume(checks.chuck, cutter->second.sweptAlong(move.from, move.to));
+    if (holderSwept) chuck = std::max(chuck, chuckVolume(checks.chuck, *holderSwept));
+    if (chuck > 0.0) record(collisions, move, "into_chuck", chuck);
+  }
+}
+
+}  // namespace lathesim::sim
