@@ -10,7 +10,7 @@ namespace lathesim::sim {
 struct ChuckSpec {
   double gripLengthMm = 20.0;
   std::optional<double> jawDiameterMm;  // default: the bar's diameter + 40 mm
-  std::optional<double> faceZMm;        // default: the bar's left end + gripLengthMm (it grips the bar's left 20 mm)
+  std::optional<double> faceZMm;        // default: the bar's left end (the stock is what sticks out of the jaws)
 };
 
 }  // namespace lathesim::sim

@@ -31,7 +31,7 @@ double chuckVolume(const std::vector<ConvexPolygon>& chuck, const ConvexPolygon&
 std::vector<ConvexPolygon> chuckRegions(const ChuckSpec& chuck, const StockSpec& stock) {
   const double bar = stock.diameterMm / 2.0;
   const double jaw = chuck.jawDiameterMm.value_or(stock.diameterMm + 40.0) / 2.0;
-  const double face = chuck.faceZMm.value_or(stock.faceZMm - stock.lengthMm + chuck.gripLengthMm);
+  const double face = chuck.faceZMm.value_or(stock.faceZMm - stock.lengthMm);
   const double back = face - chuck.gripLengthMm;
   const std::vector<RZ> jaws{{bar, back}, {jaw, back}, {jaw, face}, {bar, face}};
   const std::vector<RZ> body{{0.0, back - 100.0}, {jaw, back - 100.0}, {jaw, back}, {0.0, back}};

@@ -11,7 +11,7 @@
 namespace lathesim::app {
 namespace {
 
-// Φ50 × 60 bar, face Z0; the default chuck: jaws r 25..45 over Z −60..−40.
+// Φ50 × 60 bar, face Z0; the default chuck: jaws r 25..45 over Z −80..−60, behind the bar.
 constexpr std::string_view kSetup = R"([stock]
 diameter = 50
 length = 60
@@ -64,8 +64,8 @@ TEST(ToolCollisions, CutDeeperThanTheInsertDrivesTheHolderIntoTheStock) {
 }
 
 TEST(ToolCollisions, TurningIntoTheJawsIsIntoChuck) {
-  // 2 mm deep to Z−45: the insert (r 23 up) passes Z−40, the jaws' face, on line 3.
-  const auto collisions = collisionsOf("G00 X60 Z1 M3 S500\nG01 X46 F0.2\nG01 Z-45\n");
+  // 2 mm deep to Z−62: the insert (r 23 up) passes the bar's end at Z−60, the jaws' face, on line 3.
+  const auto collisions = collisionsOf("G00 X60 Z1 M3 S500\nG01 X46 F0.2\nG01 Z-62\n");
   ASSERT_EQ(collisions.size(), 1u);
   EXPECT_EQ(collisions[0].kind, "into_chuck");
   EXPECT_EQ(collisions[0].line, 3);

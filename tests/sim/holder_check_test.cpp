@@ -42,31 +42,31 @@ CollisionChecks checksFor(const StockSpec& stock, const ChuckSpec& chuck) {
   return checks;
 }
 
-TEST(ChuckRegions, DefaultJawsGripTheBarsLeft20Mm) {
-  // Φ50 × 60 bar, face Z0: left end Z−60; jaws r 25..45 (Φ50 + 40), Z −60..−40.
+TEST(ChuckRegions, DefaultJawsHoldTheBarBehindItsLeftEnd) {
+  // Φ50 × 60 bar, face Z0: left end Z−60; jaws r 25..45 (Φ50 + 40), Z −80..−60; body behind.
   const auto regions = chuckRegions(ChuckSpec{}, StockSpec{50.0, 60.0, 0.0});
   ASSERT_EQ(regions.size(), 2u);
-  EXPECT_EQ(regions[0].lowerBound(), RZ(25, -60));
-  EXPECT_EQ(regions[0].upperBound(), RZ(45, -40));
-  EXPECT_EQ(regions[1].lowerBound(), RZ(0, -160));
-  EXPECT_EQ(regions[1].upperBound(), RZ(45, -60));
+  EXPECT_EQ(regions[0].lowerBound(), RZ(25, -80));
+  EXPECT_EQ(regions[0].upperBound(), RZ(45, -60));
+  EXPECT_EQ(regions[1].lowerBound(), RZ(0, -180));
+  EXPECT_EQ(regions[1].upperBound(), RZ(45, -80));
 }
 
-TEST(ChuckRegions, JawsMayHoldTheBarBehindTheStock) {
-  // face_z at the bar's left end (Z−60): jaws Z −80..−60, body Z −180..−80.
-  const auto regions = chuckRegions(ChuckSpec{20.0, 60.0, -60.0}, StockSpec{50.0, 60.0, 0.0});
-  EXPECT_EQ(regions[0].lowerBound(), RZ(25, -80));
-  EXPECT_EQ(regions[0].upperBound(), RZ(30, -60));
-  EXPECT_EQ(regions[1].lowerBound(), RZ(0, -180));
+TEST(ChuckRegions, JawsMayGripTheStocksOwnEnd) {
+  // face_z at Z−40: the jaws grip the bar's left 20 mm, Z −60..−40, r 25..30.
+  const auto regions = chuckRegions(ChuckSpec{20.0, 60.0, -40.0}, StockSpec{50.0, 60.0, 0.0});
+  EXPECT_EQ(regions[0].lowerBound(), RZ(25, -60));
+  EXPECT_EQ(regions[0].upperBound(), RZ(30, -40));
+  EXPECT_EQ(regions[1].lowerBound(), RZ(0, -160));
 }
 
 TEST(HolderCheck, RapidAlongsideTheBarIntoTheJawsIsIntoChuck) {
   const StockSpec bar{50.0, 60.0, 0.0};
   Stock stock(bar, 0.25);
-  const CollisionChecks checks = checksFor(bar, ChuckSpec{});
+  const CollisionChecks checks = checksFor(bar, ChuckSpec{20.0, std::nullopt, -40.0});
   interp::Toolpath path;
   path.blockCount = 1;
-  // The cutter at r 30..32 runs from Z5 down to Z−50; the holder (r 35..50) follows. The
+  // Jaws on the bar's left 20 mm (face_z −40). The cutter at r 30..32 runs from Z5 down to Z−50; the holder (r 35..50) follows. The
   // cutter's sweep r 30..32, Z −50..7 meets the jaws (r 25..45, Z −60..−40) in r 30..32,
   // Z −50..−40: area 20, centroid r 31 → 20·2π·31 = 3895.6 mm³. The holder's sweep, r 35..50,
   // Z −50..15, meets them in r 35..45, Z −50..−40: area 100, centroid r 40 → 100·2π·40 =
