@@ -46,4 +46,9 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
   return result;
 }
 
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress) {
+  return simulate(toolpath, tools, stock, progress, nullptr);
+}
+
 }  // namespace lathesim::sim

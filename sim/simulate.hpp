@@ -43,8 +43,12 @@ using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 /// Removes every move's swept region from `stock` in program order. Consecutive feed moves
 /// of one block are united and written once (a cycle's cut and retract overlap heavily);
 /// each rapid is written on its own so that a rapid into material is caught and located.
-/// With `checks`, each move is also checked for holder and chuck collisions (holder_check.hpp).
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress = {}, const CollisionChecks* checks = nullptr);
+                          const BlockProgress& progress = {});
+
+/// The same, and each move is also checked for holder and chuck collisions (holder_check.hpp)
+/// when `checks` is given.
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress, const CollisionChecks* checks);
 
 }  // namespace lathesim::sim
