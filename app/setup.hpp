@@ -9,8 +9,8 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/diagnostic.hpp"
-#include "sim/chuck_spec.hpp"
 #include "sim/stock_spec.hpp"
+#include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
 namespace lathesim::app {
 

@@ -106,23 +106,6 @@ polygon = [[0, 0], [4, -1], [5, 5]]
   EXPECT_DOUBLE_EQ(setup.tools[1].outline.area(), 0.5 * (4 * 5 - (-1) * 5));
 }
 
-TEST(ParseSetup, ChuckDefaultsAndKeys) {
-  EXPECT_DOUBLE_EQ(defaultSetup().chuck.gripLengthMm, 20.0);
-  EXPECT_FALSE(defaultSetup().chuck.jawDiameterMm.has_value());  // bar + 40 when used
-  const SetupResult result = parse("[chuck]\ngrip_length = 30\njaw_diameter = 200\nface_z = -120\n");
-  ASSERT_TRUE(result.setup.has_value());
-  EXPECT_DOUBLE_EQ(result.setup->chuck.gripLengthMm, 30.0);
-  EXPECT_DOUBLE_EQ(result.setup->chuck.jawDiameterMm.value_or(0), 200.0);
-  EXPECT_DOUBLE_EQ(result.setup->chuck.faceZMm.value_or(0), -120.0);
-}
-
-TEST(ParseSetupErrors, ChuckJawsMustReachBeyondTheBar) {
-  const Diagnostic d = onlyError("[stock]\ndiameter = 50\n[chuck]\njaw_diameter = 40\n");
-  EXPECT_EQ(d.message, "chuck.jaw_diameter must exceed the stock's diameter (50.0 mm)");
-  EXPECT_EQ(d.line, 4);
-  EXPECT_EQ(onlyError("[chuck]\ngrip = 5\n").message, "unknown key 'chuck.grip' (expected grip_length, jaw_diameter or face_z)");
-}
-
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
   const SetupResult result = parse("[[tool]]\nnumber = 1\npolygon = [[0, 0], [0, 12], [12, 12], [12, 0]]\n");
   ASSERT_TRUE(result.setup.has_value());
