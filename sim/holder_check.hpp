@@ -30,8 +30,9 @@ std::vector<ConvexPolygon> chuckRegions(const ChuckSpec& chuck, const StockSpec&
 /// Checks `moves` (already cut from `stock`) and appends their collisions; a move that
 /// continues a collision of the same line and kind adds its volume to it.
 /// holder_into_stock: material deeper than one voxel inside the holder's swept region, more
-/// than kCollisionVoxels voxels' worth. into_chuck: the larger of the cutter's and the
-/// holder's swept region inside the chuck, revolved (any positive volume).
+/// than kCollisionVoxels voxels' worth. into_chuck: the largest revolved volume any piece
+/// of the cutter's or the holder's sweep has inside the chuck (any positive volume). Arcs
+/// are swept as chords of at most 5°.
 void checkMoves(const CollisionChecks& checks, std::span<const interp::Move> moves, const Stock& stock,
                 std::vector<Collision>& collisions);
 

@@ -7,12 +7,13 @@
 
 namespace lathesim::sim {
 
-double Stock::materialInside(const ConvexPolygon& region, double marginMm) const {
+double Stock::materialInside(const RevolvedRegion& region, double marginMm) const {
   const StockGrid& s = *impl_;
   const double h = s.voxel;
   const auto& bounds = s.materialBounds;
+  if (region.empty()) return 0.0;
   const int i0 = std::max(0, s.toIndexFloor(region.lowerBound().x()));
-  const int i1 = std::min(bounds.max().x(), s.toIndexCeil(region.upperBound().x()));
+  const int i1 = std::min(bounds.max().x(), s.toIndexCeil(region.maxRadius()));
   const int k0 = std::max(bounds.min().z(), s.toIndexFloor(region.lowerBound().y()));
   const int k1 = std::min(bounds.max().z(), s.toIndexCeil(region.upperBound().y()));
   auto accessor = s.grid->getConstAccessor();
@@ -24,7 +25,8 @@ double Stock::materialInside(const ConvexPolygon& region, double marginMm) const
     for (int k = k0; k <= k1; ++k) {
       const double material = insideFraction(accessor.getValue(Coord(i, 0, k)), h);
       if (material == 0.0) continue;
-      const double psi = region.signedDistance(RZ(rho, k * h)) + marginMm;
+      // Only values within a voxel of -marginMm matter, so the distance may stop there.
+      const double psi = region.signedDistance(rho, k * h, marginMm + h) + marginMm;
       sum += material * std::clamp(0.5 - psi / h, 0.0, 1.0) * ring;
     }
   }

@@ -79,6 +79,27 @@ TEST(HolderCheck, RapidAlongsideTheBarIntoTheJawsIsIntoChuck) {
   EXPECT_NEAR(result.collisions[0].volumeMm3, 100.0 * 2.0 * kPi * 40.0, 1e-6);
 }
 
+TEST(HolderCheck, ArcDippingIntoTheJawsIsFollowedNotCutShort) {
+  const StockSpec bar{50.0, 60.0, 0.0};
+  Stock stock(bar, 0.25);
+  const CollisionChecks checks = checksFor(bar, ChuckSpec{20.0, std::nullopt, -40.0});  // jaws r 25..45, Z −60..−40
+  interp::Toolpath path;
+  path.blockCount = 1;
+  // G02 about (r 50, Z−50), radius 20, from Z−30 to Z−70 through r 30 at Z−50 (clockwise in the
+  // drawing view). Its chord stays at r 50, clear of the jaws; the arc itself dips into them.
+  interp::Move arc = move(interp::MoveKind::ArcCW, {50, -30}, {50, -70}, 0, 12);
+  arc.center = RZ(50, -50);
+  path.moves.push_back(arc);
+  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {}, &checks);
+  ASSERT_EQ(result.collisions.size(), 1u);
+  EXPECT_EQ(result.collisions[0].kind, "into_chuck");
+  EXPECT_EQ(result.collisions[0].line, 12);
+  // A straight move along the chord touches nothing.
+  path.moves[0].kind = interp::MoveKind::Feed;
+  Stock fresh(bar, 0.25);
+  EXPECT_TRUE(simulate(path, {{1, checks.cutters.at(1)}}, fresh, {}, &checks).collisions.empty());
+}
+
 TEST(HolderCheck, HolderDrivenIntoTheBarIsMeasuredNotCut) {
   const StockSpec bar{50.0, 60.0, 0.0};
   const double h = 0.2;
