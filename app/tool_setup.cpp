@@ -1,6 +1,6 @@
 // [[tool]] shape keys → ToolDefinition. The kind is "turning" when insert/holder are given,
 // else what `kind` says; each kind takes its own keys:
-//   turning: insert, holder, tip          groove: width, corner_radius, depth, tip
+//   turning: insert, holder, tip          groove: width, corner_radius (r or [r−Z, r+Z]), depth, tip
 //   thread:  angle, pitch, nose_radius, tip   drill: diameter, point_angle, length
 // A polygon tool may give tip alone (default 3).
 
@@ -91,6 +91,31 @@ class ToolReader {
       return std::nullopt;
     }
     return static_cast<int>(integer->get());
+  }
+
+  /// corner_radius: one radius for both end corners, or [−Z corner, +Z corner]; default 0.
+  std::optional<std::pair<double, double>> cornerRadii() {
+    const toml::node* node = table_.get("corner_radius");
+    if (!node) return std::pair(0.0, 0.0);
+    if (!node->is_array()) {
+      const auto both = number("corner_radius", std::nullopt, true, "mm");
+      if (!both) return std::nullopt;
+      return std::pair(*both, *both);
+    }
+    const auto* pair = node->as_array();
+    std::optional<double> values[2];
+    if (pair->size() == 2)
+      for (std::size_t i = 0; i < 2; ++i) {
+        const toml::node& v = *pair->get(i);
+        if (v.is_integer()) values[i] = static_cast<double>(v.as_integer()->get());
+        if (v.is_floating_point()) values[i] = v.as_floating_point()->get();
+        if (values[i] && !(*values[i] >= 0 && std::isfinite(*values[i]))) values[i].reset();
+      }
+    if (!values[0] || !values[1]) {
+      error(*node, name_ + ".corner_radius must be a radius or [−Z corner, +Z corner], non-negative mm");
+      return std::nullopt;
+    }
+    return std::pair(*values[0], *values[1]);
   }
 
   /// A catalogue code key: its text, or an error.
@@ -205,10 +230,11 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
     readTurning(r, tool);
   } else if (kind == "groove") {
     const auto width = r.number("width", std::nullopt, false, "mm");
-    const auto corner = r.number("corner_radius", 0.0, true, "mm");
+    const auto corners = r.cornerRadii();
     const auto depth = r.number("depth", std::nullopt, false, "mm");
     const auto tip = r.tip();
-    if (width && corner && depth && !r.failed()) take(grooveTool(*width, *corner, *depth, tip), table, r, tool);
+    if (width && corners && depth && !r.failed())
+      take(grooveTool(*width, corners->first, corners->second, *depth, tip), table, r, tool);
   } else if (kind == "thread") {
     const auto angle = r.number("angle", 60.0, false, "degrees");
     const auto pitch = r.number("pitch", std::nullopt, false, "mm");

@@ -197,22 +197,29 @@ BuiltTool turningTool(const IsoInsert& insert, const IsoHolder& holder, std::opt
   return built;
 }
 
-BuiltTool grooveTool(double widthMm, double cornerRadiusMm, double depthMm, std::optional<int> tipNumber) {
+BuiltTool grooveTool(double widthMm, double leftRadiusMm, double rightRadiusMm, double depthMm,
+                     std::optional<int> tipNumber) {
   if (!(widthMm > 0) || !(depthMm > 0)) return failed("a groove tool needs a positive width and depth");
-  if (!(cornerRadiusMm >= 0) || 2 * cornerRadiusMm > widthMm || cornerRadiusMm > depthMm)
-    return failed("corner radius " + std::to_string(cornerRadiusMm) + " mm does not fit a " + std::to_string(widthMm) +
-                  " mm wide blade (at most half the width)");
+  const double rl = leftRadiusMm, rr = rightRadiusMm;
+  if (!(rl >= 0) || !(rr >= 0) || rl + rr > widthMm || std::max(rl, rr) > depthMm)
+    return failed("corner radii " + std::to_string(rl) + " and " + std::to_string(rr) + " mm do not fit a " +
+                  std::to_string(widthMm) + " mm wide blade (together at most its width)");
   std::string problem;
   const auto tip = checkedTip(tipNumber, 3, {3, 4, 8}, "a groove tool", problem);
   if (!tip) return failed(problem);
-  const double r = cornerRadiusMm;
-  const ZX leftNose(r, r), rightNose(widthMm - r, r);
+  // Drawing frame: the blade spans Z 0..width, X 0..depth; its end (X 0) cuts.
+  const ZX leftNose(rl, rl), rightNose(widthMm - rr, rr);
+  std::vector<ZX> outline;
+  appendArc(outline, leftNose, rl, kPi, 1.5 * kPi);
+  appendArc(outline, rightNose, rr, 1.5 * kPi, 2.0 * kPi);
+  outline.push_back(ZX(widthMm, depthMm));
+  outline.push_back(ZX(0, depthMm));
+  const double r = *tip == 3 ? rl : *tip == 4 ? rr : std::min(rl, rr);
   const ZX nose = *tip == 3 ? leftNose : *tip == 4 ? rightNose : ZX(widthMm / 2, r);
   const RZ s = imaginaryTipDirection(*tip);
   const ZX point = nose + r * ZX(s.y(), s.x());
-  const std::vector<ZX> corners{leftNose, rightNose, ZX(widthMm - r, depthMm - r), ZX(r, depthMm - r)};
   const std::vector<ZX> blade{ZX(0, depthMm), ZX(widthMm, depthMm), ZX(widthMm, depthMm + 30.0), ZX(0, depthMm + 30.0)};
-  ToolShape tool{placed(roundedOutline(corners, r), -point), placed(blade, -point), *tip, r, toRZ(nose - point),
+  ToolShape tool{placed(outline, -point), placed(blade, -point), *tip, r, toRZ(nose - point),
                  toRZ(ZX(*tip == 4 ? widthMm : *tip == 8 ? widthMm / 2 : 0.0, 0.0) - point)};
   return {std::move(tool), {}, {}};
 }

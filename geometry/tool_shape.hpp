@@ -53,10 +53,12 @@ int defaultTipNumber(const IsoHolder& holder);
 /// seat (edge length code, clearance) does not match the insert.
 BuiltTool turningTool(const IsoInsert& insert, const IsoHolder& holder, std::optional<int> tipNumber);
 
-/// A grooving or parting blade cutting on its end: width along Z, both end corners rounded by
-/// cornerRadiusMm, usable depth along X. Tips: 3 (the −Z corner, default), 4 (the +Z corner),
-/// 8 (the middle of the cutting edge). The body is the blade above its depth.
-BuiltTool grooveTool(double widthMm, double cornerRadiusMm, double depthMm, std::optional<int> tipNumber);
+/// A grooving or parting blade cutting on its end: width along Z, the end's −Z and +Z corners
+/// rounded by leftRadiusMm and rightRadiusMm, usable depth along X. Tips: 3 (the −Z corner,
+/// default), 4 (the +Z corner), 8 (the middle of the cutting edge; its nose radius is the
+/// smaller corner's). The body is the blade above its depth.
+BuiltTool grooveTool(double widthMm, double leftRadiusMm, double rightRadiusMm, double depthMm,
+                     std::optional<int> tipNumber);
 
 /// A threading insert: a V of included angle profileDeg symmetric about the radial direction,
 /// point toward −X, nose radius noseRadiusMm, as tall as the fundamental triangle of the pitch

@@ -111,6 +111,15 @@ diameter = 10
   EXPECT_NEAR(tools[2].outline.area(), 1000.0 - 5.0 * 5.0 / std::tan(59.0 * std::numbers::pi / 180), 1e-9);
 }
 
+TEST(ToolSetup, GrooveCornersMayDiffer) {
+  const SetupResult result = parse("[[tool]]\nnumber = 1\nkind = \"groove\"\nwidth = 4\ndepth = 10\n"
+                                   "corner_radius = [0.2, 0.8]\ntip = 4\n");
+  const ToolDefinition& tool = onlyTool(result);
+  EXPECT_DOUBLE_EQ(tool.noseRadiusMm, 0.8);  // tip 4 references the +Z corner
+  EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nkind = \"groove\"\nwidth = 4\ndepth = 10\ncorner_radius = [0.2]\n").message,
+            "tool[1].corner_radius must be a radius or [−Z corner, +Z corner], non-negative mm");
+}
+
 TEST(ToolSetupErrors, BadInsertCodePointsAtTheCharacter) {
   const Diagnostic d = onlyError("[[tool]]\nnumber = 1\ninsert = \"TBXG120408\"\nholder = \"STFCR2525M11\"\n");
   EXPECT_EQ(d.message, "tool[1].insert: insert TBXG120408: position 3 'X' is not a tolerance class; "

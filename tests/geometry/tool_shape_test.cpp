@@ -161,8 +161,8 @@ TEST(ToolShapeErrors, InsertMustFitTheHolderShape) {
 }
 
 TEST(ToolShape, GrooveBlade) {
-  // 3 wide, r 0.4, 20 deep: a rectangle with its corners rounded, area 3·20 − (4 − π)·0.4² = 59.863.
-  const BuiltTool built = grooveTool(3.0, 0.4, 20.0, std::nullopt);
+  // 3 wide, both end corners r 0.4, 20 deep: area 3·20 − 2·(1 − π/4)·0.4² = 59.9313.
+  const BuiltTool built = grooveTool(3.0, 0.4, 0.4, 20.0, std::nullopt);
   ASSERT_TRUE(built.tool) << built.problem;
   const ToolShape& t = *built.tool;
   EXPECT_EQ(t.tipNumber, 3);
@@ -170,16 +170,30 @@ TEST(ToolShape, GrooveBlade) {
   EXPECT_NEAR(t.cutter.lowerBound().y(), 0.0, 1e-9);
   EXPECT_NEAR(t.cutter.upperBound().x(), 20.0, 1e-9);
   EXPECT_NEAR(t.cutter.upperBound().y(), 3.0, 1e-9);
-  // Chords lose at most arc length × sagitta: 4 quarter arcs · (π/2 · 0.4) · 0.004 = 0.010.
-  EXPECT_LT(t.cutter.area(), 60.0 - (4.0 - kPi) * 0.16);
-  EXPECT_GT(t.cutter.area(), 60.0 - (4.0 - kPi) * 0.16 - 0.010);
+  // Chords lose at most arc length × sagitta: 2 quarter arcs · (π/2 · 0.4) · 0.004 = 0.005.
+  const double exact = 60.0 - 2.0 * (1.0 - kPi / 4) * 0.16;
+  EXPECT_LT(t.cutter.area(), exact);
+  EXPECT_GT(t.cutter.area(), exact - 0.005);
   expectConvex(t.cutter);
-  const ToolShape right = *grooveTool(3.0, 0.4, 20.0, 4).tool;  // the +Z corner
+  expectNoseArc(t, 0.41);
+  const ToolShape right = *grooveTool(3.0, 0.4, 0.4, 20.0, 4).tool;  // the +Z corner
   EXPECT_NEAR(right.cutter.upperBound().y(), 0.0, 1e-9);
-  const ToolShape middle = *grooveTool(3.0, 0.4, 20.0, 8).tool;
+  EXPECT_TRUE(right.noseCentre.isApprox(RZ(0.4, -0.4)));
+  const ToolShape middle = *grooveTool(3.0, 0.4, 0.4, 20.0, 8).tool;
   EXPECT_NEAR(middle.cutter.lowerBound().y(), -1.5, 1e-9);
-  EXPECT_EQ(grooveTool(3.0, 0.4, 20.0, 5).problem, "tip 5 does not apply to a groove tool; expected 3, 4, 8");
-  EXPECT_FALSE(grooveTool(3.0, 2.0, 20.0, 3).tool);  // r > w/2
+  EXPECT_EQ(grooveTool(3.0, 0.4, 0.4, 20.0, 5).problem, "tip 5 does not apply to a groove tool; expected 3, 4, 8");
+  EXPECT_FALSE(grooveTool(3.0, 2.0, 1.5, 20.0, 3).tool);  // 2 + 1.5 > 3
+}
+
+TEST(ToolShape, GrooveBladeWithUnequalCorners) {
+  // Left r 0.2, right r 0.8 on a 4 wide blade: area 4·10 − (1 − π/4)(0.04 + 0.64); at tip 4 the
+  // nose is the 0.8 corner, (0.8, −0.8) from the programmed point.
+  const ToolShape t = *grooveTool(4.0, 0.2, 0.8, 10.0, 4).tool;
+  EXPECT_NEAR(t.cutter.area(), 40.0 - (1.0 - kPi / 4) * 0.68, 0.005);
+  EXPECT_DOUBLE_EQ(t.noseRadiusMm, 0.8);
+  EXPECT_TRUE(t.noseCentre.isApprox(RZ(0.8, -0.8)));
+  EXPECT_NEAR(t.cutter.lowerBound().y(), -4.0, 1e-9);
+  expectNoseArc(t, 0.81);
 }
 
 TEST(ToolShape, ThreadInsert) {
