@@ -155,6 +155,11 @@ void take(BuiltTool built, const toml::node& at, ToolReader& reader, ToolDefinit
 }
 
 void readTurning(ToolReader& r, ToolDefinition& tool) {
+  if (!r.table().contains("insert") && !r.table().contains("holder")) {
+    r.error(r.table(), r.name() + " (kind \"turning\") needs insert and holder (e.g. insert = \"CNMG120408\", "
+                                  "holder = \"PCLNR2525M12\")");
+    return;
+  }
   const auto* insertText = r.code("insert");
   const auto* holderText = r.code("holder");
   const std::optional<int> tip = r.tip();

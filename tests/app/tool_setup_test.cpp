@@ -159,6 +159,8 @@ TEST(ToolSetupErrors, KindsAndTheirKeys) {
   EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nkind = \"boring\"\n").message,
             "tool[1].kind must be \"turning\", \"groove\", \"thread\" or \"drill\", got \"boring\"");
   EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nwidth = 3\n").message, "tool[1].width needs kind = \"groove\"");
+  EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nkind = \"turning\"\n").message,
+            "tool[1] (kind \"turning\") needs insert and holder (e.g. insert = \"CNMG120408\", holder = \"PCLNR2525M12\")");
   EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nkind = \"groove\"\nwidth = 3\n").message,
             "tool[1] (kind \"groove\") needs depth (mm)");
   EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nkind = \"groove\"\nwidth = -3\ndepth = 10\n").message,
