@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "app/collision_checks.hpp"
 #include "app/commands.hpp"
 #include "app/job.hpp"
 #include "app/progress.hpp"
@@ -61,8 +62,9 @@ int runCommand(const RunOptions& options) {
   Progress progress(figures.program);
   sim::Stock stock(job->setup.stock, voxel);
   figures.stockVolumeMm3 = stock.volumeMm3();
+  const sim::CollisionChecks checks = collisionChecksOf(job->setup);
   figures.simulation = sim::simulate(job->toolpath, outlinesOf(job->setup), stock,
-                                     [&](int done, int total) { progress.update(done, total); });
+                                     [&](int done, int total) { progress.update(done, total); }, &checks);
   figures.finalVolumeMm3 = stock.volumeMm3();
   figures.timing.simulateS = clock.lap();
   for (const auto& w : figures.simulation.warnings) {

@@ -7,6 +7,8 @@
 
 #include "app/setup.hpp"
 
+#include "app/tool_setup.hpp"
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -86,19 +88,24 @@ class Reporter {
  public:
   Reporter(std::string_view text, std::string fileName) : text_(text), fileName_(std::move(fileName)) {}
 
-  void at(const toml::source_region& where, std::string message) {
+  void at(const toml::source_region& where, std::string message, Severity severity = Severity::Error,
+          int columnOffset = 0) {
     Diagnostic d;
-    d.severity = Severity::Error;
+    d.severity = severity;
     d.file = fileName_;
     d.line = static_cast<int>(where.begin.line);
-    d.column = static_cast<int>(where.begin.column);
+    d.column = static_cast<int>(where.begin.column) + columnOffset;
     d.message = std::move(message);
     d.sourceLine = interp::lineOf(text_, d.line);
     diagnostics_.push_back(std::move(d));
   }
 
   std::vector<Diagnostic> take() { return std::move(diagnostics_); }
-  bool empty() const { return diagnostics_.empty(); }
+  bool hasErrors() const {
+    for (const auto& d : diagnostics_)
+      if (d.severity == Severity::Error) return true;
+    return false;
+  }
 
  private:
   std::string_view text_;
@@ -113,7 +120,7 @@ std::optional<double> numberOf(const toml::node& node) {
   return std::nullopt;
 }
 
-std::string joinKeys(std::initializer_list<std::string_view> keys) {
+std::string joinKeys(const std::vector<std::string_view>& keys) {
   std::string text;
   std::size_t i = 0;
   for (std::string_view key : keys) {
@@ -126,7 +133,7 @@ std::string joinKeys(std::initializer_list<std::string_view> keys) {
 
 /// Reports every key of `table` not in `known`, as "unknown key 'prefix.key' (expected …)".
 void rejectUnknownKeys(const toml::table& table, std::string_view prefix,
-                       std::initializer_list<std::string_view> known, Reporter& report) {
+                       const std::vector<std::string_view>& known, Reporter& report) {
   for (auto&& [key, node] : table) {
     bool ok = false;
     for (std::string_view k : known) ok = ok || key.str() == k;
@@ -264,11 +271,29 @@ void readSim(const toml::table& table, std::optional<double>& voxelMm, Reporter&
     if (auto v = positiveMm(*node, "sim.voxel", report)) voxelMm = *v;
 }
 
+void readChuck(const toml::table& table, sim::ChuckSpec& chuck, Reporter& report) {
+  rejectUnknownKeys(table, "chuck.", {"grip_length", "jaw_diameter", "face_z"}, report);
+  if (const auto* node = table.get("grip_length"))
+    if (auto v = positiveMm(*node, "chuck.grip_length", report)) chuck.gripLengthMm = *v;
+  if (const auto* node = table.get("jaw_diameter"))
+    if (auto v = positiveMm(*node, "chuck.jaw_diameter", report)) chuck.jawDiameterMm = *v;
+  if (const auto* node = table.get("face_z"))
+    if (auto v = finiteMm(*node, "chuck.face_z", report)) chuck.faceZMm = *v;
+}
+
 /// One [[tool]] table; `name` is "tool[i]" (1-based, in file order).
 std::optional<ToolDefinition> readTool(const toml::table& table, const std::string& name, Reporter& report) {
-  rejectUnknownKeys(table, name + ".", {"number", "polygon"}, report);
-  ToolDefinition tool{1, defaultOutline()};
+  std::vector<std::string_view> known{"number", "polygon"};
+  known.insert(known.end(), toolShapeKeys().begin(), toolShapeKeys().end());
+  rejectUnknownKeys(table, name + ".", known, report);
+  ToolDefinition tool{1, defaultOutline(), std::nullopt, 3, 0.0};
   bool ok = true;
+  std::vector<ToolKeyProblem> shapeProblems;
+  readToolShape(table, name, tool, shapeProblems);
+  for (auto& p : shapeProblems) {
+    ok = ok && p.severity != Severity::Error;
+    report.at(p.where, std::move(p.message), p.severity, p.columnOffset);
+  }
 
   if (const auto* node = table.get("number")) {
     const auto* integer = node->as_integer();
@@ -357,7 +382,7 @@ Setup defaultSetup() {
   setup.startPosition = RZ(100.0, 200.0);  // X200 (diameter) Z200
   setup.referencePosition = setup.startPosition;
   setup.voxelMm = std::nullopt;
-  setup.tools.push_back(ToolDefinition{1, defaultOutline()});
+  setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0});
   return setup;
 }
 
@@ -373,7 +398,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck"}, report);
   if (const auto* node = root.get("stock"))
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
   if (const auto* node = root.get("machine"))
@@ -381,9 +406,14 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   if (const auto* node = root.get("sim"))
     if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
   if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);
+  if (const auto* node = root.get("chuck"))
+    if (const auto* table = tableAt(*node, "chuck", report)) readChuck(*table, setup.chuck, report);
+  if (setup.chuck.jawDiameterMm && *setup.chuck.jawDiameterMm <= setup.stock.diameterMm)
+    report.at(root.get("chuck")->as_table()->get("jaw_diameter")->source(),
+              "chuck.jaw_diameter must exceed the stock's diameter (" + floatText(setup.stock.diameterMm) + " mm)");
 
-  if (!report.empty()) return {std::nullopt, report.take()};
-  return {std::move(setup), {}};
+  if (report.hasErrors()) return {std::nullopt, report.take()};
+  return {std::move(setup), report.take()};  // warnings only
 }
 
 SetupResult loadSetup(const std::filesystem::path& file) {

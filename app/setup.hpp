@@ -13,12 +13,16 @@
 #include "interp/machine_limits.hpp"
 #include "interp/move.hpp"
 #include "sim/stock_spec.hpp"
+#include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
 namespace lathesim::app {
 
 struct ToolDefinition {
   int number = 1;
-  ConvexPolygon outline;  // [radial, axial] mm from the programmed point
+  ConvexPolygon outline;  // the cutter: [radial, axial] mm from the programmed point; swept and removed
+  std::optional<ConvexPolygon> holderBody;  // catalogue tools: the holder's head and shank; never cuts
+  int tipNumber = 3;          // Fanuc imaginary tip 0–9: the programmed point relative to the nose
+  double noseRadiusMm = 0.0;  // 0 for a polygon tool
 };
 
 struct Setup {
@@ -33,6 +37,7 @@ struct Setup {
   interp::FeedMode initialFeedMode = interp::FeedMode::PerRevolution;
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
+  sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
 };
 
 struct SetupResult {

@@ -19,7 +19,7 @@ const ConvexPolygon& toolOf(const interp::Move& move, const ToolOutlines& tools)
 }  // namespace
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress) {
+                          const BlockProgress& progress, const CollisionChecks* checks) {
   SimulationResult result;
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
@@ -54,11 +54,17 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     }
     if (head.kind == interp::MoveKind::Rapid && removed > kCollisionVoxels * voxelVolume)
       result.collisions.push_back({head.line, head.column, "rapid_into_stock", removed});
+    if (checks) checkMoves(*checks, std::span(moves).subspan(first, end - first), stock, result.collisions);
 
     first = end;
     if (progress && (first == moves.size() || moves[first].block != head.block)) progress(head.block + 1, totalBlocks);
   }
   return result;
+}
+
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress) {
+  return simulate(toolpath, tools, stock, progress, nullptr);
 }
 
 }  // namespace lathesim::sim

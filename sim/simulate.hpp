@@ -9,6 +9,7 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/move.hpp"
+#include "sim/holder_check.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::sim {
@@ -16,7 +17,7 @@ namespace lathesim::sim {
 struct Collision {
   int line = 0;
   int column = 0;
-  std::string kind;  // "rapid_into_stock"
+  std::string kind;  // "rapid_into_stock", "holder_into_stock", "into_chuck"
   double volumeMm3 = 0.0;
 };
 
@@ -59,5 +60,10 @@ using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 /// is caught and located; dwells remove nothing.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress = {});
+
+/// The same, and each move is also checked for holder and chuck collisions (holder_check.hpp)
+/// when `checks` is given.
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress, const CollisionChecks* checks);
 
 }  // namespace lathesim::sim

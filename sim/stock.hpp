@@ -41,6 +41,12 @@ class Stock {
   /// measured on the level set before and after.
   double remove(const RevolvedRegion& region);
 
+  /// Volume (mm³) of material lying deeper than `marginMm` inside the revolved `region`,
+  /// measured without changing anything. The stock is a solid of revolution (every cut is),
+  /// so it is integrated over the meridian half-plane: each voxel (ρ, 0, z) stands for its
+  /// ring. See stock_probe.cpp.
+  double materialInside(const RevolvedRegion& region, double marginMm) const;
+
   /// Volume enclosed by the zero level set (mm³): each voxel counts the fraction
   /// clamp(½ − φ/h, 0, 1) of itself, and interior tiles count whole.
   double volumeMm3() const;

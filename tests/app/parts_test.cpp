@@ -20,6 +20,7 @@
 #include <toml++/toml.h>
 #include <vector>
 
+#include "app/collision_checks.hpp"
 #include "app/setup.hpp"
 #include "interp/cycle_time.hpp"
 #include "interp/interpreter.hpp"
@@ -125,7 +126,8 @@ Simulated simulatePart(const Setup& setup, const interp::Toolpath& toolpath, dou
   sim::Stock stock(setup.stock, voxelMm);
   Simulated out;
   out.stockVolumeMm3 = stock.volumeMm3();
-  out.result = sim::simulate(toolpath, outlinesOf(setup), stock);
+  const sim::CollisionChecks checks = app::collisionChecksOf(setup);  // holders and the chuck too
+  out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {}, &checks);
   out.finalVolumeMm3 = stock.volumeMm3();
   return out;
 }

@@ -201,20 +201,21 @@ TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
 
 TEST(ParseSetupErrors, UnknownTopLevelTable) {
   const Diagnostic d = onlyError("[stock]\ndiameter = 50\n[spindle]\nrpm = 5\n");
-  EXPECT_EQ(d.message, "unknown table 'spindle' (expected stock, machine, sim or tool)");
+  EXPECT_EQ(d.message, "unknown table 'spindle' (expected stock, machine, sim, tool or chuck)");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, UnknownTopLevelKey) {
   const Diagnostic d = onlyError("voxel = 0.2\n");
-  EXPECT_EQ(d.message, "unknown key 'voxel' (expected stock, machine, sim or tool)");
+  EXPECT_EQ(d.message, "unknown key 'voxel' (expected stock, machine, sim, tool or chuck)");
   EXPECT_EQ(d.line, 1);
   EXPECT_EQ(d.column, 1);
 }
 
 TEST(ParseSetupErrors, UnknownKeyInATool) {
   const Diagnostic d = onlyError("[[tool]]\nnumber = 1\n[[tool]]\nnumber = 2\nradius = 0.4\n");
-  EXPECT_EQ(d.message, "unknown key 'tool[2].radius' (expected number or polygon)");
+  EXPECT_EQ(d.message, "unknown key 'tool[2].radius' (expected number, polygon, kind, insert, holder, tip, width, "
+                       "corner_radius, depth, angle, pitch, nose_radius, diameter, point_angle or length)");
   EXPECT_EQ(d.line, 5);
 }
 
