@@ -22,6 +22,17 @@ bool hasError(const std::vector<interp::Diagnostic>& diagnostics) {
 
 }  // namespace
 
+interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
+  interp::InterpreterOptions options;
+  options.startPosition = setup.startPosition;
+  options.referencePosition = setup.referencePosition;
+  options.machine = setup.machine;
+  options.dialect = setup.dialect;
+  options.initialFeedMode = setup.initialFeedMode;
+  for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
+  return options;
+}
+
 interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
   return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
           interp::lineOf(programText, line)};
@@ -35,7 +46,10 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
     print(loaded.diagnostics);
     if (!loaded.setup || hasError(loaded.diagnostics)) return std::nullopt;
     job.setup = std::move(*loaded.setup);
+    job.warnings = std::move(loaded.diagnostics);  // what is left are warnings (e.g. an insert that
+                                                   // does not match its holder's seat)
   }
+  if (dialect) job.setup.dialect = *dialect;
 
   std::ifstream in(program, std::ios::binary);
   if (!in) {
@@ -45,16 +59,9 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
   std::ostringstream text;
   text << in.rdbuf();
 
-  interp::InterpreterOptions options;
-  options.startPosition = job.setup.startPosition;
-  options.referencePosition = job.setup.referencePosition;
-  options.machine = job.setup.machine;
-  if (dialect) job.setup.dialect = *dialect;
-  options.dialect = job.setup.dialect;
-  options.initialFeedMode = job.setup.initialFeedMode;
-  for (const auto& tool : job.setup.tools) options.toolNumbers.push_back(tool.number);
   job.programText = text.str();
-  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options);
+  interp::InterpretResult result =
+      interp::interpret(job.programText, program.string(), interpreterOptionsOf(job.setup));
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)

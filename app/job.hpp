@@ -9,6 +9,7 @@
 
 #include "app/setup.hpp"
 #include "interp/dialect.hpp"
+#include "interp/interpreter.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::app {
@@ -22,6 +23,9 @@ struct Job {
   /// A warning located in the program, ready to print and report.
   interp::Diagnostic warningAt(int line, int column, std::string message) const;
 };
+
+/// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.
+interp::InterpreterOptions interpreterOptionsOf(const Setup& setup);
 
 /// `dialect`, when given (--dialect), overrides the setup's [machine] dialect.
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/collision_checks.hpp"
+#include "app/job.hpp"
 #include "app/setup.hpp"
 #include "interp/cycle_time.hpp"
 #include "interp/interpreter.hpp"
@@ -84,12 +85,8 @@ Setup loadPartSetup(const std::string& part) {
 /// Interprets the part's program as loadJob does, naming the file "program.nc", and times
 /// its moves.
 interp::InterpretResult interpretPart(const std::string& part, const Setup& setup) {
-  interp::InterpreterOptions options;
-  options.startPosition = setup.startPosition;
-  options.referencePosition = setup.referencePosition;
-  options.machine = setup.machine;
-  for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
-  interp::InterpretResult result = interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", options);
+  interp::InterpretResult result =
+      interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", app::interpreterOptionsOf(setup));
   if (result.ok()) (void)interp::assignMoveTimes(result.toolpath, setup.machine);
   return result;
 }
