@@ -41,6 +41,7 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
   interp::InterpreterOptions options;
   options.startPosition = job.setup.startPosition;
   for (const auto& tool : job.setup.tools) options.toolNumbers.push_back(tool.number);
+  options.offsets = job.setup.offsets;
   interp::InterpretResult result = interp::interpret(text.str(), program.string(), options);
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;

@@ -19,6 +19,8 @@
 
 #include <toml++/toml.h>
 
+#include "app/offset_setup.hpp"
+
 namespace lathesim::app {
 namespace {
 
@@ -309,7 +311,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "offset"}, report);
   if (const auto* node = root.get("stock"))
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
   if (const auto* node = root.get("machine"))
@@ -317,6 +319,11 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   if (const auto* node = root.get("sim"))
     if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
   if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);
+  if (const auto* node = root.get("offset")) {
+    readOffsets(*node, setup.offsets, [&report](const toml::source_region& where, std::string message) {
+      report.at(where, std::move(message));
+    });
+  }
 
   if (!report.empty()) return {std::nullopt, report.take()};
   return {std::move(setup), {}};

@@ -9,6 +9,7 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/diagnostic.hpp"
+#include "interp/tool_offset.hpp"
 #include "sim/stock_spec.hpp"
 
 namespace lathesim::app {
@@ -24,6 +25,7 @@ struct Setup {
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
+  interp::ToolOffsets offsets;        // [[offset]] (app/offset_setup.hpp); none by default
 };
 
 struct SetupResult {

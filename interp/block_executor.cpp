@@ -73,6 +73,7 @@ class Executor {
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
+  void emitLegs(const std::vector<CycleLeg>& legs);
 
   ParsedBlock block_;
   ModalState state_;
@@ -94,6 +95,11 @@ Result<BlockOutcome> Executor::run() {
   if (auto code = block_.gCode(GGroup::Distance)) state_.incremental = code->number == kIncrementalDistance;
   if (auto code = block_.gCode(GGroup::Plane)) {
     state_.plane = code->number == 17 ? Plane::XY : code->number == 19 ? Plane::YZ : Plane::ZX;
+  }
+  if (auto code = block_.gCode(GGroup::NoseRadius)) {
+    state_.noseSide = code->number == 41   ? NoseSide::Left
+                      : code->number == 42 ? NoseSide::Right
+                                           : NoseSide::None;
   }
   // G97 (spindle speed in rpm) is the only supported code of its group and changes nothing.
 
@@ -404,9 +410,7 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
-  for (const CycleLeg& leg : cycle.legs(start, end, rMm)) {
-    emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
-  }
+  emitLegs(cycle.legs(start, end, rMm));
   return success();  // the cycle ends at A: the position is unchanged
 }
 
@@ -417,7 +421,7 @@ Status Executor::applyCompoundCycle(const Code& code) {
   if (!outcome.ok()) return outcome.error();
   const CompoundOutcome& done = outcome.value();
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
-  for (const CycleLeg& leg : done.legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
+  emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
   return success();
 }
@@ -445,12 +449,21 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   move.feedMode = state_.feedMode;
   move.tool = state_.tool;
   move.toolOffset = state_.toolOffset;
+  move.noseComp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
   move.spindleOn = state_.spindleOn;
   move.block = ordinal_;
   move.line = block_.line;
   move.column = block_.column;
   move.cycleStep = cycleStep;
   moves_.push_back(move);
+}
+
+// A cycle's legs are never compensated (lathe-cycles.md §8): G71–G73 rough against a contour
+// already offset, G90/G94 and G74/G75 get none; an open G41/G42 chain ends at the first leg.
+void Executor::emitLegs(const std::vector<CycleLeg>& legs) {
+  const std::size_t first = moves_.size();
+  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
+  for (std::size_t i = first; i < moves_.size(); ++i) moves_[i].noseComp = {};
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "interp/block_executor.hpp"
 #include "interp/call_stack.hpp"
 #include "interp/modal_state.hpp"
+#include "interp/nose_compensation.hpp"
 #include "interp/program.hpp"
 
 namespace lathesim::interp {
@@ -67,7 +68,10 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   InterpretResult result;
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
-  const Status status = runProgram(programText, options, result.toolpath);
+  Status status = runProgram(programText, options, result.toolpath);
+  // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
+  if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
+  if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);
   if (!status.ok()) {
     const Error& error = status.error();
     result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,

@@ -8,6 +8,7 @@
 #include "interp/diagnostic.hpp"
 #include "interp/dialect.hpp"
 #include "interp/move.hpp"
+#include "interp/tool_offset.hpp"
 
 namespace lathesim::interp {
 
@@ -17,6 +18,7 @@ struct InterpreterOptions {
                                    // T word. A T word naming another number is an error.
   bool blockDelete = true;         // '/' blocks are skipped when true
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
+  ToolOffsets offsets;  // the setup's [[offset]] table (interp/tool_offset.hpp)
 };
 
 struct InterpretResult {

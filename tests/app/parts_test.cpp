@@ -81,6 +81,7 @@ interp::InterpretResult interpretPart(const std::string& part, const Setup& setu
   interp::InterpreterOptions options;
   options.startPosition = setup.startPosition;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
+  options.offsets = setup.offsets;
   return interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", options);
 }
 

@@ -1,0 +1,268 @@
+// G40/G41/G42 through the interpreter: every compensated point worked out by hand.
+// Conventions (lathe-cycles.md §8): drawing view, Z to the right, X (radius) up; the travel
+// direction t = (tr, tz) has left normal (tz, −tr) in (radius, Z); G41 offsets the nose
+// centre C by +R·left, G42 by −R·left; the toolpath carries the imaginary tip C + R·s, s from
+// the tip number (3: (−1, −1), 2: (+1, −1), 0/9: (0, 0)).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_support.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+constexpr MoveKind kCw = MoveKind::ArcCW;
+using test::kFeed;
+using test::kRapid;
+
+// Offset 1: R0.8 tip 3 (an OD turning tool); offset 2: R0.4 tip 2 (a boring bar);
+// offset 3: R0.8 tip 9 (the programmed point is the nose centre).
+InterpreterOptions compOptions() {
+  InterpreterOptions options = test::defaultOptions();
+  options.offsets[1] = ToolOffset{0, 0, 0.8, 3, 0, 0};
+  options.offsets[2] = ToolOffset{0, 0, 0.4, 2, 0, 0};
+  options.offsets[3] = ToolOffset{0, 0, 0.8, 9, 0, 0};
+  return options;
+}
+
+struct Point {
+  MoveKind kind;
+  double r0, z0, r1, z1;
+  double rc = 0, zc = 0;  // arcs: the centre
+};
+
+void expectPath(const std::vector<Move>& moves, const std::vector<Point>& expected) {
+  ASSERT_EQ(moves.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(testing::Message() << "move " << i << " (line " << moves[i].line << ")");
+    const Move& m = moves[i];
+    const Point& e = expected[i];
+    EXPECT_EQ(m.kind, e.kind);
+    EXPECT_NEAR(m.from.x(), e.r0, 1e-6);
+    EXPECT_NEAR(m.from.y(), e.z0, 1e-6);
+    EXPECT_NEAR(m.to.x(), e.r1, 1e-6);
+    EXPECT_NEAR(m.to.y(), e.z1, 1e-6);
+    if (isArc(e.kind)) {
+      EXPECT_NEAR(m.center.x(), e.rc, 1e-6);
+      EXPECT_NEAR(m.center.y(), e.zc, 1e-6);
+    }
+  }
+}
+
+const double kRoot2 = std::sqrt(2.0);
+
+TEST(NoseCompensation, OdProfileUnderG42WithTip3) {
+  // Drawn (radius, Z): face (0,0)→(8,0), 45° chamfer →(10,-2), diameter →(10,-10), G02
+  // fillet R5 about (15,-10) →(15,-15), shoulder →(17,-15). G42, R = 0.8, tip 3.
+  // Right normal of t = (tr, tz) is (−tz, tr). Nose-centre path:
+  //   face     t (1,0), normal (0,1):      z = 0.8
+  //   chamfer  t (1,-1)/√2, normal (1,1)/√2: r + z = 8 + 0.8√2
+  //   diameter t (0,-1), normal (1,0):     r = 10.8
+  //   fillet   CW about (15,-10), the right normal points at the centre: radius 5 − 0.8
+  //            = 4.2, from (10.8,-10) to (15,-14.2)
+  //   shoulder t (1,0), normal (0,1):      z = -14.2, r 15 → 17
+  // Corners face→chamfer and chamfer→diameter turn left by 45° (outer for G42, at most 90°):
+  // the offset lines meet at (8 + 0.8√2 − 0.8, 0.8) and (10.8, -2 + 0.8√2 − 0.8).
+  // Diameter→fillet and fillet→shoulder are tangent: no corner.
+  // Start-up N3 (0,5)→(0,0): the centre ends perpendicular to the face at its start, (0,0.8).
+  // Cancel N9: the centre ends the shoulder at (17,-14.2); G00 to the programmed (20,-15).
+  // Tip = centre + 0.8·(−1,−1).
+  const std::string_view program =
+      "N1 G99 M03 S800 T0101\n"
+      "N2 G00 X0 Z5\n"
+      "N3 G42 G01 Z0 F0.1\n"
+      "N4 X16\n"
+      "N5 X20 Z-2\n"
+      "N6 Z-10\n"
+      "N7 G02 X30 Z-15 R5\n"
+      "N8 G01 X34\n"
+      "N9 G40 G00 X40\n"
+      "M30\n";
+  const auto result = test::run(program, compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const double corner = 0.8 * kRoot2 - 0.8;  // 0.331371: the extension past each 45° corner
+  expectPath(result.toolpath.moves,
+             {{kRapid, 100, 200, 0, 5},
+              {kFeed, 0, 5, 0 - 0.8, 0.8 - 0.8},
+              {kFeed, -0.8, 0, 8 + corner - 0.8, 0},
+              {kFeed, 8 + corner - 0.8, 0, 10.8 - 0.8, -2 + corner - 0.8},
+              {kFeed, 10, -2 + corner - 0.8, 10, -10.8},
+              {kCw, 10, -10.8, 15 - 0.8, -15, 15 - 0.8, -10 - 0.8},
+              {kFeed, 14.2, -15, 16.2, -15},
+              {kRapid, 16.2, -15, 20, -15}});
+  // The chamfer's tip line is the drawn one moved by 0.8·(2 − √2) = 0.4686 in r + z.
+  const Move& chamfer = result.toolpath.moves[3];
+  EXPECT_NEAR(chamfer.to.x() + chamfer.to.y(), 8 - 0.8 * (2 - kRoot2), 1e-9);
+  EXPECT_EQ(chamfer.noseComp.side, NoseSide::Right);
+  EXPECT_EQ(chamfer.noseComp.tip, 3);
+  EXPECT_DOUBLE_EQ(chamfer.noseComp.radiusMm, 0.8);
+}
+
+TEST(NoseCompensation, BoringUnderG41WithTip2) {
+  // Drawn: taper from (16,0) in to (12,-4), bore r 12 to Z-20. G41, R = 0.4, tip 2 (+X, −Z).
+  // Left normal of t = (tr, tz) is (tz, −tr):
+  //   taper t (-1,-1)/√2, normal (-1,1)/√2: centre from (16 − 0.2√2, 0.2√2), line
+  //         r − z = 16 − 0.4√2
+  //   bore  t (0,-1), normal (-1,0): r = 11.6
+  // The corner turns right by 45° (outer for G41): the lines meet at z = 11.6 − 16 + 0.4√2.
+  // Start-up N3 (16,3)→(16,0): the centre ends at the taper's offset start. Cancel N6: the
+  // bore's centre end (11.6,-20), then G00 to (10,-20). Tip = centre + 0.4·(1,−1).
+  const std::string_view program =
+      "N1 G99 M03 S800 T0202\n"
+      "N2 G00 X32 Z3\n"
+      "N3 G41 G01 Z0 F0.1\n"
+      "N4 X24 Z-4\n"
+      "N5 Z-20\n"
+      "N6 G40 G00 X20\n"
+      "M30\n";
+  const auto result = test::run(program, compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const double h = 0.2 * kRoot2;  // 0.4/√2
+  const double cornerZ = 11.6 - 16 + 0.4 * kRoot2;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 16, 3},
+                                     {kFeed, 16, 3, 16 - h + 0.4, h - 0.4},
+                                     {kFeed, 16 - h + 0.4, h - 0.4, 12, cornerZ - 0.4},
+                                     {kFeed, 12, cornerZ - 0.4, 12, -20.4},
+                                     {kRapid, 12, -20.4, 10, -20}});
+}
+
+TEST(NoseCompensation, SharpOuterCornerGetsFanucsExtraVectors) {
+  // G42 R0.8, tip 9 (the toolpath is the centre path). N4 turns along r 10 to Z-5; N5 backs
+  // off to (7,-1), t2 = (-3,4)/5: a left turn by more than 90° (t1·t2 = -0.8), outer for G42.
+  //   N4 centre: r = 10.8, (10.8,2) → (10.8,-5); N5 right normal (−tz, tr) = (-0.8,-0.6):
+  //   (10,-5) + 0.8·(-0.8,-0.6) = (9.36,-5.48) → (7,-1) + (-0.64,-0.48) = (6.36,-1.48)
+  // Extra vectors at the corner (line N4): E = (10.8,-5) → E + 0.8·t1 = (10.8,-5.8) →
+  // S − 0.8·t2 = (9.36 + 0.48, -5.48 − 0.64) = (9.84,-6.12) → S = (9.36,-5.48).
+  const std::string_view program =
+      "N1 G99 M03 S800 T0103\n"
+      "N2 G00 X20 Z5\n"
+      "N3 G42 G01 Z2 F0.1\n"
+      "N4 Z-5\n"
+      "N5 X14 Z-1\n"
+      "N6 G40 G00 X30\n"
+      "M30\n";
+  const auto result = test::run(program, compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const auto& moves = result.toolpath.moves;
+  expectPath(moves, {{kRapid, 100, 200, 10, 5},
+                     {kFeed, 10, 5, 10.8, 2},
+                     {kFeed, 10.8, 2, 10.8, -5},
+                     {kFeed, 10.8, -5, 10.8, -5.8},
+                     {kFeed, 10.8, -5.8, 9.84, -6.12},
+                     {kFeed, 9.84, -6.12, 9.36, -5.48},
+                     {kFeed, 9.36, -5.48, 6.36, -1.48},
+                     {kRapid, 6.36, -1.48, 15, -1}});
+  for (int i : {3, 4, 5}) EXPECT_EQ(moves[static_cast<std::size_t>(i)].line, 4);
+}
+
+TEST(NoseCompensation, G42AloneStartsOnTheNextMoveAndEmptyBlocksDoNotBreakTheChain) {
+  // G42 alone in N3 takes effect with N4's move (the start-up); N6 repeats the position (no
+  // move) and must not break the chain. Tip 9, R0.8:
+  //   start-up N4 (10,5)→(10,2): the centre ends perpendicular to N5 (t (0,-1), right
+  //   normal (1,0)) at (10.8,2); N5 centre r 10.8 to Z-5; N7 X24 (t (1,0), normal (0,1)):
+  //   an inner corner (right turn under G42): the lines r = 10.8 and z = -4.2 meet at
+  //   (10.8,-4.2); N7's centre ends at (12,-4.2); cancel N8 G40 G00 Z5 → (12,5).
+  const std::string_view program =
+      "N1 G99 M03 S800 T0103\n"
+      "N2 G00 X20 Z5\n"
+      "N3 G42\n"
+      "N4 G01 Z2 F0.1\n"
+      "N5 Z-5\n"
+      "N6 Z-5\n"
+      "N7 X24\n"
+      "N8 G40 G00 Z5\n"
+      "M30\n";
+  const auto result = test::run(program, compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 5},
+                                     {kFeed, 10, 5, 10.8, 2},
+                                     {kFeed, 10.8, 2, 10.8, -4.2},
+                                     {kFeed, 10.8, -4.2, 12, -4.2},
+                                     {kRapid, 12, -4.2, 12, 5}});
+}
+
+TEST(NoseCompensation, ZeroRadiusLeavesThePathAsProgrammed) {
+  // Offset 4 is not defined: no shift, R 0, so G42 changes nothing.
+  const auto result = test::run(
+      "T0104 G99\nG00 X20 Z5\nG42 G01 Z0 F0.1\nX30 Z-5\nG40 G00 X40\nM30\n", compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 5},
+                                     {kFeed, 10, 5, 10, 0},
+                                     {kFeed, 10, 0, 15, -5},
+                                     {kRapid, 15, -5, 20, -5}});
+}
+
+TEST(NoseCompensation, ArcInTheStartUpBlockIsAnError) {
+  test::expectError(test::run("T0101 G99\nG00 X20 Z5\nG42 G02 X30 Z0 R5 F0.1\nM30\n",
+                              compOptions()),
+                    3, 1, "nose radius compensation (G42) cannot start in an arc block (G02)");
+}
+
+TEST(NoseCompensation, ArcInTheCancelBlockIsAnError) {
+  test::expectError(
+      test::run("T0101 G99\nG00 X20 Z5\nG42 G01 Z0 F0.1\nZ-5\nG40 G03 X30 Z-10 R5\nM30\n",
+                compOptions()),
+      5, 1, "cannot be cancelled in an arc block (G03)");
+}
+
+TEST(NoseCompensation, InnerArcSmallerThanTheNoseIsInterference) {
+  // G42 along −Z then a CW fillet of radius 0.5 up to a shoulder: the centre would run on
+  // radius 0.5 − 0.8 < 0.
+  test::expectError(
+      test::run("T0101 G99\nG00 X20 Z5\nG42 G01 Z0 F0.1\nZ-5\nG02 X21 Z-5.5 R0.5\n"
+                "G01 X30\nG40 G00 X40\nM30\n",
+                compOptions()),
+      5, 1, "interference: this G02 arc's radius 0.5 is not larger than the nose radius 0.8");
+}
+
+TEST(NoseCompensation, GrooveNarrowerThanTheNoseIsInterference) {
+  // A groove 1 mm wide under G42, R0.8: the walls' offsets are z = -5 − 0.8 (down wall at
+  // Z-5) and z = -6 + 0.8 (up wall at Z-6); the bottom from Z-5 toward Z-6 would run from
+  // Z-5.8 to Z-5.2, backwards.
+  test::expectError(
+      test::run("T0101 G99\nG00 X20 Z5\nG42 G01 Z0 F0.1\nZ-5\nX16\nZ-6\nX20\nZ-10\n"
+                "G40 G00 X40\nM30\n",
+                compOptions()),
+      6, 1, "interference: with the nose radius 0.8 the nose-centre path of this block runs "
+            "backwards");
+}
+
+TEST(NoseCompensation, ChangingSidesWithoutCancelIsAnError) {
+  test::expectError(
+      test::run("T0101 G99\nG00 X20 Z5\nG42 G01 Z0 F0.1\nG41 Z-5\nG40 G00 X40\nM30\n",
+                compOptions()),
+      4, 1, "nose radius compensation changes while it is on (G42 R0.8 tip 3 becomes G41");
+}
+
+TEST(ToolOffsets, TWordShiftsTheTipByGeometryPlusWear) {
+  // Offset 5: x 0.4 (diameter), z -0.1, wear_x 0.02, wear_z 0.01: the tip lands at the
+  // programmed point + ((0.4 + 0.02)/2, -0.1 + 0.01) = + (0.21, -0.09). T0105 takes effect
+  // with the next move (from the unshifted start); T0100 cancels it with its own move, which
+  // starts from where the shifted tool stands.
+  InterpreterOptions options = compOptions();
+  options.offsets[5] = ToolOffset{0.4, -0.1, 0, 0, 0.02, 0.01};
+  const auto result =
+      test::run("T0105 G99\nG00 X20 Z2\nG01 Z-10 F0.1\nT0100 G00 X40\nM30\n", options);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10.21, 1.91},
+                                     {kFeed, 10.21, 1.91, 10.21, -10.09},
+                                     {kRapid, 10.21, -10.09, 20, -10}});
+}
+
+TEST(ToolOffsets, AnUndefinedOffsetShiftsNothing) {
+  const auto result = test::run("T0107 G99\nG00 X20 Z2\nG01 Z-10 F0.1\nM30\n", compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 2}, {kFeed, 10, 2, 10, -10}});
+}
+
+TEST(ToolOffsets, AnOffsetChangeTakingEffectOnAnArcIsAnError) {
+  InterpreterOptions options = compOptions();
+  options.offsets[5] = ToolOffset{0.4, 0, 0, 0, 0, 0};
+  test::expectError(test::run("G99\nG00 X20 Z2\nT0105 G02 X30 Z-3 R5 F0.1\nM30\n", options), 3,
+                    1, "the tool offset changes to 5 in an arc block");
+}
+
+}  // namespace
+}  // namespace lathesim::interp
