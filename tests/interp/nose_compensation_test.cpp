@@ -266,3 +266,110 @@ TEST(ToolOffsets, AnOffsetChangeTakingEffectOnAnArcIsAnError) {
 
 }  // namespace
 }  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// G71 with G42 in the ns block (GSK, lathe-cycles.md §8), R0.8 tip 3. A = (22, 2).
+// Contour: N10 G00 X20 (the ns block, A → (10, 2)), a 45° taper to (15, -3), r 15 to Z-10,
+// N20 out to r 22. Compensated (right normal of t = (tr, tz) is (−tz, tr)):
+//   start-up: C ends perpendicular to the taper at its start: (10, 2) + 0.8(1, 1)/√2
+//   taper:    C on r + z = 12 + 0.8√2; tip P = C − (0.8, 0.8) on r + z = 12 − 0.8(2 − √2)
+//   r 15:     C on r = 15.8 (outer corner with the taper: extended to z = 12 + 0.8√2 − 15.8)
+//   out:      C on z = -9.2 (inner corner with r 15: trimmed to (15.8, -9.2)), to r 22
+// The cycle ends the compensation: the contour stops with C at (22, -9.2), P (21.2, -10).
+constexpr std::string_view kG71Program =
+    "T0101 G99 M03 S800\n"
+    "G00 X44 Z2\n"
+    "G71 U2 R0.5\n"
+    "G71 P10 Q20 U0 W0 F0.2\n"
+    "N10 G00 G42 X20\n"
+    "G01 X30 Z-3\n"
+    "Z-10\n"
+    "N20 X44\n"
+    "G70 P10 Q20\n"
+    "M30\n";
+
+const double kTaperTip = 12 - 0.8 * (2 - std::sqrt(2.0));  // r + z on the tip's taper line
+const double kStartUpR = 10 + 0.4 * std::sqrt(2.0) - 0.8;   // B′ = (9.7657, 1.7657)
+const double kStartUpZ = 2 + 0.4 * std::sqrt(2.0) - 0.8;
+
+TEST(NoseCompensationInCycles, G71RoughsAgainstTheOffsetContour) {
+  const auto result = test::run(kG71Program, compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  std::vector<Move> passEnds;     // step 3: each level's cut along Z
+  std::vector<Move> semiFinish;   // step 7: along the rough contour B′ → C′
+  for (const Move& m : result.toolpath.moves) {
+    if (m.line != 4) continue;
+    if (m.cycleStep == 3) passEnds.push_back(m);
+    if (m.cycleStep == 7) semiFinish.push_back(m);
+    EXPECT_EQ(m.noseComp.side, NoseSide::None);  // the legs are already compensated
+  }
+  // Levels X_k = 22 − 2k down to 10 (> B′'s 9.766). A level meets the rough contour where
+  // the tip's path has its r: r 20, 18 and 16 on the last segment (z -10), r 14 and 12 on
+  // the tip's taper line (z = 11.5314 − r), r 10 there too.
+  ASSERT_EQ(passEnds.size(), 6u);
+  const double expectedZ[] = {-10, -10, -10, kTaperTip - 14, kTaperTip - 12, kTaperTip - 10};
+  for (std::size_t k = 0; k < 6; ++k) {
+    SCOPED_TRACE(testing::Message() << "level " << k + 1);
+    EXPECT_NEAR(passEnds[k].to.x(), 20 - 2.0 * static_cast<double>(k), 1e-9);
+    EXPECT_NEAR(passEnds[k].to.y(), expectedZ[k], 1e-9);
+  }
+  // The semi-finishing pass (no allowance) is the compensated contour after B′.
+  expectPath(semiFinish, {{kFeed, kStartUpR, kStartUpZ, 15, kTaperTip - 15},
+                          {kFeed, 15, kTaperTip - 15, 15, -10},
+                          {kFeed, 15, -10, 21.2, -10}});
+}
+
+TEST(NoseCompensationInCycles, G70CompensatesItsContourAndTheReturnCancels) {
+  const auto result = test::run(kG71Program, compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  std::vector<Move> finishing;
+  for (const Move& m : result.toolpath.moves) {
+    if (m.line >= 5 && m.line <= 9) finishing.push_back(m);
+  }
+  // G70 from A: the ns block's G00 is the start-up to B′, the contour as above, then G70's
+  // rapid back to A is the cancel move, from the tip (21.2, -10).
+  expectPath(finishing, {{kRapid, 22, 2, kStartUpR, kStartUpZ},
+                         {kFeed, kStartUpR, kStartUpZ, 15, kTaperTip - 15},
+                         {kFeed, 15, kTaperTip - 15, 15, -10},
+                         {kFeed, 15, -10, 21.2, -10},
+                         {kRapid, 21.2, -10, 22, 2}});
+}
+
+TEST(NoseCompensationInCycles, G42BeforeTheCycleIsSuspendedInsideIt) {
+  // G42 in force before G70, none in the contour: the contour runs as drawn (GSK: the cycle
+  // suspends comp) and G42 is back after it. Tip 9 R0.8 (offset 3): the toolpath is the
+  // centre path.
+  //   line 3 start-up (10, 5) → (10.8, 2): perpendicular to line 4 (t (0,-1), normal (1,0))
+  //   line 4 r 10.8 to Z-5
+  //   G70 from A = (10, -5): its ns block N10 (line 9) G00 to (10, 2) is uncompensated, so
+  //   it cancels the chain: from (10.8, -5); N20 (line 10) back to (10, -5) as drawn; the
+  //   rapid back to A has no length.
+  //   line 6 G01 X30 under the restored G42 starts a new chain; no compensated move follows,
+  //   so the centre ends perpendicular to its own end: (15, -5) + 0.8·(0, 1) = (15, -4.2)
+  //   line 7 G40 G00 X40: the cancel, from (15, -4.2) to (20, -5)
+  const auto result = test::run(
+      "T0103 G99 M03 S800\n"
+      "G00 X20 Z5\n"
+      "G42 G01 Z2 F0.1\n"
+      "Z-5\n"
+      "G70 P10 Q20\n"
+      "G01 X30\n"
+      "G40 G00 X40\n"
+      "M30\n"
+      "N10 G00 X20 Z2\n"
+      "N20 G01 Z-5\n",
+      compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 5},
+                                     {kFeed, 10, 5, 10.8, 2},
+                                     {kFeed, 10.8, 2, 10.8, -5},
+                                     {kRapid, 10.8, -5, 10, 2},
+                                     {kFeed, 10, 2, 10, -5},
+                                     {kFeed, 10, -5, 15, -4.2},
+                                     {kRapid, 15, -4.2, 20, -5}});
+}
+
+}  // namespace
+}  // namespace lathesim::interp
