@@ -11,6 +11,7 @@
 
 #include "interp/arc_move.hpp"
 #include "interp/compound_cycle.hpp"
+#include "interp/cycle_nose_compensation.hpp"
 #include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
 #include "interp/subprogram_call.hpp"
@@ -410,7 +411,8 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
-  emitLegs(cycle.legs(start, end, rMm));
+  const NoseComp comp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
+  emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
   return success();  // the cycle ends at A: the position is unchanged
 }
 
@@ -458,8 +460,9 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   moves_.push_back(move);
 }
 
-// A cycle's legs are never compensated (lathe-cycles.md §8): G71–G73 rough against a contour
-// already offset, G90/G94 and G74/G75 get none; an open G41/G42 chain ends at the first leg.
+// A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough
+// against a contour already offset, G90/G94 are offset by their tip number
+// (cycle_nose_compensation.hpp), G74/G75 get none; an open chain ends at the first leg.
 void Executor::emitLegs(const std::vector<CycleLeg>& legs) {
   const std::size_t first = moves_.size();
   for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);

@@ -373,3 +373,53 @@ TEST(NoseCompensationInCycles, G42BeforeTheCycleIsSuspendedInsideIt) {
 
 }  // namespace
 }  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+TEST(NoseCompensationInCycles, G90TaperIsOffsetByTheTipNumber) {
+  // A = (15, 1); G90 X22 Z-5 R-3: C = (11, -5), B = (11 − 3, 1) = (8, 1), D = (15, -5).
+  // The cut line 2r + z = 17, its normal toward A n = (2, 1)/√5; R0.8 tip 3, s = (-1, -1):
+  // the tip's line moves by 0.8(n + s), so 2r + z grows by 0.8(2·2 + 1)/√5 − 0.8·3
+  // = 0.8√5 − 2.4: 2r + z = 14.6 + 0.8√5. Keeping the cut's Z ends:
+  //   B′ = ((13.6 + 0.8√5)/2, 1), C′ = ((19.6 + 0.8√5)/2, -5)
+  const auto result = test::run("T0101 G99 M03 S800\nG00 X30 Z1\nG42 G90 X22 Z-5 R-3 F0.1\n"
+                                "G40 G00 X40\nM30\n",
+                                compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const double b = (13.6 + 0.8 * std::sqrt(5.0)) / 2;
+  const double c = (19.6 + 0.8 * std::sqrt(5.0)) / 2;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 15, 1},
+                                     {kRapid, 15, 1, b, 1},
+                                     {kFeed, b, 1, c, -5},
+                                     {kFeed, c, -5, 15, -5},
+                                     {kRapid, 15, -5, 15, 1},
+                                     {kRapid, 15, 1, 20, 1}});
+}
+
+TEST(NoseCompensationInCycles, G94TaperIsOffsetByTheTipNumberAndStraightCyclesAreNot) {
+  // A = (15, 2); G94 X10 Z-2 R-3: C = (5, -2), B = (15, -2 − 3) = (15, -5), D = (5, 2).
+  // The cut line 3r + 10z = -5, its normal toward A (3, 10)/√109; R0.8 tip 3: 3r + 10z grows
+  // by 0.8√109 − 0.8·13, to -15.4 + 0.8√109. Keeping the cut's X ends:
+  //   B′ = (15, (-60.4 + 0.8√109)/10), C′ = (5, (-30.4 + 0.8√109)/10)
+  // Then a straight G94 X10 Z-4 (R0 from here: a new R is given) is unchanged by tip 3.
+  const auto result = test::run("T0101 G99 M03 S800\nG00 X30 Z2\nG42 G94 X10 Z-2 R-3 F0.1\n"
+                                "X10 Z-4 R0\nG40 G00 X40\nM30\n",
+                                compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const double b = (-60.4 + 0.8 * std::sqrt(109.0)) / 10;
+  const double c = (-30.4 + 0.8 * std::sqrt(109.0)) / 10;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 15, 2},
+                                     {kRapid, 15, 2, 15, b},
+                                     {kFeed, 15, b, 5, c},
+                                     {kFeed, 5, c, 5, 2},
+                                     {kRapid, 5, 2, 15, 2},
+                                     {kRapid, 15, 2, 15, -4},
+                                     {kFeed, 15, -4, 5, -4},
+                                     {kFeed, 5, -4, 5, 2},
+                                     {kRapid, 5, 2, 15, 2},
+                                     {kRapid, 15, 2, 20, 2}});
+}
+
+}  // namespace
+}  // namespace lathesim::interp

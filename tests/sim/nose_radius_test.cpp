@@ -101,6 +101,20 @@ TEST(NoseRadius, G42TaperLandsOnTheDrawnLine) {
   EXPECT_NEAR(removed, taperRemovedMm3(6.0), kTaperToleranceMm3);
 }
 
+TEST(NoseRadius, G90TaperUnderG42LandsOnTheDrawnLine) {
+  // G90 from A = (12, 1) to C = (11, -5) with R-6: B = (5, 1), the same cut line r + z = 6,
+  // started above the face and ended outside the bar. Under G42 the cycle is offset by the
+  // tip number: the tip's line is r + z = 6 − R(2 − √2), so the nose cuts r + z = 6.
+  //   removed = taperRemoved(6) = 416π/3 = 435.63 mm³ (uncompensated it would be 345.66)
+  const double removed = removedMm3(
+      "G99 M03 S800 T0101\n"
+      "G00 X24 Z1\n"
+      "G42 G90 X22 Z-5 R-6 F0.1\n"
+      "G40 G00 X30\n"
+      "M30\n");
+  EXPECT_NEAR(removed, taperRemovedMm3(6.0), kTaperToleranceMm3);
+}
+
 // The corner of the bar rounded by a quarter circle of radius ρ tangent to the face Z0 and
 // the diameter r 10, centred at (a, -ρ) with a = 10 − ρ: removed is the square [a, 10] ×
 // [-ρ, 0] less the quarter disc (area πρ²/4, centroid r a + 4ρ/(3π)):
