@@ -183,6 +183,47 @@ TEST(NoseCompensation, G42AloneStartsOnTheNextMoveAndEmptyBlocksDoNotBreakTheCha
                                      {kRapid, 12, -4.2, 12, 5}});
 }
 
+TEST(NoseCompensation, InnerCornerIntoAnArcIsTrimmedToTheirIntersection) {
+  // G42 R0.8 tip 9. N4 along r 10 to Z-5, then N5 G03 R5 to (15,-10) about (10,-10): it
+  // leaves (10,-5) going +X (radial (0,1) turned left), a right turn from −Z: an inner corner
+  // for G42. The arc is CCW, its right normal points away from the centre: radius 5.8.
+  // The line r = 10.8 meets that circle where (0.8)² + (z + 10)² = 5.8², z = -10 ± √33; the
+  // point nearer the corner (10,-5) is z = -10 + √33. The arc ends at (15.8,-10), tangent to
+  // N6 along r 15.8; the cancel N7 from (15.8,-15) to (20,-15).
+  const auto result = test::run("T0103 G99\nG00 X20 Z5\nG42 G01 Z2 F0.1\nZ-5\n"
+                                "G03 X30 Z-10 R5\nG01 Z-15\nG40 G00 X40\nM30\n",
+                                compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const double meet = -10 + std::sqrt(33.0);
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 5},
+                                     {kFeed, 10, 5, 10.8, 2},
+                                     {kFeed, 10.8, 2, 10.8, meet},
+                                     {MoveKind::ArcCCW, 10.8, meet, 15.8, -10, 10, -10},
+                                     {kFeed, 15.8, -10, 15.8, -15},
+                                     {kRapid, 15.8, -15, 20, -15}});
+}
+
+TEST(NoseCompensation, OuterCornerWhoseArcNeverMeetsTheLineJoinsAtTheTangentsMeeting) {
+  // G42 R0.8 tip 9. Along r 10 to Z-5 (centre r 10.8), then G02 R1.2 about (10,-6.2): it
+  // leaves (10,-5) going −X, a left turn by 90° (outer for G42). The arc is CW, its right
+  // normal points at its centre: radius 1.2 − 0.8 = 0.4, from S = (10,-5.8) to (9.6,-6.2).
+  // That circle stays 0.4 short of the line r = 10.8, so the tangents at E = (10.8,-5)
+  // (along −Z) and at S (along −X) are extended instead: they meet at (10.8,-5.8), two
+  // straight moves of line 4. Then r 9.6 to Z-10 and the cancel to (15,-10).
+  const auto result = test::run("T0103 G99\nG00 X20 Z5\nG42 G01 Z2 F0.1\nZ-5\n"
+                                "G02 X17.6 Z-6.2 R1.2\nG01 Z-10\nG40 G00 X30\nM30\n",
+                                compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 5},
+                                     {kFeed, 10, 5, 10.8, 2},
+                                     {kFeed, 10.8, 2, 10.8, -5},
+                                     {kFeed, 10.8, -5, 10.8, -5.8},
+                                     {kFeed, 10.8, -5.8, 10, -5.8},
+                                     {kCw, 10, -5.8, 9.6, -6.2, 10, -6.2},
+                                     {kFeed, 9.6, -6.2, 9.6, -10},
+                                     {kRapid, 9.6, -10, 15, -10}});
+}
+
 TEST(NoseCompensation, ZeroRadiusLeavesThePathAsProgrammed) {
   // Offset 4 is not defined: no shift, R 0, so G42 changes nothing.
   const auto result = test::run(
@@ -227,6 +268,17 @@ TEST(NoseCompensation, GrooveNarrowerThanTheNoseIsInterference) {
                 compOptions()),
       6, 1, "interference: with the nose radius 0.8 the nose-centre path of this block runs "
             "backwards");
+}
+
+TEST(NoseCompensation, InnerCornerPathsThatNeverMeetAreAnError) {
+  // G42 R0.8: along r 10 to Z-5 (centre on r 10.8), then G02 R1 about (10,-4) turning right
+  // to +X (inner corner). The arc's centre path has radius 1 − 0.8 = 0.2 about (10,-4): it
+  // stays 0.6 mm short of the line r = 10.8, so the two never meet.
+  test::expectError(
+      test::run("T0101 G99\nG00 X20 Z5\nG42 G01 Z2 F0.1\nZ-5\nG02 X22 Z-4 R1\nG01 Z0\n"
+                "G40 G00 X40\nM30\n",
+                compOptions()),
+      5, 1, "never meet at their inner corner (Fanuc alarm PS0033)");
 }
 
 TEST(NoseCompensation, ChangingSidesWithoutCancelIsAnError) {
