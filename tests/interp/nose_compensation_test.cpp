@@ -316,11 +316,6 @@ TEST(ToolOffsets, AnOffsetChangeTakingEffectOnAnArcIsAnError) {
                     1, "the tool offset changes to 5 in an arc block");
 }
 
-}  // namespace
-}  // namespace lathesim::interp
-
-namespace lathesim::interp {
-namespace {
 
 // G71 with G42 in the ns block (GSK, lathe-cycles.md §8), R0.8 tip 3. A = (22, 2).
 // Contour: N10 G00 X20 (the ns block, A → (10, 2)), a 45° taper to (15, -3), r 15 to Z-10,
@@ -423,11 +418,6 @@ TEST(NoseCompensationInCycles, G42BeforeTheCycleIsSuspendedInsideIt) {
                                      {kRapid, 15, -4.2, 20, -5}});
 }
 
-}  // namespace
-}  // namespace lathesim::interp
-
-namespace lathesim::interp {
-namespace {
 
 TEST(NoseCompensationInCycles, G90TaperIsOffsetByTheTipNumber) {
   // A = (15, 1); G90 X22 Z-5 R-3: C = (11, -5), B = (11 − 3, 1) = (8, 1), D = (15, -5).
