@@ -29,6 +29,7 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.machine = setup.machine;
   options.dialect = setup.dialect;
   options.initialFeedMode = setup.initialFeedMode;
+  options.offsets = setup.offsets;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
 }

@@ -21,6 +21,8 @@
 
 #include <toml++/toml.h>
 
+#include "app/offset_setup.hpp"
+
 namespace lathesim::app {
 namespace {
 
@@ -398,7 +400,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck", "offset"}, report);
   if (const auto* node = root.get("stock"))
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
   if (const auto* node = root.get("machine"))
@@ -411,6 +413,11 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   if (setup.chuck.jawDiameterMm && *setup.chuck.jawDiameterMm <= setup.stock.diameterMm)
     report.at(root.get("chuck")->as_table()->get("jaw_diameter")->source(),
               "chuck.jaw_diameter must exceed the stock's diameter (" + floatText(setup.stock.diameterMm) + " mm)");
+  if (const auto* node = root.get("offset")) {
+    readOffsets(*node, setup.offsets, [&report](const toml::source_region& where, std::string message) {
+      report.at(where, std::move(message));
+    });
+  }
 
   if (report.hasErrors()) return {std::nullopt, report.take()};
   return {std::move(setup), report.take()};  // warnings only

@@ -12,6 +12,7 @@
 #include "interp/dialect.hpp"
 #include "interp/machine_limits.hpp"
 #include "interp/move.hpp"
+#include "interp/tool_offset.hpp"
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
@@ -38,6 +39,7 @@ struct Setup {
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
+  interp::ToolOffsets offsets;        // [[offset]] (app/offset_setup.hpp); none by default
 };
 
 struct SetupResult {

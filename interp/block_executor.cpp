@@ -12,6 +12,7 @@
 #include "interp/arc_move.hpp"
 #include "interp/compound_cycle.hpp"
 #include "interp/g28_return.hpp"
+#include "interp/cycle_nose_compensation.hpp"
 #include "interp/g90_cycle.hpp"
 #include "interp/g94_cycle.hpp"
 #include "interp/spindle_speed.hpp"
@@ -81,6 +82,7 @@ class Executor {
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
   void warnIfSurfaceSpeedUnclamped();
+  void emitLegs(const std::vector<CycleLeg>& legs);
 
   ParsedBlock block_;
   ModalState state_;
@@ -106,6 +108,11 @@ Result<BlockOutcome> Executor::run() {
     state_.plane = code->number == 17 ? Plane::XY : code->number == 19 ? Plane::YZ : Plane::ZX;
   }
   applySpindleMode();
+  if (auto code = block_.gCode(GGroup::NoseRadius)) {
+    state_.noseSide = code->number == 41   ? NoseSide::Left
+                      : code->number == 42 ? NoseSide::Right
+                                           : NoseSide::None;
+  }
 
   const auto oneShot = block_.gCode(GGroup::NonModal);
   const auto motion = block_.gCode(GGroup::Motion);
@@ -460,9 +467,8 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   kept = CycleRetained{xDiameterMm, zMm, rMm};
   cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, name});
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
-  for (const CycleLeg& leg : cycle.legs(start, end, rMm)) {
-    emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
-  }
+  const NoseComp comp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
+  emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
   return success();  // the cycle ends at A: the position is unchanged
 }
 
@@ -477,7 +483,7 @@ Status Executor::applyCompoundCycle(const Code& code) {
   if (!done.legs.empty() || !done.contourMoves.empty())
     cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
-  for (const CycleLeg& leg : done.legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
+  emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
   return success();
 }
@@ -507,6 +513,7 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   move.feedMode = state_.feedMode;
   move.tool = state_.tool;
   move.toolOffset = state_.toolOffset;
+  move.noseComp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
   move.spindleOn = state_.spindleOn;
   move.spindleMode = state_.spindleMode;
   const bool surfaceSpeed = state_.spindleMode == SpindleMode::SurfaceSpeed;
@@ -530,6 +537,15 @@ void Executor::warnIfSurfaceSpeedUnclamped() {
                                    "limited only by the machine's max_rpm ({:g} rpm); give G50 S "
                                    "(the rpm limit) before G96",
                                    options_.machine.maxRpm)});
+}
+
+// A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough
+// against a contour already offset, G90/G94 are offset by their tip number
+// (cycle_nose_compensation.hpp), G74/G75 get none; an open chain ends at the first leg.
+void Executor::emitLegs(const std::vector<CycleLeg>& legs) {
+  const std::size_t first = moves_.size();
+  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
+  for (std::size_t i = first; i < moves_.size(); ++i) moves_[i].noseComp = {};
 }
 
 }  // namespace

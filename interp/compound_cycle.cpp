@@ -9,6 +9,7 @@
 
 #include "interp/contour_blocks.hpp"
 #include "interp/g73_cycle.hpp"
+#include "interp/nose_compensation.hpp"
 #include "interp/peck_cycle.hpp"
 #include "interp/roughing_cycle.hpp"
 #include "interp/word_units.hpp"
@@ -36,6 +37,7 @@ class CompoundCycle {
   Status needFeed() const;
   Result<ContourSpan> contourSpan() const;
   Result<ExtractedContour> contour(ContourSpan span) const;
+  ModalState contourStartState() const;
   void continueAfter(ContourSpan span);
 
   Status finishing();  // G70
@@ -113,9 +115,22 @@ Result<ContourSpan> CompoundCycle::contourSpan() const {
   return findContourBlocks(place_->program, place_->index, request);
 }
 
+// GSK (lathe-cycles.md §8): a G41/G42 in force before G70–G73 is suspended for the cycle and
+// restored after it; only G41/G42 in the contour (its ns block) compensate it.
+ModalState CompoundCycle::contourStartState() const {
+  ModalState start = state_;
+  start.noseSide = NoseSide::None;
+  return start;
+}
+
+// The contour G71–G73 rough against: the ns–nf path, offset by the nose radius when the
+// contour's blocks ask for G41/G42 (the cycle ends the compensation).
 Result<ExtractedContour> CompoundCycle::contour(ContourSpan span) const {
-  auto extracted = extractContour(place_->program, span, state_, options_);
+  auto extracted = extractContour(place_->program, span, contourStartState(), options_);
   if (!extracted.ok()) return extracted.error();
+  auto compensated = compensatedContour(extracted.value().contour, extracted.value().noseComps);
+  if (!compensated.ok()) return compensated.error();
+  extracted.value().contour = std::move(compensated.value());
   if (extracted.value().contour.empty()) {
     return errorAt(code_.column, fmt::format("the contour of {} makes no move from the cycle "
                                              "start point",
@@ -135,9 +150,11 @@ Status CompoundCycle::finishing() {
   auto span = contourSpan();
   if (!span.ok()) return span.error();
   const RZ start = state_.position;
-  auto run = runContourBlocks(place_->program, span.value(), state_, options_);
+  auto run = runContourBlocks(place_->program, span.value(), contourStartState(), options_);
   if (!run.ok()) return run.error();
+  const NoseSide before = state_.noseSide;
   state_ = std::move(run.value().state);
+  state_.noseSide = before;
   outcome_.contourMoves = std::move(run.value().moves);
   outcome_.legs.push_back({MoveKind::Rapid, state_.position, start, 0, RZ(0, 0)});
   if (state_.position == start) outcome_.legs.clear();

@@ -160,6 +160,7 @@ Result<ExtractedContour> extractContour(const Program& program, ContourSpan span
     if (move.block == first.ordinal) ++extracted.firstBlockSegments;
     extracted.contour.push_back({move.kind, move.from, move.to, move.center, move.line,
                                  move.column});
+    extracted.noseComps.push_back(move.noseComp);
   }
   return extracted;
 }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "interp/block_executor.hpp"
 #include "interp/contour.hpp"
@@ -43,6 +44,7 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
 /// The contour as G71–G73 see it, run from `state.position` (A) on a copy of the state.
 struct ExtractedContour {
   Contour contour;
+  std::vector<NoseComp> noseComps;     // the G41/G42 in force in each segment's block
   std::size_t firstBlockSegments = 0;  // how many segments (0 or 1) the ns block made
   bool firstBlockRapid = false;        // the ns block is G00 (else G01)
   bool firstBlockHasX = false;         // the ns block gives X or U

@@ -7,6 +7,7 @@
 #include "interp/call_stack.hpp"
 #include "interp/feed_warnings.hpp"
 #include "interp/modal_state.hpp"
+#include "interp/nose_compensation.hpp"
 #include "interp/program.hpp"
 
 namespace lathesim::interp {
@@ -73,7 +74,10 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
-  const Status status = runProgram(programText, options, result.toolpath, warnings);
+  Status status = runProgram(programText, options, result.toolpath, warnings);
+  // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
+  if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
+  if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.
     const Error& error = status.error();

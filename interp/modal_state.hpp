@@ -41,6 +41,7 @@ struct ModalState {
   bool coolantOn = false;
   int tool = 0;
   int toolOffset = 0;
+  NoseSide noseSide = NoseSide::None;  // group 07: G40 / G41 / G42
   RZ position{0.0, 0.0};  // where the tool is, part coordinates (radius mm, Z mm)
   CycleRetained cycle;
   CompoundCycleParams compound;  // G71–G75 first-block values

@@ -16,6 +16,16 @@ namespace lathesim::interp {
 enum class MoveKind { Rapid, Feed, ArcCW, ArcCCW, Dwell };
 enum class FeedMode { PerMinute, PerRevolution };  // G98 / G99 (system A)
 enum class SpindleMode { Rpm, SurfaceSpeed };      // G97 / G96
+enum class NoseSide { None, Left, Right };         // G40 / G41 / G42
+
+/// The nose radius compensation a move was programmed under (interp/nose_compensation.hpp):
+/// the side, and the nose radius R and imaginary tip number (0–9) of the tool offset in force.
+struct NoseComp {
+  NoseSide side = NoseSide::None;
+  double radiusMm = 0;
+  int tip = 0;
+  bool operator==(const NoseComp&) const = default;
+};
 
 struct Move {
   MoveKind kind = MoveKind::Rapid;
@@ -27,6 +37,8 @@ struct Move {
   FeedMode feedMode = FeedMode::PerRevolution;
   int tool = 0;        // the tool number mounted (T0101 → 1)
   int toolOffset = 0;  // the offset number in force (T0101 → 1)
+  NoseComp noseComp;   // G41/G42 in force as programmed; the toolpath's moves are already
+                       // compensated (from/to/center are the imaginary tip's path)
   bool spindleOn = false;
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
