@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace lathesim {
 
@@ -26,8 +27,7 @@ bool isSymmetricAboutAxis(const ConvexPolygon& polygon) {
 RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
   for (const ConvexPolygon& polygon : polygons) {
     const auto& v = polygon.vertices();
-    Piece piece;
-    piece.isArea = v.size() >= 3;
+    Piece piece{static_cast<int>(edges_.size()), 0, v.size() >= 3, false};
     // Across the axis the mirror image counts too, unless it is the polygon itself (a
     // bar's section): then measuring it again would only repeat the same numbers.
     piece.crossesAxis = polygon.lowerBound().x() < 0.0 && !isSymmetricAboutAxis(polygon);
@@ -38,9 +38,10 @@ RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
       const double length = d.norm();
       if (length == 0.0) continue;
       // Counter-clockwise vertices: the outward normal is the edge turned clockwise.
-      piece.edges.push_back({a.x(), a.y(), d.x(), d.y(), d.y() / length, -d.x() / length, 1.0 / (length * length)});
+      edges_.push_back({a.x(), a.y(), d.x(), d.y(), d.y() / length, -d.x() / length, 1.0 / (length * length), length});
     }
-    if (v.size() == 1) piece.edges.push_back({v[0].x(), v[0].y(), 0, 0, 0, 0, 0});
+    if (v.size() == 1) edges_.push_back({v[0].x(), v[0].y(), 0, 0, 0, 0, 0, 0});
+    piece.edgeCount = static_cast<int>(edges_.size()) - piece.firstEdge;
     if (pieces_.empty()) {
       lower_ = polygon.lowerBound();
       upper_ = polygon.upperBound();
@@ -48,21 +49,24 @@ RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
       lower_ = lower_.cwiseMin(polygon.lowerBound());
       upper_ = upper_.cwiseMax(polygon.upperBound());
     }
-    pieces_.push_back(std::move(piece));
+    pieces_.push_back(piece);
   }
 }
 
-double RevolvedRegion::pieceDistance(const Piece& piece, double r, double z, double cap) {
+double RevolvedRegion::pieceDistance(const Edge* edges, const Piece& piece, double r, double z, double cap) {
+  const Edge* const begin = edges + piece.firstEdge;
+  const Edge* const end = begin + piece.edgeCount;
   const bool isArea = piece.isArea;
   if (isArea) {
     double maxLine = -std::numeric_limits<double>::infinity();
-    for (const Edge& e : piece.edges) maxLine = std::max(maxLine, e.nx * (r - e.ax) + e.nz * (z - e.az));
+    for (const Edge* e = begin; e != end; ++e) maxLine = std::max(maxLine, e->nx * (r - e->ax) + e->nz * (z - e->az));
     // Inside: exact. Outside but farther than cap from a supporting line: farther than cap
     // from the polygon too, so the exact search can be skipped.
     if (maxLine <= 0.0 || maxLine >= cap) return maxLine;
   }
   double best = std::numeric_limits<double>::infinity();
-  for (const Edge& e : piece.edges) {
+  for (const Edge* edge = begin; edge != end; ++edge) {
+    const Edge& e = *edge;
     const double px = r - e.ax, pz = z - e.az;
     const double t = std::clamp((px * e.dx + pz * e.dz) * e.inverseLengthSquared, 0.0, 1.0);
     const double qx = px - t * e.dx, qz = pz - t * e.dz;
@@ -74,8 +78,8 @@ double RevolvedRegion::pieceDistance(const Piece& piece, double r, double z, dou
 double RevolvedRegion::signedDistance(double rho, double z, double cap) const {
   double d = std::numeric_limits<double>::infinity();
   for (const Piece& piece : pieces_) {
-    d = std::min(d, pieceDistance(piece, rho, z, cap));
-    if (piece.crossesAxis) d = std::min(d, pieceDistance(piece, -rho, z, cap));
+    d = std::min(d, pieceDistance(edges_.data(), piece, rho, z, cap));
+    if (piece.crossesAxis) d = std::min(d, pieceDistance(edges_.data(), piece, -rho, z, cap));
   }
   return d;
 }
@@ -83,27 +87,24 @@ double RevolvedRegion::signedDistance(double rho, double z, double cap) const {
 // The hottest loop of a simulation: cloned for AVX2 where the processor has it (chosen at
 // load time), plain SSE2 elsewhere. Written with plain ternaries over fixed-size arrays so
 // that each k-loop becomes a few vector instructions.
+//
+// Outside a convex polygon the nearest point lies on the edge whose line is farthest out
+// (the normals of a convex polygon turn monotonically, so no other edge's line can beat
+// those of the feature the nearest point lies on). So where points lie outside and near,
+// a second pass over the edges finds, per point, that edge and the point's position along
+// it; the distance is its line distance, or past either end of the edge the distance to
+// that vertex: √(line² + past²).
 __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDistanceColumn(
-    const Piece& piece, double r, double z0, double dz, double cap, double (&out)[kColumn]) {
-  double line[kColumn];
+    const Edge* edges, const Piece& piece, double r, double z0, double dz, double cap, double (&out)[kColumn]) {
+  const Edge* const begin = edges + piece.firstEdge;
+  const Edge* const end = begin + piece.edgeCount;
   double zOffset[kColumn];
   for (int k = 0; k < kColumn; ++k) zOffset[k] = z0 + dz * k;
-  const bool isArea = piece.isArea;
-  for (int k = 0; k < kColumn; ++k) line[k] = isArea ? -std::numeric_limits<double>::infinity() : 0.0;
-  if (isArea)
-    for (const Edge& e : piece.edges) {
-      const double radial = e.nx * (r - e.ax) - e.nz * e.az;
-      for (int k = 0; k < kColumn; ++k) {
-        const double d = radial + e.nz * zOffset[k];
-        line[k] = d > line[k] ? d : line[k];
-      }
-    }
-  bool needsEdges = !isArea;
-  for (int k = 0; k < kColumn; ++k) needsEdges |= line[k] > 0.0 && line[k] < cap;
-  if (needsEdges) {
+  if (!piece.isArea) {  // a point or a segment: the plain distance to its edges
     double best[kColumn];
     for (int k = 0; k < kColumn; ++k) best[k] = std::numeric_limits<double>::infinity();
-    for (const Edge& e : piece.edges) {
+    for (const Edge* edge = begin; edge != end; ++edge) {
+      const Edge& e = *edge;
       const double px = r - e.ax;
       const double radialDot = px * e.dx;
       for (int k = 0; k < kColumn; ++k) {
@@ -117,8 +118,52 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
       }
     }
     for (int k = 0; k < kColumn; ++k) {
-      const bool outsideNear = !isArea || (line[k] > 0.0 && line[k] < cap);
-      line[k] = outsideNear ? std::sqrt(best[k]) : line[k];
+      const double d = std::sqrt(best[k]);
+      out[k] = d < out[k] ? d : out[k];
+    }
+    return;
+  }
+  double line[kColumn];
+  for (int k = 0; k < kColumn; ++k) line[k] = -std::numeric_limits<double>::infinity();
+  for (const Edge* edge = begin; edge != end; ++edge) {
+    const Edge& e = *edge;
+    const double radial = e.nx * (r - e.ax) - e.nz * e.az;
+    for (int k = 0; k < kColumn; ++k) {
+      const double d = radial + e.nz * zOffset[k];
+      line[k] = d > line[k] ? d : line[k];
+    }
+  }
+  // Inside, or farther than cap from a supporting line: the line distance is the answer
+  // (see signedDistance). Only points outside and near need the edges themselves.
+  bool needsEdges = false;
+  for (int k = 0; k < kColumn; ++k) needsEdges |= line[k] > 0.0 && line[k] < cap;
+  if (needsEdges) {
+    double farthest[kColumn], along[kColumn], length[kColumn];
+    for (int k = 0; k < kColumn; ++k) {
+      farthest[k] = -std::numeric_limits<double>::infinity();
+      along[k] = 0.0;
+      length[k] = 0.0;
+    }
+    for (const Edge* edge = begin; edge != end; ++edge) {
+      const Edge& e = *edge;
+      // Line distance n·(p − a) and position along the edge u·(p − a), u = (−nz, nx).
+      const double radial = e.nx * (r - e.ax) - e.nz * e.az;
+      const double radialAlong = -e.nz * (r - e.ax) - e.nx * e.az;
+      for (int k = 0; k < kColumn; ++k) {
+        const double d = radial + e.nz * zOffset[k];
+        const double a = radialAlong + e.nx * zOffset[k];
+        const bool farther = d > farthest[k];
+        farthest[k] = farther ? d : farthest[k];
+        along[k] = farther ? a : along[k];
+        length[k] = farther ? e.length : length[k];
+      }
+    }
+    for (int k = 0; k < kColumn; ++k) {
+      double past = -along[k];
+      past = along[k] - length[k] > past ? along[k] - length[k] : past;
+      past = past > 0.0 ? past : 0.0;
+      const bool outsideNear = line[k] > 0.0 && line[k] < cap;
+      line[k] = outsideNear ? std::sqrt(farthest[k] * farthest[k] + past * past) : line[k];
     }
   }
   for (int k = 0; k < kColumn; ++k) out[k] = line[k] < out[k] ? line[k] : out[k];
@@ -127,35 +172,56 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
 void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const {
   for (double& v : out) v = std::numeric_limits<double>::infinity();
   for (const Piece& piece : pieces_) {
-    pieceDistanceColumn(piece, rho, z0, dz, cap, out);
-    if (piece.crossesAxis) pieceDistanceColumn(piece, -rho, z0, dz, cap, out);
+    pieceDistanceColumn(edges_.data(), piece, rho, z0, dz, cap, out);
+    if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, z0, dz, cap, out);
   }
 }
 
 RevolvedRegion RevolvedRegion::near(double rho, double z, double radius) const {
   RevolvedRegion subset;
+  nearInto(rho, z, radius, subset);
+  return subset;
+}
+
+void RevolvedRegion::nearInto(double rho, double z, double radius, RevolvedRegion& subset) const {
+  subset.edges_.clear();
+  subset.pieces_.clear();
   subset.lower_ = lower_;
   subset.upper_ = upper_;
-  for (const Piece& piece : pieces_) {
-    double d = pieceDistance(piece, rho, z, radius + 1.0);
-    if (piece.crossesAxis) d = std::min(d, pieceDistance(piece, -rho, z, radius + 1.0));
+  // Nearest pieces first: a column's later pieces then often cannot lower its values and
+  // skip their edge search (see pieceDistanceColumn).
+  std::pair<double, int> order[kMaxOrderedPieces];
+  int ordered = 0;
+  for (int p = 0; p < static_cast<int>(pieces_.size()); ++p) {
+    const Piece& piece = pieces_[p];
+    double d = pieceDistance(edges_.data(), piece, rho, z, radius + 1.0);
+    if (piece.crossesAxis) d = std::min(d, pieceDistance(edges_.data(), piece, -rho, z, radius + 1.0));
     if (d > radius) continue;
-    if (!piece.isArea || piece.crossesAxis) {
-      subset.pieces_.push_back(piece);
-      continue;
-    }
+    if (ordered < kMaxOrderedPieces) order[ordered++] = {d, p};
+    else appendNear(piece, rho, z, radius, subset);  // beyond the sorted few: kept in order
+  }
+  std::sort(order, order + ordered);
+  for (int i = 0; i < ordered; ++i) appendNear(pieces_[order[i].second], rho, z, radius, subset);
+}
+
+void RevolvedRegion::appendNear(const Piece& piece, double rho, double z, double radius, RevolvedRegion& subset) const {
+  const Edge* const begin = edges_.data() + piece.firstEdge;
+  const Edge* const end = begin + piece.edgeCount;
+  Piece kept{static_cast<int>(subset.edges_.size()), 0, piece.isArea, piece.crossesAxis};
+  if (!piece.isArea || piece.crossesAxis) {
+    subset.edges_.insert(subset.edges_.end(), begin, end);
+  } else {
     // Inside a convex polygon the distance is set by the edge line farthest out; outside,
     // the nearest point lies on that edge too (or on a vertex it shares). An edge whose line
     // is more than 2·radius behind the farthest one at the centre cannot become the
     // farthest anywhere within radius (each line distance changes by at most radius).
     double farthest = -std::numeric_limits<double>::infinity();
-    for (const Edge& e : piece.edges) farthest = std::max(farthest, e.nx * (rho - e.ax) + e.nz * (z - e.az));
-    Piece kept{{}, true, false};
-    for (const Edge& e : piece.edges)
-      if (e.nx * (rho - e.ax) + e.nz * (z - e.az) >= farthest - 2.0 * radius) kept.edges.push_back(e);
-    subset.pieces_.push_back(std::move(kept));
+    for (const Edge* e = begin; e != end; ++e) farthest = std::max(farthest, e->nx * (rho - e->ax) + e->nz * (z - e->az));
+    for (const Edge* e = begin; e != end; ++e)
+      if (e->nx * (rho - e->ax) + e->nz * (z - e->az) >= farthest - 2.0 * radius) subset.edges_.push_back(*e);
   }
-  return subset;
+  kept.edgeCount = static_cast<int>(subset.edges_.size()) - kept.firstEdge;
+  subset.pieces_.push_back(kept);
 }
 
 double RevolvedRegion::maxRadius() const { return std::max(std::abs(lower_.x()), std::abs(upper_.x())); }

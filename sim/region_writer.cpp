@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "sim/stock_grid.hpp"
@@ -20,6 +22,62 @@ namespace lathesim::sim {
 namespace {
 
 double squared(double v) { return v * v; }
+
+// What writing one column of a leaf needs besides the values and the distances.
+struct ColumnWrite {
+  double sign;           // u = sign·φ
+  double band;           // bg: u ≤ −band is as deep in the region's state as the band allows
+  double noChange;       // smaller decreases of u are rounding, not cuts
+  double inverseVoxel;
+  double voxel;          // a ghost candidate lies within a voxel of the boundary...
+  float notMaterial;     // ...and could count as material: notMaterial < φ < ghostCeiling
+  float ghostCeiling;
+};
+
+// u ← min(u, ψ) over one column of eight voxels (values[0…7], along Z), four at a time in
+// GCC vector types (one AVX2 register in the AVX2 clone, two SSE2 ones elsewhere), without
+// branches. Returns the material voxels lost; updates the column's bits of the active mask
+// and sets those of the ghost candidates (see clearGhostSheets).
+using Double4 = double __attribute__((vector_size(32)));
+using Float4 = float __attribute__((vector_size(16)));
+using Mask4 = std::int64_t __attribute__((vector_size(32)));  // lanes −1 (true) or 0
+
+int bitsOf(Mask4 m) { return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8)); }
+
+__attribute__((target_clones("avx2", "default"))) double writeColumn(const ColumnWrite& w, float* values,
+                                                                     const double* psi, std::uint8_t& activeBits,
+                                                                     std::uint8_t& ghostBits) {
+  double lost = 0.0;
+  int changedBits = 0, newActive = 0, newGhost = 0;
+  for (int half = 0; half < 2; ++half) {
+    Float4 stored4;
+    std::memcpy(&stored4, values + 4 * half, sizeof stored4);
+    Double4 p;
+    std::memcpy(&p, psi + 4 * half, sizeof p);
+    const Double4 old = __builtin_convertvector(stored4, Double4);
+    const Double4 uOld = w.sign * old;
+    const Mask4 open = uOld > -w.band;
+    const Mask4 change = open & (p < uOld - w.noChange);
+    const Double4 uNew = p > -w.band ? p : Double4{} - w.band;
+    stored4 = __builtin_convertvector(w.sign * (change ? uNew : uOld), Float4);  // unchanged: old exactly
+    std::memcpy(values + 4 * half, &stored4, sizeof stored4);
+    const Double4 value = __builtin_convertvector(stored4, Double4);
+    Double4 before = 0.5 - old * w.inverseVoxel, after = 0.5 - value * w.inverseVoxel;
+    before = before < 0.0 ? Double4{} : before > 1.0 ? Double4{} + 1.0 : before;
+    after = after < 0.0 ? Double4{} : after > 1.0 ? Double4{} + 1.0 : after;
+    const Double4 lost4 = before - after;
+    lost += (lost4[0] + lost4[1]) + (lost4[2] + lost4[3]);
+    const Mask4 active = (uNew < w.band) & (uNew > -w.band);
+    const Double4 distance = p < 0.0 ? -p : p;
+    const Mask4 ghost = open & (distance < w.voxel) & (value > w.notMaterial) & (value < w.ghostCeiling);
+    changedBits |= bitsOf(change) << (4 * half);
+    newActive |= bitsOf(active) << (4 * half);
+    newGhost |= bitsOf(ghost) << (4 * half);
+  }
+  activeBits = static_cast<std::uint8_t>((activeBits & ~changedBits) | (newActive & changedBits));
+  ghostBits = static_cast<std::uint8_t>(newGhost);
+  return lost;
+}
 
 enum class Action {
   Update,   // an existing leaf the region's boundary passes through
@@ -42,7 +100,10 @@ class RegionWriter {
       : stock_(stock), region_(region), h_(stock.voxel), bg_(stock.background),
         sign_(how == RegionWrite::Add ? 1.0 : -1.0), removing_(how == RegionWrite::Remove),
         leafReach_(0.5 * std::sqrt(3.0) * (kLeafDim - 1) * h_ + bg_),
-        blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_) {}
+        blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_),
+        // A change smaller than noChange is rounding between the stock's float values and the
+        // region's double distance (a tool running along a face it cut before), not a cut.
+        column_{sign_, bg_, 1e-5 * h_, 1.0 / h_, h_, notMaterial(), ghostCeiling()} {}
 
   double run() {
     std::vector<Task> tasks = classify();
@@ -232,7 +293,9 @@ class RegionWriter {
       }
     }
 
-    std::vector<std::vector<Leaf*>> leavesOf(blocks.size());
+    // First the fills and updates, then the new leaves: those a fill took out of the tree
+    // are used again for the leaves this write makes, rather than freed and allocated anew.
+    std::vector<std::vector<Leaf*>> leavesOf(blocks.size()), sparesOf(blocks.size());
     std::vector<double> lostOf(blocks.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size()), [&](const auto& range) {
       for (std::size_t b = range.begin(); b != range.end(); ++b) {
@@ -240,20 +303,40 @@ class RegionWriter {
         Node1& node = *blocks[b].node;
         for (std::size_t t = blocks[b].begin; t != blocks[b].end; ++t) {
           Task& task = tasks[t];
-          switch (task.action) {
-            case Action::Fill:
-              lostOf[b] += task.insideBefore - filledFraction * Leaf::NUM_VOXELS;
-              node.addTile(1, task.origin, filledValue(), false);
-              break;
-            case Action::Densify:
-              task.leaf = new Leaf(task.origin, task.tileValue, false);
-              node.addLeaf(task.leaf);  // the tree owns it from here
-              leavesOf[b].push_back(task.leaf);
-              break;
-            case Action::Update:
-              leavesOf[b].push_back(task.leaf);
-              break;
+          if (task.action == Action::Fill) {
+            lostOf[b] += task.insideBefore - filledFraction * Leaf::NUM_VOXELS;
+            if (Leaf* old = node.template stealNode<Leaf>(task.origin, filledValue(), false)) sparesOf[b].push_back(old);
+            else node.addTile(1, task.origin, filledValue(), false);
+          } else if (task.action == Action::Update) {
+            leavesOf[b].push_back(task.leaf);
           }
+        }
+      }
+    });
+    std::vector<Leaf*> spares;
+    for (const auto& list : sparesOf) spares.insert(spares.end(), list.begin(), list.end());
+    for (Task& task : tasks)
+      if (task.action == Action::Densify && !spares.empty()) {
+        task.leaf = spares.back();
+        spares.pop_back();
+      }
+    for (Leaf* leaf : spares) delete leaf;  // more filled than made: not kept past this write
+
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size()), [&](const auto& range) {
+      for (std::size_t b = range.begin(); b != range.end(); ++b) {
+        if (!blocks[b].node) continue;
+        Node1& node = *blocks[b].node;
+        for (std::size_t t = blocks[b].begin; t != blocks[b].end; ++t) {
+          Task& task = tasks[t];
+          if (task.action != Action::Densify) continue;
+          if (task.leaf) {  // a filled leaf, made to look new
+            task.leaf->setOrigin(task.origin);
+            task.leaf->fill(task.tileValue, false);
+          } else {
+            task.leaf = new Leaf(task.origin, task.tileValue, false);
+          }
+          node.addLeaf(task.leaf);  // the tree owns it from here
+          leavesOf[b].push_back(task.leaf);
         }
       }
     });
@@ -270,15 +353,13 @@ class RegionWriter {
   std::vector<double> writeVoxels(const std::vector<Leaf*>& leaves) {
     ghostCandidates_.assign(leaves.size(), Leaf::NodeMaskType());
     std::vector<double> insideLost(leaves.size(), 0.0);
-    // A change smaller than this is rounding between the stock's float values and the
-    // region's double distance (a tool running along a face it cut before), not a cut.
-    const double noChange = 1e-5 * h_;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
+      RevolvedRegion local;  // each leaf's subset, in memory reused from leaf to leaf
       for (std::size_t l = range.begin(); l != range.end(); ++l) {
         Leaf& leaf = *leaves[l];
         const Coord o = leaf.origin();
-        const RevolvedRegion local = region_.near(std::sqrt(squared((o.x() + 3.5) * h_) + squared((o.y() + 3.5) * h_)),
-                                                  (o.z() + 3.5) * h_, leafReach_);
+        region_.nearInto(std::sqrt(squared((o.x() + 3.5) * h_) + squared((o.y() + 3.5) * h_)), (o.z() + 3.5) * h_,
+                         leafReach_, local);
         if (local.empty()) continue;
         float* values = leaf.buffer().data();  // written in place: the loop is the hot path
         auto& activeMask = leaf.getValueMask();
@@ -292,21 +373,9 @@ class RegionWriter {
             if (!anyOpen) continue;
             double psi[RevolvedRegion::kColumn];
             local.signedDistanceColumn(std::sqrt(x * x + squared((o.y() + j) * h_)), o.z() * h_, h_, bg_, psi);
-            for (int k = 0; k < kLeafDim; ++k) {
-              const openvdb::Index n = column + k;
-              const float old = values[n];
-              if (u(old) <= -bg_) continue;
-              float value = old;
-              if (psi[k] < u(old) - noChange) {
-                const double uNew = std::max(psi[k], -static_cast<double>(bg_));
-                value = static_cast<float>(sign_ * uNew);
-                values[n] = value;
-                activeMask.set(n, std::abs(uNew) < bg_);
-                lost += insideFraction(old, h_) - insideFraction(value, h_);
-              }
-              // A ghost lies on this region's boundary (see clearGhostSheets).
-              if (std::abs(psi[k]) < h_ && value > notMaterial() && value < ghostCeiling()) ghostCandidates_[l].setOn(n);
-            }
+            // A column's eight voxels are one byte of the leaf's masks (LeafNode<float, 3>).
+            lost += writeColumn(column_, values + column, psi, activeMask.template getWord<std::uint8_t>(column >> 3),
+                                ghostCandidates_[l].template getWord<std::uint8_t>(column >> 3));
           }
         }
         insideLost[l] = lost;
@@ -409,6 +478,7 @@ class RegionWriter {
   const bool removing_;
   const double leafReach_;   // a leaf whose centre is farther than this from the boundary is untouched
   const double blockReach_;  // the same for a 128³ block
+  const ColumnWrite column_;
   double insideLostTotal_ = 0.0;
   std::vector<Leaf::NodeMaskType> ghostCandidates_;  // per leaf: voxels within a voxel of the boundary that could count
 };
