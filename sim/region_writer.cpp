@@ -83,6 +83,8 @@ enum class Action {
   Update,   // an existing leaf the region's boundary passes through
   Densify,  // a tile the region's boundary passes through: becomes a leaf first
   Fill,     // a leaf or tile the region covers entirely: becomes one tile
+  FillSub,  // a 32³ sub-block the region covers entirely, when removing: each of its leaves
+            // and tiles that holds material becomes an air tile
 };
 
 struct Task {
@@ -204,15 +206,19 @@ class RegionWriter {
           // with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
           if (psi > subReach || (psi < -subReach && !removing_)) continue;
+          if (psi < -subReach) {  // removing: its 64 leaf slots are filled in restructure()
+            tasks.push_back({sub, 1, Action::FillSub, nullptr, 0.0f, 0.0});
+            continue;
+          }
           // Within the sub-block only the pieces and edges near it matter.
           const RevolvedRegion local = near(sub, kSub, subReach + leafReach_ + h_);
-          classifyLeavesOf(local, sub, kSub, box, psi < -subReach, accessor, tasks);
+          classifyLeavesOf(local, sub, kSub, box, accessor, tasks);
         }
   }
 
   template <typename Accessor>
   void classifyLeavesOf(const RevolvedRegion& local, const Coord& block, int dim, const openvdb::CoordBBox& box,
-                        bool covered, Accessor& accessor, std::vector<Task>& tasks) const {
+                        Accessor& accessor, std::vector<Task>& tasks) const {
     const double rhoMax = region_.maxRadius() + leafReach_;
     const double rhoMin = region_.lowerBound().x() > 0.0 ? region_.lowerBound().x() - leafReach_ : -1.0;
     for (int x = block.x(); x < block.x() + dim; x += kLeafDim)
@@ -226,7 +232,7 @@ class RegionWriter {
         for (int z = block.z(); z < block.z() + dim; z += kLeafDim) {
           const Coord origin(x, y, z);
           if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
-          const double psi = covered ? -leafReach_ - 1.0 : distanceAtCentre(local, origin, kLeafDim, leafReach_ + h_);
+          const double psi = distanceAtCentre(local, origin, kLeafDim, leafReach_ + h_);
           if (psi > leafReach_) continue;
           Leaf* leaf = accessor.probeLeaf(origin);
           const float tile = leaf ? 0.0f : accessor.getValue(origin);
@@ -277,6 +283,7 @@ class RegionWriter {
         blocks.push_back({t, t + 1});
       else blocks.back().end = t + 1;
 
+    const openvdb::CoordBBox box = candidateBox();
     auto accessor = stock_.grid->getAccessor();
     const double filledFraction = insideFraction(filledValue(), h_);
     for (BlockTasks& block : blocks) {
@@ -307,6 +314,8 @@ class RegionWriter {
             lostOf[b] += task.insideBefore - filledFraction * Leaf::NUM_VOXELS;
             if (Leaf* old = node.template stealNode<Leaf>(task.origin, filledValue(), false)) sparesOf[b].push_back(old);
             else node.addTile(1, task.origin, filledValue(), false);
+          } else if (task.action == Action::FillSub) {
+            lostOf[b] += fillSubBlock(node, task.origin, box, sparesOf[b]);
           } else if (task.action == Action::Update) {
             leavesOf[b].push_back(task.leaf);
           }
@@ -346,6 +355,31 @@ class RegionWriter {
       leaves.insert(leaves.end(), leavesOf[b].begin(), leavesOf[b].end());
     }
     return leaves;
+  }
+
+  // The leaves and tiles of a covered 32³ sub-block that hold material become air tiles
+  // (within the candidate box, as classifyLeavesOf would have taken them); the leaves go
+  // to `spares`. Returns the material voxels lost.
+  double fillSubBlock(Node1& node, const Coord& sub, const openvdb::CoordBBox& box, std::vector<Leaf*>& spares) const {
+    constexpr int kSub = 4 * kLeafDim;
+    const double filledVoxels = insideFraction(filledValue(), h_) * Leaf::NUM_VOXELS;
+    double lost = 0.0;
+    for (int x = sub.x(); x < sub.x() + kSub; x += kLeafDim)
+      for (int y = sub.y(); y < sub.y() + kSub; y += kLeafDim)
+        for (int z = sub.z(); z < sub.z() + kSub; z += kLeafDim) {
+          const Coord origin(x, y, z);
+          if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
+          if (const Leaf* leaf = node.probeConstLeaf(origin)) {
+            lost += stock_.leafInsideVoxels(*leaf) - filledVoxels;
+            spares.push_back(node.template stealNode<Leaf>(origin, filledValue(), false));
+            continue;
+          }
+          const float tile = node.getTable()[Node1::coordToOffset(origin)].getValue();  // no leaf here: a tile
+          if (u(tile) <= -bg_) continue;  // already air
+          lost += insideFraction(tile, h_) * Leaf::NUM_VOXELS - filledVoxels;
+          node.addTile(1, origin, filledValue(), false);
+        }
+    return lost;
   }
 
   // 3. u ← min(u, ψ) voxel by voxel (parallel: leaves are independent). Returns, per leaf,
