@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -96,77 +97,80 @@ double RevolvedRegion::signedDistance(double rho, double z, double cap) const {
 // that vertex: √(line² + past²).
 __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDistanceColumn(
     const Edge* edges, const Piece& piece, double r, double z0, double dz, double cap, double (&out)[kColumn]) {
+  // Two groups of four points, in GCC vector types: one AVX2 register each in the AVX2
+  // clone, two SSE2 registers elsewhere.
+  using Double4 = double __attribute__((vector_size(32)));
+  static_assert(kColumn == 8);
   const Edge* const begin = edges + piece.firstEdge;
   const Edge* const end = begin + piece.edgeCount;
-  double zOffset[kColumn];
-  for (int k = 0; k < kColumn; ++k) zOffset[k] = z0 + dz * k;
+  const Double4 z[2] = {Double4{0, 1, 2, 3} * dz + z0, Double4{4, 5, 6, 7} * dz + z0};
+  const Double4 infinity = Double4{} + std::numeric_limits<double>::infinity();
+  Double4 result[2];
   if (!piece.isArea) {  // a point or a segment: the plain distance to its edges
-    double best[kColumn];
-    for (int k = 0; k < kColumn; ++k) best[k] = std::numeric_limits<double>::infinity();
+    Double4 best[2] = {infinity, infinity};
     for (const Edge* edge = begin; edge != end; ++edge) {
       const Edge& e = *edge;
       const double px = r - e.ax;
       const double radialDot = px * e.dx;
-      for (int k = 0; k < kColumn; ++k) {
-        const double pz = zOffset[k] - e.az;
-        double t = (radialDot + pz * e.dz) * e.inverseLengthSquared;
-        t = t < 0.0 ? 0.0 : t;
-        t = t > 1.0 ? 1.0 : t;
-        const double qx = px - t * e.dx, qz = pz - t * e.dz;
-        const double d2 = qx * qx + qz * qz;
-        best[k] = d2 < best[k] ? d2 : best[k];
+      for (int g = 0; g < 2; ++g) {
+        const Double4 pz = z[g] - e.az;
+        Double4 t = (radialDot + pz * e.dz) * e.inverseLengthSquared;
+        t = t < 0.0 ? Double4{} : t;
+        t = t > 1.0 ? Double4{} + 1.0 : t;
+        const Double4 qx = px - t * e.dx, qz = pz - t * e.dz;
+        const Double4 d2 = qx * qx + qz * qz;
+        best[g] = d2 < best[g] ? d2 : best[g];
       }
     }
-    for (int k = 0; k < kColumn; ++k) {
-      const double d = std::sqrt(best[k]);
-      out[k] = d < out[k] ? d : out[k];
-    }
-    return;
-  }
-  double line[kColumn];
-  for (int k = 0; k < kColumn; ++k) line[k] = -std::numeric_limits<double>::infinity();
-  for (const Edge* edge = begin; edge != end; ++edge) {
-    const Edge& e = *edge;
-    const double radial = e.nx * (r - e.ax) - e.nz * e.az;
-    for (int k = 0; k < kColumn; ++k) {
-      const double d = radial + e.nz * zOffset[k];
-      line[k] = d > line[k] ? d : line[k];
-    }
-  }
-  // Inside, or farther than cap from a supporting line: the line distance is the answer
-  // (see signedDistance). Only points outside and near need the edges themselves.
-  bool needsEdges = false;
-  for (int k = 0; k < kColumn; ++k) needsEdges |= line[k] > 0.0 && line[k] < cap;
-  if (needsEdges) {
-    double farthest[kColumn], along[kColumn], length[kColumn];
-    for (int k = 0; k < kColumn; ++k) {
-      farthest[k] = -std::numeric_limits<double>::infinity();
-      along[k] = 0.0;
-      length[k] = 0.0;
-    }
+    for (int g = 0; g < 2; ++g)
+      for (int k = 0; k < 4; ++k) result[g][k] = std::sqrt(best[g][k]);
+  } else {
+    Double4 line[2] = {-infinity, -infinity};
     for (const Edge* edge = begin; edge != end; ++edge) {
       const Edge& e = *edge;
-      // Line distance n·(p − a) and position along the edge u·(p − a), u = (−nz, nx).
       const double radial = e.nx * (r - e.ax) - e.nz * e.az;
-      const double radialAlong = -e.nz * (r - e.ax) - e.nx * e.az;
-      for (int k = 0; k < kColumn; ++k) {
-        const double d = radial + e.nz * zOffset[k];
-        const double a = radialAlong + e.nx * zOffset[k];
-        const bool farther = d > farthest[k];
-        farthest[k] = farther ? d : farthest[k];
-        along[k] = farther ? a : along[k];
-        length[k] = farther ? e.length : length[k];
+      for (int g = 0; g < 2; ++g) {
+        const Double4 d = radial + e.nz * z[g];
+        line[g] = d > line[g] ? d : line[g];
       }
     }
-    for (int k = 0; k < kColumn; ++k) {
-      double past = -along[k];
-      past = along[k] - length[k] > past ? along[k] - length[k] : past;
-      past = past > 0.0 ? past : 0.0;
-      const bool outsideNear = line[k] > 0.0 && line[k] < cap;
-      line[k] = outsideNear ? std::sqrt(farthest[k] * farthest[k] + past * past) : line[k];
+    // Inside, or farther than cap from a supporting line: the line distance is the answer
+    // (see signedDistance). Only points outside and near need the edges themselves.
+    using Mask4 = std::int64_t __attribute__((vector_size(32)));
+    const Mask4 outsideNear[2] = {(line[0] > 0.0) & (line[0] < cap), (line[1] > 0.0) & (line[1] < cap)};
+    const Mask4 any = outsideNear[0] | outsideNear[1];
+    if (any[0] | any[1] | any[2] | any[3]) {
+      Double4 farthest[2] = {-infinity, -infinity}, along[2] = {}, length[2] = {};
+      for (const Edge* edge = begin; edge != end; ++edge) {
+        const Edge& e = *edge;
+        // Line distance n·(p − a) and position along the edge u·(p − a), u = (−nz, nx).
+        const double radial = e.nx * (r - e.ax) - e.nz * e.az;
+        const double radialAlong = -e.nz * (r - e.ax) - e.nx * e.az;
+        for (int g = 0; g < 2; ++g) {
+          const Double4 d = radial + e.nz * z[g];
+          const Double4 a = radialAlong + e.nx * z[g];
+          const Mask4 farther = d > farthest[g];
+          farthest[g] = farther ? d : farthest[g];
+          along[g] = farther ? a : along[g];
+          length[g] = farther ? Double4{} + e.length : length[g];
+        }
+      }
+      for (int g = 0; g < 2; ++g) {
+        Double4 past = -along[g];
+        const Double4 beyond = along[g] - length[g];
+        past = beyond > past ? beyond : past;
+        past = past > 0.0 ? past : Double4{};
+        const Double4 d2 = farthest[g] * farthest[g] + past * past;
+        Double4 d;
+        for (int k = 0; k < 4; ++k) d[k] = std::sqrt(d2[k]);
+        line[g] = outsideNear[g] ? d : line[g];
+      }
     }
+    result[0] = line[0];
+    result[1] = line[1];
   }
-  for (int k = 0; k < kColumn; ++k) out[k] = line[k] < out[k] ? line[k] : out[k];
+  for (int g = 0; g < 2; ++g)
+    for (int k = 0; k < 4; ++k) out[4 * g + k] = result[g][k] < out[4 * g + k] ? result[g][k] : out[4 * g + k];
 }
 
 void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const {

@@ -202,7 +202,7 @@ class RegionWriter {
           const Coord sub(sx, sy, sz);
           if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
           // Wholly outside the region: nothing to do. Wholly inside: when adding, the flood
-          // fill sets its interior afterwards; when removing, each of its leaves is filled,
+          // fill sets its interior afterwards; when removing, one task fills its leaves,
           // with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
           if (psi > subReach || (psi < -subReach && !removing_)) continue;
