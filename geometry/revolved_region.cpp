@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace lathesim {
 
@@ -26,8 +28,7 @@ bool isSymmetricAboutAxis(const ConvexPolygon& polygon) {
 RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
   for (const ConvexPolygon& polygon : polygons) {
     const auto& v = polygon.vertices();
-    Piece piece;
-    piece.isArea = v.size() >= 3;
+    Piece piece{static_cast<int>(edges_.size()), 0, v.size() >= 3, false};
     // Across the axis the mirror image counts too, unless it is the polygon itself (a
     // bar's section): then measuring it again would only repeat the same numbers.
     piece.crossesAxis = polygon.lowerBound().x() < 0.0 && !isSymmetricAboutAxis(polygon);
@@ -38,9 +39,10 @@ RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
       const double length = d.norm();
       if (length == 0.0) continue;
       // Counter-clockwise vertices: the outward normal is the edge turned clockwise.
-      piece.edges.push_back({a.x(), a.y(), d.x(), d.y(), d.y() / length, -d.x() / length, 1.0 / (length * length)});
+      edges_.push_back({a.x(), a.y(), d.x(), d.y(), d.y() / length, -d.x() / length, 1.0 / (length * length), length});
     }
-    if (v.size() == 1) piece.edges.push_back({v[0].x(), v[0].y(), 0, 0, 0, 0, 0});
+    if (v.size() == 1) edges_.push_back({v[0].x(), v[0].y(), 0, 0, 0, 0, 0, 0});
+    piece.edgeCount = static_cast<int>(edges_.size()) - piece.firstEdge;
     if (pieces_.empty()) {
       lower_ = polygon.lowerBound();
       upper_ = polygon.upperBound();
@@ -48,21 +50,24 @@ RevolvedRegion::RevolvedRegion(const std::vector<ConvexPolygon>& polygons) {
       lower_ = lower_.cwiseMin(polygon.lowerBound());
       upper_ = upper_.cwiseMax(polygon.upperBound());
     }
-    pieces_.push_back(std::move(piece));
+    pieces_.push_back(piece);
   }
 }
 
-double RevolvedRegion::pieceDistance(const Piece& piece, double r, double z, double cap) {
+double RevolvedRegion::pieceDistance(const Edge* edges, const Piece& piece, double r, double z, double cap) {
+  const Edge* const begin = edges + piece.firstEdge;
+  const Edge* const end = begin + piece.edgeCount;
   const bool isArea = piece.isArea;
   if (isArea) {
     double maxLine = -std::numeric_limits<double>::infinity();
-    for (const Edge& e : piece.edges) maxLine = std::max(maxLine, e.nx * (r - e.ax) + e.nz * (z - e.az));
+    for (const Edge* e = begin; e != end; ++e) maxLine = std::max(maxLine, e->nx * (r - e->ax) + e->nz * (z - e->az));
     // Inside: exact. Outside but farther than cap from a supporting line: farther than cap
     // from the polygon too, so the exact search can be skipped.
     if (maxLine <= 0.0 || maxLine >= cap) return maxLine;
   }
   double best = std::numeric_limits<double>::infinity();
-  for (const Edge& e : piece.edges) {
+  for (const Edge* edge = begin; edge != end; ++edge) {
+    const Edge& e = *edge;
     const double px = r - e.ax, pz = z - e.az;
     const double t = std::clamp((px * e.dx + pz * e.dz) * e.inverseLengthSquared, 0.0, 1.0);
     const double qx = px - t * e.dx, qz = pz - t * e.dz;
@@ -74,8 +79,8 @@ double RevolvedRegion::pieceDistance(const Piece& piece, double r, double z, dou
 double RevolvedRegion::signedDistance(double rho, double z, double cap) const {
   double d = std::numeric_limits<double>::infinity();
   for (const Piece& piece : pieces_) {
-    d = std::min(d, pieceDistance(piece, rho, z, cap));
-    if (piece.crossesAxis) d = std::min(d, pieceDistance(piece, -rho, z, cap));
+    d = std::min(d, pieceDistance(edges_.data(), piece, rho, z, cap));
+    if (piece.crossesAxis) d = std::min(d, pieceDistance(edges_.data(), piece, -rho, z, cap));
   }
   return d;
 }
@@ -83,79 +88,144 @@ double RevolvedRegion::signedDistance(double rho, double z, double cap) const {
 // The hottest loop of a simulation: cloned for AVX2 where the processor has it (chosen at
 // load time), plain SSE2 elsewhere. Written with plain ternaries over fixed-size arrays so
 // that each k-loop becomes a few vector instructions.
+//
+// Outside a convex polygon the nearest point lies on the edge whose line is farthest out
+// (the normals of a convex polygon turn monotonically, so no other edge's line can beat
+// those of the feature the nearest point lies on). So where points lie outside and near,
+// a second pass over the edges finds, per point, that edge and the point's position along
+// it; the distance is its line distance, or past either end of the edge the distance to
+// that vertex: √(line² + past²).
 __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDistanceColumn(
-    const Piece& piece, double r, double z0, double dz, double cap, double (&out)[kColumn]) {
-  double line[kColumn];
-  double zOffset[kColumn];
-  for (int k = 0; k < kColumn; ++k) zOffset[k] = z0 + dz * k;
-  const bool isArea = piece.isArea;
-  for (int k = 0; k < kColumn; ++k) line[k] = isArea ? -std::numeric_limits<double>::infinity() : 0.0;
-  if (isArea)
-    for (const Edge& e : piece.edges) {
-      const double radial = e.nx * (r - e.ax) - e.nz * e.az;
-      for (int k = 0; k < kColumn; ++k) {
-        const double d = radial + e.nz * zOffset[k];
-        line[k] = d > line[k] ? d : line[k];
-      }
-    }
-  bool needsEdges = !isArea;
-  for (int k = 0; k < kColumn; ++k) needsEdges |= line[k] > 0.0 && line[k] < cap;
-  if (needsEdges) {
-    double best[kColumn];
-    for (int k = 0; k < kColumn; ++k) best[k] = std::numeric_limits<double>::infinity();
-    for (const Edge& e : piece.edges) {
+    const Edge* edges, const Piece& piece, double r, double z0, double dz, double cap, double (&out)[kColumn]) {
+  // Two groups of four points, in GCC vector types: one AVX2 register each in the AVX2
+  // clone, two SSE2 registers elsewhere.
+  using Double4 = double __attribute__((vector_size(32)));
+  static_assert(kColumn == 8);
+  const Edge* const begin = edges + piece.firstEdge;
+  const Edge* const end = begin + piece.edgeCount;
+  const Double4 z[2] = {Double4{0, 1, 2, 3} * dz + z0, Double4{4, 5, 6, 7} * dz + z0};
+  const Double4 infinity = Double4{} + std::numeric_limits<double>::infinity();
+  Double4 result[2];
+  if (!piece.isArea) {  // a point or a segment: the plain distance to its edges
+    Double4 best[2] = {infinity, infinity};
+    for (const Edge* edge = begin; edge != end; ++edge) {
+      const Edge& e = *edge;
       const double px = r - e.ax;
       const double radialDot = px * e.dx;
-      for (int k = 0; k < kColumn; ++k) {
-        const double pz = zOffset[k] - e.az;
-        double t = (radialDot + pz * e.dz) * e.inverseLengthSquared;
-        t = t < 0.0 ? 0.0 : t;
-        t = t > 1.0 ? 1.0 : t;
-        const double qx = px - t * e.dx, qz = pz - t * e.dz;
-        const double d2 = qx * qx + qz * qz;
-        best[k] = d2 < best[k] ? d2 : best[k];
+      for (int g = 0; g < 2; ++g) {
+        const Double4 pz = z[g] - e.az;
+        Double4 t = (radialDot + pz * e.dz) * e.inverseLengthSquared;
+        t = t < 0.0 ? Double4{} : t;
+        t = t > 1.0 ? Double4{} + 1.0 : t;
+        const Double4 qx = px - t * e.dx, qz = pz - t * e.dz;
+        const Double4 d2 = qx * qx + qz * qz;
+        best[g] = d2 < best[g] ? d2 : best[g];
       }
     }
-    for (int k = 0; k < kColumn; ++k) {
-      const bool outsideNear = !isArea || (line[k] > 0.0 && line[k] < cap);
-      line[k] = outsideNear ? std::sqrt(best[k]) : line[k];
+    for (int g = 0; g < 2; ++g)
+      for (int k = 0; k < 4; ++k) result[g][k] = std::sqrt(best[g][k]);
+  } else {
+    Double4 line[2] = {-infinity, -infinity};
+    for (const Edge* edge = begin; edge != end; ++edge) {
+      const Edge& e = *edge;
+      const double radial = e.nx * (r - e.ax) - e.nz * e.az;
+      for (int g = 0; g < 2; ++g) {
+        const Double4 d = radial + e.nz * z[g];
+        line[g] = d > line[g] ? d : line[g];
+      }
     }
+    // Inside, or farther than cap from a supporting line: the line distance is the answer
+    // (see signedDistance). Only points outside and near need the edges themselves.
+    using Mask4 = std::int64_t __attribute__((vector_size(32)));
+    const Mask4 outsideNear[2] = {(line[0] > 0.0) & (line[0] < cap), (line[1] > 0.0) & (line[1] < cap)};
+    const Mask4 any = outsideNear[0] | outsideNear[1];
+    if (any[0] | any[1] | any[2] | any[3]) {
+      Double4 farthest[2] = {-infinity, -infinity}, along[2] = {}, length[2] = {};
+      for (const Edge* edge = begin; edge != end; ++edge) {
+        const Edge& e = *edge;
+        // Line distance n·(p − a) and position along the edge u·(p − a), u = (−nz, nx).
+        const double radial = e.nx * (r - e.ax) - e.nz * e.az;
+        const double radialAlong = -e.nz * (r - e.ax) - e.nx * e.az;
+        for (int g = 0; g < 2; ++g) {
+          const Double4 d = radial + e.nz * z[g];
+          const Double4 a = radialAlong + e.nx * z[g];
+          const Mask4 farther = d > farthest[g];
+          farthest[g] = farther ? d : farthest[g];
+          along[g] = farther ? a : along[g];
+          length[g] = farther ? Double4{} + e.length : length[g];
+        }
+      }
+      for (int g = 0; g < 2; ++g) {
+        Double4 past = -along[g];
+        const Double4 beyond = along[g] - length[g];
+        past = beyond > past ? beyond : past;
+        past = past > 0.0 ? past : Double4{};
+        const Double4 d2 = farthest[g] * farthest[g] + past * past;
+        Double4 d;
+        for (int k = 0; k < 4; ++k) d[k] = std::sqrt(d2[k]);
+        line[g] = outsideNear[g] ? d : line[g];
+      }
+    }
+    result[0] = line[0];
+    result[1] = line[1];
   }
-  for (int k = 0; k < kColumn; ++k) out[k] = line[k] < out[k] ? line[k] : out[k];
+  for (int g = 0; g < 2; ++g)
+    for (int k = 0; k < 4; ++k) out[4 * g + k] = result[g][k] < out[4 * g + k] ? result[g][k] : out[4 * g + k];
 }
 
 void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const {
   for (double& v : out) v = std::numeric_limits<double>::infinity();
   for (const Piece& piece : pieces_) {
-    pieceDistanceColumn(piece, rho, z0, dz, cap, out);
-    if (piece.crossesAxis) pieceDistanceColumn(piece, -rho, z0, dz, cap, out);
+    pieceDistanceColumn(edges_.data(), piece, rho, z0, dz, cap, out);
+    if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, z0, dz, cap, out);
   }
 }
 
 RevolvedRegion RevolvedRegion::near(double rho, double z, double radius) const {
   RevolvedRegion subset;
+  nearInto(rho, z, radius, subset);
+  return subset;
+}
+
+void RevolvedRegion::nearInto(double rho, double z, double radius, RevolvedRegion& subset) const {
+  subset.edges_.clear();
+  subset.pieces_.clear();
   subset.lower_ = lower_;
   subset.upper_ = upper_;
-  for (const Piece& piece : pieces_) {
-    double d = pieceDistance(piece, rho, z, radius + 1.0);
-    if (piece.crossesAxis) d = std::min(d, pieceDistance(piece, -rho, z, radius + 1.0));
+  // Nearest pieces first: a column's later pieces then often cannot lower its values and
+  // skip their edge search (see pieceDistanceColumn).
+  std::pair<double, int> order[kMaxOrderedPieces];
+  int ordered = 0;
+  for (int p = 0; p < static_cast<int>(pieces_.size()); ++p) {
+    const Piece& piece = pieces_[p];
+    double d = pieceDistance(edges_.data(), piece, rho, z, radius + 1.0);
+    if (piece.crossesAxis) d = std::min(d, pieceDistance(edges_.data(), piece, -rho, z, radius + 1.0));
     if (d > radius) continue;
-    if (!piece.isArea || piece.crossesAxis) {
-      subset.pieces_.push_back(piece);
-      continue;
-    }
+    if (ordered < kMaxOrderedPieces) order[ordered++] = {d, p};
+    else appendNear(piece, rho, z, radius, subset);  // beyond the sorted few: kept in order
+  }
+  std::sort(order, order + ordered);
+  for (int i = 0; i < ordered; ++i) appendNear(pieces_[order[i].second], rho, z, radius, subset);
+}
+
+void RevolvedRegion::appendNear(const Piece& piece, double rho, double z, double radius, RevolvedRegion& subset) const {
+  const Edge* const begin = edges_.data() + piece.firstEdge;
+  const Edge* const end = begin + piece.edgeCount;
+  Piece kept{static_cast<int>(subset.edges_.size()), 0, piece.isArea, piece.crossesAxis};
+  if (!piece.isArea || piece.crossesAxis) {
+    subset.edges_.insert(subset.edges_.end(), begin, end);
+  } else {
     // Inside a convex polygon the distance is set by the edge line farthest out; outside,
     // the nearest point lies on that edge too (or on a vertex it shares). An edge whose line
     // is more than 2·radius behind the farthest one at the centre cannot become the
     // farthest anywhere within radius (each line distance changes by at most radius).
     double farthest = -std::numeric_limits<double>::infinity();
-    for (const Edge& e : piece.edges) farthest = std::max(farthest, e.nx * (rho - e.ax) + e.nz * (z - e.az));
-    Piece kept{{}, true, false};
-    for (const Edge& e : piece.edges)
-      if (e.nx * (rho - e.ax) + e.nz * (z - e.az) >= farthest - 2.0 * radius) kept.edges.push_back(e);
-    subset.pieces_.push_back(std::move(kept));
+    for (const Edge* e = begin; e != end; ++e) farthest = std::max(farthest, e->nx * (rho - e->ax) + e->nz * (z - e->az));
+    for (const Edge* e = begin; e != end; ++e)
+      if (e->nx * (rho - e->ax) + e->nz * (z - e->az) >= farthest - 2.0 * radius) subset.edges_.push_back(*e);
   }
-  return subset;
+  kept.edgeCount = static_cast<int>(subset.edges_.size()) - kept.firstEdge;
+  subset.pieces_.push_back(kept);
 }
 
 double RevolvedRegion::maxRadius() const { return std::max(std::abs(lower_.x()), std::abs(upper_.x())); }

@@ -35,6 +35,10 @@ class RevolvedRegion {
   /// gives the same values as the whole region wherever they are ≤ radius minus the
   /// distance to (ρ, z); a leaf's voxels are evaluated with it.
   RevolvedRegion near(double rho, double z, double radius) const;
+  /// The same as near(), written into `out`, whose memory is reused: for hot loops that
+  /// take a subset per leaf.
+  void nearInto(double rho, double z, double radius, RevolvedRegion& out) const;
+  RevolvedRegion() = default;  // empty: a place for nearInto to write
 
   RZ lowerBound() const { return lower_; }  // bounds of the polygons (r may be negative)
   RZ upperBound() const { return upper_; }
@@ -49,17 +53,22 @@ class RevolvedRegion {
     double dx, dz;      // edge vector
     double nx, nz;      // outward unit normal
     double inverseLengthSquared;
+    double length;
   };
   struct Piece {
-    std::vector<Edge> edges;
+    int firstEdge;     // its edges are edges_[firstEdge, firstEdge + edgeCount)
+    int edgeCount;
     bool isArea;       // a polygon with area (else a point or segment: plain distance)
     bool crossesAxis;  // its mirror image across the axis counts as well
   };
-  static double pieceDistance(const Piece& piece, double r, double z, double cap);
-  static void pieceDistanceColumn(const Piece& piece, double r, double z0, double dz, double cap,
+  static double pieceDistance(const Edge* edges, const Piece& piece, double r, double z, double cap);
+  static void pieceDistanceColumn(const Edge* edges, const Piece& piece, double r, double z0, double dz, double cap,
                                   double (&out)[kColumn]);
-  RevolvedRegion() = default;
 
+  void appendNear(const Piece& piece, double rho, double z, double radius, RevolvedRegion& subset) const;
+  static constexpr int kMaxOrderedPieces = 16;
+
+  std::vector<Edge> edges_;  // every piece's edges, piece after piece (flat, so that nearInto reuses memory)
   std::vector<Piece> pieces_;
   RZ lower_{0, 0};
   RZ upper_{0, 0};

@@ -24,12 +24,13 @@ echo
 echo "== simulate vs floor (Google Benchmark, mean of 3, same run)"
 build/lathesim_bench --benchmark_format=csv 2>/dev/null > "$tmp/bench.csv"
 awk -F, '
-  /^"BM_Floor\/[0-9]+\/iterations/    { split($1, a, "/"); floor[a[2]] = $3 }
-  /^"BM_Simulate\/[0-9]+\/iterations/ { split($1, a, "/"); sim[a[2]] = $3 }
+  /^"BM_Floor\/[0-9]+\/iterations/    { split($1, a, "/"); floor[a[2]] = $3; floorCpu[a[2]] = $4 }
+  /^"BM_Simulate\/[0-9]+\/iterations/ { split($1, a, "/"); sim[a[2]] = $3; simCpu[a[2]] = $4 }
   END {
     # simulate = building the bar + every cut + the final volume; the cuts alone are
-    # simulate minus one floor.
-    printf "%-9s %10s %12s %16s %14s\n", "voxel_mm", "floor_s", "simulate_s", "simulate/floor", "cuts/floor"
+    # simulate minus one floor. The ratio is of wall times; the last column is the same
+    # ratio of CPU time over all threads, steadier on a shared machine.
+    printf "%-9s %10s %12s %16s %14s %20s\n", "voxel_mm", "floor_s", "simulate_s", "simulate/floor", "cuts/floor", "cpu simulate/floor"
     for (um = 200; um >= 100; um -= 100)
-      printf "%-9s %10.3f %12.3f %16.2f %14.2f\n", um / 1000, floor[um], sim[um], sim[um] / floor[um], (sim[um] - floor[um]) / floor[um]
+      printf "%-9s %10.3f %12.3f %16.2f %14.2f %20.2f\n", um / 1000, floor[um], sim[um], sim[um] / floor[um], (sim[um] - floor[um]) / floor[um], simCpu[um] / floorCpu[um]
   }' "$tmp/bench.csv"

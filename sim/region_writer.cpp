@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "sim/stock_grid.hpp"
@@ -21,10 +23,68 @@ namespace {
 
 double squared(double v) { return v * v; }
 
+// What writing one column of a leaf needs besides the values and the distances.
+struct ColumnWrite {
+  double sign;           // u = sign·φ
+  double band;           // bg: u ≤ −band is as deep in the region's state as the band allows
+  double noChange;       // smaller decreases of u are rounding, not cuts
+  double inverseVoxel;
+  double voxel;          // a ghost candidate lies within a voxel of the boundary...
+  float notMaterial;     // ...and could count as material: notMaterial < φ < ghostCeiling
+  float ghostCeiling;
+};
+
+// u ← min(u, ψ) over one column of eight voxels (values[0…7], along Z), four at a time in
+// GCC vector types (one AVX2 register in the AVX2 clone, two SSE2 ones elsewhere), without
+// branches. Returns the material voxels lost; updates the column's bits of the active mask
+// and sets those of the ghost candidates (see clearGhostSheets).
+using Double4 = double __attribute__((vector_size(32)));
+using Float4 = float __attribute__((vector_size(16)));
+using Mask4 = std::int64_t __attribute__((vector_size(32)));  // lanes −1 (true) or 0
+
+int bitsOf(Mask4 m) { return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8)); }
+
+__attribute__((target_clones("avx2", "default"))) double writeColumn(const ColumnWrite& w, float* values,
+                                                                     const double* psi, std::uint8_t& activeBits,
+                                                                     std::uint8_t& ghostBits) {
+  double lost = 0.0;
+  int changedBits = 0, newActive = 0, newGhost = 0;
+  for (int half = 0; half < 2; ++half) {
+    Float4 stored4;
+    std::memcpy(&stored4, values + 4 * half, sizeof stored4);
+    Double4 p;
+    std::memcpy(&p, psi + 4 * half, sizeof p);
+    const Double4 old = __builtin_convertvector(stored4, Double4);
+    const Double4 uOld = w.sign * old;
+    const Mask4 open = uOld > -w.band;
+    const Mask4 change = open & (p < uOld - w.noChange);
+    const Double4 uNew = p > -w.band ? p : Double4{} - w.band;
+    stored4 = __builtin_convertvector(w.sign * (change ? uNew : uOld), Float4);  // unchanged: old exactly
+    std::memcpy(values + 4 * half, &stored4, sizeof stored4);
+    const Double4 value = __builtin_convertvector(stored4, Double4);
+    Double4 before = 0.5 - old * w.inverseVoxel, after = 0.5 - value * w.inverseVoxel;
+    before = before < 0.0 ? Double4{} : before > 1.0 ? Double4{} + 1.0 : before;
+    after = after < 0.0 ? Double4{} : after > 1.0 ? Double4{} + 1.0 : after;
+    const Double4 lost4 = before - after;
+    lost += (lost4[0] + lost4[1]) + (lost4[2] + lost4[3]);
+    const Mask4 active = (uNew < w.band) & (uNew > -w.band);
+    const Double4 distance = p < 0.0 ? -p : p;
+    const Mask4 ghost = open & (distance < w.voxel) & (value > w.notMaterial) & (value < w.ghostCeiling);
+    changedBits |= bitsOf(change) << (4 * half);
+    newActive |= bitsOf(active) << (4 * half);
+    newGhost |= bitsOf(ghost) << (4 * half);
+  }
+  activeBits = static_cast<std::uint8_t>((activeBits & ~changedBits) | (newActive & changedBits));
+  ghostBits = static_cast<std::uint8_t>(newGhost);
+  return lost;
+}
+
 enum class Action {
   Update,   // an existing leaf the region's boundary passes through
   Densify,  // a tile the region's boundary passes through: becomes a leaf first
   Fill,     // a leaf or tile the region covers entirely: becomes one tile
+  FillSub,  // a 32³ sub-block the region covers entirely, when removing: each of its leaves
+            // and tiles that holds material becomes an air tile
 };
 
 struct Task {
@@ -42,7 +102,10 @@ class RegionWriter {
       : stock_(stock), region_(region), h_(stock.voxel), bg_(stock.background),
         sign_(how == RegionWrite::Add ? 1.0 : -1.0), removing_(how == RegionWrite::Remove),
         leafReach_(0.5 * std::sqrt(3.0) * (kLeafDim - 1) * h_ + bg_),
-        blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_) {}
+        blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_),
+        // A change smaller than noChange is rounding between the stock's float values and the
+        // region's double distance (a tool running along a face it cut before), not a cut.
+        column_{sign_, bg_, 1e-5 * h_, 1.0 / h_, h_, notMaterial(), ghostCeiling()} {}
 
   double run() {
     std::vector<Task> tasks = classify();
@@ -139,19 +202,23 @@ class RegionWriter {
           const Coord sub(sx, sy, sz);
           if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
           // Wholly outside the region: nothing to do. Wholly inside: when adding, the flood
-          // fill sets its interior afterwards; when removing, each of its leaves is filled,
+          // fill sets its interior afterwards; when removing, one task fills its leaves,
           // with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
           if (psi > subReach || (psi < -subReach && !removing_)) continue;
+          if (psi < -subReach) {  // removing: its 64 leaf slots are filled in restructure()
+            tasks.push_back({sub, 1, Action::FillSub, nullptr, 0.0f, 0.0});
+            continue;
+          }
           // Within the sub-block only the pieces and edges near it matter.
           const RevolvedRegion local = near(sub, kSub, subReach + leafReach_ + h_);
-          classifyLeavesOf(local, sub, kSub, box, psi < -subReach, accessor, tasks);
+          classifyLeavesOf(local, sub, kSub, box, accessor, tasks);
         }
   }
 
   template <typename Accessor>
   void classifyLeavesOf(const RevolvedRegion& local, const Coord& block, int dim, const openvdb::CoordBBox& box,
-                        bool covered, Accessor& accessor, std::vector<Task>& tasks) const {
+                        Accessor& accessor, std::vector<Task>& tasks) const {
     const double rhoMax = region_.maxRadius() + leafReach_;
     const double rhoMin = region_.lowerBound().x() > 0.0 ? region_.lowerBound().x() - leafReach_ : -1.0;
     for (int x = block.x(); x < block.x() + dim; x += kLeafDim)
@@ -165,7 +232,7 @@ class RegionWriter {
         for (int z = block.z(); z < block.z() + dim; z += kLeafDim) {
           const Coord origin(x, y, z);
           if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
-          const double psi = covered ? -leafReach_ - 1.0 : distanceAtCentre(local, origin, kLeafDim, leafReach_ + h_);
+          const double psi = distanceAtCentre(local, origin, kLeafDim, leafReach_ + h_);
           if (psi > leafReach_) continue;
           Leaf* leaf = accessor.probeLeaf(origin);
           const float tile = leaf ? 0.0f : accessor.getValue(origin);
@@ -216,6 +283,7 @@ class RegionWriter {
         blocks.push_back({t, t + 1});
       else blocks.back().end = t + 1;
 
+    const openvdb::CoordBBox box = candidateBox();
     auto accessor = stock_.grid->getAccessor();
     const double filledFraction = insideFraction(filledValue(), h_);
     for (BlockTasks& block : blocks) {
@@ -232,7 +300,9 @@ class RegionWriter {
       }
     }
 
-    std::vector<std::vector<Leaf*>> leavesOf(blocks.size());
+    // First the fills and updates, then the new leaves: those a fill took out of the tree
+    // are used again for the leaves this write makes, rather than freed and allocated anew.
+    std::vector<std::vector<Leaf*>> leavesOf(blocks.size()), sparesOf(blocks.size());
     std::vector<double> lostOf(blocks.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size()), [&](const auto& range) {
       for (std::size_t b = range.begin(); b != range.end(); ++b) {
@@ -240,20 +310,42 @@ class RegionWriter {
         Node1& node = *blocks[b].node;
         for (std::size_t t = blocks[b].begin; t != blocks[b].end; ++t) {
           Task& task = tasks[t];
-          switch (task.action) {
-            case Action::Fill:
-              lostOf[b] += task.insideBefore - filledFraction * Leaf::NUM_VOXELS;
-              node.addTile(1, task.origin, filledValue(), false);
-              break;
-            case Action::Densify:
-              task.leaf = new Leaf(task.origin, task.tileValue, false);
-              node.addLeaf(task.leaf);  // the tree owns it from here
-              leavesOf[b].push_back(task.leaf);
-              break;
-            case Action::Update:
-              leavesOf[b].push_back(task.leaf);
-              break;
+          if (task.action == Action::Fill) {
+            lostOf[b] += task.insideBefore - filledFraction * Leaf::NUM_VOXELS;
+            if (Leaf* old = node.template stealNode<Leaf>(task.origin, filledValue(), false)) sparesOf[b].push_back(old);
+            else node.addTile(1, task.origin, filledValue(), false);
+          } else if (task.action == Action::FillSub) {
+            lostOf[b] += fillSubBlock(node, task.origin, box, sparesOf[b]);
+          } else if (task.action == Action::Update) {
+            leavesOf[b].push_back(task.leaf);
           }
+        }
+      }
+    });
+    std::vector<Leaf*> spares;
+    for (const auto& list : sparesOf) spares.insert(spares.end(), list.begin(), list.end());
+    for (Task& task : tasks)
+      if (task.action == Action::Densify && !spares.empty()) {
+        task.leaf = spares.back();
+        spares.pop_back();
+      }
+    for (Leaf* leaf : spares) delete leaf;  // more filled than made: not kept past this write
+
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size()), [&](const auto& range) {
+      for (std::size_t b = range.begin(); b != range.end(); ++b) {
+        if (!blocks[b].node) continue;
+        Node1& node = *blocks[b].node;
+        for (std::size_t t = blocks[b].begin; t != blocks[b].end; ++t) {
+          Task& task = tasks[t];
+          if (task.action != Action::Densify) continue;
+          if (task.leaf) {  // a filled leaf, made to look new
+            task.leaf->setOrigin(task.origin);
+            task.leaf->fill(task.tileValue, false);
+          } else {
+            task.leaf = new Leaf(task.origin, task.tileValue, false);
+          }
+          node.addLeaf(task.leaf);  // the tree owns it from here
+          leavesOf[b].push_back(task.leaf);
         }
       }
     });
@@ -265,20 +357,43 @@ class RegionWriter {
     return leaves;
   }
 
+  // The leaves and tiles of a covered 32³ sub-block that hold material become air tiles
+  // (within the candidate box, as classifyLeavesOf would have taken them); the leaves go
+  // to `spares`. Returns the material voxels lost.
+  double fillSubBlock(Node1& node, const Coord& sub, const openvdb::CoordBBox& box, std::vector<Leaf*>& spares) const {
+    constexpr int kSub = 4 * kLeafDim;
+    const double filledVoxels = insideFraction(filledValue(), h_) * Leaf::NUM_VOXELS;
+    double lost = 0.0;
+    for (int x = sub.x(); x < sub.x() + kSub; x += kLeafDim)
+      for (int y = sub.y(); y < sub.y() + kSub; y += kLeafDim)
+        for (int z = sub.z(); z < sub.z() + kSub; z += kLeafDim) {
+          const Coord origin(x, y, z);
+          if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
+          if (const Leaf* leaf = node.probeConstLeaf(origin)) {
+            lost += stock_.leafInsideVoxels(*leaf) - filledVoxels;
+            spares.push_back(node.template stealNode<Leaf>(origin, filledValue(), false));
+            continue;
+          }
+          const float tile = node.getTable()[Node1::coordToOffset(origin)].getValue();  // no leaf here: a tile
+          if (u(tile) <= -bg_) continue;  // already air
+          lost += insideFraction(tile, h_) * Leaf::NUM_VOXELS - filledVoxels;
+          node.addTile(1, origin, filledValue(), false);
+        }
+    return lost;
+  }
+
   // 3. u ← min(u, ψ) voxel by voxel (parallel: leaves are independent). Returns, per leaf,
   //    the material voxels lost, summed over the voxels that changed.
   std::vector<double> writeVoxels(const std::vector<Leaf*>& leaves) {
     ghostCandidates_.assign(leaves.size(), Leaf::NodeMaskType());
     std::vector<double> insideLost(leaves.size(), 0.0);
-    // A change smaller than this is rounding between the stock's float values and the
-    // region's double distance (a tool running along a face it cut before), not a cut.
-    const double noChange = 1e-5 * h_;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
+      RevolvedRegion local;  // each leaf's subset, in memory reused from leaf to leaf
       for (std::size_t l = range.begin(); l != range.end(); ++l) {
         Leaf& leaf = *leaves[l];
         const Coord o = leaf.origin();
-        const RevolvedRegion local = region_.near(std::sqrt(squared((o.x() + 3.5) * h_) + squared((o.y() + 3.5) * h_)),
-                                                  (o.z() + 3.5) * h_, leafReach_);
+        region_.nearInto(std::sqrt(squared((o.x() + 3.5) * h_) + squared((o.y() + 3.5) * h_)), (o.z() + 3.5) * h_,
+                         leafReach_, local);
         if (local.empty()) continue;
         float* values = leaf.buffer().data();  // written in place: the loop is the hot path
         auto& activeMask = leaf.getValueMask();
@@ -292,21 +407,9 @@ class RegionWriter {
             if (!anyOpen) continue;
             double psi[RevolvedRegion::kColumn];
             local.signedDistanceColumn(std::sqrt(x * x + squared((o.y() + j) * h_)), o.z() * h_, h_, bg_, psi);
-            for (int k = 0; k < kLeafDim; ++k) {
-              const openvdb::Index n = column + k;
-              const float old = values[n];
-              if (u(old) <= -bg_) continue;
-              float value = old;
-              if (psi[k] < u(old) - noChange) {
-                const double uNew = std::max(psi[k], -static_cast<double>(bg_));
-                value = static_cast<float>(sign_ * uNew);
-                values[n] = value;
-                activeMask.set(n, std::abs(uNew) < bg_);
-                lost += insideFraction(old, h_) - insideFraction(value, h_);
-              }
-              // A ghost lies on this region's boundary (see clearGhostSheets).
-              if (std::abs(psi[k]) < h_ && value > notMaterial() && value < ghostCeiling()) ghostCandidates_[l].setOn(n);
-            }
+            // A column's eight voxels are one byte of the leaf's masks (LeafNode<float, 3>).
+            lost += writeColumn(column_, values + column, psi, activeMask.template getWord<std::uint8_t>(column >> 3),
+                                ghostCandidates_[l].template getWord<std::uint8_t>(column >> 3));
           }
         }
         insideLost[l] = lost;
@@ -409,6 +512,7 @@ class RegionWriter {
   const bool removing_;
   const double leafReach_;   // a leaf whose centre is farther than this from the boundary is untouched
   const double blockReach_;  // the same for a 128³ block
+  const ColumnWrite column_;
   double insideLostTotal_ = 0.0;
   std::vector<Leaf::NodeMaskType> ghostCandidates_;  // per leaf: voxels within a voxel of the boundary that could count
 };

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <mutex>
 
 #include "sim/stock_grid.hpp"
@@ -83,16 +84,29 @@ StockGrid::StockGrid(const StockSpec& s, double voxelMm)
 int StockGrid::toIndexFloor(double mm) const { return static_cast<int>(std::floor(mm / voxel)); }
 int StockGrid::toIndexCeil(double mm) const { return static_cast<int>(std::ceil(mm / voxel)); }
 
+namespace {
+
+// Σ clamp(½ − φ/h, 0, 1) over a leaf's 512 values, eight lanes at a time (one AVX2
+// register in the AVX2 clone, two SSE2 ones elsewhere).
+__attribute__((target_clones("avx2", "default"))) float insideVoxelsOf(const float* values, float inverseVoxel) {
+  using Float8 = float __attribute__((vector_size(32)));
+  Float8 sum{};  // each lane at most 64: exact enough in float
+  for (openvdb::Index n = 0; n < Leaf::NUM_VALUES; n += 8) {
+    Float8 v;
+    std::memcpy(&v, values + n, sizeof v);
+    Float8 fraction = 0.5f - v * inverseVoxel;
+    fraction = fraction < 0.0f ? Float8{} : fraction;
+    fraction = fraction > 1.0f ? Float8{} + 1.0f : fraction;
+    sum += fraction;
+  }
+  return ((sum[0] + sum[1]) + (sum[2] + sum[3])) + ((sum[4] + sum[5]) + (sum[6] + sum[7]));
+}
+
+}  // namespace
+
 double StockGrid::leafInsideVoxels(const Leaf& leaf) const {
   // Straight over the buffer: value iterators cost several times the arithmetic here.
-  const float* values = leaf.buffer().data();
-  const float inverseVoxel = static_cast<float>(1.0 / voxel);
-  float sum = 0.0f;  // at most 512, exact enough in float
-  for (openvdb::Index n = 0; n < Leaf::NUM_VALUES; ++n) {
-    const float fraction = 0.5f - values[n] * inverseVoxel;
-    sum += fraction < 0.0f ? 0.0f : fraction > 1.0f ? 1.0f : fraction;
-  }
-  return sum;
+  return insideVoxelsOf(leaf.buffer().data(), static_cast<float>(1.0 / voxel));
 }
 
 Stock::Stock(const StockSpec& spec, double voxelMm) : impl_(std::make_unique<StockGrid>(spec, voxelMm)) {
