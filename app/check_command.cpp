@@ -2,6 +2,7 @@
 // deviation.hpp for how), attribute each gouge to the moves that cut it, and write the run's
 // files plus the deviation pictures and report.json's "check" section.
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -11,6 +12,7 @@
 #include "app/gouge_causes.hpp"
 #include "app/process_figures.hpp"
 #include "app/run_pipeline.hpp"
+#include "render/deviation_image.hpp"
 
 namespace lathesim::app {
 namespace {
@@ -107,6 +109,63 @@ void printSummary(const CheckOptions& options, const DeviationReport& d) {
   std::cout << "  outputs in " << options.run.out.string() << "/\n";
 }
 
+/// Each mesh vertex's deviation: the drawing's signed distance at its (r, z), as for the
+/// part's surface samples (the vertex lies on the part's surface).
+std::vector<float> vertexDeviations(const TriangleMesh& part, const MeridianProfile& drawing) {
+  std::vector<float> deviations;
+  deviations.reserve(part.vertices.size());
+  for (const Eigen::Vector3f& v : part.vertices) {
+    const RZ p(std::hypot(static_cast<double>(v.x()), static_cast<double>(v.y())), v.z());
+    deviations.push_back(static_cast<float>(drawing.signedDistance(p).signedMm));
+  }
+  return deviations;
+}
+
+std::string regionLabel(const DeviationRegion& r) {
+  std::string text = (r.gouge ? "gouge " : "excess ") + fixed(r.maxMm, 3) + " mm\n" + where(r.at);
+  if (r.gouge && !r.lines.empty()) {
+    text += r.lines.size() == 1 ? ", line" : ", lines";
+    for (std::size_t n = 0; n < r.lines.size() && n < 6; ++n) text += (n ? ", " : " ") + std::to_string(r.lines[n]);
+  }
+  return text;
+}
+
+constexpr std::size_t kLabelledRegions = 4;
+
+render::SectionImage sectionImage(const std::string& title, const SampledSection& section, const MeridianProfile& part,
+                                  const MeridianProfile& drawing, const DeviationReport& d) {
+  render::SectionImage image;
+  image.title = title;
+  image.drawing = drawing.surface();
+  image.part = part.surface();
+  image.cellMm = section.stepMm;
+  for (int k = 0; k < section.zCount; ++k)
+    for (int i = 0; i < section.rCount; ++i) {
+      const RZ p(i * section.stepMm, section.zFirstMm + k * section.stepMm);
+      const bool inPart = section.at(i, k) < 0, inDrawing = drawing.contains(p);
+      if (inPart && !inDrawing) image.excessCells.push_back(p);
+      if (inDrawing && !inPart) image.gougeCells.push_back(p);
+    }
+  for (std::size_t n = 0; n < d.regions.size() && n < kLabelledRegions; ++n)
+    image.labels.push_back({d.regions[n].at, regionLabel(d.regions[n]), d.regions[n].gouge});
+  return image;
+}
+
+void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
+                          const MeridianProfile& part, const MeridianProfile& drawing, const DeviationReport& d,
+                          StagedOutput& out) {
+  const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
+  render::DeviationImageOptions image;
+  image.title = options.run.program.string() + " against " + target;
+  image.toleranceMm = d.toleranceMm;
+  image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
+                  " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
+  render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing), image, out.stage("deviation.png"));
+  render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d);
+  half.caption = image.caption;
+  render::writeSectionImagePng(half, out.stage("section.png"));
+}
+
 }  // namespace
 
 int checkCommand(const CheckOptions& options) {
@@ -135,6 +194,8 @@ int checkCommand(const CheckOptions& options) {
   meshPart(*run, clock);
   StagedOutput out(options.run.out);
   stageRunFiles(*run, out, clock);
+  stageDeviationImages(options, run->part, section, part, *drawing, deviation, out);
+  run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);
   report["check"] = checkJson(options, deviation, process, checkS);

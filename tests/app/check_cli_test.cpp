@@ -62,8 +62,11 @@ TEST(CheckSeed001, CorrectTaperPassesAtTwoVoxels) {
   EXPECT_LT(run.check.at("max_gouge_mm").get<double>(), kVoxelMm / 2);
   EXPECT_EQ(run.check.at("regions"), nlohmann::json::array());
   // The same output files as `run`, and the two deviation pictures.
-  for (const char* name : {"part.stl", "part.png", "toolpath.csv", "toolpath.vtp", "stock.vdb", "report.json"})
-    EXPECT_TRUE(fs::exists(dir.path() / "out" / name)) << name;
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "out")) names.insert(entry.path().filename().string());
+  const std::set<std::string> expected{"part.stl",  "part.png",    "toolpath.csv",  "toolpath.vtp",
+                                       "stock.vdb", "report.json", "deviation.png", "section.png"};
+  EXPECT_EQ(names, expected);
 }
 
 // the cut line runs from B (r 27, Z-20) to C (r 15, Z0), slope 12/20 in r per Z, so it
