@@ -2,6 +2,7 @@
 // deviation.hpp for how), attribute each gouge to the moves that cut it, and write the run's
 // files plus the deviation pictures and report.json's "check" section.
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -12,7 +13,9 @@
 #include "app/gouge_causes.hpp"
 #include "app/process_figures.hpp"
 #include "app/run_pipeline.hpp"
+#include "geometry/mesh_slice.hpp"
 #include "render/deviation_image.hpp"
+#include "render/stl_reader.hpp"
 
 namespace lathesim::app {
 namespace {
@@ -25,6 +28,33 @@ std::optional<MeridianProfile> loadProfile(const std::filesystem::path& file) {
   for (const auto& d : drawing.diagnostics) std::cerr << interp::format(d) << '\n';
   if (!drawing.outline) return std::nullopt;
   return MeridianProfile::fromPolygon(std::move(*drawing.outline));
+}
+
+/// The drawing's outline from an STL of the design: its section in the meridian half-plane.
+std::optional<MeridianProfile> loadStl(const std::filesystem::path& file) {
+  render::StlRead read = render::readStl(file);
+  if (!read.mesh) {
+    std::cerr << file.string() << ": error: " << read.problem << '\n';
+    return std::nullopt;
+  }
+  std::vector<Segment> slice = meridianSlice(*read.mesh);
+  if (slice.empty()) {
+    std::cerr << file.string() << ": error: the design does not cross the half-plane y = 0, x ≥ 0; a turned part's "
+              << "STL must have its axis along Z through the origin\n";
+    return std::nullopt;
+  }
+  return MeridianProfile::fromSurface(std::move(slice));
+}
+
+bool isStl(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".stl";
+}
+
+std::string targetKind(const CheckOptions& options) {
+  if (!options.drawing) return "program";
+  return isStl(*options.drawing) ? "stl" : "profile";
 }
 
 /// The part another program makes with the same setup and voxel, or nullopt (diagnostics printed).
@@ -42,7 +72,7 @@ Json place(const RZ& p) { return {{"z", p.y()}, {"diameter", diameterOf(p)}}; }
 Json checkJson(const CheckOptions& options, const DeviationReport& d, const ProcessFigures& p, double checkS) {
   Json check;
   check["target"] = options.drawing ? options.drawing->string() : options.targetProgram->string();
-  check["target_kind"] = options.drawing ? "profile" : "program";
+  check["target_kind"] = targetKind(options);
   check["tolerance_mm"] = d.toleranceMm;
   check["within_tolerance"] = d.withinTolerance();
   check["max_excess_mm"] = d.maxExcessMm;
@@ -91,10 +121,10 @@ void printSummary(const CheckOptions& options, const DeviationReport& d) {
   std::cout << options.run.program.string() << " against " << target << ": "
             << (d.withinTolerance() ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm\n";
   std::cout << "  max excess " << fixed(d.maxExcessMm, 3) << " mm";
-  if (d.maxExcessMm > 0) std::cout << " at " << where(d.maxExcessAt);
+  if (d.maxExcessMm >= 0.0005) std::cout << " at " << where(d.maxExcessAt);
   std::cout << ", excess volume " << fixed(d.excessVolumeMm3, 1) << " mm³\n";
   std::cout << "  max gouge " << fixed(d.maxGougeMm, 3) << " mm";
-  if (d.maxGougeMm > 0) std::cout << " at " << where(d.maxGougeAt);
+  if (d.maxGougeMm >= 0.0005) std::cout << " at " << where(d.maxGougeAt);
   std::cout << ", gouge volume " << fixed(d.gougeVolumeMm3, 1) << " mm³\n";
   for (const auto& r : d.regions) {
     std::cout << "  " << (r.gouge ? "gouge " : "excess ") << fixed(r.maxMm, 3) << " mm at " << where(r.at) << " (Z"
@@ -174,7 +204,8 @@ int checkCommand(const CheckOptions& options) {
     return 1;
   }
   std::optional<MeridianProfile> drawing;
-  if (options.drawing && !(drawing = loadProfile(*options.drawing))) return 1;  // before the long part
+  if (options.drawing && !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing)))
+    return 1;  // before the long part
   Stopwatch clock;
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock);
   if (!run) return 1;

@@ -29,7 +29,7 @@ int runCommand(const RunOptions& options);
 /// What `check` compares the part with: exactly one of the three.
 struct CheckOptions {
   RunOptions run;
-  std::optional<std::filesystem::path> drawing;        // --target: a profile (.toml) or an STL
+  std::optional<std::filesystem::path> drawing;        // --target: a profile (.toml) or an STL (.stl)
   std::optional<std::filesystem::path> targetProgram;  // --target-program: simulated with the same setup
   std::optional<double> toleranceMm;                   // default: two voxels
 };

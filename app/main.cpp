@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
       "check", "simulate a program and measure the part against its drawing; exit 3 if out of tolerance");
   checkCmd->add_option("program", check.run.program, "the G-code program")->required()->check(CLI::ExistingFile);
   checkCmd->add_option("--setup", checkSetup, "setup file (TOML): stock, machine, tools");
-  auto* checkTarget = checkCmd->add_option("--target", check.drawing, "the drawing: a profile (.toml)")
+  auto* checkTarget = checkCmd->add_option("--target", check.drawing, "the drawing: a profile (.toml) or an STL of the design (.stl)")
                           ->check(CLI::ExistingFile);
   checkCmd->add_option("--target-program", check.targetProgram, "a program whose part is the drawing (same setup)")
       ->check(CLI::ExistingFile)

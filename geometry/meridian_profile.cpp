@@ -38,7 +38,14 @@ MeridianProfile MeridianProfile::fromPolygon(std::vector<RZ> points) {
     const bool onAxis = std::abs(a.x()) <= kAxisMm && std::abs(b.x()) <= kAxisMm;
     if (!onAxis && a != b) profile.surface_.push_back({a, b});
   }
-  profile.polygon_ = std::move(points);
+  profile.indexSurface();
+  return profile;
+}
+
+MeridianProfile MeridianProfile::fromSurface(std::vector<Segment> surface) {
+  MeridianProfile profile;
+  for (Segment& s : surface)
+    if (!(std::abs(s.a.x()) <= kAxisMm && std::abs(s.b.x()) <= kAxisMm) && s.a != s.b) profile.surface_.push_back(s);
   profile.indexSurface();
   return profile;
 }
@@ -131,13 +138,13 @@ bool MeridianProfile::contains(const RZ& p) const {
     const auto value = interpolatedPhi(p, false);
     return value && *value < 0;
   }
-  // Crossing number over the closed polygon (axis edges included: they close it).
+  // Crossing number along the ray from p away from the axis (+r): the axis edges that close
+  // the outline lie behind it, so the surface alone decides. (Every segment is tested: the
+  // bins would save little for the few hundred edges of a drawing.)
   bool inside = false;
-  for (std::size_t i = 0, j = polygon_.size() - 1; i < polygon_.size(); j = i++) {
-    const RZ& a = polygon_[i];
-    const RZ& b = polygon_[j];
-    if ((a.y() > p.y()) != (b.y() > p.y())) {
-      const double rAtZ = a.x() + (p.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+  for (const Segment& s : surface_) {
+    if ((s.a.y() > p.y()) != (s.b.y() > p.y())) {
+      const double rAtZ = s.a.x() + (p.y() - s.a.y()) / (s.b.y() - s.a.y()) * (s.b.x() - s.a.x());
       if (p.x() < rAtZ) inside = !inside;
     }
   }

@@ -43,6 +43,10 @@ class MeridianProfile {
   /// the axis: (0, z of the first point) before it and (0, z of the last point) after it.
   static MeridianProfile fromPolygon(std::vector<RZ> points);
 
+  /// The region bounded by `surface` (and the axis), e.g. a mesh's meridianSlice: a point
+  /// is inside when a ray from it away from the axis crosses the surface an odd number of times.
+  static MeridianProfile fromSurface(std::vector<Segment> surface);
+
   /// The region φ < 0 of a sampled section; inside/outside between samples by bilinear
   /// interpolation, the surface by marching squares over the linear zero crossings.
   static MeridianProfile fromSection(SampledSection section);
@@ -68,7 +72,6 @@ class MeridianProfile {
   void indexSurface();
   std::optional<double> interpolatedPhi(const RZ& p, bool withinBandOnly) const;
 
-  std::vector<RZ> polygon_;                // fromPolygon: the closed outline
   std::optional<SampledSection> section_;  // fromSection: the samples
   std::vector<Segment> surface_;
   RZ lower_{0, 0}, upper_{0, 0};

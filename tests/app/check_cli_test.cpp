@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 
+#include "tests/render/test_meshes.hpp"
 #include "tests/support/lathesim_process.hpp"
 
 namespace lathesim::app {
@@ -115,6 +118,47 @@ TEST(CheckSeed001, AgainstAnotherProgramsPart) {
   EXPECT_EQ(run.check.at("target_kind"), "program");
   EXPECT_NEAR(run.check.at("max_excess_mm").get<double>(), 2 * std::sqrt(5.0) / 3, kVoxelMm / 2);
   EXPECT_NEAR(run.check.at("excess_volume_mm3").get<double>(), 6500 * M_PI / 9, 78);
+}
+
+/// A binary STL of `mesh` (normals left zero: readers recompute them).
+void writeStl(const TriangleMesh& mesh, const fs::path& file) {
+  std::ofstream out(file, std::ios::binary);
+  const std::string header(80, ' ');
+  out.write(header.data(), 80);
+  const auto count = static_cast<std::uint32_t>(mesh.triangles.size());
+  out.write(reinterpret_cast<const char*>(&count), 4);
+  for (const auto& t : mesh.triangles) {
+    const float normal[3] = {0, 0, 0};
+    out.write(reinterpret_cast<const char*>(normal), 12);
+    for (std::uint32_t v : t) out.write(reinterpret_cast<const char*>(mesh.vertices[v].data()), 12);
+    const std::uint16_t attributes = 0;
+    out.write(reinterpret_cast<const char*>(&attributes), 2);
+  }
+}
+
+// The drawing as an STL of the design: seed 001's profile revolved with 180 facets around,
+// one ring of vertices in the plane y = 0, so its section is the drawn profile itself and the
+// figures are those above.
+TEST(CheckSeed001, AgainstAnStlOfTheDesign) {
+  ScratchDir dir("check-stl");
+  const fs::path design = dir.path() / "design.stl";
+  writeStl(render::test::revolved({{0, 0}, {15, 0}, {25, -20}, {25, -60}, {0, -60}}, 180), design);
+  const CheckRun wrong = check(dir, seed001("r20") + std::vector<std::string>{"--target", design.string(), "--tol", "0.5"});
+  ASSERT_EQ(wrong.outcome.status, 3) << wrong.outcome.out << wrong.outcome.err;
+  EXPECT_EQ(wrong.check.at("target_kind"), "stl");
+  EXPECT_NEAR(wrong.check.at("max_excess_mm").get<double>(), 2 * std::sqrt(5.0) / 3, kVoxelMm / 2);
+  EXPECT_NEAR(wrong.check.at("excess_volume_mm3").get<double>(), 6500 * M_PI / 9, 78);
+  const CheckRun right = check(dir, seed001("r24") + std::vector<std::string>{"--target", design.string(), "--tol", "0.5"});
+  EXPECT_EQ(right.outcome.status, 0) << right.outcome.out << right.outcome.err;
+}
+
+TEST(CheckCommand, AnStlThatIsNotOneIsAnError) {
+  ScratchDir dir("check-bad-stl");
+  test::writeFile(dir.path() / "design.stl", "this is not an STL");
+  const CheckRun run = check(dir, seed001("r24") + std::vector<std::string>{"--target", (dir.path() / "design.stl").string()});
+  EXPECT_EQ(run.outcome.status, 1);
+  EXPECT_NE(run.outcome.err.find("design.stl: error: not an STL file with triangles"), std::string::npos)
+      << run.outcome.err;
 }
 
 // A Φ50 × 40 bar (face Z0). Drawn: Φ40 from Z0 to Z-30, a shoulder, Φ50 to Z-40. The program
