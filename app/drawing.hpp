@@ -15,7 +15,9 @@
 //                                #   or center = [x diameter, z] instead of radius
 //
 // The outline is closed via the axis: from (0, z of the last point) back to (0, z of the
-// first point). See README.md "Checking a part against its drawing".
+// first point) — unless the last row repeats the first, which closes it as given: a bored
+// part, whose section does not reach the axis. See README.md "Checking a part against its
+// drawing".
 
 #include <filesystem>
 #include <optional>

@@ -28,7 +28,9 @@ RZ crossing(const RZ& a, float phiA, const RZ& b, float phiB) {
 
 MeridianProfile MeridianProfile::fromPolygon(std::vector<RZ> points) {
   MeridianProfile profile;
-  if (!points.empty()) {
+  if (points.size() > 2 && points.front() == points.back()) {
+    points.pop_back();
+  } else if (!points.empty()) {
     if (std::abs(points.front().x()) > kAxisMm) points.insert(points.begin(), RZ(0.0, points.front().y()));
     if (std::abs(points.back().x()) > kAxisMm) points.push_back(RZ(0.0, points.back().y()));
   }

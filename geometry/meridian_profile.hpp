@@ -39,8 +39,10 @@ struct SurfaceDistance {
 
 class MeridianProfile {
  public:
-  /// A simple polygon (any orientation). If it starts or ends off the axis it is closed via
-  /// the axis: (0, z of the first point) before it and (0, z of the last point) after it.
+  /// A simple polygon (any orientation). If it ends where it starts it is closed as given (a
+  /// bored part, whose section does not reach the axis); otherwise, if it starts or ends off
+  /// the axis, it is closed via the axis: (0, z of the first point) before it and (0, z of
+  /// the last point) after it.
   static MeridianProfile fromPolygon(std::vector<RZ> points);
 
   /// The region bounded by `surface` (and the axis), e.g. a mesh's meridianSlice: a point

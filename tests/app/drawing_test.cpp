@@ -64,6 +64,14 @@ TEST(Drawing, NegativeRadiusIsTheLongerArc) {
   EXPECT_NEAR(length, 1.5 * M_PI * 10, 1e-3);
 }
 
+TEST(Drawing, LastRowRepeatingTheFirstClosesTheOutline) {
+  const DrawingResult r = parseDrawing(
+      "profile = [{x = 20, z = 0}, {x = 50, z = 0}, {x = 50, z = -30}, {x = 20, z = -30}, {x = 20, z = 0}]\n", "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  ASSERT_EQ(r.outline->size(), 5u);
+  EXPECT_EQ(r.outline->front(), r.outline->back());
+}
+
 struct BadDrawing {
   std::string text;
   int line;

@@ -29,6 +29,17 @@ TEST(MeridianProfile, PolygonIsClosedViaTheAxisButTheAxisIsNoSurface) {
   EXPECT_NEAR(2 * d.nearest.x() + d.nearest.y() - 30, 0.0, 1e-12);
 }
 
+// A bored part: Φ50 outside, Φ20 bore, Z-30..0; the outline ends where it starts, so it is
+// closed as given and the bore (r 10) is a surface, the axis inside the bore is air.
+TEST(MeridianProfile, OutlineEndingWhereItStartsIsABoredPart) {
+  const MeridianProfile ring = MeridianProfile::fromPolygon({{10, 0}, {25, 0}, {25, -30}, {10, -30}, {10, 0}});
+  EXPECT_EQ(ring.surface().size(), 4u);
+  EXPECT_FALSE(ring.contains({5, -15}));
+  EXPECT_TRUE(ring.contains({15, -15}));
+  EXPECT_NEAR(ring.signedDistance({5, -15}).signedMm, 5.0, 1e-12);
+  EXPECT_NEAR(ring.signedDistance({12, -15}).signedMm, -2.0, 1e-12);
+}
+
 /// φ of the rectangle r ≤ 10, −5 ≤ z ≤ 5 (exact signed distance), sampled every `h` from
 /// z = −8, clamped at ±3h as a narrow band is.
 SampledSection rectangleSection(double h) {
