@@ -98,9 +98,15 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
     }
   }
   for (const Segment& s : drawing.surface()) {
+    // A drawing that is itself a section (--target-program) is sampled at its vertices only,
+    // like the part: its chords are not its surface.
     const int steps = std::max(1, static_cast<int>(std::ceil((s.b - s.a).norm() / (h / 2))));
-    for (int n = 0; n < steps; ++n) {  // each segment's end is the next one's start
-      const RZ q = s.a + (s.b - s.a) * (static_cast<double>(n) / steps);
+    std::vector<RZ> points{s.a, s.b};
+    if (!drawing.fromSamples()) {  // each segment's end is the next one's start
+      points.clear();
+      for (int n = 0; n < steps; ++n) points.push_back(s.a + (s.b - s.a) * (static_cast<double>(n) / steps));
+    }
+    for (const RZ& q : points) {
       const SurfaceDistance d = part.signedDistance(q);
       report.samples.push_back({q, d.nearest, -d.signedMm, false});
     }

@@ -13,7 +13,8 @@
 //    which cut sharp corners), the drawing's signed distance d_T(p): p outside
 //    the drawing means material reaches d_T(p) beyond it (excess), inside means the part's
 //    surface lies |d_T(p)| below the drawn one (gouge). Measured normal to the drawing;
-//  - at each point q of the drawing's surface (sampled every half voxel), minus the part's
+//  - at each point q of the drawing's surface (sampled every half voxel; a drawing that is
+//    another program's section at its vertices, as the part), minus the part's
 //    signed distance −d_S(q) (φ interpolated where it is inside the band, so a drawn corner
 //    that the part has too reads under h/4, not the chord's h/√2): the drawn surface buried
 //    |d_S| deep in material (excess) or

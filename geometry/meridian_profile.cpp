@@ -127,12 +127,15 @@ std::optional<double> MeridianProfile::interpolatedPhi(const RZ& p, bool withinB
   const int k = static_cast<int>(std::floor(w));
   if (i < 0 || k < 0 || i + 1 >= s.rCount || k + 1 >= s.zCount) return std::nullopt;
   const float corners[4] = {s.at(i, k), s.at(i + 1, k), s.at(i + 1, k + 1), s.at(i, k + 1)};
-  if (withinBandOnly)
-    for (float c : corners)
-      if (std::abs(c) >= 0.999 * s.clampMm) return std::nullopt;
   const double fu = u - i, fw = w - k;
-  return (1 - fu) * (1 - fw) * corners[0] + fu * (1 - fw) * corners[1] + fu * fw * corners[2] +
-         (1 - fu) * fw * corners[3];
+  const double weights[4] = {(1 - fu) * (1 - fw), fu * (1 - fw), fu * fw, (1 - fu) * fw};
+  double value = 0;
+  for (int c = 0; c < 4; ++c) {
+    if (weights[c] < 1e-9) continue;  // on a grid line or a sample: only the samples it lies between count
+    if (withinBandOnly && std::abs(corners[c]) >= 0.999 * s.clampMm) return std::nullopt;
+    value += weights[c] * corners[c];
+  }
+  return value;
 }
 
 bool MeridianProfile::contains(const RZ& p) const {

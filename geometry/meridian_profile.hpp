@@ -55,6 +55,10 @@ class MeridianProfile {
 
   const std::vector<Segment>& surface() const { return surface_; }
 
+  /// True for a section: only the surface's vertices lie on the true surface; the chords
+  /// between them cut its corners.
+  bool fromSamples() const { return section_.has_value(); }
+
   bool contains(const RZ& p) const;
 
   /// Distance to the surface, negative when p is inside the region. With no surface at all
