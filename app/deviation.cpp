@@ -94,7 +94,7 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
   for (const Segment& s : part.surface()) {
     for (const RZ& p : {s.a, s.b}) {
       const SurfaceDistance d = drawing.signedDistance(p);
-      report.samples.push_back({p, d.nearest, d.signedMm, true});
+      report.samples.push_back({p, d.nearest, d.signedMm});
     }
   }
   for (const Segment& s : drawing.surface()) {
@@ -108,7 +108,7 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
     }
     for (const RZ& q : points) {
       const SurfaceDistance d = part.signedDistance(q);
-      report.samples.push_back({q, d.nearest, -d.signedMm, false});
+      report.samples.push_back({q, d.nearest, -d.signedMm});
     }
   }
   for (const DeviationSample& s : report.samples) {

@@ -34,10 +34,9 @@
 namespace lathesim::app {
 
 struct DeviationSample {
-  RZ at{0, 0};       // on the part's surface (onPart) or on the drawing's
+  RZ at{0, 0};       // on the part's surface or on the drawing's
   RZ nearest{0, 0};  // the nearest point of the other surface
   double mm = 0;     // > 0 excess, < 0 gouge
-  bool onPart = true;
 };
 
 struct DeviationRegion {
