@@ -29,6 +29,18 @@ struct RunOptions {
 
 int runCommand(const RunOptions& options);
 
+/// What `check` compares the part with: exactly one of the three.
+struct CheckOptions {
+  RunOptions run;
+  std::optional<std::filesystem::path> drawing;        // --target: a profile (.toml) or an STL (.stl)
+  std::optional<std::filesystem::path> targetProgram;  // --target-program: simulated with the same setup
+  std::optional<double> toleranceMm;                   // default: two voxels
+};
+
+/// Exit status 0 when every deviation is within the tolerance, 3 when not, 1 on bad input.
+int checkCommand(const CheckOptions& options);
+inline constexpr int kExitOutOfTolerance = 3;
+
 int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
                   std::optional<interp::Dialect> dialect = std::nullopt);
 

@@ -19,6 +19,21 @@ int main(int argc, char** argv) {
   runCmd->add_option("--out", run.out, "output folder")->capture_default_str();
   runCmd->add_option("--voxel", run.voxelMm, "voxel size in mm (overrides [sim] voxel)");  // checked with the stock
 
+  lathesim::app::CheckOptions check;
+  std::string checkSetup;
+  auto* checkCmd = cli.add_subcommand(
+      "check", "simulate a program and measure the part against its drawing; exit 3 if out of tolerance");
+  checkCmd->add_option("program", check.run.program, "the G-code program")->required()->check(CLI::ExistingFile);
+  checkCmd->add_option("--setup", checkSetup, "setup file (TOML): stock, machine, tools");
+  auto* checkTarget = checkCmd->add_option("--target", check.drawing, "the drawing: a profile (.toml) or an STL of the design (.stl)")
+                          ->check(CLI::ExistingFile);
+  checkCmd->add_option("--target-program", check.targetProgram, "a program whose part is the drawing (same setup)")
+      ->check(CLI::ExistingFile)
+      ->excludes(checkTarget);
+  checkCmd->add_option("--tol", check.toleranceMm, "tolerance in mm (default: two voxels)");
+  checkCmd->add_option("--out", check.run.out, "output folder")->capture_default_str();
+  checkCmd->add_option("--voxel", check.run.voxelMm, "voxel size in mm (overrides [sim] voxel)");
+
   std::filesystem::path expandProgram;
   std::string expandSetup;
   auto* expandCmd = cli.add_subcommand("expand", "print the toolpath as CSV; simulates nothing");
@@ -44,6 +59,14 @@ int main(int argc, char** argv) {
       run.setup = optionalPath(runSetup);
       run.dialect = optionalDialect(runDialect);
       return lathesim::app::runCommand(run);
+    }
+    if (*checkCmd) {
+      if (!check.drawing && !check.targetProgram) {
+        std::cerr << "lathesim check: give the drawing with --target or --target-program\n";
+        return 1;
+      }
+      check.run.setup = optionalPath(checkSetup);
+      return lathesim::app::checkCommand(check);
     }
     return lathesim::app::expandCommand(expandProgram, optionalPath(expandSetup), optionalDialect(expandDialect));
   } catch (const std::exception& e) {  // I/O failures and broken invariants

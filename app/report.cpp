@@ -6,7 +6,7 @@
 
 namespace lathesim::app {
 
-void writeReportJson(const RunFigures& f, const std::filesystem::path& file) {
+nlohmann::ordered_json reportJson(const RunFigures& f) {
   nlohmann::ordered_json report;
   report["program"] = f.program;
   report["setup"] = f.setup;
@@ -31,6 +31,12 @@ void writeReportJson(const RunFigures& f, const std::filesystem::path& file) {
                         {"simulate", f.timing.simulateS},
                         {"mesh", f.timing.meshS},
                         {"render", f.timing.renderS}};
+  return report;
+}
+
+void writeReportJson(const RunFigures& f, const std::filesystem::path& file) { writeJson(reportJson(f), file); }
+
+void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file) {
   std::ofstream out(file);
   out << report.dump(2) << '\n';
   if (!out) throw std::runtime_error("cannot write " + file.string());

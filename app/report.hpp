@@ -2,6 +2,7 @@
 // report.json: what a run measured, for people and for other tools.
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "interp/diagnostic.hpp"
@@ -30,6 +31,10 @@ struct RunFigures {
   RunTimings timing;
 };
 
+/// The report as JSON, for commands that add their own section (check adds "check").
+nlohmann::ordered_json reportJson(const RunFigures& figures);
+
 void writeReportJson(const RunFigures& figures, const std::filesystem::path& file);
+void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file);
 
 }  // namespace lathesim::app

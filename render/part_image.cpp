@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -12,11 +10,8 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkFloatArray.h>
-#include <vtkIdTypeArray.h>
 #include <vtkLightKit.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -26,12 +21,11 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
-#include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include "render/move_points.hpp"
 #include "render/offscreen_display.hpp"
+#include "render/vtk_scene.hpp"
 
 namespace lathesim::render {
 namespace {
@@ -41,49 +35,6 @@ constexpr std::array<double, 3> kFeedColour{0.05, 0.25, 0.95};
 constexpr std::array<double, 3> kRapidColour{0.90, 0.08, 0.08};
 constexpr std::array<double, 3> kMetalColour{0.74, 0.76, 0.79};
 constexpr double kLineWidthPx = 2.0;
-// The camera turns this far about the vertical (X) axis from square-on, towards +Z, so the
-// end face shows. Turning about X keeps the spindle axis horizontal, and with a parallel
-// projection the toolpath plane (y = 0) projects onto the part's top silhouette exactly.
-constexpr double kAzimuthDeg = 22.0;
-
-/// The mesh as VTK polydata, copied in bulk (meshes have millions of triangles).
-vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh) {
-  vtkNew<vtkFloatArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertices.size()));
-  float* xyz = coordinates->GetPointer(0);
-  for (const Eigen::Vector3f& v : mesh.vertices) {
-    *xyz++ = v.x();
-    *xyz++ = v.y();
-    *xyz++ = v.z();
-  }
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-
-  const auto triangleCount = static_cast<vtkIdType>(mesh.triangles.size());
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(triangleCount + 1);
-  for (vtkIdType i = 0; i <= triangleCount; ++i) offsets->SetValue(i, 3 * i);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(3 * triangleCount);
-  vtkIdType* ids = connectivity->GetPointer(0);
-  for (const auto& t : mesh.triangles) {
-    for (std::uint32_t index : t) {
-      if (index >= mesh.vertices.size()) {
-        throw std::runtime_error("part mesh: triangle refers to vertex " + std::to_string(index) +
-                                 " of " + std::to_string(mesh.vertices.size()));
-      }
-      *ids++ = static_cast<vtkIdType>(index);
-    }
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-
-  auto polyData = vtkSmartPointer<vtkPolyData>::New();
-  polyData->SetPoints(points);
-  polyData->SetPolys(polys);
-  return polyData;
-}
 
 /// The toolpath as lines at (radius, 0, Z): feeds whole, arcs as chords, rapids cut into
 /// dashes of `dashMm` with gaps of half that (core-profile OpenGL has no line stipple).
@@ -126,63 +77,6 @@ vtkSmartPointer<vtkPolyData> toolpathLines(const interp::Toolpath& toolpath, dou
   return polyData;
 }
 
-/// The view: looking at the XZ plane from +Y, turned towards +Z by kAzimuthDeg, X up.
-struct View {
-  Eigen::Vector3d towardsViewer, up, right;
-};
-View makeView() {
-  const double a = kAzimuthDeg * M_PI / 180.0;
-  View v;
-  v.towardsViewer = Eigen::Vector3d(0.0, std::cos(a), std::sin(a));
-  v.up = Eigen::Vector3d(1.0, 0.0, 0.0);
-  v.right = v.up.cross(v.towardsViewer);  // (0, −sin, cos): +Z to the right
-  return v;
-}
-
-/// Extent of everything drawn, along the view's axes (mm).
-struct Extent {
-  double minRight = std::numeric_limits<double>::infinity(), maxRight = -minRight;
-  double minUp = minRight, maxUp = -minRight;
-  double minDepth = minRight, maxDepth = -minRight;
-  bool empty() const { return !(minRight <= maxRight); }
-  void include(const View& view, const Eigen::Vector3d& p) {
-    const double r = p.dot(view.right), u = p.dot(view.up), d = p.dot(view.towardsViewer);
-    minRight = std::min(minRight, r), maxRight = std::max(maxRight, r);
-    minUp = std::min(minUp, u), maxUp = std::max(maxUp, u);
-    minDepth = std::min(minDepth, d), maxDepth = std::max(maxDepth, d);
-  }
-};
-
-/// Parallel camera on `view`, framing `e` tightly (5 % margin) in a viewport of
-/// `aspect` = width / height. Parallel projection keeps the profile true to scale.
-void frame(vtkCamera* camera, const View& view, const Extent& e, double aspect) {
-  const Eigen::Vector3d centre = view.right * ((e.minRight + e.maxRight) / 2) +
-                                 view.up * ((e.minUp + e.maxUp) / 2) +
-                                 view.towardsViewer * ((e.minDepth + e.maxDepth) / 2);
-  const double halfWidth = std::max((e.maxRight - e.minRight) / 2, 1e-3);
-  const double halfHeight = std::max((e.maxUp - e.minUp) / 2, 1e-3);
-  const double depth = std::max({e.maxDepth - e.minDepth, halfWidth, halfHeight, 1.0});
-
-  camera->ParallelProjectionOn();
-  camera->SetFocalPoint(centre.data());
-  const Eigen::Vector3d eye = centre + view.towardsViewer * (2.0 * depth);
-  camera->SetPosition(eye.data());
-  camera->SetViewUp(view.up.data());
-  camera->SetParallelScale(1.05 * std::max(halfHeight, halfWidth / aspect));
-  camera->SetClippingRange(0.5 * depth, 3.5 * depth);
-}
-
-vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx,
-                                const std::array<double, 3>& colour) {
-  vtkNew<vtkTextActor> actor;
-  actor->SetInput(text.c_str());
-  vtkTextProperty* p = actor->GetTextProperty();
-  p->SetFontSize(fontPx);
-  p->SetFontFamilyToArial();
-  p->SetColor(colour[0], colour[1], colour[2]);
-  return actor;
-}
-
 }  // namespace
 
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,
@@ -195,7 +89,7 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   // Before any VTK window exists: without a reachable X server VTK aborts the process.
   ensureDisplay();
 
-  const View view = makeView();
+  const View view = partView();
   Extent extent;
   for (const Eigen::Vector3f& v : part.vertices) extent.include(view, v.cast<double>());
   for (const interp::Move& m : toolpath.moves)
@@ -278,27 +172,8 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   window->SetMultiSamples(0);  // FXAA instead: MSAA buffers are slow under llvmpipe
   window->AddRenderer(scene);
   window->AddRenderer(overlay);
-  window->Render();
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  // Encoded in memory and written here, so a bad path gives our message, not VTK's
-  // ("Ran out of disk space") on stderr.
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->WriteToMemoryOn();
-  writer->Write();
-  vtkUnsignedCharArray* bytes = writer->GetResult();
-  if (bytes == nullptr || bytes->GetNumberOfValues() == 0) {
-    throw std::runtime_error("cannot encode the part image as PNG");
-  }
-  std::ofstream out(png, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(bytes->GetPointer(0)),
-            static_cast<std::streamsize>(bytes->GetNumberOfValues()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + png.string());
+  writeWindowPng(window, png);
 }
 
 }  // namespace lathesim::render

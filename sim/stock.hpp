@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/meridian_profile.hpp"
 #include "geometry/revolved_region.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock_spec.hpp"
@@ -58,6 +59,10 @@ class Stock {
   /// Closed surface at φ = 0, outward normals. adaptivity 0 keeps every voxel's facets;
   /// larger values (up to 1) merge facets on flat and gently curved areas.
   TriangleMesh mesh(double adaptivity) const;
+
+  /// φ in the meridian plane y = 0, x ≥ 0, at every voxel centre over the bar's extent and
+  /// a band's width beyond (see stock_outline.cpp).
+  SampledSection meridianSection() const;
 
   /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock".
   void writeVdb(const std::filesystem::path& file) const;

@@ -1,0 +1,88 @@
+#include "app/run_pipeline.hpp"
+
+#include <sys/resource.h>
+
+#include <fstream>
+#include <iostream>
+
+#include "app/collision_checks.hpp"
+#include "interp/cycle_time.hpp"
+#include "interp/toolpath_csv.hpp"
+#include "render/mesh_files.hpp"
+#include "render/part_image.hpp"
+#include "sim/simulate.hpp"
+
+namespace lathesim::app {
+
+sim::ToolOutlines outlinesOf(const Setup& setup) {
+  sim::ToolOutlines tools;
+  for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
+  return tools;
+}
+
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
+  std::optional<Job> job = loadJob(options.program, options.setup, options.dialect);
+  if (!job) return std::nullopt;
+  SimulatedRun run;
+  run.job = std::move(*job);
+  RunFigures& figures = run.figures;
+  figures.timing.parseS = clock.lap();
+
+  const Setup& setup = run.job.setup;
+  const double voxel = options.voxelMm.value_or(setup.voxelMm.value_or(kDefaultVoxelMm));
+  if (const auto problem = sim::gridProblem(setup.stock, voxel)) {
+    std::cerr << "lathesim: error: " << *problem << '\n';
+    return std::nullopt;
+  }
+  figures.program = options.program.string();
+  figures.setup = setup.sourceName;
+  figures.voxelMm = voxel;
+  figures.moves = run.job.toolpath.moves.size();
+  figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
+  figures.warnings = run.job.warnings;
+
+  run.progress = std::make_unique<Progress>(figures.program);
+  run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
+  figures.stockVolumeMm3 = run.stock->volumeMm3();
+  const sim::CollisionChecks checks = collisionChecksOf(setup);  // holders and the chuck
+  figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
+                                     [&](int done, int total) { run.progress->update(done, total); }, &checks);
+  figures.finalVolumeMm3 = run.stock->volumeMm3();
+  figures.timing.simulateS = clock.lap();
+  for (const auto& w : figures.simulation.warnings) {
+    figures.warnings.push_back(run.job.warningAt(w.line, w.column, w.message));
+    std::cerr << interp::format(figures.warnings.back()) << '\n';
+  }
+  return run;
+}
+
+void meshPart(SimulatedRun& run, Stopwatch& clock) {
+  run.progress->stage("meshing");
+  run.part = run.stock->mesh(kExportAdaptivity);
+  run.figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
+  run.figures.meshTriangles = run.part.triangles.size();
+  run.figures.timing.meshS = clock.lap();
+}
+
+void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
+  run.progress->stage("writing STL, VDB and the render");
+  render::writeBinaryStl(run.part, out.stage("part.stl"));
+  {
+    std::ofstream csv(out.stage("toolpath.csv"));
+    interp::writeToolpathCsv(run.job.toolpath, csv);
+  }
+  render::writeToolpathVtp(run.job.toolpath, out.stage("toolpath.vtp"));
+  run.stock->writeVdb(out.stage("stock.vdb"));
+  render::PartImageOptions image;
+  image.title = run.figures.program;
+  render::writePartImagePng(run.part, run.job.toolpath, image, out.stage("part.png"));
+  run.figures.timing.renderS = clock.lap();
+}
+
+double peakMemoryMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB
+}
+
+}  // namespace lathesim::app

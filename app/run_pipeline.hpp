@@ -1,0 +1,55 @@
+#pragma once
+// The steps `run` and `check` share: load and simulate a program, mesh the part, and stage
+// the run's output files (part.stl, toolpath.csv, toolpath.vtp, stock.vdb, part.png).
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+#include "app/commands.hpp"
+#include "app/job.hpp"
+#include "app/progress.hpp"
+#include "app/report.hpp"
+#include "app/staged_output.hpp"
+#include "geometry/triangle_mesh.hpp"
+#include "sim/stock.hpp"
+
+namespace lathesim::app {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+struct SimulatedRun {
+  Job job;
+  std::unique_ptr<sim::Stock> stock;
+  std::unique_ptr<Progress> progress;
+  RunFigures figures;  // parse and simulate filled; mesh and render by the later steps
+  TriangleMesh part;   // empty until meshPart
+};
+
+sim::ToolOutlines outlinesOf(const Setup& setup);
+
+/// Reads the setup and program, checks the grid and simulates (progress on a terminal).
+/// Bad input: the diagnostics are printed and nullopt returned.
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock);
+
+/// Meshes the final stock into run.part (figures: mesh volume, triangles, time).
+void meshPart(SimulatedRun& run, Stopwatch& clock);
+
+/// Stages the run's files into `out`, and times them as rendering.
+void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock);
+
+/// This process's peak resident memory so far (MB; an Xvfb it started is not counted).
+double peakMemoryMb();
+
+}  // namespace lathesim::app

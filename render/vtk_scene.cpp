@@ -1,0 +1,128 @@
+// The VTK pieces the pictures share (see vtk_scene.hpp).
+
+#include "render/vtk_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPNGWriter.h>
+#include <vtkPoints.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+namespace lathesim::render {
+namespace {
+
+// The camera turns this far about the vertical (X) axis from square-on, towards +Z, so the
+// end face shows. Turning about X keeps the spindle axis horizontal, and with a parallel
+// projection the toolpath plane (y = 0) projects onto the part's top silhouette exactly.
+constexpr double kAzimuthDeg = 22.0;
+
+}  // namespace
+
+/// The mesh as VTK polydata, copied in bulk (meshes have millions of triangles).
+vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh) {
+  vtkNew<vtkFloatArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertices.size()));
+  float* xyz = coordinates->GetPointer(0);
+  for (const Eigen::Vector3f& v : mesh.vertices) {
+    *xyz++ = v.x();
+    *xyz++ = v.y();
+    *xyz++ = v.z();
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+
+  const auto triangleCount = static_cast<vtkIdType>(mesh.triangles.size());
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(triangleCount + 1);
+  for (vtkIdType i = 0; i <= triangleCount; ++i) offsets->SetValue(i, 3 * i);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(3 * triangleCount);
+  vtkIdType* ids = connectivity->GetPointer(0);
+  for (const auto& t : mesh.triangles) {
+    for (std::uint32_t index : t) {
+      if (index >= mesh.vertices.size()) {
+        throw std::runtime_error("part mesh: triangle refers to vertex " + std::to_string(index) +
+                                 " of " + std::to_string(mesh.vertices.size()));
+      }
+      *ids++ = static_cast<vtkIdType>(index);
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetPolys(polys);
+  return polyData;
+}
+
+View partView() {
+  const double a = kAzimuthDeg * M_PI / 180.0;
+  View v;
+  v.towardsViewer = Eigen::Vector3d(0.0, std::cos(a), std::sin(a));
+  v.up = Eigen::Vector3d(1.0, 0.0, 0.0);
+  v.right = v.up.cross(v.towardsViewer);  // (0, −sin, cos): +Z to the right
+  return v;
+}
+
+void frame(vtkCamera* camera, const View& view, const Extent& e, double aspect) {
+  const Eigen::Vector3d centre = view.right * ((e.minRight + e.maxRight) / 2) +
+                                 view.up * ((e.minUp + e.maxUp) / 2) +
+                                 view.towardsViewer * ((e.minDepth + e.maxDepth) / 2);
+  const double halfWidth = std::max((e.maxRight - e.minRight) / 2, 1e-3);
+  const double halfHeight = std::max((e.maxUp - e.minUp) / 2, 1e-3);
+  const double depth = std::max({e.maxDepth - e.minDepth, halfWidth, halfHeight, 1.0});
+
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(centre.data());
+  const Eigen::Vector3d eye = centre + view.towardsViewer * (2.0 * depth);
+  camera->SetPosition(eye.data());
+  camera->SetViewUp(view.up.data());
+  camera->SetParallelScale(1.05 * std::max(halfHeight, halfWidth / aspect));
+  camera->SetClippingRange(0.5 * depth, 3.5 * depth);
+}
+
+vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx,
+                                const std::array<double, 3>& colour) {
+  vtkNew<vtkTextActor> actor;
+  actor->SetInput(text.c_str());
+  vtkTextProperty* p = actor->GetTextProperty();
+  p->SetFontSize(fontPx);
+  p->SetFontFamilyToArial();
+  p->SetColor(colour[0], colour[1], colour[2]);
+  return actor;
+}
+
+void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png) {
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  // Encoded in memory and written here, so a bad path gives our message, not VTK's
+  // ("Ran out of disk space") on stderr.
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->WriteToMemoryOn();
+  writer->Write();
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (bytes == nullptr || bytes->GetNumberOfValues() == 0) {
+    throw std::runtime_error("cannot encode the image as PNG");
+  }
+  std::ofstream out(png, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+            static_cast<std::streamsize>(bytes->GetNumberOfValues()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + png.string());
+}
+
+}  // namespace lathesim::render

@@ -1,0 +1,55 @@
+#pragma once
+// Inside render only: the VTK pieces the pictures share — the mesh as polydata, the view of
+// a turned part (spindle axis across, end face showing), its framing, and corner text.
+
+#include <array>
+#include <filesystem>
+#include <limits>
+#include <string>
+
+#include <Eigen/Core>
+#include <vtkCamera.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+
+#include "geometry/triangle_mesh.hpp"
+
+namespace lathesim::render {
+
+/// The mesh as VTK polydata, copied in bulk (meshes have millions of triangles).
+vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);
+
+/// The view: looking at the XZ plane from +Y, turned towards +Z by an azimuth, X up.
+struct View {
+  Eigen::Vector3d towardsViewer, up, right;
+};
+View partView();
+
+/// Extent of everything drawn, along the view's axes (mm).
+struct Extent {
+  double minRight = std::numeric_limits<double>::infinity(), maxRight = -minRight;
+  double minUp = minRight, maxUp = -minRight;
+  double minDepth = minRight, maxDepth = -minRight;
+  bool empty() const { return !(minRight <= maxRight); }
+  void include(const View& view, const Eigen::Vector3d& p) {
+    const double r = p.dot(view.right), u = p.dot(view.up), d = p.dot(view.towardsViewer);
+    minRight = std::min(minRight, r), maxRight = std::max(maxRight, r);
+    minUp = std::min(minUp, u), maxUp = std::max(maxUp, u);
+    minDepth = std::min(minDepth, d), maxDepth = std::max(maxDepth, d);
+  }
+};
+
+/// Parallel camera on `view`, framing `e` tightly (5 % margin) in a viewport of
+/// `aspect` = width / height. Parallel projection keeps the profile true to scale.
+void frame(vtkCamera* camera, const View& view, const Extent& e, double aspect);
+
+vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx, const std::array<double, 3>& colour);
+
+/// Renders `window` (off-screen, already sized and populated) and writes it as a PNG.
+/// Throws std::runtime_error if it cannot be encoded or written.
+void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png);
+
+}  // namespace lathesim::render

@@ -1,0 +1,80 @@
+#pragma once
+// Running the lathesim command as a process from a test, in a temporary folder of its own.
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace lathesim::test {
+
+namespace fs = std::filesystem;
+
+inline std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+inline void writeFile(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+/// A fresh folder under the system's temporary directory, removed with everything in it.
+class ScratchDir {
+ public:
+  explicit ScratchDir(const std::string& tag) {
+    static int counter = 0;
+    path_ = fs::temp_directory_path() /
+            ("lathesim-" + tag + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+struct ProcessOutcome {
+  int status = -1;  // the exit status, or -1 if the process did not exit normally
+  std::string out;
+  std::string err;
+};
+
+/// Runs `binary` with `args`, capturing stdout and stderr through files in `scratch`.
+inline ProcessOutcome runProcess(const fs::path& binary, const std::vector<std::string>& args, const fs::path& scratch) {
+  const auto quoted = [](const std::string& arg) {
+    std::string q = "'";
+    for (char c : arg) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
+  const fs::path outFile = scratch / "stdout.txt";
+  const fs::path errFile = scratch / "stderr.txt";
+  std::string command = quoted(binary.string());
+  for (const auto& arg : args) command.append(" ").append(quoted(arg));
+  command.append(" >").append(quoted(outFile.string())).append(" 2>").append(quoted(errFile.string()));
+  const int raw = std::system(command.c_str());
+  ProcessOutcome outcome;
+  if (raw != -1 && WIFEXITED(raw)) outcome.status = WEXITSTATUS(raw);
+  outcome.out = readFile(outFile);
+  outcome.err = readFile(errFile);
+  fs::remove(outFile);
+  fs::remove(errFile);
+  return outcome;
+}
+
+}  // namespace lathesim::test
