@@ -4,12 +4,14 @@
 #include <fstream>
 #include <iostream>
 
+#include "app/at_line.hpp"
 #include "app/collision_checks.hpp"
 #include "app/commands.hpp"
 #include "app/job.hpp"
 #include "app/progress.hpp"
 #include "app/report.hpp"
 #include "app/staged_output.hpp"
+#include "app/tool_picture.hpp"
 #include "interp/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
@@ -44,7 +46,8 @@ int runCommand(const RunOptions& options) {
   Stopwatch clock;
   RunFigures figures;
   std::optional<Job> job = loadJob(options.program, options.setup, options.dialect);
-  if (!job) return 1;
+  if (!job || !cutAtLine(options.atLine, *job)) return 1;
+  figures.atLine = options.atLine;
   figures.timing.parseS = clock.lap();
 
   const double voxel = options.voxelMm.value_or(job->setup.voxelMm.value_or(kDefaultVoxelMm));
@@ -89,6 +92,7 @@ int runCommand(const RunOptions& options) {
   stock.writeVdb(out.stage("stock.vdb"));
   render::PartImageOptions image;
   image.title = figures.program;
+  image.tool = toolPictureAtEnd(job->setup, job->toolpath);
   render::writePartImagePng(part, job->toolpath, image, out.stage("part.png"));
   figures.timing.renderS = clock.lap();
   rusage usage{};

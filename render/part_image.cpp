@@ -32,6 +32,7 @@
 
 #include "render/move_points.hpp"
 #include "render/offscreen_display.hpp"
+#include "render/tool_actor.hpp"
 
 namespace lathesim::render {
 namespace {
@@ -45,6 +46,9 @@ constexpr double kLineWidthPx = 2.0;
 // end face shows. Turning about X keeps the spindle axis horizontal, and with a parallel
 // projection the toolpath plane (y = 0) projects onto the part's top silhouette exactly.
 constexpr double kAzimuthDeg = 22.0;
+// The tool's slabs are this thick, as a fraction of the picture's diagonal (mm): enough to
+// read as solid, thin enough to stay in the meridian plane.
+constexpr double kToolThicknessPerSize = 0.012;
 
 /// The mesh as VTK polydata, copied in bulk (meshes have millions of triangles).
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh) {
@@ -200,6 +204,13 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   for (const Eigen::Vector3f& v : part.vertices) extent.include(view, v.cast<double>());
   for (const interp::Move& m : toolpath.moves)
     for (const RZ& p : movePoints(m)) extent.include(view, Eigen::Vector3d(p.x(), 0.0, p.y()));
+  // The insert is framed; a long holder shank may run out of the picture.
+  if (options.tool) {
+    for (const RZ& p : options.tool->insert) {
+      const RZ at = options.tool->position + p;
+      extent.include(view, Eigen::Vector3d(at.x(), 0.0, at.y()));
+    }
+  }
   if (extent.empty()) extent.include(view, Eigen::Vector3d::Zero());
   const double sizeMm = std::hypot(extent.maxRight - extent.minRight, extent.maxUp - extent.minUp);
 
@@ -235,6 +246,11 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
     metal->SetSpecular(0.45);
     metal->SetSpecularPower(40.0);
     scene->AddActor(actor);
+  }
+
+  if (options.tool) {
+    for (const auto& actor : toolActors(*options.tool, std::max(sizeMm * kToolThicknessPerSize, 0.2)))
+      scene->AddActor(actor);
   }
 
   // The toolpath lies in the part's meridian plane, mostly inside or on the part; it is drawn
