@@ -438,6 +438,23 @@ TEST(Cli, AtLineSimulatesOnlyUpToThatLine) {
   }
 }
 
+// parts/m98-grooves calls O0200 (lines 9–11) three times. Line 10 (the retract) first runs
+// after the rapid on line 4 and the first plunge on line 9, so --at-line 10 keeps 3 moves and
+// one groove: the Φ40 × 50 bar less the annulus r 16..20, 3 wide:
+// π·20²·50 − 3·π·(20² − 16²) = 20000π − 432π = 19568π mm³. The tool stands at X44 Z-10.
+TEST(Cli, AtLineOfASubprogramStopsAfterItsFirstRun) {
+  TempDir dir("at-line-m98");
+  const fs::path part = kPartsDir / "m98-grooves";
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(),
+                                    "--out", out.string(), "--voxel", "0.25", "--at-line", "10"},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
+  EXPECT_EQ(r.at("moves"), 3);
+  EXPECT_NEAR(r.at("final_volume_mm3").get<double>(), 19568.0 * M_PI, volumeToleranceMm3(40.0, 50.0, 0.25));
+}
+
 TEST(Cli, AtLineThatDoesNotExistOrMakesNoMoveIsNamedAndWritesNothing) {
   TempDir dir("at-line-bad");
   const fs::path out = dir.path() / "out";
