@@ -25,6 +25,7 @@ struct RunOptions {
   std::filesystem::path out = "out";
   std::optional<double> voxelMm;
   std::optional<interp::Dialect> dialect;  // overrides [machine] dialect
+  std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
 };
 
 int runCommand(const RunOptions& options);

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("--setup", runSetup, "setup file (TOML): stock, machine, tools");
   runCmd->add_option("--out", run.out, "output folder")->capture_default_str();
   runCmd->add_option("--voxel", run.voxelMm, "voxel size in mm (overrides [sim] voxel)");  // checked with the stock
+  runCmd->add_option("--at-line", run.atLine, "simulate only up to the moves of this source line; show the part then");
 
   lathesim::app::CheckOptions check;
   std::string checkSetup;

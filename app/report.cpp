@@ -11,6 +11,7 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   report["program"] = f.program;
   report["setup"] = f.setup;
   report["voxel_mm"] = f.voxelMm;
+  if (f.atLine) report["at_line"] = *f.atLine;
   report["stock_volume_mm3"] = f.stockVolumeMm3;
   report["final_volume_mm3"] = f.finalVolumeMm3;
   report["removed_volume_mm3"] = f.stockVolumeMm3 - f.finalVolumeMm3;

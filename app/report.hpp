@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "interp/diagnostic.hpp"
@@ -19,6 +20,7 @@ struct RunFigures {
   std::string program;
   std::string setup;
   double voxelMm = 0;
+  std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
   double finalVolumeMm3 = 0;  // measured on the level set after the program
   double meshVolumeMm3 = 0;   // the exported mesh's enclosed volume, as a cross-check

@@ -5,7 +5,9 @@
 #include <fstream>
 #include <iostream>
 
+#include "app/at_line.hpp"
 #include "app/collision_checks.hpp"
+#include "app/tool_picture.hpp"
 #include "interp/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
@@ -22,10 +24,11 @@ sim::ToolOutlines outlinesOf(const Setup& setup) {
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
   std::optional<Job> job = loadJob(options.program, options.setup, options.dialect);
-  if (!job) return std::nullopt;
+  if (!job || !cutAtLine(options.atLine, *job)) return std::nullopt;
   SimulatedRun run;
   run.job = std::move(*job);
   RunFigures& figures = run.figures;
+  figures.atLine = options.atLine;
   figures.timing.parseS = clock.lap();
 
   const Setup& setup = run.job.setup;
@@ -75,6 +78,7 @@ void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   run.stock->writeVdb(out.stage("stock.vdb"));
   render::PartImageOptions image;
   image.title = run.figures.program;
+  image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);
   render::writePartImagePng(run.part, run.job.toolpath, image, out.stage("part.png"));
   run.figures.timing.renderS = clock.lap();
 }

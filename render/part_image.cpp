@@ -26,6 +26,7 @@
 #include "render/move_points.hpp"
 #include "render/offscreen_display.hpp"
 #include "render/vtk_scene.hpp"
+#include "render/tool_actor.hpp"
 
 namespace lathesim::render {
 namespace {
@@ -35,6 +36,9 @@ constexpr std::array<double, 3> kFeedColour{0.05, 0.25, 0.95};
 constexpr std::array<double, 3> kRapidColour{0.90, 0.08, 0.08};
 constexpr std::array<double, 3> kMetalColour{0.74, 0.76, 0.79};
 constexpr double kLineWidthPx = 2.0;
+// The tool's slabs are this thick, as a fraction of the picture's diagonal (mm): enough to
+// read as solid, thin enough to stay in the meridian plane.
+constexpr double kToolThicknessPerSize = 0.012;
 
 /// The toolpath as lines at (radius, 0, Z): feeds whole, arcs as chords, rapids cut into
 /// dashes of `dashMm` with gaps of half that (core-profile OpenGL has no line stipple).
@@ -94,6 +98,13 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   for (const Eigen::Vector3f& v : part.vertices) extent.include(view, v.cast<double>());
   for (const interp::Move& m : toolpath.moves)
     for (const RZ& p : movePoints(m)) extent.include(view, Eigen::Vector3d(p.x(), 0.0, p.y()));
+  // The insert is framed; a long holder shank may run out of the picture.
+  if (options.tool) {
+    for (const RZ& p : options.tool->insert) {
+      const RZ at = options.tool->position + p;
+      extent.include(view, Eigen::Vector3d(at.x(), 0.0, at.y()));
+    }
+  }
   if (extent.empty()) extent.include(view, Eigen::Vector3d::Zero());
   const double sizeMm = std::hypot(extent.maxRight - extent.minRight, extent.maxUp - extent.minUp);
 
@@ -129,6 +140,11 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
     metal->SetSpecular(0.45);
     metal->SetSpecularPower(40.0);
     scene->AddActor(actor);
+  }
+
+  if (options.tool) {
+    for (const auto& actor : toolActors(*options.tool, std::max(sizeMm * kToolThicknessPerSize, 0.2)))
+      scene->AddActor(actor);
   }
 
   // The toolpath lies in the part's meridian plane, mostly inside or on the part; it is drawn

@@ -405,5 +405,71 @@ TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
               volumeToleranceMm3(50, 60, 0.5));
 }
 
+// ---------------------------------------------------------------------------------------
+// --at-line: the part as it was after a given line (parts/seed000-face-taper: a Φ125 bar,
+// Z-110..2, the sharp default-style tool at r ≥ tip, z ≥ tip).
+
+Outcome runSeed000AtLine(const TempDir& dir, const std::string& line, const fs::path& out) {
+  const fs::path part = kPartsDir / "seed000-face-taper";
+  return lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(), "--out",
+                   out.string(), "--voxel", "0.5", "--at-line", line},
+                  dir.path());
+}
+
+// Line 1 rapids to X130 Z5; line 2 (G94 X0 Z0) rapids to Z0, faces in to the axis, feeds back
+// to Z5 and rapids out: 5 moves. The face pass takes the 2 mm allowance off the whole face,
+// leaving the bar Φ125 from Z-110 to Z0: π·62.5²·110 = 1 349 897 mm³.
+// Line 3 (G94 X120 Z-110) faces the left end at Z-110 down to r 60 and turns r 60 from Z-110
+// back to Z5: the bar Φ120 from Z-110 to Z0, π·60²·110 = 1 244 071 mm³, after 9 moves.
+TEST(Cli, AtLineSimulatesOnlyUpToThatLine) {
+  TempDir dir("at-line");
+  const double tolerance = volumeToleranceMm3(125.0, 112.0, 0.5);
+  for (const auto& [line, moves, volumeMm3] :
+       {std::tuple{2, 5, M_PI * 62.5 * 62.5 * 110.0}, std::tuple{3, 9, M_PI * 60.0 * 60.0 * 110.0}}) {
+    const fs::path out = dir.path() / ("out" + std::to_string(line));
+    const Outcome outcome = runSeed000AtLine(dir, std::to_string(line), out);
+    ASSERT_EQ(outcome.status, 0) << outcome.err;
+    const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
+    EXPECT_EQ(r.at("at_line"), line);
+    EXPECT_EQ(r.at("moves"), moves);
+    EXPECT_NEAR(r.at("final_volume_mm3").get<double>(), volumeMm3, tolerance) << "line " << line;
+    EXPECT_TRUE(fs::exists(out / "part.png"));
+    EXPECT_EQ(linesOf(readFile(out / "toolpath.csv")).size(), 1u + static_cast<std::size_t>(moves));
+  }
+}
+
+// parts/m98-grooves calls O0200 (lines 9–11) three times. Line 10 (the retract) first runs
+// after the rapid on line 4 and the first plunge on line 9, so --at-line 10 keeps 3 moves and
+// one groove: the Φ40 × 50 bar less the annulus r 16..20, 3 wide:
+// π·20²·50 − 3·π·(20² − 16²) = 20000π − 432π = 19568π mm³. The tool stands at X44 Z-10.
+TEST(Cli, AtLineOfASubprogramStopsAfterItsFirstRun) {
+  TempDir dir("at-line-m98");
+  const fs::path part = kPartsDir / "m98-grooves";
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(),
+                                    "--out", out.string(), "--voxel", "0.25", "--at-line", "10"},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
+  EXPECT_EQ(r.at("moves"), 3);
+  EXPECT_NEAR(r.at("final_volume_mm3").get<double>(), 19568.0 * M_PI, volumeToleranceMm3(40.0, 50.0, 0.25));
+}
+
+TEST(Cli, AtLineThatDoesNotExistOrMakesNoMoveIsNamedAndWritesNothing) {
+  TempDir dir("at-line-bad");
+  const fs::path out = dir.path() / "out";
+  // The program has 10 lines.
+  Outcome outcome = runSeed000AtLine(dir, "11", out);
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("--at-line 11: the program has no line 11 (it has lines 1 to 10)"), std::string::npos)
+      << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+  // Line 10 is M30.
+  outcome = runSeed000AtLine(dir, "10", out);
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("--at-line 10: line 10 makes no move"), std::string::npos) << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+}
+
 }  // namespace
 }  // namespace lathesim::app

@@ -13,6 +13,12 @@ using test::Rgb;
 
 bool blue(const Rgb& c) { return c.b > 150 && c.b > c.r + 80 && c.b > c.g + 60; }
 bool red(const Rgb& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
+// The insert's gold: strong red and green, little blue.
+bool gold(const Rgb& c) { return c.r > 170 && c.g > 120 && c.b < 90 && c.r > c.b + 110; }
+// The holder's dark steel grey: dark, and nearly neutral.
+bool steel(const Rgb& c) {
+  return c.r < 110 && c.g < 110 && c.b < 120 && c.r > 30 && std::abs(c.r - c.b) < 30;
+}
 int distance(const Rgb& a, const Rgb& b) {
   return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
 }
@@ -23,7 +29,7 @@ TEST(PartImagePng, ShadedPartWithBlueFeedAndRedRapidWithoutDisplay) {
   const interp::Toolpath path = test::rapidThenFeed();
   test::TempDir dir;
   const auto file = dir.path() / "part.png";
-  writePartImagePng(part, path, PartImageOptions{1600, 1200, "cylinder.nc"}, file);
+  writePartImagePng(part, path, PartImageOptions{1600, 1200, "cylinder.nc", {}}, file);
 
   Png png(file);
   ASSERT_EQ(png.width(), 1600);
@@ -43,7 +49,7 @@ TEST(PartImagePng, EmptyMeshStillShowsTheToolpath) {
   ::unsetenv("DISPLAY");
   test::TempDir dir;
   const auto file = dir.path() / "path-only.png";
-  writePartImagePng(TriangleMesh{}, test::rapidThenFeed(), PartImageOptions{800, 600, "t"},
+  writePartImagePng(TriangleMesh{}, test::rapidThenFeed(), PartImageOptions{800, 600, "t", {}},
                     file);
   Png png(file);
   ASSERT_EQ(png.width(), 800);
@@ -62,15 +68,51 @@ TEST(PartImagePng, ArcsAreDrawnRoundInTheFeedColour) {
   path.moves.push_back(circle);
   test::TempDir dir;
   const auto file = dir.path() / "circle.png";
-  writePartImagePng(TriangleMesh{}, path, PartImageOptions{800, 600, "t"}, file);
+  writePartImagePng(TriangleMesh{}, path, PartImageOptions{800, 600, "t", {}}, file);
   Png png(file);
   EXPECT_GT(png.count(200, 800, 0, 600, blue), 500);
+}
+
+// A Φ60 × 60 cylinder (z 0..60) and a 10 mm square insert at r 40, Z 70 (so r 40..50,
+// Z 70..80), no toolpath, 800 × 600 px. By hand, in the view's axes (22° turn about X):
+//   right = −y·sin22° + z·cos22°: the cylinder gives −30·0.3746 = −11.24 (y = 30, z = 0) to
+//   60·0.9272 + 11.24 = 66.87; the insert reaches 80·0.9272 = 74.17. So right ∈ [−11.24, 74.17],
+//   centre 31.47, half-width 42.71.
+//   up = r: −30 (the cylinder's underside) to 50 (the insert), centre 10, half-height 40.
+//   Parallel scale = 1.05·max(40, 42.71·600/800) = 42 mm for 300 px: 7.143 px/mm.
+// The insert's centre (r 45, y 0, Z 75): right = 75·0.9272 = 69.54, so
+//   x = 400 + (69.54 − 31.47)·7.143 = 671.9 px; y = 300 + (45 − 10)·7.143 = 550 px (from below).
+// The insert spans ±5 mm = ±36 px up and ±5·0.9272 mm = ±33 px across there.
+TEST(PartImagePng, ToolIsDrawnGoldWhereItStandsAndNotWithoutOne) {
+  ::unsetenv("DISPLAY");
+  const TriangleMesh part = test::cylinder(30.0, 60.0, 96, 8);
+  interp::Toolpath none;
+  ToolPicture tool;
+  tool.insert = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  tool.holder = {{2, 8}, {8, 8}, {8, 60}, {2, 60}};  // a shank up the Z axis, behind the insert
+  tool.position = RZ(40, 70);
+  test::TempDir dir;
+  PartImageOptions options{800, 600, "t", {}};
+  options.tool = tool;
+  writePartImagePng(part, none, options, dir.path() / "tool.png");
+  Png withTool(dir.path() / "tool.png");
+  // A 31 × 31 px window about the insert's centre is gold (its edge lines lie outside it).
+  EXPECT_GT(withTool.count(657, 688, 535, 566, gold), 31 * 31 * 9 / 10);
+  // Gold only there: nothing below the insert (y < 550 − 36 − 10 px, the part and background).
+  EXPECT_EQ(withTool.count(0, 800, 0, 500, gold), 0);
+  // The holder's shank runs on to Z 130, to the right of the insert and out of the picture.
+  EXPECT_GT(withTool.count(700, 800, 535, 566, steel), 200);
+
+  PartImageOptions plain{800, 600, "t", {}};
+  writePartImagePng(part, none, plain, dir.path() / "plain.png");
+  Png without(dir.path() / "plain.png");
+  EXPECT_EQ(without.count(0, 800, 0, 600, gold), 0);
 }
 
 TEST(PartImagePng, UnwritablePathThrows) {
   test::TempDir dir;
   EXPECT_THROW(writePartImagePng(test::cylinder(30, 60, 16), test::rapidThenFeed(),
-                                 PartImageOptions{320, 240, "t"}, dir.path() / "no" / "x.png"),
+                                 PartImageOptions{320, 240, "t", {}}, dir.path() / "no" / "x.png"),
                std::runtime_error);
 }
 

@@ -1,0 +1,73 @@
+#include "render/tool_actor.hpp"
+
+#include <array>
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+
+namespace lathesim::render {
+namespace {
+
+// Colours (RGB 0–1). The render test looks for the insert's gold.
+constexpr std::array<double, 3> kInsertColour{0.98, 0.76, 0.10};
+constexpr std::array<double, 3> kHolderColour{0.30, 0.33, 0.37};
+constexpr std::array<double, 3> kEdgeColour{0.08, 0.08, 0.10};
+constexpr double kInsertOverHolder = 1.6;  // the insert's thickness over the holder's
+
+/// The outline (at `position`) extruded from y = −half to +half: two caps and the sides.
+vtkSmartPointer<vtkPolyData> slab(const std::vector<RZ>& outline, const RZ& position, double half) {
+  vtkNew<vtkPoints> points;
+  for (double y : {-half, half})
+    for (const RZ& p : outline) points->InsertNextPoint(position.x() + p.x(), y, position.y() + p.y());
+  const auto n = static_cast<vtkIdType>(outline.size());
+  vtkNew<vtkCellArray> faces;
+  std::vector<vtkIdType> back, front;
+  for (vtkIdType i = 0; i < n; ++i) back.push_back(n - 1 - i), front.push_back(n + i);
+  faces->InsertNextCell(n, back.data());
+  faces->InsertNextCell(n, front.data());
+  for (vtkIdType i = 0; i < n; ++i) {
+    const vtkIdType j = (i + 1) % n;
+    const vtkIdType side[4] = {i, j, n + j, n + i};
+    faces->InsertNextCell(4, side);
+  }
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetPolys(faces);
+  return polyData;
+}
+
+vtkSmartPointer<vtkActor> slabActor(const std::vector<RZ>& outline, const RZ& position, double half,
+                                    const std::array<double, 3>& colour) {
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(slab(outline, position, half));
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  vtkProperty* p = actor->GetProperty();
+  p->SetInterpolationToFlat();
+  p->SetColor(colour[0], colour[1], colour[2]);
+  p->SetAmbient(0.45);  // flat faces square to the light would otherwise look black or washed out
+  p->SetDiffuse(0.60);
+  p->SetSpecular(0.10);
+  p->EdgeVisibilityOn();
+  p->SetEdgeColor(kEdgeColour[0], kEdgeColour[1], kEdgeColour[2]);
+  p->SetLineWidth(1.5);
+  return actor;
+}
+
+}  // namespace
+
+std::vector<vtkSmartPointer<vtkActor>> toolActors(const ToolPicture& tool, double thicknessMm) {
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  if (tool.holder.size() >= 3)
+    actors.push_back(slabActor(tool.holder, tool.position, thicknessMm / 2, kHolderColour));
+  if (tool.insert.size() >= 3)
+    actors.push_back(slabActor(tool.insert, tool.position, kInsertOverHolder * thicknessMm / 2, kInsertColour));
+  return actors;
+}
+
+}  // namespace lathesim::render
