@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/job.hpp"
 #include "app/setup.hpp"
 #include "interp/interpreter.hpp"
 #include "sim/simulate.hpp"
@@ -32,13 +33,8 @@ const Seed000& seed000() {
     std::ifstream in(kPart + "program.nc");
     std::ostringstream text;
     text << in.rdbuf();
-    interp::InterpreterOptions options;
-    options.startPosition = s.setup.startPosition;
-    for (const auto& tool : s.setup.tools) {
-      options.toolNumbers.push_back(tool.number);
-      s.tools.emplace(tool.number, tool.outline);
-    }
-    s.toolpath = interp::interpret(text.str(), "program.nc", options).toolpath;
+    for (const auto& tool : s.setup.tools) s.tools.emplace(tool.number, tool.outline);
+    s.toolpath = interp::interpret(text.str(), "program.nc", app::interpreterOptionsOf(s.setup)).toolpath;
     return s;
   }();
   return loaded;
