@@ -218,7 +218,7 @@ int checkCommand(const CheckOptions& options) {
   SampledSection section = run->stock->meridianSection();
   const MeridianProfile part = MeridianProfile::fromSection(section);
   DeviationReport deviation = measureDeviation(section, part, *drawing, tolerance);
-  attributeGouges(deviation, run->job.toolpath, outlinesOf(run->job.setup), run->job.setup.stock);
+  attributeGouges(deviation, run->job.toolpath, outlinesOf(run->job.setup), run->job.setup.stock, run->figures.voxelMm);
   const ProcessFigures process = processFigures(run->job.toolpath, run->figures.simulation, voxel);
   const double checkS = checkClock.lap();
 

@@ -1,13 +1,13 @@
 #include "app/gouge_causes.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <set>
+
+#include "sim/move_sweep.hpp"
 
 namespace lathesim::app {
 namespace {
 
-constexpr double kArcChordErrorMm = 0.01;
 constexpr std::size_t kMaxProbesPerRegion = 400;
 
 struct Swept {
@@ -22,36 +22,14 @@ bool barHeld(const RZ& p, const sim::StockSpec& stock) {
 
 }  // namespace
 
-std::vector<ConvexPolygon> sweptPieces(const interp::Move& move, const ConvexPolygon& tool) {
-  if (!interp::isArc(move.kind)) return {tool.sweptAlong(move.from, move.to)};
-  // Angles in the drawing view (u = Z right, v = r up); clockwise decreases them.
-  const auto angle = [&](const RZ& p) { return std::atan2(p.x() - move.center.x(), p.y() - move.center.y()); };
-  const double radius = (move.from - move.center).norm();
-  double sweep = angle(move.to) - angle(move.from);
-  if (move.kind == interp::MoveKind::ArcCW)
-    while (sweep >= 0) sweep -= 2 * M_PI;
-  else
-    while (sweep <= 0) sweep += 2 * M_PI;
-  const double maxStep = 2 * std::acos(std::max(-1.0, 1 - kArcChordErrorMm / std::max(radius, 1e-9)));
-  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / maxStep)));
-  std::vector<ConvexPolygon> pieces;
-  RZ previous = move.from;
-  for (int s = 1; s <= steps; ++s) {
-    const double a = angle(move.from) + sweep * s / steps;
-    const RZ next = s == steps ? move.to : RZ(move.center + radius * RZ(std::sin(a), std::cos(a)));
-    pieces.push_back(tool.sweptAlong(previous, next));
-    previous = next;
-  }
-  return pieces;
-}
-
 void attributeGouges(DeviationReport& report, const interp::Toolpath& toolpath, const sim::ToolOutlines& tools,
-                     const sim::StockSpec& stock) {
+                     const sim::StockSpec& stock, double voxelMm) {
   std::vector<Swept> swept;
   for (const interp::Move& move : toolpath.moves) {
     const auto tool = tools.find(move.tool);
     if (tool == tools.end()) continue;  // interp checks T words; sim would have thrown
-    Swept s{sweptPieces(move, tool->second), {0, 0}, {0, 0}, move.line};
+    Swept s{sim::sweptPieces(move, tool->second, voxelMm), {0, 0}, {0, 0}, move.line};
+    if (s.pieces.empty()) continue;  // a dwell sweeps nothing new
     s.lower = s.pieces.front().lowerBound();
     s.upper = s.pieces.front().upperBound();
     for (const auto& piece : s.pieces) {

@@ -14,12 +14,9 @@
 
 namespace lathesim::app {
 
-/// The region a move sweeps, as convex pieces: straight moves one hull, arcs one hull per
-/// chord (chords within 0.01 mm of the arc), dwells the outline where the tool stands.
-std::vector<ConvexPolygon> sweptPieces(const interp::Move& move, const ConvexPolygon& tool);
-
-/// Fills `lines` of every gouge region of `report` (sorted, each line once).
+/// Fills `lines` of every gouge region of `report` (sorted, each line once). Moves sweep as
+/// in the simulation at `voxelMm` (sim/move_sweep.hpp).
 void attributeGouges(DeviationReport& report, const interp::Toolpath& toolpath, const sim::ToolOutlines& tools,
-                     const sim::StockSpec& stock);
+                     const sim::StockSpec& stock, double voxelMm);
 
 }  // namespace lathesim::app

@@ -110,20 +110,6 @@ BuiltTool failed(std::string problem) { return {std::nullopt, std::move(problem)
 
 }  // namespace
 
-RZ imaginaryTipDirection(int tipNumber) {
-  switch (tipNumber) {
-    case 1: return RZ(1, 1);
-    case 2: return RZ(1, -1);
-    case 3: return RZ(-1, -1);
-    case 4: return RZ(-1, 1);
-    case 5: return RZ(0, 1);
-    case 6: return RZ(1, 0);
-    case 7: return RZ(0, -1);
-    case 8: return RZ(-1, 0);
-    default: return RZ(0, 0);
-  }
-}
-
 int defaultTipNumber(const IsoHolder& holder) {
   return holder.hand == 'L' ? 4 : holder.hand == 'N' ? 8 : 3;
 }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
+#include "geometry/imaginary_tip.hpp"
 #include "geometry/iso_holder.hpp"
 #include "geometry/iso_insert.hpp"
 
@@ -41,9 +42,6 @@ struct BuiltTool {
   std::string problem;                // set exactly when tool is not
   std::vector<std::string> warnings;  // e.g. the insert does not match the holder's seat
 };
-
-/// (sX, sZ) of a tip number 0–9 (see above).
-RZ imaginaryTipDirection(int tipNumber);
 
 /// The default tip number of a holder: R hand 3, L hand 4 (the same corner mirrored: it cuts
 /// toward the tailstock), N hand 8 (touched off on the centre line).

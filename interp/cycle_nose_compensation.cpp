@@ -1,5 +1,6 @@
 // G90/G94 nose radius compensation by the tip number; see cycle_nose_compensation.hpp.
 
+#include "geometry/imaginary_tip.hpp"
 #include "interp/cycle_nose_compensation.hpp"
 
 #include <cmath>
@@ -26,7 +27,7 @@ std::vector<CycleLeg> noseCompensatedCycle(const std::vector<CycleLeg>& legs, co
   const double side = normal.dot(start - b);
   if (std::abs(side) < kTolMm) return legs;
   if (side < 0) normal = -normal;
-  const RZ shift = comp.radiusMm * (normal + tipDirection(comp.tip));
+  const RZ shift = comp.radiusMm * (normal + imaginaryTipDirection(comp.tip));
   // Slide the moved line back along itself so its ends keep their coordinate on `axis`.
   const RZ moved = shift - (shift[axis] / along[axis]) * along;
   const RZ bMoved = b + moved;

@@ -2,6 +2,7 @@
 // nose_compensation.hpp. Geometry is in the drawing view: Z to the right, X (radius) up, so
 // "turning left" is counter-clockwise. Points are RZ = (radius, Z).
 
+#include "geometry/imaginary_tip.hpp"
 #include "interp/nose_compensation.hpp"
 
 #include <cmath>
@@ -307,7 +308,7 @@ Status PathCompensation::chain(std::size_t first, std::size_t end) {
   }
   const double sign = sideSign(comp.side);
   const double radiusMm = comp.radiusMm;
-  const RZ tipShift = radiusMm * tipDirection(comp.tip);
+  const RZ tipShift = radiusMm * imaginaryTipDirection(comp.tip);
 
   std::vector<Curve> curves;
   std::vector<std::size_t> members;  // path index of each curve

@@ -4,7 +4,7 @@
 // force (Move::noseComp); this stage replaces each compensated chain by the path of the
 // imaginary tip P = C + R·s, where C is the nose centre on the programmed path offset by R to
 // the G41 (left) or G42 (right) side, looking along the travel with Z to the right and X up,
-// and s the tip number's direction (interp/tool_offset.hpp tipDirection; tip 0/9: P = C).
+// and s the tip number's direction (geometry/imaginary_tip.hpp; tip 0/9: P = C).
 //
 // A chain is: a start-up move (the first move under G41/G42; G00/G01, else an error, Fanuc
 // PS0034), the compensated moves after it, and the cancel move (the first move after them

@@ -19,20 +19,6 @@ NoseComp noseCompWith(NoseSide side, const ToolOffsets& offsets, int number) {
   return NoseComp{side, found->second.radiusMm, found->second.tip};
 }
 
-RZ tipDirection(int tip) {
-  switch (tip) {
-    case 1: return RZ(1, 1);
-    case 2: return RZ(1, -1);
-    case 3: return RZ(-1, -1);
-    case 4: return RZ(-1, 1);
-    case 5: return RZ(0, 1);
-    case 6: return RZ(1, 0);
-    case 7: return RZ(0, -1);
-    case 8: return RZ(-1, 0);
-    default: return RZ(0, 0);  // 0 and 9: the programmed point is the nose centre
-  }
-}
-
 Status applyToolOffsets(std::vector<Move>& moves, const ToolOffsets& offsets) {
   RZ inForce(0, 0);  // the shift the tool stands under
   for (Move& move : moves) {

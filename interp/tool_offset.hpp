@@ -34,11 +34,6 @@ RZ offsetShift(const ToolOffsets& offsets, int number);
 /// offset is 0 or undefined).
 NoseComp noseCompWith(NoseSide side, const ToolOffsets& offsets, int number);
 
-/// The direction s from the nose centre C to the imaginary tip P = C + R·s, as (radius, Z)
-/// signs: 1 (+X,+Z), 2 (+X,−Z), 3 (−X,−Z), 4 (−X,+Z), 5 +Z, 6 +X, 7 −Z, 8 −X; 0 and 9: the
-/// tip is the centre (0, 0). Numbers outside 0–9 give (0, 0).
-RZ tipDirection(int tip);
-
 /// Moves every move of `moves` by the shift of the offset in force, as the machine does: a
 /// move ends at its programmed end plus its own offset's shift, and starts at its programmed
 /// start plus the shift the tool was under until then (the previous move's; none before the

@@ -1,10 +1,9 @@
 #include "sim/holder_check.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
 #include "geometry/convex_overlap.hpp"
+#include "sim/move_sweep.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::sim {
@@ -20,31 +19,6 @@ void record(std::vector<Collision>& collisions, const interp::Move& move, const 
     }
   }
   collisions.push_back({move.line, move.column, kind, volumeMm3});
-}
-
-/// The convex pieces `shape` sweeps along `move`: one hull for a straight move, one per chord
-/// of at most 5° for an arc (the holder stands well clear of the cut, so chords this fine do
-/// not change what it meets).
-std::vector<ConvexPolygon> chordPieces(const interp::Move& move, const ConvexPolygon& shape) {
-  if (!interp::isArc(move.kind)) return {shape.sweptAlong(move.from, move.to)};
-  // Angles in the drawing view (Z right, X up), where G02 is clockwise.
-  const RZ a = move.from - move.center, b = move.to - move.center;
-  const double start = std::atan2(a.x(), a.y());
-  double end = std::atan2(b.x(), b.y());
-  const bool ccw = move.kind == interp::MoveKind::ArcCCW;
-  if (ccw && end <= start) end += 2.0 * std::numbers::pi;
-  if (!ccw && end >= start) end -= 2.0 * std::numbers::pi;
-  const int chords = std::max(1, static_cast<int>(std::ceil(std::abs(end - start) / (5.0 * std::numbers::pi / 180.0))));
-  const double radius = a.norm();
-  std::vector<ConvexPolygon> pieces;
-  RZ previous = move.from;
-  for (int i = 1; i <= chords; ++i) {
-    const double angle = start + (end - start) * i / chords;
-    const RZ next = i == chords ? move.to : RZ(move.center.x() + radius * std::sin(angle), move.center.y() + radius * std::cos(angle));
-    pieces.push_back(shape.sweptAlong(previous, next));
-    previous = next;
-  }
-  return pieces;
 }
 
 /// The largest revolved volume one piece of a sweep has inside the chuck.
@@ -77,7 +51,7 @@ void checkMoves(const CollisionChecks& checks, std::span<const interp::Move> mov
     if (move.kind == interp::MoveKind::Dwell) continue;
     const auto holder = checks.holders.find(move.tool);
     std::vector<ConvexPolygon> holderSwept;
-    if (holder != checks.holders.end()) holderSwept = chordPieces(move, holder->second);
+    if (holder != checks.holders.end()) holderSwept = sweptPieces(move, holder->second, h);
     if (!holderSwept.empty()) {
       const double inside = stock.materialInside(RevolvedRegion(holderSwept), h);
       if (inside > kCollisionVoxels * h * h * h) record(collisions, move, "holder_into_stock", inside);
@@ -85,7 +59,7 @@ void checkMoves(const CollisionChecks& checks, std::span<const interp::Move> mov
     if (checks.chuck.empty()) continue;
     double chuck = 0.0;
     if (const auto cutter = checks.cutters.find(move.tool); cutter != checks.cutters.end())
-      chuck = chuckVolume(checks.chuck, chordPieces(move, cutter->second));
+      chuck = chuckVolume(checks.chuck, sweptPieces(move, cutter->second, h));
     chuck = std::max(chuck, chuckVolume(checks.chuck, holderSwept));
     if (chuck > 0.0) record(collisions, move, "into_chuck", chuck);
   }
