@@ -4,8 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/golden_rows.hpp"
-#include <sys/wait.h>
-#include <unistd.h>
+#include "tests/support/lathesim_process.hpp"
 
 #include <array>
 #include <cmath>
@@ -34,18 +33,6 @@ namespace fs = std::filesystem;
 const fs::path kBinary = LATHESIM_BINARY;
 const fs::path kPartsDir = LATHESIM_PARTS_DIR;
 
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void writeFile(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
 std::vector<std::string> linesOf(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
@@ -53,56 +40,14 @@ std::vector<std::string> linesOf(const std::string& text) {
   return lines;
 }
 
-/// A fresh folder under the system's temporary directory, removed with everything in it.
-class TempDir {
- public:
-  explicit TempDir(const std::string& tag) {
-    static int counter = 0;
-    path_ = fs::temp_directory_path() /
-            ("lathesim-cli-" + tag + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-struct Outcome {
-  int status = -1;  // the exit status, or -1 if the process did not exit normally
-  std::string out;
-  std::string err;
-};
-
-std::string quoted(const std::string& arg) {
-  std::string q = "'";
-  for (char c : arg) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
+using test::readFile;
+using test::writeFile;
+using TempDir = test::ScratchDir;
+using Outcome = test::ProcessOutcome;
 
 /// Runs lathesim with `args`, capturing stdout and stderr through files in `scratch`.
 Outcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
-  const fs::path outFile = scratch / "stdout.txt";
-  const fs::path errFile = scratch / "stderr.txt";
-  std::string command = quoted(kBinary.string());
-  for (const auto& arg : args) command.append(" ").append(quoted(arg));
-  command.append(" >").append(quoted(outFile.string()));
-  command.append(" 2>").append(quoted(errFile.string()));
-  const int raw = std::system(command.c_str());
-  Outcome outcome;
-  if (raw != -1 && WIFEXITED(raw)) outcome.status = WEXITSTATUS(raw);
-  outcome.out = readFile(outFile);
-  outcome.err = readFile(errFile);
-  fs::remove(outFile);
-  fs::remove(errFile);
-  return outcome;
+  return test::runProcess(kBinary, args, scratch);
 }
 
 /// The same bound as parts_test: 5 % of a voxel layer over the bar's whole surface.
