@@ -37,6 +37,14 @@ class CompoundCycle {
   Status needFeed() const;
   Result<ContourSpan> contourSpan() const;
   Result<ExtractedContour> contour(ContourSpan span) const;
+  // The second block of G71–G73: P Q U(Δu) W(Δw) F, its contour run from the start point.
+  struct ContourBlock {
+    ContourSpan span;
+    ExtractedContour contour;
+    double allowanceXMm;  // Δu/2, a radius
+    double allowanceZMm;  // Δw
+  };
+  Result<ContourBlock> contourBlock();
   ModalState contourStartState() const;
   void continueAfter(ContourSpan span);
 
@@ -174,27 +182,35 @@ Status CompoundCycle::roughing() {
     if (retract) state_.compound.roughingRetractMm = length(*retract);
     return success();
   }
-  auto span = contourSpan();
-  if (!span.ok()) return span.error();
-  const auto u = block_.take('U');
-  const auto w = block_.take('W');
-  if (auto s = needFeed(); !s.ok()) return s;
-  auto extracted = contour(span.value());
-  if (!extracted.ok()) return extracted.error();
-  const ExtractedContour& c = extracted.value();
+  auto read = contourBlock();
+  if (!read.ok()) return read.error();
+  const ContourBlock& b = read.value();
+  const ExtractedContour& c = b.contour;
   RoughingParams params;
   params.depthMm = state_.compound.roughingDepthMm;
   params.retractMm = state_.compound.roughingRetractMm;
-  params.allowanceXMm = u ? length(*u) / 2.0 : 0.0;
-  params.allowanceZMm = w ? length(*w) : 0.0;
+  params.allowanceXMm = b.allowanceXMm;
+  params.allowanceZMm = b.allowanceZMm;
   params.typeII = c.firstBlockHasX && c.firstBlockHasZ;
   const RZ start = state_.position;
   auto legs = turning ? turningRoughingLegs(start, c.contour, params)
                       : facingRoughingLegs(start, c.contour, params);
   if (!legs.ok()) return legs.error();
   outcome_.legs = std::move(legs.value());
-  continueAfter(span.value());
+  continueAfter(b.span);
   return success();
+}
+
+Result<CompoundCycle::ContourBlock> CompoundCycle::contourBlock() {
+  auto span = contourSpan();
+  if (!span.ok()) return span.error();
+  const auto u = block_.take('U');
+  const auto w = block_.take('W');
+  if (auto s = needFeed(); !s.ok()) return s.error();
+  auto extracted = contour(span.value());
+  if (!extracted.ok()) return extracted.error();
+  return ContourBlock{span.value(), std::move(extracted).value(), u ? length(*u) / 2.0 : 0.0,
+                      w ? length(*w) : 0.0};
 }
 
 // G73 U(Δi) W(Δk) R(d); then G73 P Q U(Δu) W(Δw).
@@ -213,23 +229,19 @@ Status CompoundCycle::patternRepeat() {
     if (r) state_.compound.patternPasses = static_cast<int>(r->value);
     return success();
   }
-  auto span = contourSpan();
-  if (!span.ok()) return span.error();
-  const auto u = block_.take('U');
-  const auto w = block_.take('W');
-  if (auto s = needFeed(); !s.ok()) return s;
-  auto extracted = contour(span.value());
-  if (!extracted.ok()) return extracted.error();
-  const ExtractedContour& c = extracted.value();
+  auto read = contourBlock();
+  if (!read.ok()) return read.error();
+  const ContourBlock& b = read.value();
+  const ExtractedContour& c = b.contour;
   PatternRepeatParams params;
   params.reliefXMm = state_.compound.patternReliefXMm;
   params.reliefZMm = state_.compound.patternReliefZMm;
   params.passes = state_.compound.patternPasses;
-  params.allowanceXMm = u ? length(*u) / 2.0 : 0.0;
-  params.allowanceZMm = w ? length(*w) : 0.0;
+  params.allowanceXMm = b.allowanceXMm;
+  params.allowanceZMm = b.allowanceZMm;
   outcome_.legs = patternRepeatLegs(state_.position, c.contour, c.firstBlockSegments,
                                     c.firstBlockRapid, params);
-  continueAfter(span.value());
+  continueAfter(b.span);
   return success();
 }
 
