@@ -42,7 +42,7 @@ using Double4 = double __attribute__((vector_size(32)));
 using Float4 = float __attribute__((vector_size(16)));
 using Mask4 = std::int64_t __attribute__((vector_size(32)));  // lanes −1 (true) or 0
 
-int bitsOf(Mask4 m) { return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8)); }
+int bitsOf(const Mask4& m) { return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8)); }
 
 __attribute__((target_clones("avx2", "default"))) double writeColumn(const ColumnWrite& w, float* values,
                                                                      const double* psi, std::uint8_t& activeBits,
