@@ -45,17 +45,6 @@ MoveKind mirroredKind(MoveKind kind) {
   return kind;
 }
 
-Contour swappedAxes(const Contour& contour) {
-  Contour mirrored = contour;
-  for (ContourSegment& segment : mirrored) {
-    segment.kind = mirroredKind(segment.kind);
-    segment.from = swappedAxes(segment.from);
-    segment.to = swappedAxes(segment.to);
-    segment.center = swappedAxes(segment.center);
-  }
-  return mirrored;
-}
-
 double angleAround(const RZ& center, const RZ& point) {
   return std::atan2(point.x() - center.x(), point.y() - center.y());
 }

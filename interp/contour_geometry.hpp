@@ -20,12 +20,22 @@ Contour translatedContour(const Contour& contour, const RZ& offsetMm);
 /// The point with its two coordinates exchanged: (a, b) → (b, a).
 RZ swappedAxes(const RZ& point);
 
-/// The contour mirrored about the X = Z diagonal: coordinates exchanged, ArcCW and ArcCCW
-/// exchanged (a mirror reverses the sense of rotation). Applying it twice gives the original.
-Contour swappedAxes(const Contour& contour);
-
 /// ArcCW ↔ ArcCCW; other kinds unchanged.
 MoveKind mirroredKind(MoveKind kind);
+
+/// Segments or cycle legs (anything with kind, from, to and center) mirrored about the
+/// X = Z diagonal: coordinates exchanged, ArcCW and ArcCCW exchanged (a mirror reverses the
+/// sense of rotation). Applying it twice gives the original.
+template <class Pieces>
+Pieces swappedAxes(Pieces pieces) {
+  for (auto& piece : pieces) {
+    piece.kind = mirroredKind(piece.kind);
+    piece.from = swappedAxes(piece.from);
+    piece.to = swappedAxes(piece.to);
+    piece.center = swappedAxes(piece.center);
+  }
+  return pieces;
+}
 
 /// Angle (rad) of `point` seen from `center`: atan2(ΔX, ΔZ).
 double angleAround(const RZ& center, const RZ& point);

@@ -21,14 +21,7 @@ Result<std::vector<CycleLeg>> facingRoughingLegs(const RZ& start, const Contour&
   auto legs = stockRemovalLegs(swappedAxes(start), swappedAxes(contour), mirroredParams,
                                {"G72", "Z", "X"});
   if (!legs.ok()) return legs;
-  std::vector<CycleLeg> facing = std::move(legs).value();
-  for (CycleLeg& leg : facing) {
-    leg.kind = mirroredKind(leg.kind);
-    leg.from = swappedAxes(leg.from);
-    leg.to = swappedAxes(leg.to);
-    leg.center = swappedAxes(leg.center);
-  }
-  return facing;
+  return swappedAxes(std::move(legs).value());
 }
 
 }  // namespace lathesim::interp
