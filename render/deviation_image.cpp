@@ -16,7 +16,6 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkProperty2D.h>
 #include <vtkRenderer.h>
@@ -161,15 +160,7 @@ void writeDeviationImagePng(const TriangleMesh& part, const std::vector<float>& 
     values->SetNumberOfValues(static_cast<vtkIdType>(deviationMm.size()));
     for (std::size_t i = 0; i < deviationMm.size(); ++i) values->SetValue(static_cast<vtkIdType>(i), deviationMm[i]);
     data->GetPointData()->SetScalars(values);
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputData(data);
-    normals->ComputePointNormalsOn();
-    normals->SplittingOn();
-    normals->SetFeatureAngle(35.0);
-    normals->ConsistencyOff();
-    normals->AutoOrientNormalsOff();
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(normals->GetOutputPort());
+    const auto mapper = shadedMapper(data);
     mapper->SetLookupTable(colours);
     mapper->SetScalarRange(-rangeMm, rangeMm);
     mapper->SetScalarModeToUsePointData();

@@ -15,7 +15,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -117,18 +116,8 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   lights->AddLightsToRenderer(scene);
 
   if (!part.triangles.empty()) {
-    // Smooth shading, but keep the shoulders of a turned part crisp: normals split at edges
-    // sharper than 35°. The mesh is consistently oriented, so no reorientation pass.
-    vtkNew<vtkPolyDataNormals> normals;
-    normals->SetInputData(toPolyData(part));
-    normals->ComputePointNormalsOn();
-    normals->ComputeCellNormalsOff();
-    normals->SplittingOn();
-    normals->SetFeatureAngle(35.0);
-    normals->ConsistencyOff();
-    normals->AutoOrientNormalsOff();
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(normals->GetOutputPort());
+    const auto data = toPolyData(part);
+    const auto mapper = shadedMapper(data);
     mapper->ScalarVisibilityOff();
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);

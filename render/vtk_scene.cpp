@@ -12,6 +12,7 @@
 #include <vtkIdTypeArray.h>
 #include <vtkPNGWriter.h>
 #include <vtkPoints.h>
+#include <vtkPolyDataNormals.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
@@ -25,6 +26,20 @@ namespace {
 constexpr double kAzimuthDeg = 22.0;
 
 }  // namespace
+
+vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data) {
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(data);
+  normals->ComputePointNormalsOn();
+  normals->ComputeCellNormalsOff();
+  normals->SplittingOn();
+  normals->SetFeatureAngle(35.0);
+  normals->ConsistencyOff();
+  normals->AutoOrientNormalsOff();
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputConnection(normals->GetOutputPort());
+  return mapper;
+}
 
 /// The mesh as VTK polydata, copied in bulk (meshes have millions of triangles).
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh) {

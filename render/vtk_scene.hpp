@@ -11,6 +11,7 @@
 #include <vtkCamera.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkRenderWindow.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
@@ -21,6 +22,11 @@ namespace lathesim::render {
 
 /// The mesh as VTK polydata, copied in bulk (meshes have millions of triangles).
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);
+
+/// A mapper that shades `data` smoothly but keeps the shoulders of a turned part crisp:
+/// point normals split at edges sharper than 35°. The meshes are consistently oriented, so
+/// there is no reorientation pass.
+vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data);
 
 /// The view: looking at the XZ plane from +Y, turned towards +Z by an azimuth, X up.
 struct View {
