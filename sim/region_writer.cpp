@@ -83,8 +83,8 @@ enum class Action {
   Update,   // an existing leaf the region's boundary passes through
   Densify,  // a tile the region's boundary passes through: becomes a leaf first
   Fill,     // a leaf or tile the region covers entirely: becomes one tile
-  FillSub,  // a 32³ sub-block the region covers entirely, when removing: each of its leaves
-            // and tiles that holds material becomes an air tile
+  FillSub,  // a 32³ sub-block the region covers entirely: each of its leaves and tiles
+            // not yet in the region's state becomes a tile in it
 };
 
 struct Task {
@@ -179,8 +179,8 @@ class RegionWriter {
         const float tile = accessor.getValue(block);
         if (!node && u(tile) <= -bg_) continue;  // already entirely in the region's state
         if (psi < -blockReach_) {
-          if (removing_) tasks.push_back({block, 2, Action::Fill, nullptr, 0.0f, node1InsideVoxels(node, tile)});
-          continue;  // when adding, interiors are flood-filled afterwards
+          tasks.push_back({block, 2, Action::Fill, nullptr, 0.0f, node1InsideVoxels(node, tile)});
+          continue;
         }
         classifyLeaves(block, box, accessor, tasks);
       }
@@ -201,12 +201,11 @@ class RegionWriter {
         for (int sz = block.z(); sz < block.z() + kNode1Dim; sz += kSub) {
           const Coord sub(sx, sy, sz);
           if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
-          // Wholly outside the region: nothing to do. Wholly inside: when adding, the flood
-          // fill sets its interior afterwards; when removing, one task fills its leaves,
-          // with no distance to take.
+          // Wholly outside the region: nothing to do. Wholly inside: one task fills its
+          // leaves, with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
-          if (psi > subReach || (psi < -subReach && !removing_)) continue;
-          if (psi < -subReach) {  // removing: its 64 leaf slots are filled in restructure()
+          if (psi > subReach) continue;
+          if (psi < -subReach) {  // its 64 leaf slots are filled in restructure()
             tasks.push_back({sub, 1, Action::FillSub, nullptr, 0.0f, 0.0});
             continue;
           }
@@ -240,9 +239,8 @@ class RegionWriter {
           const Reach reach = std::abs(psi) < leafReach_ ? reachOfQuarters(local, origin) : psi > 0 ? Reach::None : Reach::Covers;
           if (reach == Reach::None) continue;
           if (reach == Reach::Covers) {
-            if (removing_)
-              tasks.push_back({origin, 1, Action::Fill, nullptr, 0.0f,
-                               leaf ? stock_.leafInsideVoxels(*leaf) : insideFraction(tile, h_) * Leaf::NUM_VOXELS});
+            tasks.push_back({origin, 1, Action::Fill, nullptr, 0.0f,
+                             leaf ? stock_.leafInsideVoxels(*leaf) : insideFraction(tile, h_) * Leaf::NUM_VOXELS});
             continue;
           }
           tasks.push_back({origin, 1, leaf ? Action::Update : Action::Densify, leaf, tile, 0.0});
@@ -357,9 +355,10 @@ class RegionWriter {
     return leaves;
   }
 
-  // The leaves and tiles of a covered 32³ sub-block that hold material become air tiles
-  // (within the candidate box, as classifyLeavesOf would have taken them); the leaves go
-  // to `spares`. Returns the material voxels lost.
+  // The leaves and tiles of a covered 32³ sub-block not yet in the region's state (material
+  // when removing, air when adding) become tiles in it (within the candidate box, as
+  // classifyLeavesOf would have taken them); the leaves go to `spares`. Returns the
+  // material voxels lost.
   double fillSubBlock(Node1& node, const Coord& sub, const openvdb::CoordBBox& box, std::vector<Leaf*>& spares) const {
     constexpr int kSub = 4 * kLeafDim;
     const double filledVoxels = insideFraction(filledValue(), h_) * Leaf::NUM_VOXELS;
@@ -375,7 +374,7 @@ class RegionWriter {
             continue;
           }
           const float tile = node.getTable()[Node1::coordToOffset(origin)].getValue();  // no leaf here: a tile
-          if (u(tile) <= -bg_) continue;  // already air
+          if (u(tile) <= -bg_) continue;  // already in the region's state
           lost += insideFraction(tile, h_) * Leaf::NUM_VOXELS - filledVoxels;
           node.addTile(1, origin, filledValue(), false);
         }

@@ -3,7 +3,6 @@
 #include "sim/stock.hpp"
 
 #include <openvdb/tools/Interpolation.h>
-#include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <tbb/parallel_reduce.h>
 #include <unistd.h>
@@ -114,9 +113,10 @@ Stock::Stock(const StockSpec& spec, double voxelMm) : impl_(std::make_unique<Sto
   // The bar's cross-section, mirrored across the axis so that it revolves into a cylinder.
   const std::vector<RZ> rectangle{{-r, spec.faceZMm - spec.lengthMm}, {r, spec.faceZMm - spec.lengthMm},
                                   {r, spec.faceZMm}, {-r, spec.faceZMm}};
+  // Every voxel takes its value from the bar's own distance: the band voxel by voxel, the
+  // interior as tiles the bar covers entirely. Nothing is left for a flood fill to guess
+  // (OpenVDB's signed flood fill reads a 128³ block with no leaves left in it as air).
   writeRegion(*impl_, RevolvedRegion({ConvexPolygon::hullOf(rectangle)}), RegionWrite::Add);
-  // Only the band was written; the interior tiles take their sign from it.
-  openvdb::tools::signedFloodFill(impl_->grid->tree());
 }
 
 Stock::~Stock() = default;

@@ -20,6 +20,16 @@ struct StockGrid;  // the OpenVDB side, in stock_grid.hpp
 /// Narrow band half-width, in voxels, on each side of the surface.
 inline constexpr int kHalfBandVoxels = 3;
 
+/// How far a volume measured on the level set, or on its mesh, may stray from the exact
+/// volume of the solid it stands for: 5 % of one voxel layer over the solid's surface. The
+/// level set places the surface to a small fraction of a voxel, so its rounding is a thin
+/// skin; a real error (a cut misplaced by a voxel, a block of material lost) moves whole
+/// voxel layers over part of the surface.
+inline constexpr double kVolumeToleranceVoxelLayers = 0.05;
+inline double volumeToleranceMm3(double surfaceAreaMm2, double voxelMm) {
+  return kVolumeToleranceVoxelLayers * voxelMm * surfaceAreaMm2;
+}
+
 /// Memory the stock's level set is expected to take at this voxel size (bytes), from its
 /// surface area and a per-surface-voxel cost measured on this machine.
 std::uint64_t estimatedStockBytes(const StockSpec& spec, double voxelMm);
