@@ -109,8 +109,7 @@ sim::ToolOutlines outlinesOf(const Setup& setup) {
 /// difference is ~7 bounds at 0.5 mm.
 double volumeToleranceMm3(const sim::StockSpec& stock, double voxelMm) {
   const double r = stock.diameterMm / 2.0;
-  const double area = 2.0 * M_PI * r * r + 2.0 * M_PI * r * stock.lengthMm;
-  return 0.05 * voxelMm * area;
+  return sim::volumeToleranceMm3(2.0 * M_PI * r * r + 2.0 * M_PI * r * stock.lengthMm, voxelMm);
 }
 
 struct Simulated {
