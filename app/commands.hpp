@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "interp/dialect.hpp"
+#include "interp/control/dialect.hpp"
 
 namespace lathesim::app {
 

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "interp/cycle_time.hpp"
+#include "interp/motion/cycle_time.hpp"
 #include "interp/interpreter.hpp"
 
 namespace lathesim::app {

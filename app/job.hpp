@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/setup.hpp"
-#include "interp/dialect.hpp"
+#include "interp/control/dialect.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/move.hpp"
 

@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "interp/dialect.hpp"
+#include "interp/control/dialect.hpp"
 
 int main(int argc, char** argv) {
   CLI::App cli{"lathesim — simulates a lathe program on a bar and shows the part it makes"};

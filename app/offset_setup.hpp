@@ -1,5 +1,5 @@
 #pragma once
-// The setup file's [[offset]] tables: the tool offsets T words select (interp/tool_offset.hpp).
+// The setup file's [[offset]] tables: the tool offsets T words select (interp/compensation/tool_offset.hpp).
 //   [[offset]]
 //   number = 1        # 1..99, required; T0101 selects it
 //   x = 0.0           # geometry shift in X, a diameter (mm)
@@ -15,7 +15,7 @@
 
 #include <toml++/toml.h>
 
-#include "interp/tool_offset.hpp"
+#include "interp/compensation/tool_offset.hpp"
 
 namespace lathesim::app {
 

@@ -26,7 +26,7 @@ struct RunFigures {
   double meshVolumeMm3 = 0;   // the exported mesh's enclosed volume, as a cross-check
   std::size_t meshTriangles = 0;
   std::size_t moves = 0;
-  double cycleTimeS = 0;  // the machine time of all moves (interp/cycle_time.hpp)
+  double cycleTimeS = 0;  // the machine time of all moves (interp/motion/cycle_time.hpp)
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
   sim::SimulationResult simulation;
   std::vector<interp::Diagnostic> warnings;

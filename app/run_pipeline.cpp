@@ -8,7 +8,7 @@
 #include "app/at_line.hpp"
 #include "app/collision_checks.hpp"
 #include "app/tool_picture.hpp"
-#include "interp/cycle_time.hpp"
+#include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"

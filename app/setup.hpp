@@ -9,10 +9,10 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/diagnostic.hpp"
-#include "interp/dialect.hpp"
-#include "interp/machine_limits.hpp"
+#include "interp/control/dialect.hpp"
+#include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
-#include "interp/tool_offset.hpp"
+#include "interp/compensation/tool_offset.hpp"
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/utf8.hpp"
+#include "interp/text/utf8.hpp"
 
 namespace lathesim::interp {
 

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <utility>
 
-#include "interp/block_executor.hpp"
-#include "interp/call_stack.hpp"
-#include "interp/feed_warnings.hpp"
-#include "interp/modal_state.hpp"
-#include "interp/nose_compensation.hpp"
-#include "interp/program.hpp"
+#include "interp/execution/block_executor.hpp"
+#include "interp/execution/call_stack.hpp"
+#include "interp/motion/feed_warnings.hpp"
+#include "interp/execution/modal_state.hpp"
+#include "interp/compensation/nose_compensation.hpp"
+#include "interp/text/program.hpp"
 
 namespace lathesim::interp {
 namespace {

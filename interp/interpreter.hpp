@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "interp/diagnostic.hpp"
-#include "interp/dialect.hpp"
-#include "interp/machine_limits.hpp"
+#include "interp/control/dialect.hpp"
+#include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
-#include "interp/tool_offset.hpp"
+#include "interp/compensation/tool_offset.hpp"
 
 namespace lathesim::interp {
 
@@ -23,7 +23,7 @@ struct InterpreterOptions {
   FeedMode initialFeedMode = FeedMode::PerRevolution;  // G98/G99 before the program sets one
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
-  ToolOffsets offsets;  // the setup's [[offset]] table (interp/tool_offset.hpp)
+  ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
 };
 
 struct InterpretResult {

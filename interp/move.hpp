@@ -18,7 +18,7 @@ enum class FeedMode { PerMinute, PerRevolution };  // G98 / G99 (system A)
 enum class SpindleMode { Rpm, SurfaceSpeed };      // G97 / G96
 enum class NoseSide { None, Left, Right };         // G40 / G41 / G42
 
-/// The nose radius compensation a move was programmed under (interp/nose_compensation.hpp):
+/// The nose radius compensation a move was programmed under (interp/compensation/nose_compensation.hpp):
 /// the side, and the nose radius R and imaginary tip number (0–9) of the tool offset in force.
 struct NoseComp {
   NoseSide side = NoseSide::None;
@@ -43,7 +43,7 @@ struct Move {
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
   std::optional<double> spindleLimitRpm;  // G50 S, in force under G96
-  double timeS = 0;   // how long the move takes on the machine (see interp/cycle_time.hpp)
+  double timeS = 0;   // how long the move takes on the machine (see interp/motion/cycle_time.hpp)
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block
   int column = 0;     // 1-based column where that block starts

@@ -23,7 +23,7 @@
 #include "app/collision_checks.hpp"
 #include "app/job.hpp"
 #include "app/setup.hpp"
-#include "interp/cycle_time.hpp"
+#include "interp/motion/cycle_time.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "sim/simulate.hpp"

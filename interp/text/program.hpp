@@ -1,0 +1,46 @@
+#pragma once
+// The whole program text read into blocks before any runs, so that execution can jump:
+// M98 to an O number, G70–G73 to the N numbers of their contour. Each block is tokenized
+// and sorted into words as it is read; an error in a block is kept with the block and
+// reported only if execution reaches it (text after M30 that never runs is never checked,
+// as when the program was read block by block).
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "interp/text/block_parser.hpp"
+#include "interp/result.hpp"
+
+namespace lathesim::interp {
+
+struct ProgramBlock {
+  int ordinal = 0;        // 0-based position among the blocks of the text
+  int line = 0;           // 1-based line where the block starts
+  int column = 0;         // 1-based column where the block starts
+  bool deleted = false;   // it starts with '/'
+  bool skipped = false;   // deleted while block delete is on: never runs, never checked
+  std::optional<int> sequenceNumber;  // its N word
+  std::optional<int> programNumber;   // its O word: a program starts here
+  Result<ParsedBlock> parsed = Error{};  // the sorted words, or why the block cannot run
+};
+
+struct Program {
+  std::vector<ProgramBlock> blocks;
+  std::map<int, std::size_t> programStart;  // O number → index of the first block with it
+  std::vector<int> programOf;  // per block: the index of the O block it follows, −1 before any
+
+  /// The index of the first block numbered N`sequenceNumber` in the same program (between
+  /// the same O blocks) as block `from`.
+  std::optional<std::size_t> findSequence(int sequenceNumber, std::size_t from) const;
+  /// The O number of the program that block `index` belongs to, if it has one.
+  std::optional<int> programNumberOf(std::size_t index) const;
+};
+
+/// Splits, tokenizes and sorts every block of `text`. Never fails: a block that cannot be read
+/// carries its error; a comment left open ends the text with a block carrying that error.
+Program readProgram(std::string_view text, bool blockDelete, Dialect dialect);
+
+}  // namespace lathesim::interp
