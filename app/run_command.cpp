@@ -31,9 +31,9 @@ int runCommand(const RunOptions& options) {
 
 int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
                   std::optional<interp::Dialect> dialect) {
-  const std::optional<Job> job = loadJob(program, setup, dialect);
-  if (!job) return 1;
-  interp::writeToolpathCsv(job->toolpath, std::cout);
+  const std::optional<job::Job> loaded = job::loadJob(program, setup, dialect);
+  if (!loaded) return 1;
+  interp::writeToolpathCsv(loaded->toolpath, std::cout);
   return 0;
 }
 

@@ -8,9 +8,9 @@
 
 #include <toml++/toml.h>
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 
 /// A problem found in a tool table, placed at a TOML node; `columnOffset` moves the caret to
 /// the offending character inside a string value (the opening quote is column 0 of the value).
@@ -31,4 +31,4 @@ const std::vector<std::string_view>& toolShapeKeys();
 bool readToolShape(const toml::table& table, const std::string& name, ToolDefinition& tool,
                    std::vector<ToolKeyProblem>& problems);
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 SetupResult parse(std::string_view text) { return parseSetup(text, "part.toml"); }
@@ -88,4 +88,4 @@ TEST(OffsetSetup, NotAnArrayOfTablesIsAnError) {
 }
 
 }  // namespace
-}  // namespace lathesim::app
+}  // namespace lathesim::job

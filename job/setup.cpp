@@ -5,9 +5,9 @@
 // default tool entirely, and each must give its number. All problems in a file are
 // reported together; a file with any error yields no Setup.
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 
-#include "app/tool_setup.hpp"
+#include "job/tool_setup.hpp"
 
 #include <array>
 #include <charconv>
@@ -21,9 +21,9 @@
 
 #include <toml++/toml.h>
 
-#include "app/offset_setup.hpp"
+#include "job/offset_setup.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 using interp::Diagnostic;
@@ -447,4 +447,4 @@ SetupResult loadSetup(const std::filesystem::path& file) {
   return parseSetup(text.str(), fileName);
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

@@ -1,13 +1,13 @@
 // [[offset]] tables → interp::ToolOffsets; see offset_setup.hpp for the keys.
 
-#include "app/offset_setup.hpp"
+#include "job/offset_setup.hpp"
 
 #include <cmath>
 #include <map>
 #include <optional>
 #include <string_view>
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 constexpr std::string_view kKeys[] = {"number", "x", "z", "radius", "tip", "wear_x", "wear_z"};
@@ -111,4 +111,4 @@ void readOffsets(const toml::node& node, interp::ToolOffsets& offsets, const Rep
   }
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

@@ -1,4 +1,4 @@
-#include "app/job.hpp"
+#include "job/job.hpp"
 
 #include <fstream>
 #include <iostream>
@@ -7,7 +7,7 @@
 #include "interp/motion/cycle_time.hpp"
 #include "interp/interpreter.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 void print(const std::vector<interp::Diagnostic>& diagnostics) {
@@ -75,4 +75,4 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
   return job;
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

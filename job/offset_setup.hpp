@@ -17,7 +17,7 @@
 
 #include "interp/compensation/tool_offset.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 
 /// Reports one problem at a place in the file.
 using ReportProblem = std::function<void(const toml::source_region& where, std::string message)>;
@@ -27,4 +27,4 @@ using ReportProblem = std::function<void(const toml::source_region& where, std::
 /// 0–9) is reported naming the key, and the offsets read without problems are kept.
 void readOffsets(const toml::node& node, interp::ToolOffsets& offsets, const ReportProblem& report);
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

@@ -3,12 +3,12 @@
 
 #include <gtest/gtest.h>
 
-#include "app/collision_checks.hpp"
-#include "app/setup.hpp"
+#include "job/collision_checks.hpp"
+#include "job/setup.hpp"
 #include "interp/interpreter.hpp"
 #include "sim/simulate.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 // Φ50 × 60 bar, face Z0; the default chuck: jaws r 25..45 over Z −80..−60, behind the bar.
@@ -73,4 +73,4 @@ TEST(ToolCollisions, TurningIntoTheJawsIsIntoChuck) {
 }
 
 }  // namespace
-}  // namespace lathesim::app
+}  // namespace lathesim::job

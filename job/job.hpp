@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/move.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 
 struct Job {
   Setup setup;
@@ -31,4 +31,4 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup);
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
                            std::optional<interp::Dialect> dialect = std::nullopt);
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

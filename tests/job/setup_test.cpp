@@ -1,6 +1,6 @@
 // The setup file: defaults, a full valid file, and each error with its message and position.
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 using interp::Diagnostic;
@@ -27,7 +27,7 @@ Diagnostic onlyError(std::string_view text) {
 std::vector<RZ> verticesOf(const ConvexPolygon& polygon) { return polygon.vertices(); }
 
 TEST(DefaultSetup, IsTheSeedBarWithOneSharpTool) {
-  const app::Setup setup = defaultSetup();
+  const job::Setup setup = defaultSetup();
   EXPECT_EQ(setup.sourceName, "(default setup)");
   EXPECT_DOUBLE_EQ(setup.stock.diameterMm, 125.0);
   EXPECT_DOUBLE_EQ(setup.stock.lengthMm, 112.0);
@@ -47,8 +47,8 @@ TEST(ParseSetup, EmptyFileIsTheDefaultSetup) {
   const SetupResult result = parse("");
   ASSERT_TRUE(result.setup.has_value());
   EXPECT_TRUE(result.diagnostics.empty());
-  const app::Setup& setup = *result.setup;
-  const app::Setup expected = defaultSetup();
+  const job::Setup& setup = *result.setup;
+  const job::Setup expected = defaultSetup();
   EXPECT_EQ(setup.sourceName, "part.toml");
   EXPECT_DOUBLE_EQ(setup.stock.diameterMm, expected.stock.diameterMm);
   EXPECT_DOUBLE_EQ(setup.stock.lengthMm, expected.stock.lengthMm);
@@ -91,7 +91,7 @@ number = 7
 polygon = [[0, 0], [4, -1], [5, 5]]
 )");
   ASSERT_TRUE(result.setup.has_value()) << (result.diagnostics.empty() ? "" : result.diagnostics[0].message);
-  const app::Setup& setup = *result.setup;
+  const job::Setup& setup = *result.setup;
   EXPECT_DOUBLE_EQ(setup.stock.diameterMm, 50.0);
   EXPECT_DOUBLE_EQ(setup.stock.lengthMm, 60.0);
   EXPECT_DOUBLE_EQ(setup.stock.faceZMm, -0.5);
@@ -107,7 +107,7 @@ polygon = [[0, 0], [4, -1], [5, 5]]
 }
 
 TEST(ParseSetup, MachineLimitsAndReferenceDefault) {
-  const app::Setup setup = defaultSetup();
+  const job::Setup setup = defaultSetup();
   EXPECT_DOUBLE_EQ(setup.machine.rapidXMmPerMin, 6000.0);
   EXPECT_DOUBLE_EQ(setup.machine.rapidZMmPerMin, 8000.0);
   EXPECT_DOUBLE_EQ(setup.machine.maxRpm, 3000.0);
@@ -121,7 +121,7 @@ TEST(ParseSetup, MachineLimitsAndReferenceDefault) {
 TEST(ParseSetup, MachineRapidMaxRpmAndReference) {
   const SetupResult result = parse("[machine]\nrapid = [4000, 10000.5]\nmax_rpm = 2500\nreference = [300, 150]\n");
   ASSERT_TRUE(result.setup.has_value()) << result.diagnostics[0].message;
-  const app::Setup& setup = *result.setup;
+  const job::Setup& setup = *result.setup;
   EXPECT_DOUBLE_EQ(setup.machine.rapidXMmPerMin, 4000.0);
   EXPECT_DOUBLE_EQ(setup.machine.rapidZMmPerMin, 10000.5);
   EXPECT_DOUBLE_EQ(setup.machine.maxRpm, 2500.0);
@@ -395,4 +395,4 @@ TEST(LoadSetup, EveryBundledPartHasAValidSetup) {
 }
 
 }  // namespace
-}  // namespace lathesim::app
+}  // namespace lathesim::job

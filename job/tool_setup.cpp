@@ -4,7 +4,7 @@
 //   thread:  angle, pitch, nose_radius, tip   drill: diameter, point_angle, length
 // A polygon tool may give tip alone (default 3).
 
-#include "app/tool_setup.hpp"
+#include "job/tool_setup.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include "geometry/iso_insert.hpp"
 #include "geometry/tool_shape.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 using interp::Severity;
@@ -257,4 +257,4 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
   return true;
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

@@ -16,7 +16,7 @@
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
-namespace lathesim::app {
+namespace lathesim::job {
 
 struct ToolDefinition {
   int number = 1;
@@ -39,7 +39,7 @@ struct Setup {
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
-  interp::ToolOffsets offsets;        // [[offset]] (app/offset_setup.hpp); none by default
+  interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
 };
 
 struct SetupResult {
@@ -54,4 +54,4 @@ Setup defaultSetup();
 SetupResult parseSetup(std::string_view tomlText, const std::string& fileName);
 SetupResult loadSetup(const std::filesystem::path& file);
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

@@ -1,11 +1,11 @@
-#include "app/gouge_causes.hpp"
+#include "check/gouge_causes.hpp"
 
 #include <algorithm>
 #include <set>
 
 #include "sim/move_sweep.hpp"
 
-namespace lathesim::app {
+namespace lathesim::check {
 namespace {
 
 constexpr std::size_t kMaxProbesPerRegion = 400;
@@ -62,4 +62,4 @@ void attributeGouges(DeviationReport& report, const interp::Toolpath& toolpath, 
   }
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::check

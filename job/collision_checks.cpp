@@ -1,6 +1,6 @@
-#include "app/collision_checks.hpp"
+#include "job/collision_checks.hpp"
 
-namespace lathesim::app {
+namespace lathesim::job {
 
 sim::CollisionChecks collisionChecksOf(const Setup& setup) {
   sim::CollisionChecks checks;
@@ -12,4 +12,4 @@ sim::CollisionChecks collisionChecksOf(const Setup& setup) {
   return checks;
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::job

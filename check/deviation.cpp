@@ -1,11 +1,11 @@
-#include "app/deviation.hpp"
+#include "check/deviation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <unordered_map>
 
-namespace lathesim::app {
+namespace lathesim::check {
 namespace {
 
 double ramp(double signedMm, double h) { return std::clamp(0.5 - signedMm / h, 0.0, 1.0); }
@@ -120,4 +120,4 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
   return report;
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::check

@@ -1,9 +1,9 @@
-#include "app/process_figures.hpp"
+#include "check/process_figures.hpp"
 
 #include <cmath>
 #include <map>
 
-namespace lathesim::app {
+namespace lathesim::check {
 
 double pathLengthMm(const interp::Move& move) {
   if (move.kind == interp::MoveKind::Dwell) return 0;
@@ -46,4 +46,4 @@ ProcessFigures processFigures(const interp::Toolpath& toolpath, const sim::Simul
   return figures;
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::check

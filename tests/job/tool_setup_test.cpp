@@ -1,14 +1,14 @@
 // [[tool]] by catalogue code and by kind: the seed's tool from its two codes, each kind's
 // keys, and each error with its key, line and the column of the bad character.
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-namespace lathesim::app {
+namespace lathesim::job {
 namespace {
 
 using interp::Diagnostic;
@@ -193,4 +193,4 @@ TEST(ChuckSetupErrors, JawsMustReachBeyondTheBar) {
 }
 
 }  // namespace
-}  // namespace lathesim::app
+}  // namespace lathesim::job
