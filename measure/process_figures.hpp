@@ -13,7 +13,7 @@
 #include "interp/move.hpp"
 #include "sim/simulate.hpp"
 
-namespace lathesim::check {
+namespace lathesim::measure {
 
 struct ToolRemoval {
   int tool = 0;
@@ -36,4 +36,4 @@ double pathLengthMm(const interp::Move& move);
 ProcessFigures processFigures(const interp::Toolpath& toolpath, const sim::SimulationResult& simulation,
                               double voxelMm);
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

@@ -1,12 +1,12 @@
 // Path lengths, air cutting and removal per tool, on a toolpath written out by hand.
 
-#include "check/process_figures.hpp"
+#include "measure/process_figures.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace lathesim::check {
+namespace lathesim::measure {
 namespace {
 
 interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int tool, double timeS) {
@@ -60,4 +60,4 @@ TEST(ProcessFigures, ClockwiseArcGoesTheLongWayRound) {
 }
 
 }  // namespace
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

@@ -1,13 +1,13 @@
 // The drawing's profile file: points as diameters, arcs by radius or centre, and every
 // mistake reported on its line.
 
-#include "check/drawing.hpp"
+#include "measure/drawing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-namespace lathesim::check {
+namespace lathesim::measure {
 namespace {
 
 std::string firstMessage(const DrawingResult& result) {
@@ -109,4 +109,4 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrawing{"[[profile]]\nx = 30\nz = = 0\n", 3, ""}));
 
 }  // namespace
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

@@ -31,7 +31,7 @@
 
 #include "geometry/meridian_profile.hpp"
 
-namespace lathesim::check {
+namespace lathesim::measure {
 
 struct DeviationSample {
   RZ at{0, 0};       // on the part's surface or on the drawing's
@@ -63,4 +63,4 @@ struct DeviationReport {
 DeviationReport measureDeviation(const SampledSection& section, const MeridianProfile& part,
                                  const MeridianProfile& drawing, double toleranceMm);
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

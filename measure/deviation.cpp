@@ -1,11 +1,11 @@
-#include "check/deviation.hpp"
+#include "measure/deviation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <unordered_map>
 
-namespace lathesim::check {
+namespace lathesim::measure {
 namespace {
 
 double ramp(double signedMm, double h) { return std::clamp(0.5 - signedMm / h, 0.0, 1.0); }
@@ -120,4 +120,4 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
   return report;
 }
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

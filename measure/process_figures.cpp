@@ -1,9 +1,9 @@
-#include "check/process_figures.hpp"
+#include "measure/process_figures.hpp"
 
 #include <cmath>
 #include <map>
 
-namespace lathesim::check {
+namespace lathesim::measure {
 
 double pathLengthMm(const interp::Move& move) {
   if (move.kind == interp::MoveKind::Dwell) return 0;
@@ -46,4 +46,4 @@ ProcessFigures processFigures(const interp::Toolpath& toolpath, const sim::Simul
   return figures;
 }
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

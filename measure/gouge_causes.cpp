@@ -1,11 +1,11 @@
-#include "check/gouge_causes.hpp"
+#include "measure/gouge_causes.hpp"
 
 #include <algorithm>
 #include <set>
 
 #include "sim/move_sweep.hpp"
 
-namespace lathesim::check {
+namespace lathesim::measure {
 namespace {
 
 constexpr std::size_t kMaxProbesPerRegion = 400;
@@ -62,4 +62,4 @@ void attributeGouges(DeviationReport& report, const interp::Toolpath& toolpath, 
   }
 }
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

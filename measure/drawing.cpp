@@ -2,7 +2,7 @@
 // chords. Every problem is reported with the line of the row it is in; a file with any
 // problem yields no outline.
 
-#include "check/drawing.hpp"
+#include "measure/drawing.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -10,7 +10,7 @@
 
 #include <toml++/toml.h>
 
-namespace lathesim::check {
+namespace lathesim::measure {
 namespace {
 
 using interp::Diagnostic;
@@ -170,4 +170,4 @@ DrawingResult loadDrawing(const std::filesystem::path& file) {
   return parseDrawing(text.str(), file.string());
 }
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

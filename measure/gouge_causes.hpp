@@ -7,16 +7,16 @@
 // and the lines of the moves that first covered them are the region's causes. A point the
 // bar never held (the drawing asks for more than the stock has) has no cause.
 
-#include "check/deviation.hpp"
+#include "measure/deviation.hpp"
 #include "interp/move.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock_spec.hpp"
 
-namespace lathesim::check {
+namespace lathesim::measure {
 
 /// Fills `lines` of every gouge region of `report` (sorted, each line once). Moves sweep as
 /// in the simulation at `voxelMm` (sim/move_sweep.hpp).
 void attributeGouges(DeviationReport& report, const interp::Toolpath& toolpath, const sim::ToolOutlines& tools,
                      const sim::StockSpec& stock, double voxelMm);
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

@@ -27,7 +27,7 @@
 #include "geometry/rz.hpp"
 #include "interp/diagnostic.hpp"
 
-namespace lathesim::check {
+namespace lathesim::measure {
 
 /// Arcs become chords no further than this from the true arc (mm): far below any voxel.
 inline constexpr double kDrawingChordErrorMm = 1e-4;
@@ -40,4 +40,4 @@ struct DrawingResult {
 DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileName);
 DrawingResult loadDrawing(const std::filesystem::path& file);
 
-}  // namespace lathesim::check
+}  // namespace lathesim::measure

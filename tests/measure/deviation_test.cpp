@@ -1,13 +1,13 @@
 // The deviation measure on sections whose answers are known exactly.
 
-#include "check/deviation.hpp"
+#include "measure/deviation.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace lathesim::check {
+namespace lathesim::measure {
 namespace {
 
 /// φ of the solid r ≤ 10, −5 ≤ z ≤ 5 (exact signed distance), sampled every `h` from
@@ -61,4 +61,4 @@ TEST(Deviation, UndersizeDiameterIsOneGougeRegion) {
 }
 
 }  // namespace
-}  // namespace lathesim::check
+}  // namespace lathesim::measure
