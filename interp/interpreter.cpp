@@ -17,13 +17,15 @@ namespace {
 // error; appends to `toolpath` and `warnings`. A block's read error is reported when
 // execution reaches it.
 Status runProgram(std::string_view programText, const InterpreterOptions& options,
-                  Toolpath& toolpath, std::vector<Error>& warnings) {
+                  Toolpath& toolpath, std::vector<Error>& warnings, std::vector<Error>& notes) {
   ModalState state;
-  state.position = options.startPosition;
+  state.frame.offsets = options.workOffsets;
+  state.position = options.startPosition - state.frame.shift();
   state.feedMode = options.initialFeedMode;
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
 
   const Program program = readProgram(programText, options.blockDelete, options.dialect);
+  for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   CallStack calls(program);
   std::size_t next = 0;
   while (!state.ended && next < program.blocks.size()) {
@@ -61,6 +63,16 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
   return success();
 }
 
+// Each move from its work coordinate system into the setup's frame. A change of system
+// re-expresses the position (work_coordinates.cpp), so consecutive moves stay joined.
+void placeInSetupFrame(std::vector<Move>& moves) {
+  for (Move& move : moves) {
+    move.from += move.workShift;
+    move.to += move.workShift;
+    if (isArc(move.kind)) move.center += move.workShift;
+  }
+}
+
 }  // namespace
 
 bool InterpretResult::ok() const {
@@ -74,10 +86,13 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
-  Status status = runProgram(programText, options, result.toolpath, warnings);
-  // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
+  std::vector<Error> notes;
+  Status status = runProgram(programText, options, result.toolpath, warnings, notes);
+  // The moves are made as programmed, in the work coordinate systems; placed in the setup's
+  // frame, then G41/G42 and the tool offsets' shifts are applied.
+  if (status.ok()) placeInSetupFrame(result.toolpath.moves);
   if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
-  if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);
+  if (status.ok()) status = applyToolOffsets(result.toolpath.moves);
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.
     const Error& error = status.error();
@@ -92,6 +107,10 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   for (const Error& warning : warnings) {
     result.diagnostics.push_back({Severity::Warning, fileName, warning.line, warning.column,
                                   warning.message, lineOf(programText, warning.line)});
+  }
+  for (const Error& note : notes) {
+    result.diagnostics.push_back({Severity::Note, fileName, note.line, note.column, note.message,
+                                  lineOf(programText, note.line)});
   }
   return result;
 }

@@ -11,6 +11,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/execution/work_frame.hpp"
 
 namespace lathesim::interp {
 
@@ -24,12 +25,15 @@ struct InterpreterOptions {
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
+  WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)
+  std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
+                                  // reference point (or the start) if unset
 };
 
 struct InterpretResult {
   Toolpath toolpath;
   std::vector<Diagnostic> diagnostics;  // the error that stopped the program alone, or the
-                                        // warnings of a program that ran, by line
+                                        // warnings and notes of a program that ran, by line
   bool ok() const;
 };
 

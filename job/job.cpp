@@ -30,6 +30,8 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.dialect = setup.dialect;
   options.initialFeedMode = setup.initialFeedMode;
   options.offsets = setup.offsets;
+  options.workOffsets = setup.workOffsets;
+  options.machineZero = setup.machineZero;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
 }
@@ -67,6 +69,7 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
+    else if (d.severity == interp::Severity::Note) job.notes.push_back(std::move(d));
   job.toolpath = std::move(result.toolpath);
   for (const interp::Error& w : interp::assignMoveTimes(job.toolpath, job.setup.machine)) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
