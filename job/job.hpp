@@ -18,6 +18,7 @@ struct Job {
   Setup setup;
   interp::Toolpath toolpath;  // every move's timeS filled in
   std::vector<interp::Diagnostic> warnings;
+  std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   std::string programText;
 
   /// A warning located in the program, ready to print and report.

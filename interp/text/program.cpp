@@ -54,6 +54,8 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
     block.line = raw.line;
     block.column = raw.column;
     block.deleted = raw.deleted;
+    block.comments = raw.comments;
+    block.commentsAbove = raw.commentsAbove;
     block.skipped = raw.deleted && blockDelete;
     if (!block.skipped) {
       auto words = tokenize(raw);
@@ -73,6 +75,7 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
     program.programOf.push_back(currentProgram);
     program.blocks.push_back(std::move(block));
   }
+  program.notes = reader.notes();
   return program;
 }
 

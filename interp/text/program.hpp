@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct ProgramBlock {
   bool skipped = false;   // deleted while block delete is on: never runs, never checked
   std::optional<int> sequenceNumber;  // its N word
   std::optional<int> programNumber;   // its O word: a program starts here
+  std::vector<std::string> comments;       // its own comments (lexer.hpp: RawBlock)
+  std::vector<std::string> commentsAbove;  // comment-only lines directly above it
   Result<ParsedBlock> parsed = Error{};  // the sorted words, or why the block cannot run
 };
 
@@ -31,6 +34,7 @@ struct Program {
   std::vector<ProgramBlock> blocks;
   std::map<int, std::size_t> programStart;  // O number → index of the first block with it
   std::vector<int> programOf;  // per block: the index of the O block it follows, −1 before any
+  std::vector<ReadNote> notes;  // what the reader skipped (a tape leader, prose after ';')
 
   /// The index of the first block numbered N`sequenceNumber` in the same program (between
   /// the same O blocks) as block `from`.

@@ -145,3 +145,18 @@ TEST(Subprogram, M99PIsNotSupported) {
 
 }  // namespace
 }  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+TEST(Subprogram, ColonProgramNumbersNameSubprogramsToo) {
+  // `:0100` is O0100: M98 P100 calls it (leading zeros do not matter), twice by L2.
+  const auto result = test::run(":0001 (MAIN)\nG00 X50 Z2\nM98 P100 L2\nM30\n:0100\nG01 U-2 F0.1\nM99\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  test::expectMoves(result.toolpath.moves, {{test::kRapid, 100, 200, 25, 2, 0, 0},
+                                            {test::kFeed, 25, 2, 24, 2, 0.1, 0},
+                                            {test::kFeed, 24, 2, 23, 2, 0.1, 0}});
+}
+
+}  // namespace
+}  // namespace lathesim::interp
