@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "interp/execution/block_executor.hpp"
 #include "interp/execution/call_stack.hpp"
 #include "interp/motion/feed_warnings.hpp"
 #include "interp/execution/modal_state.hpp"
 #include "interp/compensation/nose_compensation.hpp"
+#include "interp/text/control_family.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp {
@@ -73,6 +76,17 @@ void placeInSetupFrame(std::vector<Move>& moves) {
   }
 }
 
+// A program of another control family is refused as a whole, naming the family.
+Status refuseForeignProgram(std::string_view programText) {
+  const auto foreign = recogniseForeignProgram(programText);
+  if (!foreign) return success();
+  return Error{foreign->line, foreign->column,
+               fmt::format("this is a program for {} ('{}'), not Fanuc/GSK lathe G-code: lathesim "
+                           "reads the dialects fanuc-a, fanuc-b and hnc and does not translate other "
+                           "control families",
+                           foreign->family, foreign->evidence)};
+}
+
 }  // namespace
 
 bool InterpretResult::ok() const {
@@ -87,7 +101,8 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
   std::vector<Error> notes;
-  Status status = runProgram(programText, options, result.toolpath, warnings, notes);
+  Status status = refuseForeignProgram(programText);
+  if (status.ok()) status = runProgram(programText, options, result.toolpath, warnings, notes);
   // The moves are made as programmed, in the work coordinate systems; placed in the setup's
   // frame, then G41/G42 and the tool offsets' shifts are applied.
   if (status.ok()) placeInSetupFrame(result.toolpath.moves);
