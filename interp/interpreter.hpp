@@ -1,6 +1,7 @@
 #pragma once
 // G-code text → Toolpath. The single entry point of the interp module.
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,8 @@ struct InterpreterOptions {
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
   WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)
+  std::vector<std::filesystem::path> programDirectories;  // where M98 finds programs the text
+                                                         // lacks, in order (program_library.hpp)
   std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
                                   // reference point (or the start) if unset
 };

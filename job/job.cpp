@@ -41,9 +41,11 @@ interp::Diagnostic Job::warningAt(int line, int column, std::string message) con
           interp::lineOf(programText, line)};
 }
 
-std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect) {
-  Job job{defaultSetup(), {}, {}, {}};
+std::optional<Job> loadJob(const JobRequest& request) {
+  const std::filesystem::path& program = request.program;
+  const std::optional<std::filesystem::path>& setupFile = request.setup;
+  const std::optional<interp::Dialect>& dialect = request.dialect;
+  Job job{defaultSetup(), {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     print(loaded.diagnostics);
@@ -63,8 +65,10 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
   text << in.rdbuf();
 
   job.programText = text.str();
-  interp::InterpretResult result =
-      interp::interpret(job.programText, program.string(), interpreterOptionsOf(job.setup));
+  interp::InterpreterOptions options = interpreterOptionsOf(job.setup);
+  options.programDirectories = request.programDirectories;
+  options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());
+  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options);
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)

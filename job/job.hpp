@@ -28,8 +28,15 @@ struct Job {
 /// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.
 interp::InterpreterOptions interpreterOptionsOf(const Setup& setup);
 
-/// `dialect`, when given (--dialect), overrides the setup's [machine] dialect.
-std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect = std::nullopt);
+/// What a command names: the program, and what the command line says of the setup.
+struct JobRequest {
+  std::filesystem::path program;
+  std::optional<std::filesystem::path> setup;
+  std::optional<interp::Dialect> dialect;  // --dialect: overrides [machine] dialect
+  std::vector<std::filesystem::path> programDirectories;  // --programs: subprograms the program
+                                                          // lacks, looked for before its own directory
+};
+
+std::optional<Job> loadJob(const JobRequest& request);
 
 }  // namespace lathesim::job
