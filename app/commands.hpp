@@ -29,6 +29,7 @@ struct RunOptions {
   std::optional<interp::Dialect> dialect;  // overrides [machine] dialect
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
   std::vector<std::filesystem::path> programDirectories;  // --programs
+  std::optional<std::string> stock;  // --stock D40xL80 (job/stock_option.hpp)
 };
 
 int runCommand(const RunOptions& options);

@@ -30,7 +30,7 @@ int runCommand(const RunOptions& options) {
 }
 
 job::JobRequest jobRequestOf(const RunOptions& options) {
-  return {options.program, options.setup, options.dialect, options.programDirectories};
+  return {options.program, options.setup, options.dialect, options.programDirectories, options.stock};
 }
 
 int expandCommand(const job::JobRequest& request) {

@@ -4,7 +4,11 @@
 #include <iostream>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "interp/motion/cycle_time.hpp"
+#include "interp/text/stated_stock.hpp"
+#include "job/stock_option.hpp"
 #include "interp/interpreter.hpp"
 
 namespace lathesim::job {
@@ -65,6 +69,26 @@ std::optional<Job> loadJob(const JobRequest& request) {
   text << in.rdbuf();
 
   job.programText = text.str();
+  if (request.stock) {
+    auto stock = parseStockOption(*request.stock);
+    if (const auto* problem = std::get_if<std::string>(&stock)) {
+      std::cerr << "lathesim: error: " << *problem << '\n';
+      return std::nullopt;
+    }
+    job.setup.stock = std::get<sim::StockSpec>(stock);
+    job.setup.stockGiven = true;
+    job.setup.sourceName += " with --stock " + *request.stock;
+  } else if (!job.setup.stockGiven) {
+    if (const auto stated = interp::stockStatedIn(job.programText)) {
+      job.setup.stock = sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
+      job.notes.push_back({interp::Severity::Note, program.string(), stated->line, stated->column,
+                           fmt::format("the bar is Φ{:g} × {:g} as the program states ({}), its face at "
+                                       "Z0: no setup gives the stock",
+                                       stated->diameterMm, stated->lengthMm, stated->text),
+                           interp::lineOf(job.programText, stated->line)});
+      print({job.notes.back()});
+    }
+  }
   interp::InterpreterOptions options = interpreterOptionsOf(job.setup);
   options.programDirectories = request.programDirectories;
   options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());

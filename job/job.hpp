@@ -35,8 +35,12 @@ struct JobRequest {
   std::optional<interp::Dialect> dialect;  // --dialect: overrides [machine] dialect
   std::vector<std::filesystem::path> programDirectories;  // --programs: subprograms the program
                                                           // lacks, looked for before its own directory
+  std::optional<std::string> stock;  // --stock D40xL80: the bar, over the setup's and the program's
 };
 
+/// The bar comes from --stock, else the setup's [stock], else the program's own statement
+/// (interp/text/stated_stock.hpp: a billet line or a stock comment, face at Z0, with a note),
+/// else the default setup's.
 std::optional<Job> loadJob(const JobRequest& request);
 
 }  // namespace lathesim::job

@@ -403,8 +403,10 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
   rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck", "offset", "work_offset"}, report);
-  if (const auto* node = root.get("stock"))
+  if (const auto* node = root.get("stock")) {
+    setup.stockGiven = true;
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
+  }
   if (const auto* node = root.get("machine"))
     if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);
   if (const auto* node = root.get("sim"))

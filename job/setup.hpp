@@ -30,6 +30,7 @@ struct ToolDefinition {
 struct Setup {
   std::string sourceName;  // the file it came from, or "(default setup)"
   sim::StockSpec stock;
+  bool stockGiven = false;  // the file has [stock]: a bar the program states is not used
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
   RZ referencePosition{100.0, 200.0};  // G28's reference point (radius, Z); the start if not given
   interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm

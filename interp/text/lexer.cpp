@@ -128,6 +128,20 @@ bool BlockReader::skipLeaderLine() {
   return true;
 }
 
+bool BlockReader::skipDirectiveLine() {
+  std::size_t probe = at_;
+  while (probe < text_.size() && isBlank(text_[probe])) ++probe;
+  if (probe >= text_.size() || text_[probe] != '[') return false;
+  std::size_t end = text_.find('\n', probe);
+  if (end == std::string_view::npos) end = text_.size();
+  std::string directive(text_.substr(probe, end - probe));
+  while (!directive.empty() && isBlank(directive.back())) directive.pop_back();
+  directives_.push_back({line_, column_ + static_cast<int>(probe - at_), directive});
+  at_ = end;
+  endLine();
+  return true;
+}
+
 void BlockReader::advance(std::size_t bytes) {
   column_ += codePointCount(text_.substr(at_, bytes));
   at_ += bytes;
@@ -164,6 +178,7 @@ Result<std::optional<RawBlock>> BlockReader::next() {
     const bool lineStart = atLineStart_;
     if (atLineStart_ && !inProgram_ && skipLeaderLine()) continue;
     if (atLineStart_ && skipPercentLine()) continue;
+    if (atLineStart_ && skipDirectiveLine()) continue;
     atLineStart_ = false;
 
     RawBlock block;
@@ -237,6 +252,15 @@ std::vector<ReadNote> BlockReader::notes() const {
       what += (i == 0 ? "" : i + 1 == leaderSkipped_.size() ? " and " : ", ") + leaderSkipped_[i];
     notes.push_back({leaderAt_->line, leaderAt_->column,
                      fmt::format("skipped the tape/DNC leader before the program: {}", what)});
+  }
+  if (!directives_.empty()) {
+    const ReadNote& first = directives_.front();
+    notes.push_back({first.line, first.column,
+                     fmt::format("a line opening with '[' is a trainer's directive, not a block: skipped "
+                                 "'{}'{}",
+                                 first.message,
+                                 directives_.size() > 1 ? fmt::format(" (and {} more)", directives_.size() - 1)
+                                                        : std::string())});
   }
   if (!prose_.empty()) {
     const ReadNote& first = prose_.front();

@@ -18,6 +18,9 @@
 //     prose: IF or WHILE followed by '[', GOTO, END or DO followed by a number, '#' or '['.
 //     A word followed by prose (`; M08 coolant on`) is not a comment: it is an error at the
 //     first letter that is not a word.
+//   - A line that opens with '[' is a school trainer's directive (`[BILLET X56.4 Z84`), not a
+//     block: skipped with a note (job/ reads the billet as the bar); a Macro B block never
+//     opens with '['.
 
 #include <optional>
 #include <string>
@@ -75,6 +78,7 @@ class BlockReader {
  private:
   bool skipPercentLine();  // at a line start: skips a '%' line, returns whether it did
   bool skipLeaderLine();   // before the program: skips an '&' header line
+  bool skipDirectiveLine();  // a '[' line
   void noteLeaderControl(char c, int column);
   void advance(std::size_t bytes);  // within the line
   void endLine();                   // past the newline at at_
@@ -90,6 +94,7 @@ class BlockReader {
   std::vector<std::string> leaderSkipped_;  // what the leader held, e.g. "ESC", "the line '&HE:1'"
   std::optional<ReadNote> leaderAt_;
   std::vector<ReadNote> prose_;  // each ';' tail read as a comment
+  std::vector<ReadNote> directives_;  // each '[' line skipped
 };
 
 /// The words of a block. Fails on an unexpected character, an unknown letter, a letter
