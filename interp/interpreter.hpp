@@ -2,6 +2,7 @@
 // G-code text → Toolpath. The single entry point of the interp module.
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,6 +21,8 @@ struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
                                    // T word. A T word naming another number is an error.
+  std::function<std::string(int tool)> toolDefinitionHint;  // how to define a missing tool (the
+                                                            // setup's TOML), for that error
   bool blockDelete = true;         // '/' blocks are skipped when true
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
   FeedMode initialFeedMode = FeedMode::PerRevolution;  // G98/G99 before the program sets one

@@ -411,7 +411,10 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
     if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);
   if (const auto* node = root.get("sim"))
     if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
-  if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);
+  if (const auto* node = root.get("tool")) {
+    setup.toolsGiven = true;
+    readTools(*node, setup.tools, report);
+  }
   if (const auto* node = root.get("chuck"))
     if (const auto* table = tableAt(*node, "chuck", report)) readChuck(*table, setup.chuck, report);
   if (setup.chuck.jawDiameterMm && *setup.chuck.jawDiameterMm <= setup.stock.diameterMm)

@@ -40,6 +40,7 @@ struct Setup {
   interp::FeedMode initialFeedMode = interp::FeedMode::PerRevolution;
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
+  bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
   interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
   interp::WorkOffsets workOffsets = interp::zeroWorkOffsets();  // [[work_offset]]: G54–G59

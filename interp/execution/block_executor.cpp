@@ -253,6 +253,22 @@ Status Executor::applyTool() {
   const int tool = toolAndOffset / 100;
   const int offset = toolAndOffset % 100;
   const auto& tools = options_.toolNumbers;
+  if (std::find(tools.begin(), tools.end(), tool) == tools.end() && options_.toolDefinitionHint && place_) {
+    std::vector<std::string> seen;  // the program's T words, each once, where first written
+    std::string used;
+    for (const ProgramBlock& b : place_->program.blocks) {
+      if (b.skipped || !b.parsed.ok() || !b.parsed.value().has('T')) continue;
+      const std::string text = b.parsed.value().words.at('T').text();
+      if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
+      seen.push_back(text);
+      used += fmt::format("{}{} (line {})", used.empty() ? "" : ", ", text, b.line);
+    }
+    return errorAt(t->column,
+                   fmt::format("tool {} ({}) is defined neither in the setup nor by a comment on its "
+                               "block naming an insert (CNMG 120408) or a kind (GROOVE 3MM, DRILL 12, "
+                               "THREAD 60 DEG); the program's tools: {}; add it to the setup:\n{}",
+                               tool, t->text(), used, options_.toolDefinitionHint(tool)));
+  }
   if (std::find(tools.begin(), tools.end(), tool) == tools.end()) {
     std::string defined;
     for (int number : tools) defined += (defined.empty() ? "" : ", ") + std::to_string(number);
