@@ -8,10 +8,10 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "app/deviation.hpp"
-#include "app/drawing.hpp"
-#include "app/gouge_causes.hpp"
-#include "app/process_figures.hpp"
+#include "measure/deviation.hpp"
+#include "measure/drawing.hpp"
+#include "measure/gouge_causes.hpp"
+#include "measure/process_figures.hpp"
 #include "app/run_pipeline.hpp"
 #include "geometry/mesh_slice.hpp"
 #include "render/deviation_image.hpp"
@@ -24,7 +24,7 @@ using Json = nlohmann::ordered_json;
 
 /// The drawing's outline from a profile file, or nullopt with the diagnostics printed.
 std::optional<MeridianProfile> loadProfile(const std::filesystem::path& file) {
-  DrawingResult drawing = loadDrawing(file);
+  measure::DrawingResult drawing = measure::loadDrawing(file);
   for (const auto& d : drawing.diagnostics) std::cerr << interp::format(d) << '\n';
   if (!drawing.outline) return std::nullopt;
   return MeridianProfile::fromPolygon(std::move(*drawing.outline));
@@ -69,7 +69,7 @@ std::optional<MeridianProfile> simulateTarget(const CheckOptions& options, doubl
 
 Json place(const RZ& p) { return {{"z", p.y()}, {"diameter", diameterOf(p)}}; }
 
-Json checkJson(const CheckOptions& options, const DeviationReport& d, const ProcessFigures& p, double checkS) {
+Json checkJson(const CheckOptions& options, const measure::DeviationReport& d, const measure::ProcessFigures& p, double checkS) {
   Json check;
   check["target"] = options.drawing ? options.drawing->string() : options.targetProgram->string();
   check["target_kind"] = targetKind(options);
@@ -116,7 +116,7 @@ std::string where(const RZ& p) {
   return text;
 }
 
-void printSummary(const CheckOptions& options, const DeviationReport& d) {
+void printSummary(const CheckOptions& options, const measure::DeviationReport& d) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   std::cout << options.run.program.string() << " against " << target << ": "
             << (d.withinTolerance() ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm\n";
@@ -151,7 +151,7 @@ std::vector<float> vertexDeviations(const TriangleMesh& part, const MeridianProf
   return deviations;
 }
 
-std::string regionLabel(const DeviationRegion& r) {
+std::string regionLabel(const measure::DeviationRegion& r) {
   std::string text = (r.gouge ? "gouge " : "excess ") + fixed(r.maxMm, 3) + " mm\n" + where(r.at);
   if (r.gouge && !r.lines.empty()) {
     text += r.lines.size() == 1 ? ", line" : ", lines";
@@ -163,7 +163,7 @@ std::string regionLabel(const DeviationRegion& r) {
 constexpr std::size_t kLabelledRegions = 4;
 
 render::SectionImage sectionImage(const std::string& title, const SampledSection& section, const MeridianProfile& part,
-                                  const MeridianProfile& drawing, const DeviationReport& d) {
+                                  const MeridianProfile& drawing, const measure::DeviationReport& d) {
   render::SectionImage image;
   image.title = title;
   image.drawing = drawing.surface();
@@ -182,7 +182,7 @@ render::SectionImage sectionImage(const std::string& title, const SampledSection
 }
 
 void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
-                          const MeridianProfile& part, const MeridianProfile& drawing, const DeviationReport& d,
+                          const MeridianProfile& part, const MeridianProfile& drawing, const measure::DeviationReport& d,
                           StagedOutput& out) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   render::DeviationImageOptions image;
@@ -217,9 +217,9 @@ int checkCommand(const CheckOptions& options) {
   run->progress->stage("measuring against the drawing");
   SampledSection section = run->stock->meridianSection();
   const MeridianProfile part = MeridianProfile::fromSection(section);
-  DeviationReport deviation = measureDeviation(section, part, *drawing, tolerance);
-  attributeGouges(deviation, run->job.toolpath, outlinesOf(run->job.setup), run->job.setup.stock, run->figures.voxelMm);
-  const ProcessFigures process = processFigures(run->job.toolpath, run->figures.simulation, voxel);
+  measure::DeviationReport deviation = measure::measureDeviation(section, part, *drawing, tolerance);
+  measure::attributeGouges(deviation, run->job.toolpath, outlinesOf(run->job.setup), run->job.setup.stock, run->figures.voxelMm);
+  const measure::ProcessFigures process = measure::processFigures(run->job.toolpath, run->figures.simulation, voxel);
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);

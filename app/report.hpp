@@ -29,10 +29,11 @@ struct RunFigures {
   DroppedCrumbs meshCrumbs;       // sub-voxel shells left out of the exported mesh
   std::size_t meshTriangles = 0;
   std::size_t moves = 0;
-  double cycleTimeS = 0;  // the machine time of all moves (interp/cycle_time.hpp)
+  double cycleTimeS = 0;  // the machine time of all moves (interp/motion/cycle_time.hpp)
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
   sim::SimulationResult simulation;
   std::vector<interp::Diagnostic> warnings;
+  std::vector<interp::Diagnostic> notes;
   RunTimings timing;
 };
 

@@ -6,10 +6,10 @@
 #include <iostream>
 
 #include "app/at_line.hpp"
-#include "app/collision_checks.hpp"
+#include "job/collision_checks.hpp"
 #include "app/tool_picture.hpp"
 #include "app/volume_checks.hpp"
-#include "interp/cycle_time.hpp"
+#include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
@@ -17,7 +17,7 @@
 
 namespace lathesim::app {
 
-sim::ToolOutlines outlinesOf(const Setup& setup) {
+sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   sim::ToolOutlines tools;
   for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
   return tools;
@@ -35,15 +35,15 @@ void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, messa
 }  // namespace
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
-  std::optional<Job> job = loadJob(options.program, options.setup, options.dialect);
-  if (!job || !cutAtLine(options.atLine, *job)) return std::nullopt;
+  std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
+  if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
-  run.job = std::move(*job);
+  run.job = std::move(*loaded);
   RunFigures& figures = run.figures;
   figures.atLine = options.atLine;
   figures.timing.parseS = clock.lap();
 
-  const Setup& setup = run.job.setup;
+  const job::Setup& setup = run.job.setup;
   const double voxel = options.voxelMm.value_or(setup.voxelMm.value_or(kDefaultVoxelMm));
   if (const auto problem = sim::gridProblem(setup.stock, voxel)) {
     std::cerr << "lathesim: error: " << *problem << '\n';
@@ -55,12 +55,13 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.moves = run.job.toolpath.moves.size();
   figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
   figures.warnings = run.job.warnings;
+  figures.notes = run.job.notes;
 
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
   if (auto problem = barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
-  const sim::CollisionChecks checks = collisionChecksOf(setup);  // holders and the chuck
+  const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks);
   figures.finalVolumeMm3 = run.stock->volumeMm3();

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "app/commands.hpp"
-#include "app/job.hpp"
+#include "job/job.hpp"
 #include "app/progress.hpp"
 #include "app/report.hpp"
 #include "app/staged_output.hpp"
@@ -30,14 +30,14 @@ class Stopwatch {
 };
 
 struct SimulatedRun {
-  Job job;
+  job::Job job;
   std::unique_ptr<sim::Stock> stock;
   std::unique_ptr<Progress> progress;
   RunFigures figures;  // parse and simulate filled; mesh and render by the later steps
   TriangleMesh part;   // empty until meshPart
 };
 
-sim::ToolOutlines outlinesOf(const Setup& setup);
+sim::ToolOutlines outlinesOf(const job::Setup& setup);
 
 /// Reads the setup and program, checks the grid and simulates (progress on a terminal).
 /// Bad input: the diagnostics are printed and nullopt returned.

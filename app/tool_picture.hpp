@@ -2,12 +2,12 @@
 // Which tool the part image shows, and where: the tool mounted for the toolpath's last move,
 // standing at that move's end (or at the start position if there are no moves).
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 #include "interp/move.hpp"
 #include "render/part_image.hpp"
 
 namespace lathesim::app {
 
-render::ToolPicture toolPictureAtEnd(const Setup& setup, const interp::Toolpath& toolpath);
+render::ToolPicture toolPictureAtEnd(const job::Setup& setup, const interp::Toolpath& toolpath);
 
 }  // namespace lathesim::app

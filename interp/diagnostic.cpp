@@ -4,12 +4,14 @@
 
 #include <fmt/format.h>
 
-#include "interp/utf8.hpp"
+#include "interp/text/utf8.hpp"
 
 namespace lathesim::interp {
 
 std::string format(const Diagnostic& diagnostic) {
-  const char* severity = diagnostic.severity == Severity::Error ? "error" : "warning";
+  const char* severity = diagnostic.severity == Severity::Error     ? "error"
+                         : diagnostic.severity == Severity::Warning ? "warning"
+                                                                    : "note";
   if (diagnostic.line <= 0) {
     return fmt::format("{}: {}: {}", diagnostic.file, severity, diagnostic.message);
   }

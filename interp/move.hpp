@@ -1,6 +1,6 @@
 #pragma once
-// The interpreter's output: primitive moves in part coordinates, each traceable to its
-// source. Every cycle is expanded into these, so sim and render never see G-code.
+// The interpreter's output: primitive moves in the setup's frame (the frame of the stock and
+// the start point), each traceable to its source. Every cycle is expanded into these, so sim and render never see G-code.
 
 #include <optional>
 #include <string>
@@ -18,7 +18,7 @@ enum class FeedMode { PerMinute, PerRevolution };  // G98 / G99 (system A)
 enum class SpindleMode { Rpm, SurfaceSpeed };      // G97 / G96
 enum class NoseSide { None, Left, Right };         // G40 / G41 / G42
 
-/// The nose radius compensation a move was programmed under (interp/nose_compensation.hpp):
+/// The nose radius compensation a move was programmed under (interp/compensation/nose_compensation.hpp):
 /// the side, and the nose radius R and imaginary tip number (0–9) of the tool offset in force.
 struct NoseComp {
   NoseSide side = NoseSide::None;
@@ -37,13 +37,15 @@ struct Move {
   FeedMode feedMode = FeedMode::PerRevolution;
   int tool = 0;        // the tool number mounted (T0101 → 1)
   int toolOffset = 0;  // the offset number in force (T0101 → 1)
+  RZ offsetShift{0, 0};  // where that offset moves the tip from the programmed point (radius, Z)
+  RZ workShift{0, 0};    // where program zero lies in the setup's frame (G54–G59, G10 L2)
   NoseComp noseComp;   // G41/G42 in force as programmed; the toolpath's moves are already
                        // compensated (from/to/center are the imaginary tip's path)
   bool spindleOn = false;
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
   std::optional<double> spindleLimitRpm;  // G50 S, in force under G96
-  double timeS = 0;   // how long the move takes on the machine (see interp/cycle_time.hpp)
+  double timeS = 0;   // how long the move takes on the machine (see interp/motion/cycle_time.hpp)
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block
   int column = 0;     // 1-based column where that block starts

@@ -20,10 +20,10 @@
 #include <toml++/toml.h>
 #include <vector>
 
-#include "app/collision_checks.hpp"
-#include "app/job.hpp"
-#include "app/setup.hpp"
-#include "interp/cycle_time.hpp"
+#include "job/collision_checks.hpp"
+#include "job/job.hpp"
+#include "job/setup.hpp"
+#include "interp/motion/cycle_time.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "sim/simulate.hpp"
@@ -76,17 +76,17 @@ Expected readExpected(const std::string& part) {
   return expected;
 }
 
-Setup loadPartSetup(const std::string& part) {
-  const SetupResult loaded = loadSetup(kPartsDir / part / "setup.toml");
+job::Setup loadPartSetup(const std::string& part) {
+  const job::SetupResult loaded = job::loadSetup(kPartsDir / part / "setup.toml");
   if (!loaded.setup) throw std::runtime_error(part + "/setup.toml does not load");
   return *loaded.setup;
 }
 
 /// Interprets the part's program as loadJob does, naming the file "program.nc", and times
 /// its moves.
-interp::InterpretResult interpretPart(const std::string& part, const Setup& setup) {
+interp::InterpretResult interpretPart(const std::string& part, const job::Setup& setup) {
   interp::InterpretResult result =
-      interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", app::interpreterOptionsOf(setup));
+      interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", job::interpreterOptionsOf(setup));
   if (result.ok()) (void)interp::assignMoveTimes(result.toolpath, setup.machine);
   return result;
 }
@@ -94,7 +94,7 @@ interp::InterpretResult interpretPart(const std::string& part, const Setup& setu
 /// How far a cycle time may stray from the hand-worked one: 0.5 %.
 constexpr double kCycleTimeTolerance = 0.005;
 
-sim::ToolOutlines outlinesOf(const Setup& setup) {
+sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   sim::ToolOutlines tools;
   for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
   return tools;
@@ -118,11 +118,11 @@ struct Simulated {
   sim::SimulationResult result;
 };
 
-Simulated simulatePart(const Setup& setup, const interp::Toolpath& toolpath, double voxelMm) {
+Simulated simulatePart(const job::Setup& setup, const interp::Toolpath& toolpath, double voxelMm) {
   sim::Stock stock(setup.stock, voxelMm);
   Simulated out;
   out.stockVolumeMm3 = stock.volumeMm3();
-  const sim::CollisionChecks checks = app::collisionChecksOf(setup);  // holders and the chuck too
+  const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck too
   out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {}, &checks);
   out.finalVolumeMm3 = stock.volumeMm3();
   return out;
@@ -132,7 +132,7 @@ class Part : public testing::TestWithParam<std::string> {};
 
 TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
   const std::string part = GetParam();
-  const app::Setup setup = loadPartSetup(part);
+  const job::Setup setup = loadPartSetup(part);
   const Expected expected = readExpected(part);
   const interp::InterpretResult result = interpretPart(part, setup);
 
@@ -196,12 +196,12 @@ TEST(Parts, Seed001TapersDifferByMoreThanTheTolerance) {
   constexpr double kVoxelMm = 0.5;
   std::map<std::string, double> simulatedMm3;
   for (const std::string part : {"seed001-taper-r20", "seed001-taper-r24"}) {
-    const app::Setup setup = loadPartSetup(part);
+    const job::Setup setup = loadPartSetup(part);
     const interp::InterpretResult result = interpretPart(part, setup);
     ASSERT_TRUE(result.ok()) << part;
     simulatedMm3[part] = simulatePart(setup, result.toolpath, kVoxelMm).finalVolumeMm3;
   }
-  const app::Setup setup = loadPartSetup("seed001-taper-r24");
+  const job::Setup setup = loadPartSetup("seed001-taper-r24");
   const double tolerance = volumeToleranceMm3(setup.stock, kVoxelMm);
   const double expectedDifference = readExpected("seed001-taper-r20").finalVolumeMm3 -
                                     readExpected("seed001-taper-r24").finalVolumeMm3;

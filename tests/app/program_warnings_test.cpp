@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/setup.hpp"
+#include "job/setup.hpp"
 #include "interp/interpreter.hpp"
 #include "sim/simulate.hpp"
 
@@ -11,7 +11,7 @@ namespace lathesim::app {
 namespace {
 
 sim::SimulationResult simulateProgram(std::string_view program) {
-  const Setup setup = defaultSetup();  // Φ125 × 112 bar, face at Z2
+  const job::Setup setup = job::defaultSetup();  // Φ125 × 112 bar, face at Z2
   interp::InterpreterOptions options;
   options.startPosition = setup.startPosition;
   options.toolNumbers = {1};

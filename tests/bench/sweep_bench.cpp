@@ -10,8 +10,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/job.hpp"
-#include "app/setup.hpp"
+#include "job/job.hpp"
+#include "job/setup.hpp"
 #include "interp/interpreter.hpp"
 #include "sim/simulate.hpp"
 
@@ -22,19 +22,19 @@ using namespace lathesim;
 const std::string kPart = std::string(LATHESIM_PARTS_DIR) + "/seed000-face-taper/";
 
 struct Seed000 {
-  app::Setup setup;
+  job::Setup setup;
   interp::Toolpath toolpath;
   sim::ToolOutlines tools;
 };
 
 const Seed000& seed000() {
   static const Seed000 loaded = [] {
-    Seed000 s{*app::loadSetup(kPart + "setup.toml").setup, {}, {}};
+    Seed000 s{*job::loadSetup(kPart + "setup.toml").setup, {}, {}};
     std::ifstream in(kPart + "program.nc");
     std::ostringstream text;
     text << in.rdbuf();
     for (const auto& tool : s.setup.tools) s.tools.emplace(tool.number, tool.outline);
-    s.toolpath = interp::interpret(text.str(), "program.nc", app::interpreterOptionsOf(s.setup)).toolpath;
+    s.toolpath = interp::interpret(text.str(), "program.nc", job::interpreterOptionsOf(s.setup)).toolpath;
     return s;
   }();
   return loaded;

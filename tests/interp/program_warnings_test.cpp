@@ -5,7 +5,7 @@
 
 #include <string_view>
 
-#include "interp/feed_warnings.hpp"
+#include "interp/motion/feed_warnings.hpp"
 #include "test_support.hpp"
 
 namespace lathesim::interp {

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "interp/cycle_leg.hpp"
+#include "interp/cycles/cycle_leg.hpp"
 #include "interp/interpreter.hpp"
 
 namespace lathesim::interp::test {

@@ -1,0 +1,321 @@
+#include "interp/cycles/compound_cycle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "interp/cycles/contour_blocks.hpp"
+#include "interp/cycles/g73_cycle.hpp"
+#include "interp/compensation/nose_compensation.hpp"
+#include "interp/cycles/peck_cycle.hpp"
+#include "interp/cycles/roughing_cycle.hpp"
+#include "interp/text/word_units.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+class CompoundCycle {
+ public:
+  CompoundCycle(const Code& code, ParsedBlock& block, ModalState& state,
+                const InterpreterOptions& options, const BlockPlace* place)
+      : code_(code), block_(block), state_(state), options_(options), place_(place) {}
+
+  Result<CompoundOutcome> run();
+
+ private:
+  Error errorAt(int column, std::string message) const {
+    return Error{block_.line, column, std::move(message)};
+  }
+  double length(const Word& word) const { return lengthMm(word, state_.inch); }
+  Status positive(const std::optional<Word>& word, std::string_view meaning) const;
+  Status notNegative(const std::optional<Word>& word, std::string_view meaning) const;
+  Status oneOf(const std::optional<Word>& absolute, const std::optional<Word>& incremental,
+               std::string_view axis) const;
+  Status needFeed() const;
+  Result<ContourSpan> contourSpan() const;
+  Result<ExtractedContour> contour(ContourSpan span) const;
+  // The second block of G71–G73: P Q U(Δu) W(Δw) F, its contour run from the start point.
+  struct ContourBlock {
+    ContourSpan span;
+    ExtractedContour contour;
+    double allowanceXMm;  // Δu/2, a radius
+    double allowanceZMm;  // Δw
+  };
+  Result<ContourBlock> contourBlock();
+  ModalState contourStartState() const;
+  void continueAfter(ContourSpan span);
+
+  Status finishing();  // G70
+  Status roughing();   // G71, G72
+  Status patternRepeat();  // G73
+  Status peck(const PeckCycle& cycle);  // G74, G75
+
+  const Code& code_;
+  ParsedBlock& block_;
+  ModalState& state_;
+  const InterpreterOptions& options_;
+  const BlockPlace* place_;
+  CompoundOutcome outcome_;
+};
+
+Result<CompoundOutcome> CompoundCycle::run() {
+  if (state_.plane != Plane::ZX) {
+    return errorAt(code_.column, fmt::format("{} under {}: this machine has no Y axis, so a "
+                                             "cycle needs the ZX plane; select it with G18",
+                                             code_.text, state_.plane == Plane::XY ? "G17" : "G19"));
+  }
+  Status status = success();
+  switch (code_.number) {
+    case 70: status = finishing(); break;
+    case 71:
+    case 72: status = roughing(); break;
+    case 73: status = patternRepeat(); break;
+    case 74: status = peck(kFacePeckCycle); break;
+    default: status = peck(kGroovePeckCycle); break;
+  }
+  if (!status.ok()) return status.error();
+  return std::move(outcome_);
+}
+
+Status CompoundCycle::positive(const std::optional<Word>& word, std::string_view meaning) const {
+  if (word && word->value <= 0) {
+    return errorAt(word->column, fmt::format("{} {} is not {}: expected a number > 0",
+                                             code_.text, word->text(), meaning));
+  }
+  return success();
+}
+
+Status CompoundCycle::notNegative(const std::optional<Word>& word,
+                                  std::string_view meaning) const {
+  if (word && word->value < 0) {
+    return errorAt(word->column, fmt::format("{} {} is not {}: expected a number ≥ 0",
+                                             code_.text, word->text(), meaning));
+  }
+  return success();
+}
+
+Status CompoundCycle::oneOf(const std::optional<Word>& absolute,
+                            const std::optional<Word>& incremental, std::string_view axis) const {
+  if (!absolute || !incremental) return success();
+  return errorAt(std::max(absolute->column, incremental->column),
+                 fmt::format("{} and {} both give the {} axis; give one of them",
+                             absolute->text(), incremental->text(), axis));
+}
+
+Status CompoundCycle::needFeed() const {
+  if (state_.feed) return success();
+  return errorAt(code_.column, fmt::format("feed rate F is not set: {} cuts at feed; give F "
+                                           "(e.g. F0.2 mm/rev) in this block or before it",
+                                           code_.text));
+}
+
+Result<ContourSpan> CompoundCycle::contourSpan() const {
+  const ContourRequest request{code_.text, block_.take('P'), block_.take('Q'), block_.line,
+                               code_.column};
+  if (place_ == nullptr) {
+    return errorAt(code_.column, fmt::format("{} needs its contour blocks, but this block is "
+                                             "run on its own",
+                                             code_.text));
+  }
+  return findContourBlocks(place_->program, place_->index, request);
+}
+
+// GSK (lathe-cycles.md §8): a G41/G42 in force before G70–G73 is suspended for the cycle and
+// restored after it; only G41/G42 in the contour (its ns block) compensate it.
+ModalState CompoundCycle::contourStartState() const {
+  ModalState start = state_;
+  start.noseSide = NoseSide::None;
+  return start;
+}
+
+// The contour G71–G73 rough against: the ns–nf path, offset by the nose radius when the
+// contour's blocks ask for G41/G42 (the cycle ends the compensation).
+Result<ExtractedContour> CompoundCycle::contour(ContourSpan span) const {
+  auto extracted = extractContour(place_->program, span, contourStartState(), options_);
+  if (!extracted.ok()) return extracted.error();
+  auto compensated = compensatedContour(extracted.value().contour, extracted.value().noseComps);
+  if (!compensated.ok()) return compensated.error();
+  extracted.value().contour = std::move(compensated.value());
+  if (extracted.value().contour.empty()) {
+    return errorAt(code_.column, fmt::format("the contour of {} makes no move from the cycle "
+                                             "start point",
+                                             code_.text));
+  }
+  return extracted;
+}
+
+// G71–G73 go on after the nf block, skipping the contour that follows them (not when the
+// contour was written before the cycle: that would run the cycle again).
+void CompoundCycle::continueAfter(ContourSpan span) {
+  if (span.last > place_->index) outcome_.continueAfter = span.last;
+}
+
+// G70 P Q: the contour blocks as written, with their own F, S and T, then rapid back to A.
+Status CompoundCycle::finishing() {
+  auto span = contourSpan();
+  if (!span.ok()) return span.error();
+  const RZ start = state_.position;
+  auto run = runContourBlocks(place_->program, span.value(), contourStartState(), options_);
+  if (!run.ok()) return run.error();
+  const NoseSide before = state_.noseSide;
+  state_ = std::move(run.value().state);
+  state_.noseSide = before;
+  outcome_.contourMoves = std::move(run.value().moves);
+  outcome_.legs.push_back({MoveKind::Rapid, state_.position, start, 0, RZ(0, 0)});
+  if (state_.position == start) outcome_.legs.clear();
+  state_.position = start;
+  return success();
+}
+
+// G71 U(Δd) R(e) / G72 W(Δd) R(e); then G71/G72 P Q U(Δu) W(Δw).
+Status CompoundCycle::roughing() {
+  const bool turning = code_.number == 71;
+  if (!block_.has('P') && !block_.has('Q')) {
+    const auto depth = block_.take(turning ? 'U' : 'W');
+    const auto retract = block_.take('R');
+    if (auto s = positive(depth, "a depth of cut Δd"); !s.ok()) return s;
+    if (auto s = notNegative(retract, "a retract distance e"); !s.ok()) return s;
+    if (depth) state_.compound.roughingDepthMm = length(*depth);
+    if (retract) state_.compound.roughingRetractMm = length(*retract);
+    return success();
+  }
+  auto read = contourBlock();
+  if (!read.ok()) return read.error();
+  const ContourBlock& b = read.value();
+  const ExtractedContour& c = b.contour;
+  RoughingParams params;
+  params.depthMm = state_.compound.roughingDepthMm;
+  params.retractMm = state_.compound.roughingRetractMm;
+  params.allowanceXMm = b.allowanceXMm;
+  params.allowanceZMm = b.allowanceZMm;
+  params.typeII = c.firstBlockHasX && c.firstBlockHasZ;
+  const RZ start = state_.position;
+  auto legs = turning ? turningRoughingLegs(start, c.contour, params)
+                      : facingRoughingLegs(start, c.contour, params);
+  if (!legs.ok()) return legs.error();
+  outcome_.legs = std::move(legs.value());
+  continueAfter(b.span);
+  return success();
+}
+
+Result<CompoundCycle::ContourBlock> CompoundCycle::contourBlock() {
+  auto span = contourSpan();
+  if (!span.ok()) return span.error();
+  const auto u = block_.take('U');
+  const auto w = block_.take('W');
+  if (auto s = needFeed(); !s.ok()) return s.error();
+  auto extracted = contour(span.value());
+  if (!extracted.ok()) return extracted.error();
+  return ContourBlock{span.value(), std::move(extracted).value(), u ? length(*u) / 2.0 : 0.0,
+                      w ? length(*w) : 0.0};
+}
+
+// G73 U(Δi) W(Δk) R(d); then G73 P Q U(Δu) W(Δw).
+Status CompoundCycle::patternRepeat() {
+  if (!block_.has('P') && !block_.has('Q')) {
+    const auto u = block_.take('U');
+    const auto w = block_.take('W');
+    const auto r = block_.take('R');
+    if (r && (r->value < 1 || std::floor(r->value) != r->value)) {
+      return errorAt(r->column, fmt::format("G73 {} is not a number of passes d: expected a "
+                                            "whole number ≥ 1",
+                                            r->text()));
+    }
+    if (u) state_.compound.patternReliefXMm = length(*u);
+    if (w) state_.compound.patternReliefZMm = length(*w);
+    if (r) state_.compound.patternPasses = static_cast<int>(r->value);
+    return success();
+  }
+  auto read = contourBlock();
+  if (!read.ok()) return read.error();
+  const ContourBlock& b = read.value();
+  const ExtractedContour& c = b.contour;
+  PatternRepeatParams params;
+  params.reliefXMm = state_.compound.patternReliefXMm;
+  params.reliefZMm = state_.compound.patternReliefZMm;
+  params.passes = state_.compound.patternPasses;
+  params.allowanceXMm = b.allowanceXMm;
+  params.allowanceZMm = b.allowanceZMm;
+  outcome_.legs = patternRepeatLegs(state_.position, c.contour, c.firstBlockSegments,
+                                    c.firstBlockRapid, params);
+  continueAfter(b.span);
+  return success();
+}
+
+// G74/G75 R(e); then G74/G75 X(U) Z(W) P Q R(Δd) F.
+Status CompoundCycle::peck(const PeckCycle& cycle) {
+  const bool g74 = cycle.pecksAlongZ;
+  const bool second = g74 ? block_.has('Z') || block_.has('W') : block_.has('X') || block_.has('U');
+  if (!second) {
+    const auto r = block_.take('R');
+    if (auto s = notNegative(r, "a retract distance e"); !s.ok()) return s;
+    if (r) state_.compound.peckRetractMm = length(*r);
+    return success();
+  }
+  const auto x = block_.take('X');
+  const auto u = block_.take('U');
+  const auto z = block_.take('Z');
+  const auto w = block_.take('W');
+  const auto p = block_.take('P');
+  const auto q = block_.take('Q');
+  const auto r = block_.take('R');
+  if (auto s = oneOf(x, u, "X"); !s.ok()) return s;
+  if (auto s = oneOf(z, w, "Z"); !s.ok()) return s;
+  for (const auto* word : {&p, &q, &r}) {
+    if (auto s = notNegative(*word, "a distance"); !s.ok()) return s;
+  }
+  if (auto s = needFeed(); !s.ok()) return s;
+  const RZ start = state_.position;
+  RZ end = start;
+  if (x) end.x() = length(*x) / 2.0;
+  if (u) end.x() += length(*u) / 2.0;
+  if (z) end.y() = length(*z);
+  if (w) end.y() += length(*w);
+
+  const double xScale = kPeckXWordsAreDiameters ? 0.5 : 1.0;
+  const auto increment = [this](const std::optional<Word>& word, double scale) {
+    return word ? leastIncrementLengthMm(*word, state_.inch) * scale : 0.0;
+  };
+  // G74: Q pecks in Z, P steps in X; G75: P pecks in X, Q steps in Z.
+  const std::optional<Word>& peckWord = g74 ? q : p;
+  const std::optional<Word>& shiftWord = g74 ? p : q;
+  PeckParams params;
+  params.peckMm = increment(peckWord, g74 ? 1.0 : xScale);
+  params.shiftMm = increment(shiftWord, g74 ? xScale : 1.0);
+  params.retractMm = state_.compound.peckRetractMm;
+  params.reliefMm = increment(r, g74 ? xScale : 1.0);
+
+  const double peckTravel = g74 ? end.y() - start.y() : end.x() - start.x();
+  const double shiftTravel = g74 ? end.x() - start.x() : end.y() - start.y();
+  const char peckLetter = g74 ? 'Q' : 'P';
+  const char shiftLetter = g74 ? 'P' : 'Q';
+  if (peckTravel != 0 && params.peckMm <= 0) {
+    return errorAt(peckWord ? peckWord->column : code_.column,
+                   fmt::format("{} needs {}(Δ{}) > 0, the depth of each peck along {}", code_.text,
+                               peckLetter, g74 ? 'k' : 'i', g74 ? "Z" : "X"));
+  }
+  if (shiftTravel != 0 && params.shiftMm <= 0) {
+    return errorAt(shiftWord ? shiftWord->column : code_.column,
+                   fmt::format("{} needs {}(Δ{}) > 0, the {} shift between plunges, because the "
+                               "end point's {} differs from the start",
+                               code_.text, shiftLetter, g74 ? 'i' : 'k', g74 ? "X" : "Z",
+                               g74 ? "X" : "Z"));
+  }
+  outcome_.legs = peckCycleLegs(cycle, start, end, params);
+  return success();
+}
+
+}  // namespace
+
+bool isCompoundCycle(const Code& code) { return code.number >= 70 && code.number <= 75; }
+
+Result<CompoundOutcome> runCompoundCycle(const Code& code, ParsedBlock& block, ModalState& state,
+                                         const InterpreterOptions& options,
+                                         const BlockPlace* place) {
+  return CompoundCycle(code, block, state, options, place).run();
+}
+
+}  // namespace lathesim::interp

@@ -1,0 +1,41 @@
+#pragma once
+// G70–G75, the one-shot compound cycles: their words read (first block or second block), the
+// modal first-block values kept, the contour found for G70–G73, and the legs made by
+// g73_cycle, peck_cycle and roughing_cycle. The executor stamps the legs like any move.
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "interp/execution/block_executor.hpp"
+#include "interp/text/block_parser.hpp"
+#include "interp/cycles/cycle_leg.hpp"
+#include "interp/interpreter.hpp"
+#include "interp/execution/modal_state.hpp"
+#include "interp/result.hpp"
+
+namespace lathesim::interp {
+
+/// GSK documents G74/G75's X-axis P and G74's R(Δd) as diameters: the step between plunges
+/// is Δi/2 in radius (lathe-cycles.md §5; ADTECH reads them as radii).
+/// G75's back-off e after each peck is an X distance taken as a radius, like every other
+/// retract.
+constexpr bool kPeckXWordsAreDiameters = true;
+
+struct CompoundOutcome {
+  std::vector<Move> contourMoves;  // G70: the contour blocks' own moves, before the legs
+  std::vector<CycleLeg> legs;      // the cycle block's moves
+  std::optional<std::size_t> continueAfter;  // G71–G73: the nf block, when it follows
+};
+
+/// G70 to G75.
+bool isCompoundCycle(const Code& code);
+
+/// Runs compound cycle `code` of `block`, taking the words it uses. `state` (its F, S, T
+/// already set from the block) is updated: the first-block values, and for G70 what the
+/// contour blocks set. `place` locates the block in the program (needed by G70–G73).
+Result<CompoundOutcome> runCompoundCycle(const Code& code, ParsedBlock& block, ModalState& state,
+                                         const InterpreterOptions& options,
+                                         const BlockPlace* place);
+
+}  // namespace lathesim::interp

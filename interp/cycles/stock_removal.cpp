@@ -1,0 +1,485 @@
+// G71/G72 stock removal (lathe-cycles.md §3–4, GSK980TDi 3.23.1–3.23.2), written in G71's axes:
+// "X" is the step axis (levels of constant X), "Z" the cutting axis (passes parallel to Z).
+// G72 runs the same code with the axes exchanged.
+//
+// Rough contour: the finishing contour translated by the allowance (Δu/2, Δw), arcs keep
+// their radius (translatedContour). A′ = A + allowance, B′ = where its ns block ends, C′ =
+// where its last block ends. The step direction is the sign of X_B′ − X_A′ (toward the axis
+// for OD work, away from it for boring); the cutting direction is the way the contour after
+// the ns block moves in Z. Level k lies at X_k = X_A′ + k·Δd in the step direction, for every
+// k with k·Δd short of the depth to cut (type I: to B′; type II: to the deepest contour
+// point): the last partial depth is left to the semi-finishing pass.
+//
+// Steps (CycleLeg::step), type I:
+//   1 rapid  A → A′
+//   2 infeed A′ → (X_1, Z_A′)                 rapid if the ns block is G00, else feed
+//   3 feed   along Z to where level k meets the rough contour (its last meeting point
+//            along the contour; C′'s Z if the level never meets it)
+//   4 45° retract by e in both axes, back toward A′      feed if retractAtFeed, else rapid
+//   5 rapid  in Z back to Z_A′
+//   6 infeed Δd + e to the next level (as step 2); after the last level, to B′
+//   7 feed   the semi-finishing pass along the rough contour B′ → C′, arcs as arcs (a G00
+//            block inside the contour is cut at feed too)
+//   8 rapid  C′ → A
+// Type II (pockets: Z monotonic, X free) [GSK: "at the end of each level the tool follows the
+// contour, then backs off by e; no 45° escape"; "when it moves on to the next pocket, the last
+// e of the approach is made at G1"; "all roughing first, then the semi-finishing pass"].
+// The levels run down to the deepest point of the contour. Each level is cut in intervals:
+// the stretches of the line X = X_k, from Z_A′ to Z_C′, where the level lies in the material,
+// i.e. on A′'s side of the contour (before B′'s Z, on A′'s side of B′'s X). Levels are taken
+// in order, and each level's intervals in cutting order. For each interval:
+//   2/6 an interval starting at Z_A′: from where the tool is (back at Z_A′) infeed to the
+//       level as in type I
+//   an interval starting further on, at a pocket's entry wall:
+//   5   rapid up to X_A′ (unless already above the wall's top, see below), rapid in Z to the
+//       top W of the entry wall (walking the contour back from the level while it climbs:
+//       up to the previous level or to a crest — it stops at a flat), rapid to e short of W
+//       but no deeper than the previous level (beside a flat the band between the previous
+//       level and the flat is still there)
+//   6   feed the rest onto W (the last e), then down the wall along the contour to the level
+//   3   feed along Z to the interval's end
+//   4   feed along the contour from there while it climbs back toward A′ (flats included),
+//       up to the previous level, a crest, or C′; then back off e in X (feed if
+//       retractAtFeed, else rapid)
+//   5   before the next level's interval at Z_A′: rapid along Z to Z_A′ at that height if this
+//       interval began at Z_A′ (everything above it is cut), else up to X_A′ first
+// After the last level: 5 back to Z_A′ as above, then 6 infeed to B′ (G00/G01 as the ns
+// block), 7 the semi-finishing pass, 8 rapid C′ → A, as in type I. A wall's descent and the
+// climb out take away the band between two levels next to the walls, so each band is cut
+// whole and every move stays on A′'s side of the rough contour.
+// The legs of zero length are left out.
+//
+// Errors, each at the contour block to blame (the ns block for Δd and e; line 0 for an
+// empty contour): empty contour; Δd ≤ 0; e < 0; ns block an arc; ns block not moving in X;
+// type I: a block moving X back toward B, or an arc turning in X inside its span; both
+// types: a block moving Z against the earlier blocks, or an arc turning in Z inside its span.
+// "Monotonic in X" for type I means: after the ns block, X moves only away from B, toward
+// A's side; the ns block itself (the approach A → B) is exempt.
+
+#include "interp/cycles/stock_removal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "interp/cycles/contour_geometry.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+constexpr double kTolMm = 1e-9;
+constexpr double kHalfPi = std::numbers::pi / 2;
+
+Error errorAt(const ContourSegment& segment, std::string message) {
+  return Error{segment.line, segment.column, std::move(message)};
+}
+
+/// +1 or −1, the way the contour after the ns block moves in Z (−1 if it never does).
+double cuttingDirection(const Contour& contour) {
+  for (std::size_t i = 1; i < contour.size(); ++i) {
+    const double dz = contour[i].to.y() - contour[i].from.y();
+    if (std::abs(dz) > kTolMm) return dz > 0 ? 1.0 : -1.0;
+  }
+  const double dz = contour.front().to.y() - contour.front().from.y();
+  return dz > kTolMm ? 1.0 : -1.0;
+}
+
+/// Why the contour cannot be roughed, or nullopt. `stepDir` is the sign of X_B − X_A.
+std::optional<Error> contourProblem(const Contour& contour, const RoughingParams& params,
+                                    double stepDir, double cutDir,
+                                    const StockRemovalNames& names) {
+  const char* cycle = names.cycle;
+  for (std::size_t i = 1; i < contour.size(); ++i) {
+    const ContourSegment& segment = contour[i];
+    const RZ along = segment.to - segment.from;
+    const bool arc = isArc(segment.kind);
+    if (!params.typeII) {
+      if (along.x() * stepDir > kTolMm) {
+        return errorAt(segment, fmt::format(
+            "{} type I contour must be monotonic in {}: this block moves {} back toward B "
+            "(expected {} to keep moving from B toward the start point's side; type II, with "
+            "both axes in the ns block, allows pockets)",
+            cycle, names.stepAxis, names.stepAxis, names.stepAxis));
+      }
+      if (arc && (arcPassesAngleInside(segment, kHalfPi) ||
+                  arcPassesAngleInside(segment, -kHalfPi))) {
+        return errorAt(segment, fmt::format(
+            "{} type I contour must be monotonic in {}: this arc reverses {} inside its span "
+            "(expected its {} to keep moving one way between its ends)",
+            cycle, names.stepAxis, names.stepAxis, names.stepAxis));
+      }
+    }
+    if (along.y() * cutDir < -kTolMm) {
+      return errorAt(segment, fmt::format(
+          "{} contour must be monotonic in {}: this block moves {} against the blocks before "
+          "it (expected every block to move {} the same way, or not at all)",
+          cycle, names.cutAxis, names.cutAxis, names.cutAxis));
+    }
+    if (arc && (arcPassesAngleInside(segment, 0) ||
+                arcPassesAngleInside(segment, std::numbers::pi))) {
+      return errorAt(segment, fmt::format(
+          "{} contour must be monotonic in {}: this arc reverses {} inside its span "
+          "(expected its {} to keep moving one way between its ends)",
+          cycle, names.cutAxis, names.cutAxis, names.cutAxis));
+    }
+  }
+  return std::nullopt;
+}
+
+/// Builds the leg list, leaving out straight legs of no length.
+class LegList {
+ public:
+  explicit LegList(const RZ& at) : at_(at) {}
+
+  const RZ& at() const { return at_; }
+
+  void straight(MoveKind kind, const RZ& to, int step) {
+    if ((to - at_).norm() > kTolMm) legs_.push_back({kind, at_, to, step});
+    at_ = to;
+  }
+
+  /// Along a contour segment from the current point to `to` (a straight segment at feed,
+  /// an arc as an arc about its centre).
+  void follow(const ContourSegment& segment, const RZ& to, int step) {
+    if (!isArc(segment.kind)) {
+      straight(MoveKind::Feed, to, step);
+      return;
+    }
+    if ((to - at_).norm() > kTolMm) legs_.push_back({segment.kind, at_, to, step, segment.center});
+    at_ = to;
+  }
+
+  std::vector<CycleLeg> take() && { return std::move(legs_); }
+
+ private:
+  RZ at_;
+  std::vector<CycleLeg> legs_;
+};
+
+/// Where the level X = `levelMm` last meets the rough contour after the ns block, or C′ moved
+/// onto the level when it never does.
+RZ typeOneLevelEnd(const Contour& rough, double levelMm) {
+  std::optional<RZ> last;
+  for (std::size_t i = 1; i < rough.size(); ++i) {
+    const std::vector<RZ> crossings = levelCrossings(rough[i], levelMm);
+    if (!crossings.empty()) last = crossings.back();
+  }
+  return last.value_or(RZ(levelMm, rough.back().to.y()));
+}
+
+struct Plan {
+  RZ start;        // A
+  Contour rough;   // the rough contour: front().from is A′, front().to is B′
+  double stepDir;  // +1/−1: the way the levels advance in X
+  double cutDir;   // +1/−1: the way the passes run in Z
+  MoveKind infeedKind;
+  MoveKind retractKind;
+  const RoughingParams* params;
+};
+
+void semiFinishAndReturn(const Plan& plan, LegList& legs, int infeedStep) {
+  legs.straight(plan.infeedKind, plan.rough.front().to, infeedStep);
+  for (std::size_t i = 1; i < plan.rough.size(); ++i) {
+    legs.follow(plan.rough[i], plan.rough[i].to, 7);
+  }
+  legs.straight(MoveKind::Rapid, plan.start, 8);
+}
+
+std::vector<CycleLeg> typeOneLegs(const Plan& plan) {
+  const RZ& shiftedStart = plan.rough.front().from;
+  const RZ& b = plan.rough.front().to;
+  const double depthMm = plan.params->depthMm;
+  const double retractMm = plan.params->retractMm;
+  const double depthToCutMm = plan.stepDir * (b.x() - shiftedStart.x());
+  LegList legs(plan.start);
+  legs.straight(MoveKind::Rapid, shiftedStart, 1);
+  int infeedStep = 2;
+  for (int k = 1; k * depthMm < depthToCutMm - kTolMm; ++k) {
+    const double levelMm = shiftedStart.x() + plan.stepDir * k * depthMm;
+    legs.straight(plan.infeedKind, RZ(levelMm, shiftedStart.y()), infeedStep);
+    const RZ end = typeOneLevelEnd(plan.rough, levelMm);
+    legs.straight(MoveKind::Feed, end, 3);
+    const RZ retracted = end - RZ(plan.stepDir * retractMm, plan.cutDir * retractMm);
+    legs.straight(plan.retractKind, retracted, 4);
+    legs.straight(MoveKind::Rapid, RZ(retracted.x(), shiftedStart.y()), 5);
+    infeedStep = 6;
+  }
+  semiFinishAndReturn(plan, legs, infeedStep);
+  return std::move(legs).take();
+}
+
+// ---- Type II -------------------------------------------------------------------------
+
+/// A run of contour pieces the tool follows, in order.
+using Path = std::vector<ContourSegment>;
+
+/// From `at` on `tail[index]`, the contour while it climbs back toward A′ (its X moves
+/// against the step direction): up to the level X = `targetXMm`, its first top, or its end.
+/// Flat stretches (constant X) are followed when `acrossFlats`, else they end the climb.
+Path climb(const Contour& tail, std::size_t index, const RZ& at, double targetXMm,
+           double stepDir, bool acrossFlats) {
+  Path path;
+  for (std::size_t j = index; j < tail.size(); ++j) {
+    ContourSegment piece = tail[j];
+    if (j == index) piece.from = at;
+    if ((piece.to - piece.from).norm() <= kTolMm) continue;
+    RZ top = piece.to;
+    bool turns = false;
+    if (isArc(piece.kind)) {
+      double nearest = arcSweepRad(piece);
+      for (const double angle : {kHalfPi, -kHalfPi}) {
+        if (!arcPassesAngleInside(piece, angle)) continue;
+        const RZ extreme = arcPointAt(piece, angle);
+        if (arcTravelRad(piece, extreme) < nearest) {
+          nearest = arcTravelRad(piece, extreme);
+          top = extreme;
+          turns = true;
+        }
+      }
+    }
+    const double climbMm = stepDir * (piece.from.x() - top.x());
+    if (climbMm < -kTolMm || (!acrossFlats && climbMm <= kTolMm)) break;  // heads deeper/flat
+    if (stepDir * top.x() <= stepDir * targetXMm + kTolMm) {
+      const std::vector<RZ> hits = levelCrossings(piece, targetXMm);
+      piece.to = hits.empty() ? top : hits.front();
+      if ((piece.to - piece.from).norm() > kTolMm) path.push_back(piece);
+      break;
+    }
+    piece.to = top;
+    path.push_back(piece);
+    if (turns) break;
+  }
+  return path;
+}
+
+/// The path run backwards.
+Path reversedPath(const Path& path) {
+  Path back;
+  for (auto it = path.rbegin(); it != path.rend(); ++it) back.push_back(reversed(*it));
+  return back;
+}
+
+struct Crossing {
+  double s;           // distance along the cutting direction from Z_A′
+  std::size_t index;  // in the contour's tail (the blocks after ns)
+  RZ point;
+};
+
+struct Interval {
+  double s0, s1;
+};
+
+class TypeTwo {
+ public:
+  explicit TypeTwo(const Plan& plan)
+      : plan_(plan),
+        shiftedStart_(plan.rough.front().from),
+        b_(plan.rough.front().to),
+        tail_(plan.rough.begin() + 1, plan.rough.end()),
+        swappedTail_(swappedAxes(tail_)),
+        legs_(plan.start) {
+    for (auto it = tail_.rbegin(); it != tail_.rend(); ++it) backwards_.push_back(reversed(*it));
+  }
+
+  std::vector<CycleLeg> legs() && {
+    const RoughingParams& params = *plan_.params;
+    legs_.straight(MoveKind::Rapid, shiftedStart_, 1);
+    int infeedStep = 2;
+    const double deepestMm = deepestDepthMm();
+    for (int k = 1; k * params.depthMm < deepestMm - kTolMm; ++k) {
+      const double levelMm = xAtDepth(k * params.depthMm);
+      const double previousMm = xAtDepth((k - 1) * params.depthMm);
+      for (const Interval& interval : intervals(levelMm)) {
+        if (interval.s0 <= kTolMm) {
+          returnToStartZ();
+          legs_.straight(plan_.infeedKind, RZ(levelMm, shiftedStart_.y()), infeedStep);
+        } else {
+          enterPocket(levelMm, previousMm, interval.s0);
+        }
+        infeedStep = 6;
+        cutAndEscape(levelMm, previousMm, interval.s1);
+        inFirstRegion_ = interval.s0 <= kTolMm;
+      }
+    }
+    returnToStartZ();
+    semiFinishAndReturn(plan_, legs_, infeedStep);
+    return std::move(legs_).take();
+  }
+
+ private:
+  double sOf(double zMm) const { return plan_.cutDir * (zMm - shiftedStart_.y()); }
+  double zOf(double s) const { return shiftedStart_.y() + plan_.cutDir * s; }
+  double depthOf(double xMm) const { return plan_.stepDir * (xMm - shiftedStart_.x()); }
+  double xAtDepth(double depthMm) const { return shiftedStart_.x() + plan_.stepDir * depthMm; }
+
+  double deepestDepthMm() const {
+    double deepest = depthOf(b_.x());
+    for (const ContourSegment& segment : tail_) {
+      deepest = std::max(deepest, depthOf(segment.to.x()));
+      const double deepAngle = plan_.stepDir * kHalfPi;
+      if (isArc(segment.kind) && arcPassesAngleInside(segment, deepAngle)) {
+        deepest = std::max(deepest, depthOf(arcPointAt(segment, deepAngle).x()));
+      }
+    }
+    return deepest;
+  }
+
+  std::vector<Crossing> crossings(double levelMm) const {
+    std::vector<Crossing> found;
+    for (std::size_t i = 0; i < tail_.size(); ++i) {
+      for (const RZ& point : levelCrossings(tail_[i], levelMm)) {
+        found.push_back({sOf(point.y()), i, point});
+      }
+    }
+    return found;
+  }
+
+  /// Whether the level lies in the material at `s`: on A′'s side of the contour (before B′'s
+  /// Z, of B′ itself, as if the contour began with a cylinder at B′'s X).
+  bool inMaterial(double levelMm, double s) const {
+    if (s < sOf(b_.y())) return plan_.stepDir * (b_.x() - levelMm) >= -kTolMm;
+    for (const ContourSegment& segment : swappedTail_) {
+      const std::vector<RZ> hits = levelCrossings(segment, zOf(s));
+      if (!hits.empty()) return plan_.stepDir * (hits.front().y() - levelMm) >= -kTolMm;
+    }
+    return false;
+  }
+
+  /// The stretches of the level, from Z_A′ to Z_C′, that lie in the material.
+  std::vector<Interval> intervals(double levelMm) const {
+    const double sEnd = sOf(tail_.back().to.y());
+    std::vector<double> bounds = {0.0, sEnd};
+    const double sB = sOf(b_.y());
+    if (sB > kTolMm && sB < sEnd - kTolMm) bounds.push_back(sB);
+    for (const Crossing& crossing : crossings(levelMm)) {
+      if (crossing.s > kTolMm && crossing.s < sEnd - kTolMm) bounds.push_back(crossing.s);
+    }
+    std::sort(bounds.begin(), bounds.end());
+    std::vector<Interval> found;
+    for (std::size_t i = 0; i + 1 < bounds.size(); ++i) {
+      if (bounds[i + 1] - bounds[i] <= kTolMm) continue;
+      if (!inMaterial(levelMm, (bounds[i] + bounds[i + 1]) / 2)) continue;
+      if (!found.empty() && bounds[i] - found.back().s1 <= kTolMm) {
+        found.back().s1 = bounds[i + 1];
+      } else {
+        found.push_back({bounds[i], bounds[i + 1]});
+      }
+    }
+    return found;
+  }
+
+  /// Back to Z_A′: along Z at this height from the first region, else over X_A′.
+  void returnToStartZ() {
+    if (std::abs(legs_.at().y() - shiftedStart_.y()) <= kTolMm) return;
+    if (!inFirstRegion_) legs_.straight(MoveKind::Rapid, RZ(shiftedStart_.x(), legs_.at().y()), 5);
+    legs_.straight(MoveKind::Rapid, RZ(legs_.at().x(), shiftedStart_.y()), 5);
+  }
+
+  /// Into a pocket whose stretch of the level begins at `s0`: over X_A′ to the top W of the
+  /// pocket's entry wall (where it leaves the previous level), rapid to e short of W (but not
+  /// below the previous level), feed onto W, then feed down the wall to the level.
+  void enterPocket(double levelMm, double previousMm, double s0) {
+    Path wall;
+    RZ entry(levelMm, zOf(s0));
+    for (const Crossing& crossing : crossings(levelMm)) {
+      if (std::abs(crossing.s - s0) > kTolMm) continue;
+      entry = crossing.point;
+      const std::size_t backIndex = backwards_.size() - 1 - crossing.index;
+      wall = reversedPath(climb(backwards_, backIndex, entry, previousMm, plan_.stepDir, false));
+      break;
+    }
+    const RZ top = wall.empty() ? entry : wall.front().from;
+    // Rapid no deeper than the previous level (below it, beside a flat, stock may be left)
+    // and no higher than A′, and stop e short of W.
+    const double topDepthMm = depthOf(top.x());
+    const double clearDepthMm =
+        std::max(0.0, std::min(topDepthMm - plan_.params->retractMm, depthOf(previousMm)));
+    const RZ aboveTop(xAtDepth(std::min(clearDepthMm, topDepthMm)), top.y());
+    if (std::abs(legs_.at().y() - top.y()) > kTolMm) {
+      legs_.straight(MoveKind::Rapid, RZ(shiftedStart_.x(), legs_.at().y()), 5);
+      legs_.straight(MoveKind::Rapid, RZ(shiftedStart_.x(), top.y()), 5);
+    }
+    legs_.straight(MoveKind::Rapid, aboveTop, 5);
+    legs_.straight(MoveKind::Feed, top, 6);
+    for (const ContourSegment& piece : wall) legs_.follow(piece, piece.to, 6);
+    legs_.straight(MoveKind::Feed, entry, 6);
+  }
+
+  /// Along the level to `s1`, up the contour to the previous level, and back off e in X.
+  void cutAndEscape(double levelMm, double previousMm, double s1) {
+    std::optional<Crossing> exit;
+    for (const Crossing& crossing : crossings(levelMm)) {
+      if (std::abs(crossing.s - s1) <= kTolMm) exit = crossing;
+    }
+    legs_.straight(MoveKind::Feed, exit ? exit->point : RZ(levelMm, zOf(s1)), 3);
+    if (exit) {
+      for (const ContourSegment& piece :
+           climb(tail_, exit->index, exit->point, previousMm, plan_.stepDir, true)) {
+        legs_.follow(piece, piece.to, 4);
+      }
+    }
+    const RZ& at = legs_.at();
+    legs_.straight(plan_.retractKind, RZ(at.x() - plan_.stepDir * plan_.params->retractMm, at.y()),
+                   4);
+  }
+
+  const Plan& plan_;
+  RZ shiftedStart_;
+  RZ b_;
+  Contour tail_;
+  Contour swappedTail_;
+  Contour backwards_;  // the tail run backwards: backwards_[i] is tail_[size − 1 − i] reversed
+  LegList legs_;
+  bool inFirstRegion_ = true;
+};
+
+std::vector<CycleLeg> typeTwoLegs(const Plan& plan) { return TypeTwo(plan).legs(); }
+
+}  // namespace
+
+Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& contour,
+                                               const RoughingParams& params,
+                                               const StockRemovalNames& names) {
+  const char* cycle = names.cycle;
+  if (contour.empty()) {
+    return Error{0, 0, fmt::format("{} contour is empty: the blocks P(ns) to Q(nf) make no "
+                                   "move (expected at least the ns block's G00/G01)", cycle)};
+  }
+  const ContourSegment& ns = contour.front();
+  if (!(params.depthMm > 0)) {
+    return errorAt(ns, fmt::format("{} depth of cut Δd is {}; expected a depth greater than 0",
+                                   cycle, params.depthMm));
+  }
+  if (!(params.retractMm >= 0)) {
+    return errorAt(ns, fmt::format("{} retract e is {}; expected 0 or more", cycle,
+                                   params.retractMm));
+  }
+  if (isArc(ns.kind)) {
+    return errorAt(ns, fmt::format("{} ns block is an arc; expected G00 or G01 (arcs are "
+                                   "allowed only after the ns block)", cycle));
+  }
+  const double stepMm = ns.to.x() - ns.from.x();
+  if (std::abs(stepMm) <= kTolMm) {
+    return errorAt(ns, fmt::format("{} ns block does not move {}; expected it to move {} from "
+                                   "the start point to the contour's first point",
+                                   cycle, names.stepAxis, names.stepAxis));
+  }
+  const double stepDir = stepMm > 0 ? 1.0 : -1.0;
+  const double cutDir = cuttingDirection(contour);
+  if (auto problem = contourProblem(contour, params, stepDir, cutDir, names)) return *problem;
+  const Plan plan{start,
+                  translatedContour(contour, RZ(params.allowanceXMm, params.allowanceZMm)),
+                  stepDir,
+                  cutDir,
+                  ns.kind == MoveKind::Rapid ? MoveKind::Rapid : MoveKind::Feed,
+                  params.retractAtFeed ? MoveKind::Feed : MoveKind::Rapid,
+                  &params};
+  return params.typeII ? typeTwoLegs(plan) : typeOneLegs(plan);
+}
+
+}  // namespace lathesim::interp

@@ -1,0 +1,667 @@
+#include "interp/execution/block_executor.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "interp/motion/arc_move.hpp"
+#include "interp/cycles/compound_cycle.hpp"
+#include "interp/motion/g28_return.hpp"
+#include "interp/compensation/cycle_nose_compensation.hpp"
+#include "interp/cycles/g90_cycle.hpp"
+#include "interp/cycles/g94_cycle.hpp"
+#include "interp/motion/spindle_speed.hpp"
+#include "interp/execution/data_setting.hpp"
+#include "interp/execution/subprogram_call.hpp"
+#include "interp/execution/work_coordinates.hpp"
+#include "interp/text/word_units.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+constexpr double kMetresPerFoot = 0.3048;  // G96 S under G20 is in ft/min
+constexpr double kMsPerS = 1000.0;
+
+// What sets G90 and G94 apart; the rest of a single cycle (modal retention, the checks,
+// emitting its legs) is one code path for both.
+struct SingleCycle {
+  int code;               // the system-A code, 90 or 94 (the dialect may write another)
+  bool taperAgainstX;     // the R alarm compares R with U (G90) or with W (G94)
+  std::vector<CycleLeg> (*legs)(const RZ& start, const RZ& end, double rMm);
+  std::optional<std::string> (*taperProblem)(double travelMm, double rMm);
+};
+
+constexpr SingleCycle kAxialCycle{90, true, axialCycleLegs, axialCycleTaperProblem};
+constexpr SingleCycle kFaceCycle{94, false, faceCycleLegs, faceCycleTaperProblem};
+
+// The axis words of a block: at most one of X/U and one of Z/W.
+struct AxisWords {
+  std::optional<Word> x, u, z, w;
+  bool any() const { return x || u || z || w; }
+};
+
+class Executor {
+ public:
+  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal,
+           const BlockPlace* place)
+      : block_(std::move(block)),
+        state_(std::move(state)),
+        options_(options),
+        ordinal_(ordinal),
+        place_(place) {}
+
+  Result<BlockOutcome> run();
+
+ private:
+  Error errorAt(int column, std::string message) const {
+    return Error{block_.line, column, std::move(message)};
+  }
+  // Coordinates a move or cycle goes to follow the distance mode (under G91 X and Z are
+  // incremental, like U and W); coordinates a block declares (G50) are always absolute.
+  enum class Coordinates { Target, Declared };
+  Result<AxisWords> takeAxisWords(Coordinates meaning = Coordinates::Target);
+  Status applyFeed();
+  void applySpindleMode();
+  Status applySpindleSpeed();
+  Status applyTool();
+  Status applyOneShot(const Code& code);
+  Status applyDwell(const Code& code);
+  Status applyCoordinateSetting(const Code& code);
+  Status applyReferenceReturn(const Code& code);
+  Status applyMachineCoordinateMove(const Code& code);
+  void applyWorkSystem(const std::optional<Code>& oneShot);
+  void noteDrillingCycleCancel();
+  void warnIfCycleRepeatsAfterG80(const std::optional<Code>& code, std::string_view name);
+  const ToolOffsets& offsetTable() const {
+    return state_.offsetTable ? *state_.offsetTable : options_.offsets;
+  }
+  Status applyMotion();
+  Status applyStraightMove(const std::optional<Code>& code);
+  Status applyArc(const std::optional<Code>& code);
+  RZ endPoint(const AxisWords& axes) const;
+  std::optional<ArcWord> arcWord(char letter);
+  Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
+  Status applyCompoundCycle(const Code& code);
+  Status applySubprogramCode();
+  Status checkAllWordsUsed() const;
+  std::optional<std::string> missingMachineryOf(const Word& word) const;
+  void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
+  void warnIfSurfaceSpeedUnclamped();
+  void emitLegs(const std::vector<CycleLeg>& legs);
+
+  ParsedBlock block_;
+  ModalState state_;
+  const InterpreterOptions& options_;
+  int ordinal_;
+  const BlockPlace* place_;
+  std::vector<Move> moves_;
+  ProgramFlow flow_;
+  std::vector<Error> warnings_;
+  std::vector<CycleStart> cycleStarts_;
+};
+
+Result<BlockOutcome> Executor::run() {
+  block_.take('N');  // sequence number: a label only
+  block_.take('O');  // program number
+  if (auto status = applySubprogramCode(); !status.ok()) return status.error();
+  if (auto code = block_.gCode(GGroup::Units)) state_.inch = code->number == 20;
+  if (auto code = block_.gCode(GGroup::FeedMode)) {
+    state_.feedMode = code->number == 98 ? FeedMode::PerMinute : FeedMode::PerRevolution;
+  }
+  if (auto code = block_.gCode(GGroup::Distance)) state_.incremental = code->number == kIncrementalDistance;
+  if (auto code = block_.gCode(GGroup::Plane)) {
+    state_.plane = code->number == 17 ? Plane::XY : code->number == 19 ? Plane::YZ : Plane::ZX;
+  }
+  applySpindleMode();
+  if (auto code = block_.gCode(GGroup::NoseRadius)) {
+    state_.noseSide = code->number == 41   ? NoseSide::Left
+                      : code->number == 42 ? NoseSide::Right
+                                           : NoseSide::None;
+  }
+
+  const auto oneShot = block_.gCode(GGroup::NonModal);
+  const auto motion = block_.gCode(GGroup::Motion);
+  applyWorkSystem(oneShot);
+  noteDrillingCycleCancel();
+  // G53 moves at rapid: `G00 G53 X0` is the same move written with its G00.
+  const bool g53WithG00 = oneShot && motion && oneShot->number == 53 && motion->number == 0;
+  if (oneShot && motion && !g53WithG00) {
+    return errorAt(motion->column,
+                   fmt::format("{} and {} cannot share a block: the words X, Z, U and W would "
+                               "belong to both; put them in separate blocks",
+                               oneShot->text, motion->text));
+  }
+  const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
+  if (oneShot && !compound) {
+    if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
+  }
+  if (auto status = applyFeed(); !status.ok()) return status.error();
+  if (auto status = applySpindleSpeed(); !status.ok()) return status.error();
+  if (auto status = applyTool(); !status.ok()) return status.error();
+
+  // M03/M04/M08 act before the block's motion, M05/M09 after it (as on the controls).
+  const auto spindle = block_.mCode(MGroup::Spindle);
+  const auto coolant = block_.mCode(MGroup::Coolant);
+  if (spindle && spindle->number != 5) state_.spindleOn = true;
+  if (coolant && coolant->number == 8) state_.coolantOn = true;
+
+  if (auto status = compound ? applyCompoundCycle(*oneShot) : applyMotion(); !status.ok()) {
+    return status.error();
+  }
+  if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
+
+  if (spindle && spindle->number == 5) state_.spindleOn = false;
+  if (coolant && coolant->number == 9) state_.coolantOn = false;
+  if (block_.mCode(MGroup::ProgramEnd)) state_.ended = true;
+  return BlockOutcome{std::move(state_), std::move(moves_), std::move(warnings_), std::move(cycleStarts_), flow_};
+}
+
+Status Executor::applySubprogramCode() {
+  const auto code = block_.mCode(MGroup::Subprogram);
+  if (!code) return success();
+  if (code->number == 99) {
+    flow_.returnColumn = code->column;
+    return success();
+  }
+  auto call = takeSubprogramCall(block_, *code);
+  if (!call.ok()) return call.error();
+  flow_.call = call.value();
+  return success();
+}
+
+Result<AxisWords> Executor::takeAxisWords(Coordinates meaning) {
+  AxisWords axes{block_.take('X'), block_.take('U'), block_.take('Z'), block_.take('W')};
+  if (state_.incremental && meaning == Coordinates::Target) {
+    // Under G91 an X word is a distance like U (and U stays one): both given is the
+    // same two-words-for-one-axis mistake as X with U, and is caught below.
+    if (axes.x && !axes.u) std::swap(axes.x, axes.u);
+    if (axes.z && !axes.w) std::swap(axes.z, axes.w);
+  }
+  if (axes.x && axes.u) {
+    return errorAt(std::max(axes.x->column, axes.u->column),
+                   fmt::format("{} and {} both give the X axis (X absolute, U incremental); "
+                               "give one of them",
+                               axes.x->text(), axes.u->text()));
+  }
+  if (axes.z && axes.w) {
+    return errorAt(std::max(axes.z->column, axes.w->column),
+                   fmt::format("{} and {} both give the Z axis (Z absolute, W incremental); "
+                               "give one of them",
+                               axes.z->text(), axes.w->text()));
+  }
+  return axes;
+}
+
+Status Executor::applyFeed() {
+  const auto f = block_.take('F');
+  if (!f) return success();
+  if (f->value <= 0) {
+    return errorAt(f->column, fmt::format("{} is not a feed rate: expected a positive number "
+                                          "(mm/rev under G99, mm/min under G98)",
+                                          f->text()));
+  }
+  state_.feed = lengthMm(*f, state_.inch);
+  return success();
+}
+
+// G96 / G97 (lathe-cycles.md §7). G97 with no S after G96 keeps the rpm the spindle turns
+// at here, where G96 leaves it; the G96 surface speed is remembered for the next G96.
+void Executor::applySpindleMode() {
+  const auto code = block_.gCode(GGroup::SpindleMode);
+  if (!code) return;
+  const SpindleMode mode = code->number == 96 ? SpindleMode::SurfaceSpeed : SpindleMode::Rpm;
+  if (mode == SpindleMode::Rpm && state_.spindleMode == SpindleMode::SurfaceSpeed) {
+    state_.spindleSpeed = surfaceSpeedRpm(state_.surfaceSpeedMPerMin, state_.position.x(),
+                                          state_.spindleLimitRpm, options_.machine);
+  }
+  if (mode == SpindleMode::SurfaceSpeed && state_.spindleMode == SpindleMode::Rpm)
+    state_.surfaceSpeedAwaitingMove = std::pair{block_.line, code->column};
+  if (mode == SpindleMode::Rpm) state_.surfaceSpeedAwaitingMove.reset();
+  state_.spindleMode = mode;
+}
+
+Status Executor::applySpindleSpeed() {
+  const auto s = block_.take('S');
+  if (!s) return success();
+  if (s->value < 0) {
+    return errorAt(s->column,
+                   fmt::format("{} is not a spindle speed: expected a number ≥ 0", s->text()));
+  }
+  // Under G96, S is a surface speed: m/min, or ft/min under G20.
+  if (state_.spindleMode == SpindleMode::SurfaceSpeed)
+    state_.surfaceSpeedMPerMin = state_.inch ? s->value * kMetresPerFoot : s->value;
+  else
+    state_.spindleSpeed = s->value;
+  return success();
+}
+
+Status Executor::applyTool() {
+  const auto t = block_.take('T');
+  if (!t) return success();
+  const bool integral = t->number.find_first_not_of("0123456789") == std::string::npos;
+  if (!integral || t->value > 9999) {
+    return errorAt(t->column, fmt::format("{} is not a tool word: expected T and four digits, "
+                                          "tool number then offset number, e.g. T0101",
+                                          t->text()));
+  }
+  const int toolAndOffset = static_cast<int>(t->value);
+  const int tool = toolAndOffset / 100;
+  const int offset = toolAndOffset % 100;
+  const auto& tools = options_.toolNumbers;
+  if (std::find(tools.begin(), tools.end(), tool) == tools.end() && options_.toolDefinitionHint && place_) {
+    std::vector<std::string> seen;  // the program's T words, each once, where first written
+    std::string used;
+    for (const ProgramBlock& b : place_->program.blocks) {
+      if (b.skipped || !b.parsed.ok() || !b.parsed.value().has('T')) continue;
+      const std::string text = b.parsed.value().words.at('T').text();
+      if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
+      seen.push_back(text);
+      used += fmt::format("{}{} (line {})", used.empty() ? "" : ", ", text, b.line);
+    }
+    return errorAt(t->column,
+                   fmt::format("tool {} ({}) is defined neither in the setup nor by a comment on its "
+                               "block naming an insert (CNMG 120408) or a kind (GROOVE 3MM, DRILL 12, "
+                               "THREAD 60 DEG); the program's tools: {}; add it to the setup:\n{}",
+                               tool, t->text(), used, options_.toolDefinitionHint(tool)));
+  }
+  if (std::find(tools.begin(), tools.end(), tool) == tools.end()) {
+    std::string defined;
+    for (int number : tools) defined += (defined.empty() ? "" : ", ") + std::to_string(number);
+    return errorAt(t->column,
+                   fmt::format("tool {} ({}) is not defined in the setup; defined tools: {} "
+                               "(T is written tool number then offset number, e.g. T0101)",
+                               tool, t->text(), defined.empty() ? "none" : defined));
+  }
+  state_.tool = tool;
+  state_.toolOffset = offset;
+  state_.offset = offsetNumbered(offsetTable(), offset);
+  return success();
+}
+
+Status Executor::applyOneShot(const Code& code) {
+  if (code.number == 4) return applyDwell(code);
+  // Every other one-shot code ends a G90/G94 cycle's retained values (GSK 3.21.2 note 2).
+  state_.cycle = {};
+  if (code.number == 50) return applyCoordinateSetting(code);
+  if (code.number == 28) return applyReferenceReturn(code);
+  if (code.number == 53) return applyMachineCoordinateMove(code);
+  if (code.number == 10) return applyDataSetting(block_, code, state_, options_);
+  return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
+}
+
+Status Executor::applyDwell(const Code& code) {
+  // X and U are seconds, P milliseconds: times, not lengths, so no unit conversion.
+  std::optional<Word> time;
+  for (char letter : {'X', 'U', 'P'}) {
+    auto word = block_.take(letter);
+    if (!word) continue;
+    if (time) {
+      return errorAt(word->column, fmt::format("G04 takes one dwell time, but {} and {} are "
+                                               "both given",
+                                               time->text(), word->text()));
+    }
+    if (word->value < 0) {
+      return errorAt(word->column,
+                     fmt::format("{} is not a dwell time: expected a number ≥ 0", word->text()));
+    }
+    time = word;
+  }
+  if (!time) {
+    return errorAt(code.column,
+                   "G04 needs a dwell time: X or U (seconds) or P (milliseconds)");
+  }
+  const double seconds = time->letter == 'P' ? time->value / kMsPerS : time->value;
+  emit(MoveKind::Dwell, state_.position, state_.position, 0);
+  moves_.back().dwellS = seconds;
+  return success();
+}
+
+Status Executor::applyCoordinateSetting(const Code& code) {
+  // G50 X(U) Z(W): the tool is declared to stand at these part coordinates; no move.
+  auto axes = takeAxisWords(Coordinates::Declared);
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  const auto s = block_.take('S');
+  if (!a.any() && !s) {
+    return errorAt(code.column, "G50 needs X(U) and/or Z(W) to set coordinates, or S to "
+                                "limit the spindle speed");
+  }
+  RZ& p = state_.position;
+  if (a.x) p.x() = lengthMm(*a.x, state_.inch) / 2.0;
+  if (a.u) p.x() += lengthMm(*a.u, state_.inch) / 2.0;
+  if (a.z) p.y() = lengthMm(*a.z, state_.inch);
+  if (a.w) p.y() += lengthMm(*a.w, state_.inch);
+  if (s) state_.spindleLimitRpm = s->value;
+  return success();
+}
+
+Status Executor::applyReferenceReturn(const Code& code) {
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  if (!a.any()) {
+    return errorAt(code.column, "G28 needs X(U) and/or Z(W): the intermediate point of the axes "
+                                "to return (G28 U0 W0 returns both straight from here)");
+  }
+  const RZ& p = state_.position;
+  std::optional<double> radiusMm, zMm;
+  if (a.x) radiusMm = lengthMm(*a.x, state_.inch) / 2.0;
+  if (a.u) radiusMm = p.x() + lengthMm(*a.u, state_.inch) / 2.0;
+  if (a.z) zMm = lengthMm(*a.z, state_.inch);
+  if (a.w) zMm = p.y() + lengthMm(*a.w, state_.inch);
+  const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.frame.shift();
+  const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
+  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step);
+  if (!legs.empty()) state_.position = legs.back().to;
+  return success();
+}
+
+Status Executor::applyMachineCoordinateMove(const Code& code) {
+  auto target = machineCoordinateTarget(block_, code, state_, options_);
+  if (!target.ok()) return target.error();
+  state_.noseSide = NoseSide::None;  // G53 cancels G41/G42 (GSK980TDi 3.20): its move is the cancel
+  emit(MoveKind::Rapid, state_.position, target.value(), 0);
+  state_.position = target.value();
+  return success();
+}
+
+// G54–G59 before the block's motion, so the block's own move is in the new system. In a G50
+// block the selection is ignored and G50 acts (GSK980TDi 3.21 note 6).
+void Executor::applyWorkSystem(const std::optional<Code>& oneShot) {
+  const auto code = block_.gCode(GGroup::WorkCoordinates);
+  if (!code) return;
+  if (oneShot && oneShot->number == 50) {
+    warnings_.push_back({block_.line, code->column,
+                         fmt::format("{} in a G50 block is ignored: G50 sets the coordinates "
+                                     "(GSK980TDi 3.21); select the work system in a block of its own",
+                                     code->text)});
+    return;
+  }
+  selectWorkSystem(*code, state_);
+}
+
+// G80 cancels the drilling cycles (group 10 on Fanuc T and GSK: G83–G89); it does not end
+// G90/G92/G94, which only another group-01 code ends. Remember it, so that a block that then
+// repeats such a cycle says so.
+void Executor::noteDrillingCycleCancel() {
+  const auto code = block_.gCode(GGroup::DrillingCycle);
+  if (!code) return;
+  if (state_.motion == MotionMode::AxialCycle || state_.motion == MotionMode::FaceCycle)
+    state_.drillCancelWithCycle = std::pair{block_.line, code->column};
+}
+
+void Executor::warnIfCycleRepeatsAfterG80(const std::optional<Code>& code, std::string_view name) {
+  const auto g80 = state_.drillCancelWithCycle;
+  state_.drillCancelWithCycle.reset();
+  if (code || !g80) return;
+  warnings_.push_back({block_.line, block_.column,
+                       fmt::format("this block repeats {}: the G80 on line {} cancels drilling "
+                                   "cycles only, and {} stays modal until a G00, G01, G02 or G03 "
+                                   "(Fanuc and GSK group 01)",
+                                   name, g80->first, name)});
+}
+
+Status Executor::applyMotion() {
+  const auto code = block_.gCode(GGroup::Motion);
+  if (code) {
+    const MotionMode mode = code->number == 0    ? MotionMode::Rapid
+                            : code->number == 1  ? MotionMode::Linear
+                            : code->number == 2  ? MotionMode::ArcCW
+                            : code->number == 3  ? MotionMode::ArcCCW
+                            : code->number == 90 ? MotionMode::AxialCycle
+                                                 : MotionMode::FaceCycle;
+    // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
+    // G94 are two such codes, so switching between them clears them too. Only a cycle
+    // retains values, so naming the current mode again keeps them.
+    if (mode != state_.motion) {
+      state_.cycle = {};
+      state_.drillCancelWithCycle.reset();
+    }
+    state_.motion = mode;
+  }
+  switch (state_.motion) {
+    case MotionMode::AxialCycle: return applySingleCycle(kAxialCycle, code);
+    case MotionMode::FaceCycle: return applySingleCycle(kFaceCycle, code);
+    case MotionMode::ArcCW:
+    case MotionMode::ArcCCW: return applyArc(code);
+    case MotionMode::Rapid:
+    case MotionMode::Linear: break;
+  }
+  return applyStraightMove(code);
+}
+
+Status Executor::applyStraightMove(const std::optional<Code>& code) {
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  if (!a.any()) return success();
+  const RZ from = state_.position;
+  const RZ to = endPoint(a);
+  const bool feed = state_.motion == MotionMode::Linear;
+  if (feed && !state_.feed) {
+    return errorAt(code ? code->column : block_.column,
+                   "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G01 move");
+  }
+  emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
+  state_.position = to;
+  return success();
+}
+
+RZ Executor::endPoint(const AxisWords& a) const {
+  RZ to = state_.position;
+  if (a.x) to.x() = lengthMm(*a.x, state_.inch) / 2.0;
+  if (a.u) to.x() += lengthMm(*a.u, state_.inch) / 2.0;
+  if (a.z) to.y() = lengthMm(*a.z, state_.inch);
+  if (a.w) to.y() += lengthMm(*a.w, state_.inch);
+  return to;
+}
+
+std::optional<ArcWord> Executor::arcWord(char letter) {
+  const auto word = block_.take(letter);
+  if (!word) return std::nullopt;
+  return ArcWord{word->text(), word->column, lengthMm(*word, state_.inch)};  // I: a radius
+}
+
+// G02/G03 (interp/motion/arc_move.hpp): one arc move to the end point; nothing without axis or
+// centre words.
+Status Executor::applyArc(const std::optional<Code>& code) {
+  const bool clockwise = state_.motion == MotionMode::ArcCW;
+  const std::string_view name = clockwise ? "G02" : "G03";
+  const int anchor = code ? code->column : block_.column;
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  ArcRequest arc{name, clockwise, state_.position, endPoint(axes.value()),
+                 arcWord('R'), arcWord('I'), arcWord('K'), block_.line, anchor};
+  if (!axes.value().any() && !arc.r && !arc.i && !arc.k) return success();
+  if (state_.plane != Plane::ZX) {
+    return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so an arc "
+                                       "needs the ZX plane; select it with G18",
+                                       name, state_.plane == Plane::XY ? "G17" : "G19"));
+  }
+  if (!state_.feed) {
+    return errorAt(anchor, fmt::format("feed rate F is not set: give F (e.g. F0.2 mm/rev) "
+                                       "before the first {} move",
+                                       name));
+  }
+  const auto centre = arcCentre(arc);
+  if (!centre.ok()) return centre.error();
+  emit(clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, arc.start, arc.end, 0, centre.value());
+  state_.position = arc.end;
+  return success();
+}
+
+Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code) {
+  const char taperLetter = cycleTaperLetter(cycle.code, options_.dialect);
+  // A block repeats the cycle when it names the cycle's code or gives any of X U Z W R.
+  if (!code && !block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') &&
+      !block_.has(taperLetter)) {
+    return success();
+  }
+  const int anchor = code ? code->column : block_.column;
+  const std::string name = writtenGCode(cycle.code, GGroup::Motion, options_.dialect);
+  warnIfCycleRepeatsAfterG80(code, name);
+  if (state_.plane != Plane::ZX) {
+    return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
+                                       "needs the ZX plane; select it with G18",
+                                       name, state_.plane == Plane::XY ? "G17" : "G19"));
+  }
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  const auto r = block_.take(taperLetter);
+  const RZ start = state_.position;  // A
+  CycleRetained& kept = state_.cycle;
+
+  std::optional<double> xDiameterMm = kept.xDiameterMm;
+  if (a.x) xDiameterMm = lengthMm(*a.x, state_.inch);
+  if (a.u) xDiameterMm = diameterOf(start) + lengthMm(*a.u, state_.inch);
+  std::optional<double> zMm = kept.zMm;
+  if (a.z) zMm = lengthMm(*a.z, state_.inch);
+  if (a.w) zMm = start.y() + lengthMm(*a.w, state_.inch);
+  if (!xDiameterMm || !zMm) {
+    return errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
+                                       "in this block nor kept from an earlier {0} block",
+                                       name, !xDiameterMm ? "X(U)" : "Z(W)"));
+  }
+  const double rMm = r ? lengthMm(*r, state_.inch) : kept.rMm.value_or(0.0);
+  if (!state_.feed) {
+    return errorAt(anchor, fmt::format("feed rate F is not set: {} cuts at feed; give F (e.g. "
+                                       "F0.2 mm/rev) in this block or before it",
+                                       name));
+  }
+  // The alarm compares R with the travel U (G90, a diameter) or W (G94); without R in this
+  // block it points at that travel's word.
+  const double travelMm = cycle.taperAgainstX ? *xDiameterMm - diameterOf(start) : *zMm - start.y();
+  if (auto problem = cycle.taperProblem(travelMm, rMm)) {
+    const std::optional<Word>& absolute = cycle.taperAgainstX ? a.x : a.z;
+    const std::optional<Word>& incremental = cycle.taperAgainstX ? a.u : a.w;
+    const int column = r             ? r->column
+                       : absolute    ? absolute->column
+                       : incremental ? incremental->column
+                                     : anchor;
+    return errorAt(column, *problem);
+  }
+  kept = CycleRetained{xDiameterMm, zMm, rMm};
+  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), name});
+  const RZ end(*xDiameterMm / 2.0, *zMm);  // C
+  const NoseComp comp = noseCompWith(state_.noseSide, state_.offset);
+  emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
+  return success();  // the cycle ends at A: the position is unchanged
+}
+
+// G70–G75 (interp/cycles/compound_cycle.hpp) in place of the block's motion.
+Status Executor::applyCompoundCycle(const Code& code) {
+  state_.cycle = {};  // a one-shot code ends G90/G94's retained values
+  const RZ start = state_.position;  // A
+  auto outcome = runCompoundCycle(code, block_, state_, options_, place_);
+  if (!outcome.ok()) return outcome.error();
+  const CompoundOutcome& done = outcome.value();
+  // The parameter block of a two-block cycle (G71 U R; …) moves nothing and starts nothing.
+  if (!done.legs.empty() || !done.contourMoves.empty())
+    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), code.text});
+  moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
+  emitLegs(done.legs);
+  flow_.continueAfter = done.continueAfter;
+  return success();
+}
+
+// A word no code took that names machinery this two-axis, one-spindle lathe does not have.
+std::optional<std::string> Executor::missingMachineryOf(const Word& word) const {
+  if (word.letter == 'C') {
+    return fmt::format("{}: this lathe has no C axis (the spindle cannot be positioned or "
+                       "milled around); live tooling and C-axis work cannot be simulated",
+                       word.text());
+  }
+  if (word.letter == 'B') {
+    return fmt::format("{}: this lathe has no B axis (a sub-spindle's or a tilting tool "
+                       "spindle's travel)",
+                       word.text());
+  }
+  // Fanuc's multi-spindle control selects the spindle with P11, P12, P21, P22 beside S or M03.
+  const bool spindleBlock = block_.mCode(MGroup::Spindle) || block_.has('S');
+  const bool spindleSelect = word.number == "11" || word.number == "12" || word.number == "21" || word.number == "22";
+  if (word.letter == 'P' && spindleSelect && spindleBlock) {
+    return fmt::format("{} selects a spindle (multi-spindle control: P11 the main, P12 or P2x a "
+                       "sub-spindle); this lathe has one spindle",
+                       word.text());
+  }
+  return std::nullopt;
+}
+
+Status Executor::checkAllWordsUsed() const {
+  if (block_.words.empty()) return success();
+  // Report the leftover word that comes first in the block.
+  const Word* first = nullptr;
+  for (const auto& [letter, word] : block_.words) {
+    if (first == nullptr || word.column < first->column) first = &word;
+  }
+  if (const auto lacking = missingMachineryOf(*first)) return errorAt(first->column, *lacking);
+  return errorAt(first->column, fmt::format("{} is not used by any code in this block; remove "
+                                            "it or add the code that takes {}",
+                                            first->text(), first->letter));
+}
+
+void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center) {
+  // An arc back to its start is a full circle, a dwell stands still: both are kept.
+  if (from == to && !isArc(kind) && kind != MoveKind::Dwell) return;
+  warnIfSurfaceSpeedUnclamped();
+  Move move;
+  move.kind = kind;
+  move.from = from;
+  move.to = to;
+  move.center = center;
+  move.feed = isCutting(kind) ? *state_.feed : 0.0;
+  move.feedMode = state_.feedMode;
+  move.tool = state_.tool;
+  move.toolOffset = state_.toolOffset;
+  move.offsetShift = offsetShift(state_.offset);
+  move.workShift = state_.frame.shift();
+  move.noseComp = noseCompWith(state_.noseSide, state_.offset);
+  move.spindleOn = state_.spindleOn;
+  move.spindleMode = state_.spindleMode;
+  const bool surfaceSpeed = state_.spindleMode == SpindleMode::SurfaceSpeed;
+  move.spindleS = surfaceSpeed ? state_.surfaceSpeedMPerMin : state_.spindleSpeed;
+  if (surfaceSpeed) move.spindleLimitRpm = state_.spindleLimitRpm;
+  move.block = ordinal_;
+  move.line = block_.line;
+  move.column = block_.column;
+  move.cycleStep = cycleStep;
+  moves_.push_back(move);
+}
+
+// The first move after G96 tells whether G50 S was given in time to limit it.
+void Executor::warnIfSurfaceSpeedUnclamped() {
+  const auto g96 = state_.surfaceSpeedAwaitingMove;
+  if (!g96) return;
+  state_.surfaceSpeedAwaitingMove.reset();
+  if (state_.spindleLimitRpm) return;
+  warnings_.push_back({g96->first, g96->second,
+                       fmt::format("G96 with no G50 S before its first move: the spindle speed is "
+                                   "limited only by the machine's max_rpm ({:g} rpm); give G50 S "
+                                   "(the rpm limit) before G96",
+                                   options_.machine.maxRpm)});
+}
+
+// A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough
+// against a contour already offset, G90/G94 are offset by their tip number
+// (cycle_nose_compensation.hpp), G74/G75 get none; an open chain ends at the first leg.
+void Executor::emitLegs(const std::vector<CycleLeg>& legs) {
+  const std::size_t first = moves_.size();
+  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
+  for (std::size_t i = first; i < moves_.size(); ++i) moves_[i].noseComp = {};
+}
+
+}  // namespace
+
+Result<BlockOutcome> executeBlock(ParsedBlock block, ModalState state,
+                                  const InterpreterOptions& options, int ordinal,
+                                  const BlockPlace* place) {
+  return Executor(std::move(block), std::move(state), options, ordinal, place).run();
+}
+
+}  // namespace lathesim::interp

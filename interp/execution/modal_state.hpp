@@ -1,0 +1,61 @@
+#pragma once
+// What the control remembers between blocks. All lengths are mm; X positions are radii.
+
+#include <memory>
+#include <optional>
+#include <utility>
+
+#include "geometry/rz.hpp"
+#include "interp/compensation/tool_offset.hpp"
+#include "interp/cycles/compound_params.hpp"
+#include "interp/execution/work_frame.hpp"
+#include "interp/move.hpp"
+
+namespace lathesim::interp {
+
+// group 01: G00 G01 G02 G03 G90 G94
+enum class MotionMode { Rapid, Linear, ArcCW, ArcCCW, AxialCycle, FaceCycle };
+enum class Plane { XY, ZX, YZ };                                  // G17, G18, G19
+
+/// The end point and taper of the last G90 or G94 block, reused by a following block of the
+/// same cycle that omits them. Cleared by any other group-01 code (G00, G01, and G94 after
+/// G90 or G90 after G94) and by every one-shot (group 00) code except G04.
+struct CycleRetained {
+  std::optional<double> xDiameterMm;  // absolute end X (C), a diameter
+  std::optional<double> zMm;          // absolute end Z (C)
+  std::optional<double> rMm;          // taper: G90 radius at the cut's start minus at its end;
+                                      // G94 Z at the cut's start minus Z at its end
+};
+
+struct ModalState {
+  MotionMode motion = MotionMode::Rapid;
+  Plane plane = Plane::ZX;
+  bool inch = false;  // G20; every length is converted to mm as it is read
+  bool incremental = false;  // G91 in dialects that have it: X and Z words are distances
+  FeedMode feedMode = FeedMode::PerRevolution;
+  std::optional<double> feed;  // mm/min (G98) or mm/rev (G99); unset until the first F
+  SpindleMode spindleMode = SpindleMode::Rpm;  // G97 is the power-on state
+  double spindleSpeed = 0.0;                   // rpm under G97 (S, or kept from G96)
+  double surfaceSpeedMPerMin = 0.0;            // G96 S, remembered across G97 periods
+  std::optional<double> spindleLimitRpm;       // G50 S
+  std::optional<std::pair<int, int>> surfaceSpeedAwaitingMove;  // (line, column) of a G96
+                                                                // that has made no move yet
+  bool spindleOn = false;
+  bool coolantOn = false;
+  int tool = 0;
+  int toolOffset = 0;
+  ToolOffset offset;  // the values of offset `toolOffset` as its T word found them: G10 changes
+                      // the table, and a changed entry takes effect at the next T word
+  std::shared_ptr<const ToolOffsets> offsetTable;  // the table as G10 left it; null: the setup's
+  NoseSide noseSide = NoseSide::None;  // group 07: G40 / G41 / G42
+  WorkFrame frame;        // G54–G59 and their offsets (G10 L2 changes them)
+  RZ position{0.0, 0.0};  // where the tool is in the selected work coordinate system
+                          // (radius mm, Z mm); the setup's frame is position + frame.shift()
+  std::optional<std::pair<int, int>> drillCancelWithCycle;  // (line, column) of a G80 read while
+                                                            // G90/G92/G94 stayed modal
+  CycleRetained cycle;
+  CompoundCycleParams compound;  // G71–G75 first-block values
+  bool ended = false;  // M02/M30 read: nothing after it runs
+};
+
+}  // namespace lathesim::interp

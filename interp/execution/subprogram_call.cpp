@@ -1,0 +1,63 @@
+#include "interp/execution/subprogram_call.hpp"
+
+#include <string>
+
+#include <fmt/format.h>
+
+namespace lathesim::interp {
+namespace {
+
+constexpr int kProgramNumberDigits = 4;  // P's last four digits name the program
+constexpr int kMaxRepeats = 9999;
+
+bool isPlainInteger(const Word& word) {
+  return !word.number.empty() && word.number.find_first_not_of("0123456789") == std::string::npos;
+}
+
+}  // namespace
+
+Result<SubprogramCall> takeSubprogramCall(ParsedBlock& block, const Code& m98) {
+  const auto p = block.take('P');
+  const auto l = block.take('L');
+  if (!p) {
+    return Error{block.line, m98.column,
+                 "M98 needs P: the program number (P1000 calls O1000; P31000 calls it 3 times)"};
+  }
+  if (!isPlainInteger(*p)) {
+    return Error{block.line, p->column,
+                 fmt::format("{} is not a program number: expected digits only, e.g. P1000 "
+                             "(O1000) or P31000 (O1000 three times)",
+                             p->text())};
+  }
+  SubprogramCall call;
+  call.column = p->column;
+  const std::string& digits = p->number;
+  const bool countInP = static_cast<int>(digits.size()) > kProgramNumberDigits;
+  const std::size_t split = countInP ? digits.size() - kProgramNumberDigits : 0;
+  call.programNumber = std::stoi(digits.substr(split));
+  if (countInP) {
+    if (digits.size() - kProgramNumberDigits > 4 || std::stoi(digits.substr(0, split)) == 0) {
+      return Error{block.line, p->column,
+                   fmt::format("{}: the digits before the four-digit program number are the "
+                               "repeat count, expected 1 to {}",
+                               p->text(), kMaxRepeats)};
+    }
+    call.repeats = std::stoi(digits.substr(0, split));
+  }
+  if (l) {
+    if (countInP) {
+      return Error{block.line, l->column,
+                   fmt::format("{} and {} both give the repeat count; give it once", p->text(),
+                               l->text())};
+    }
+    if (!isPlainInteger(*l) || l->value < 1 || l->value > kMaxRepeats) {
+      return Error{block.line, l->column,
+                   fmt::format("{} is not a repeat count: expected a whole number from 1 to {}",
+                               l->text(), kMaxRepeats)};
+    }
+    call.repeats = static_cast<int>(l->value);
+  }
+  return call;
+}
+
+}  // namespace lathesim::interp

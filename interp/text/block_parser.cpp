@@ -1,0 +1,104 @@
+#include "interp/text/block_parser.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace lathesim::interp {
+namespace {
+
+// A G or M number: an integer written without a fractional part ("G1.5" is not a code).
+std::optional<int> codeNumber(const Word& word) {
+  if (word.value < 0 || word.value > 999 || std::floor(word.value) != word.value) {
+    return std::nullopt;
+  }
+  return static_cast<int>(word.value);
+}
+
+std::string codeText(char letter, int number) { return fmt::format("{}{:02}", letter, number); }
+
+// A known, supported code, or the error saying why the word is not one. `info` is the table
+// entry found for the word's number (nullptr when none); `known` lists valid codes.
+template <class Info>
+Result<Code> checkedCode(const Word& word, std::optional<int> written, int line, const Info* info,
+                         std::string_view known) {
+  if (info == nullptr) {
+    return Error{line, word.column,
+                 fmt::format("unknown {} code {}: expected one of {}", word.letter, word.text(),
+                             known)};
+  }
+  const std::string text = codeText(word.letter, *written);
+  if (!info->lacks.empty()) {
+    return Error{line, word.column,
+                 fmt::format("{} ({}) needs {}, which this lathe does not have: it turns with two "
+                             "axes, X and Z, one spindle and a turret",
+                             text, info->meaning, info->lacks)};
+  }
+  if (!info->supported) {
+    return Error{line, word.column,
+                 fmt::format("{} ({}) is not supported by lathesim yet", text, info->meaning)};
+  }
+  return Code{info->number, text, word.column};
+}
+
+Error sameGroupError(int line, const Code& first, const Code& second, std::string_view group) {
+  return Error{line, second.column,
+               fmt::format("{} and {} are both {} codes; a block may hold only one", first.text,
+                           second.text, group)};
+}
+
+}  // namespace
+
+std::optional<Word> ParsedBlock::take(char letter) {
+  const auto found = words.find(letter);
+  if (found == words.end()) return std::nullopt;
+  Word word = found->second;
+  words.erase(found);
+  return word;
+}
+
+std::optional<Code> ParsedBlock::gCode(GGroup group) const {
+  const auto found = gCodes.find(group);
+  if (found == gCodes.end()) return std::nullopt;
+  return found->second;
+}
+
+std::optional<Code> ParsedBlock::mCode(MGroup group) const {
+  const auto found = mCodes.find(group);
+  if (found == mCodes.end()) return std::nullopt;
+  return found->second;
+}
+
+Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column, Dialect dialect) {
+  ParsedBlock block;
+  block.line = line;
+  block.column = column;
+  for (const Word& word : words) {
+    if (word.letter == 'G') {
+      const auto number = codeNumber(word);
+      const GCodeInfo* info = number ? findGCode(*number, dialect) : nullptr;
+      auto code = checkedCode(word, number, line, info,
+                              fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect)));
+      if (!code.ok()) return code.error();
+      const auto [where, inserted] = block.gCodes.emplace(info->group, code.value());
+      if (!inserted) return sameGroupError(line, where->second, code.value(), groupName(info->group));
+    } else if (word.letter == 'M') {
+      const auto number = codeNumber(word);
+      const MCodeInfo* info = number ? findMCode(*number) : nullptr;
+      auto code = checkedCode(word, number, line, info, supportedMCodes());
+      if (!code.ok()) return code.error();
+      const auto [where, inserted] = block.mCodes.emplace(info->group, code.value());
+      if (!inserted) return sameGroupError(line, where->second, code.value(), groupName(info->group));
+    } else {
+      const auto [where, inserted] = block.words.emplace(word.letter, word);
+      if (!inserted) {
+        return Error{line, word.column,
+                     fmt::format("{} is given twice in this block ({} and {}); give it once",
+                                 word.letter, where->second.text(), word.text())};
+      }
+    }
+  }
+  return block;
+}
+
+}  // namespace lathesim::interp

@@ -1,0 +1,15 @@
+#include "job/collision_checks.hpp"
+
+namespace lathesim::job {
+
+sim::CollisionChecks collisionChecksOf(const Setup& setup) {
+  sim::CollisionChecks checks;
+  for (const auto& tool : setup.tools) {
+    checks.cutters.emplace(tool.number, tool.outline);
+    if (tool.holderBody) checks.holders.emplace(tool.number, *tool.holderBody);
+  }
+  checks.chuck = sim::chuckRegions(setup.chuck, setup.stock);
+  return checks;
+}
+
+}  // namespace lathesim::job

@@ -1,0 +1,62 @@
+#pragma once
+// The setup file (TOML): stock, machine and tools. Its keys are a contract other tools
+// rely on; see README.md "Setup file".
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.hpp"
+#include "interp/diagnostic.hpp"
+#include "interp/control/dialect.hpp"
+#include "interp/control/machine_limits.hpp"
+#include "interp/move.hpp"
+#include "interp/compensation/tool_offset.hpp"
+#include "interp/execution/work_frame.hpp"
+#include "sim/stock_spec.hpp"
+#include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
+
+namespace lathesim::job {
+
+struct ToolDefinition {
+  int number = 1;
+  ConvexPolygon outline;  // the cutter: [radial, axial] mm from the programmed point; swept and removed
+  std::optional<ConvexPolygon> holderBody;  // catalogue tools: the holder's head and shank; never cuts
+  int tipNumber = 3;          // Fanuc imaginary tip 0–9: the programmed point relative to the nose
+  double noseRadiusMm = 0.0;  // 0 for a polygon tool
+};
+
+struct Setup {
+  std::string sourceName;  // the file it came from, or "(default setup)"
+  sim::StockSpec stock;
+  bool stockGiven = false;  // the file has [stock]: a bar the program states is not used
+  RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
+  RZ referencePosition{100.0, 200.0};  // G28's reference point (radius, Z); the start if not given
+  interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm
+  interp::Dialect dialect = interp::Dialect::FanucA;  // [machine] dialect
+  // [machine] initial_feed_mode: the G98/G99 state before the program sets one. Fanuc lathes
+  // power on in G99 (mm/rev); a GSK980TDi in G98 (mm/min).
+  interp::FeedMode initialFeedMode = interp::FeedMode::PerRevolution;
+  std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
+  std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
+  bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
+  sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
+  interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
+  interp::WorkOffsets workOffsets = interp::zeroWorkOffsets();  // [[work_offset]]: G54–G59
+  std::optional<RZ> machineZero;      // [machine] zero: G53's zero (radius, Z); unset: the reference point
+};
+
+struct SetupResult {
+  std::optional<Setup> setup;
+  std::vector<interp::Diagnostic> diagnostics;
+};
+
+/// The default: the seed's Φ125×112 bar with its face at Z2, the tool starting clear of it
+/// at X200 Z200, and one 80° rhombic-like sharp turning tool numbered 1.
+Setup defaultSetup();
+
+SetupResult parseSetup(std::string_view tomlText, const std::string& fileName);
+SetupResult loadSetup(const std::filesystem::path& file);
+
+}  // namespace lathesim::job

@@ -1,0 +1,173 @@
+// The drawing's profile file: TOML rows → the outline's points in (radius, Z), arcs as
+// chords. Every problem is reported with the line of the row it is in; a file with any
+// problem yields no outline.
+
+#include "measure/drawing.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+namespace lathesim::measure {
+namespace {
+
+using interp::Diagnostic;
+
+struct Reader {
+  std::string fileName;
+  std::string_view text;
+  std::vector<Diagnostic> diagnostics;
+
+  void error(const toml::source_region& where, const std::string& message) {
+    const int line = static_cast<int>(where.begin.line);
+    diagnostics.push_back({interp::Severity::Error, fileName, line, static_cast<int>(where.begin.column), message,
+                           interp::lineOf(text, line)});
+  }
+};
+
+/// A number (integer or float) under `key` of `row`, or nullopt with an error if present but wrong.
+std::optional<double> number(Reader& reader, const toml::table& row, const char* key, bool required) {
+  const toml::node* node = row.get(key);
+  if (node == nullptr) {
+    if (required) reader.error(row.source(), std::string("profile row needs ") + key);
+    return std::nullopt;
+  }
+  if (const auto value = node->value<double>(); value && std::isfinite(*value)) return *value;
+  reader.error(node->source(), std::string("profile ") + key + " must be a number (mm)");
+  return std::nullopt;
+}
+
+/// Appends the arc from `from` to `to` (radius, Z) as chords, excluding `from`.
+/// In the drawing view u = Z is to the right and v = r is up; clockwise is as seen there.
+void appendArc(std::vector<RZ>& out, const RZ& from, const RZ& to, const RZ& centre, bool clockwise) {
+  const auto angle = [&](const RZ& p) { return std::atan2(p.x() - centre.x(), p.y() - centre.y()); };
+  const double radius = (from - centre).norm();
+  double sweep = angle(to) - angle(from);
+  if (clockwise)
+    while (sweep >= 0) sweep -= 2 * M_PI;
+  else
+    while (sweep <= 0) sweep += 2 * M_PI;
+  const double maxStep = 2 * std::acos(std::max(-1.0, 1 - kDrawingChordErrorMm / radius));
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / maxStep)));
+  const double start = angle(from);
+  for (int s = 1; s < steps; ++s) {
+    const double a = start + sweep * s / steps;
+    out.emplace_back(centre.x() + radius * std::sin(a), centre.y() + radius * std::cos(a));
+  }
+  out.push_back(to);
+}
+
+/// The centre of an arc of signed radius R from a to b (R < 0: the longer arc), or nullopt.
+std::optional<RZ> centreFromRadius(const RZ& a, const RZ& b, double radius, bool clockwise) {
+  const RZ chord = b - a;
+  const double half = chord.norm() / 2;
+  if (half == 0 || std::abs(radius) < half * (1 - 1e-9)) return std::nullopt;
+  const double offset = std::sqrt(std::max(0.0, radius * radius - half * half));
+  // In (u, v) = (z, r), the right of the direction (du, dv) is (dv, −du); as (r, z): (−du, dv).
+  const RZ unit = chord / chord.norm();
+  const RZ right(-unit.y(), unit.x());
+  const double side = (clockwise ? 1.0 : -1.0) * (radius > 0 ? 1.0 : -1.0);
+  return RZ((a + b) / 2 + side * offset * right);
+}
+
+}  // namespace
+
+DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileName) {
+  Reader reader{fileName, tomlText, {}};
+  DrawingResult result;
+  toml::table table;
+  try {
+    table = toml::parse(tomlText, fileName);
+  } catch (const toml::parse_error& e) {
+    reader.error(e.source(), std::string(e.description()));
+    result.diagnostics = std::move(reader.diagnostics);
+    return result;
+  }
+  for (const auto& [key, node] : table)
+    if (key.str() != "profile") reader.error(key.source(), "unknown key '" + std::string(key.str()) + "' (expected [[profile]] rows)");
+  const toml::array* rows = table["profile"].as_array();
+  if (rows == nullptr || rows->size() < 2) {
+    reader.error(table.source(), "the drawing needs at least two [[profile]] rows, each with x (diameter) and z");
+    result.diagnostics = std::move(reader.diagnostics);
+    return result;
+  }
+  std::vector<RZ> outline;
+  for (std::size_t n = 0; n < rows->size(); ++n) {
+    const toml::table* row = rows->get(n)->as_table();
+    if (row == nullptr) {
+      reader.error(rows->get(n)->source(), "a profile row must be a table such as {x = 30, z = 0}");
+      continue;
+    }
+    for (const auto& [key, node] : *row)
+      if (key.str() != "x" && key.str() != "z" && key.str() != "arc" && key.str() != "radius" && key.str() != "center")
+        reader.error(key.source(), "unknown profile key '" + std::string(key.str()) + "' (expected x, z, arc, radius or center)");
+    const auto x = number(reader, *row, "x", true);
+    const auto z = number(reader, *row, "z", true);
+    if (!x || !z) continue;
+    if (*x < 0) {
+      reader.error(row->source(), "profile x is a diameter and cannot be negative");
+      continue;
+    }
+    const RZ point(*x / 2, *z);
+    const toml::node* arc = row->get("arc");
+    if (arc == nullptr) {
+      if (row->get("radius") || row->get("center")) reader.error(row->source(), "radius and center need arc = \"cw\" or \"ccw\"");
+      outline.push_back(point);
+      continue;
+    }
+    const auto direction = arc->value<std::string>();
+    if (!direction || (*direction != "cw" && *direction != "ccw")) {
+      reader.error(arc->source(), "arc must be \"cw\" or \"ccw\" (as drawn: Z to the right, X up)");
+      continue;
+    }
+    if (outline.empty()) {
+      reader.error(row->source(), "the first profile row cannot be an arc: an arc runs from the previous point");
+      continue;
+    }
+    const bool clockwise = *direction == "cw";
+    std::optional<RZ> centre;
+    if (const toml::array* c = row->get_as<toml::array>("center")) {
+      const auto cx = c->size() == 2 ? c->get(0)->value<double>() : std::nullopt;
+      const auto cz = c->size() == 2 ? c->get(1)->value<double>() : std::nullopt;
+      if (!cx || !cz) {
+        reader.error(c->source(), "center must be [x diameter, z]");
+        continue;
+      }
+      centre = RZ(*cx / 2, *cz);
+      const double r0 = (outline.back() - *centre).norm(), r1 = (point - *centre).norm();
+      if (std::abs(r0 - r1) > 1e-3) {
+        reader.error(c->source(), "the arc's ends are not the same distance from its center");
+        continue;
+      }
+    } else if (const auto radius = number(reader, *row, "radius", false)) {
+      centre = centreFromRadius(outline.back(), point, *radius, clockwise);
+      if (!centre) {
+        reader.error(row->source(), "the arc's radius is shorter than half the distance between its ends");
+        continue;
+      }
+    } else {
+      if (!row->get("radius")) reader.error(row->source(), "an arc needs radius or center");
+      continue;
+    }
+    appendArc(outline, outline.back(), point, *centre, clockwise);
+  }
+  result.diagnostics = std::move(reader.diagnostics);
+  if (result.diagnostics.empty()) result.outline = std::move(outline);
+  return result;
+}
+
+DrawingResult loadDrawing(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    DrawingResult result;
+    result.diagnostics.push_back({interp::Severity::Error, file.string(), 0, 0, "cannot read the drawing file", ""});
+    return result;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseDrawing(text.str(), file.string());
+}
+
+}  // namespace lathesim::measure

@@ -1,0 +1,39 @@
+#pragma once
+// How the program spends the machine: path lengths, time spent feeding through air, and
+// the material each tool removed. Computed from the toolpath and the simulation's
+// per-block removal, so they come with every check at no extra simulation cost.
+//
+// "Cutting air" is counted per block, the unit sim measures removal in: the feed moves
+// (straight or arc) of a block that removed less than one voxel's volume of material. A
+// cycle block that cuts is not counted, though its retract leg may run through air.
+// Times are sums of Move::timeS, so they are as right as the cycle-time model is.
+
+#include <vector>
+
+#include "interp/move.hpp"
+#include "sim/simulate.hpp"
+
+namespace lathesim::measure {
+
+struct ToolRemoval {
+  int tool = 0;
+  double removedMm3 = 0;
+};
+
+struct ProcessFigures {
+  double rapidPathMm = 0;  // tool-tip path length in the (r, z) plane
+  double feedPathMm = 0;   // straight feeds and arcs (arc length)
+  double rapidTimeS = 0, feedTimeS = 0;
+  int airFeedMoves = 0;
+  double airFeedPathMm = 0;
+  double airFeedTimeS = 0;
+  std::vector<ToolRemoval> removedPerTool;  // by tool number
+};
+
+/// The length of a move's path (mm): arcs along the arc, dwells 0.
+double pathLengthMm(const interp::Move& move);
+
+ProcessFigures processFigures(const interp::Toolpath& toolpath, const sim::SimulationResult& simulation,
+                              double voxelMm);
+
+}  // namespace lathesim::measure

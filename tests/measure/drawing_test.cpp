@@ -1,0 +1,112 @@
+// The drawing's profile file: points as diameters, arcs by radius or centre, and every
+// mistake reported on its line.
+
+#include "measure/drawing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lathesim::measure {
+namespace {
+
+std::string firstMessage(const DrawingResult& result) {
+  return result.diagnostics.empty() ? std::string("(none)") : result.diagnostics.front().message;
+}
+
+TEST(Drawing, PointsAreDiametersAndZ) {
+  const DrawingResult r = parseDrawing("[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 50\nz = -20\n", "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  ASSERT_EQ(r.outline->size(), 2u);
+  EXPECT_EQ((*r.outline)[0], RZ(15, 0));
+  EXPECT_EQ((*r.outline)[1], RZ(25, -20));
+}
+
+// From (r 15, Z0) to (r 25, Z-10), radius 10. In the drawing view (Z right, r up) the chord
+// runs left and up; its midpoint is (r 20, Z-5), and the centre lies √(10² − 50) = √50 off the
+// chord's middle: counter-clockwise (the shorter arc) on its left, at (r 15, Z-10); the arc
+// then bulges up and right through (r 15 + 10/√2, Z-10 + 10/√2) = (22.07, -2.93).
+TEST(Drawing, CounterClockwiseArcByRadiusBulgesOutwards) {
+  const DrawingResult r = parseDrawing(
+      "profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"ccw\", radius = 10}]\n", "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  ASSERT_GT(r.outline->size(), 10u);  // chords within 0.1 µm
+  EXPECT_EQ(r.outline->back(), RZ(25, -10));
+  double farthestFromAxisSide = 0;
+  for (const RZ& p : *r.outline) {
+    EXPECT_NEAR((p - RZ(15, -10)).norm(), 10.0, 1e-9);
+    farthestFromAxisSide = std::max(farthestFromAxisSide, p.x() + p.y());
+  }
+  // The point at 45°: r + z = 15 + 10/√2 − 10 + 10/√2 = 5 + 10√2.
+  EXPECT_NEAR(farthestFromAxisSide, 5 + 10 * std::sqrt(2.0), 1e-4);
+}
+
+// Clockwise, the centre is on the chord's right, (r 25, Z0); the arc passes (r 25 − 10/√2, Z −10/√2).
+TEST(Drawing, ClockwiseArcByCentreIsTheCove) {
+  const DrawingResult r = parseDrawing(
+      "profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\", center = [50, 0]}]\n", "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  double nearestToAxisSide = 1e9;
+  for (const RZ& p : *r.outline) {
+    EXPECT_NEAR((p - RZ(25, 0)).norm(), 10.0, 1e-9);
+    nearestToAxisSide = std::min(nearestToAxisSide, p.x() + p.y());
+  }
+  EXPECT_NEAR(nearestToAxisSide, 25 - 10 * std::sqrt(2.0), 1e-4);
+}
+
+// A negative radius takes the longer arc: three quarters of the circle, 15π/2 · 10 mm long.
+TEST(Drawing, NegativeRadiusIsTheLongerArc) {
+  const DrawingResult r = parseDrawing(
+      "profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"ccw\", radius = -10}]\n", "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  double length = 0;
+  for (std::size_t i = 1; i < r.outline->size(); ++i) length += ((*r.outline)[i] - (*r.outline)[i - 1]).norm();
+  EXPECT_NEAR(length, 1.5 * M_PI * 10, 1e-3);
+}
+
+TEST(Drawing, LastRowRepeatingTheFirstClosesTheOutline) {
+  const DrawingResult r = parseDrawing(
+      "profile = [{x = 20, z = 0}, {x = 50, z = 0}, {x = 50, z = -30}, {x = 20, z = -30}, {x = 20, z = 0}]\n", "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  ASSERT_EQ(r.outline->size(), 5u);
+  EXPECT_EQ(r.outline->front(), r.outline->back());
+}
+
+struct BadDrawing {
+  std::string text;
+  int line;
+  std::string message;
+};
+
+void PrintTo(const BadDrawing& bad, std::ostream* out) { *out << "'" << bad.message << "'"; }
+
+class DrawingErrors : public testing::TestWithParam<BadDrawing> {};
+
+TEST_P(DrawingErrors, SayWhatIsWrongOnItsLine) {
+  const DrawingResult r = parseDrawing(GetParam().text, "d.toml");
+  EXPECT_FALSE(r.outline);
+  ASSERT_FALSE(r.diagnostics.empty());
+  EXPECT_EQ(r.diagnostics.front().line, GetParam().line);
+  EXPECT_NE(r.diagnostics.front().message.find(GetParam().message), std::string::npos) << r.diagnostics.front().message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Drawing, DrawingErrors,
+    testing::Values(
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\n", 1, "at least two [[profile]] rows"},
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 50\n", 4, "profile row needs z"},
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 50\nz = \"a\"\n", 6, "z must be a number"},
+        BadDrawing{"[[profile]]\nx = -30\nz = 0\n[[profile]]\nx = 50\nz = 1\n", 1, "diameter and cannot be negative"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"left\", radius = 10}]\n", 1,
+                   "arc must be \"cw\" or \"ccw\""},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\", radius = 5}]\n", 1,
+                   "radius is shorter than half the distance"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\"}]\n", 1, "an arc needs radius or center"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\", center = [30, 0]}]\n", 1,
+                   "not the same distance from its center"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, radius = 10}]\n", 1, "need arc"},
+        BadDrawing{"[part]\n[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 50\nz = 1\n", 1, "unknown key 'part'"},
+        BadDrawing{"[[profile]]\nx = 30\nz = = 0\n", 3, ""}));
+
+}  // namespace
+}  // namespace lathesim::measure

@@ -1,0 +1,63 @@
+// Path lengths, air cutting and removal per tool, on a toolpath written out by hand.
+
+#include "measure/process_figures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lathesim::measure {
+namespace {
+
+interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int tool, double timeS) {
+  interp::Move m;
+  m.kind = kind;
+  m.from = from;
+  m.to = to;
+  m.block = block;
+  m.line = block + 1;
+  m.tool = tool;
+  m.timeS = timeS;
+  return m;
+}
+
+TEST(ProcessFigures, LengthsAirAndRemovalPerTool) {
+  interp::Toolpath path;
+  // Block 0, tool 1: rapid 10 mm down Z, then a feed 20 mm along −Z that removes 100 mm³.
+  path.moves.push_back(move(interp::MoveKind::Rapid, {30, 10}, {30, 0}, 0, 1, 1.0));
+  path.moves.push_back(move(interp::MoveKind::Feed, {30, 0}, {30, -20}, 0, 1, 2.0));
+  // Block 1, tool 2: a counter-clockwise quarter circle of radius 10 about (r 20, Z-10), from
+  // (20, 0) to (30, -10): in the drawing view from straight above the centre round to its
+  // left, 90°, length 5π. It removes nothing: feeding through air.
+  interp::Move arc = move(interp::MoveKind::ArcCCW, {20, 0}, {30, -10}, 1, 2, 4.0);
+  arc.center = RZ(20, -10);
+  path.moves.push_back(arc);
+  // Block 2, tool 2: a 3-4-5 feed removing 50 mm³.
+  path.moves.push_back(move(interp::MoveKind::Feed, {30, -10}, {33, -14}, 2, 2, 0.5));
+
+  sim::SimulationResult sim;
+  sim.blocks = {{0, 1, 1, 100.0}, {1, 2, 1, 0.0}, {2, 3, 1, 50.0}};
+  const ProcessFigures f = processFigures(path, sim, 0.25);
+  EXPECT_DOUBLE_EQ(f.rapidPathMm, 10.0);
+  EXPECT_NEAR(f.feedPathMm, 20.0 + 5 * M_PI + 5.0, 1e-9);
+  EXPECT_DOUBLE_EQ(f.rapidTimeS, 1.0);
+  EXPECT_DOUBLE_EQ(f.feedTimeS, 6.5);
+  EXPECT_EQ(f.airFeedMoves, 1);
+  EXPECT_NEAR(f.airFeedPathMm, 5 * M_PI, 1e-9);
+  EXPECT_DOUBLE_EQ(f.airFeedTimeS, 4.0);
+  ASSERT_EQ(f.removedPerTool.size(), 2u);
+  EXPECT_EQ(f.removedPerTool[0].tool, 1);
+  EXPECT_DOUBLE_EQ(f.removedPerTool[0].removedMm3, 100.0);
+  EXPECT_EQ(f.removedPerTool[1].tool, 2);
+  EXPECT_DOUBLE_EQ(f.removedPerTool[1].removedMm3, 50.0);
+}
+
+// The clockwise way round between the same points is the other three quarters: 15π.
+TEST(ProcessFigures, ClockwiseArcGoesTheLongWayRound) {
+  interp::Move arc = move(interp::MoveKind::ArcCW, {20, 0}, {30, -10}, 0, 1, 0);
+  arc.center = RZ(20, -10);
+  EXPECT_NEAR(pathLengthMm(arc), 15 * M_PI, 1e-9);
+}
+
+}  // namespace
+}  // namespace lathesim::measure
