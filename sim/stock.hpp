@@ -66,8 +66,9 @@ class Stock {
   /// negative inside the material, positive outside; beyond the narrow band it is ±3 voxels.
   double signedDistanceAt(const RZ& point) const;
 
-  /// Closed surface at φ = 0, outward normals. adaptivity 0 keeps every voxel's facets;
-  /// larger values (up to 1) merge facets on flat and gently curved areas.
+  /// Closed surface just inside φ = 0 (0.16 % of a voxel: see stock.cpp), outward normals,
+  /// vertices merged by position as an STL reader merges them. adaptivity 0 keeps every
+  /// voxel's facets; larger values (up to 1) merge facets on flat and gently curved areas.
   TriangleMesh mesh(double adaptivity) const;
 
   /// φ in the meridian plane y = 0, x ≥ 0, at every voxel centre over the bar's extent and
