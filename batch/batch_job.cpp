@@ -1,0 +1,73 @@
+#include "batch/batch_job.hpp"
+
+#include <array>
+#include <charconv>
+#include <utility>
+
+namespace lathesim::batch {
+namespace {
+
+template <class T>
+std::optional<T> either(const std::optional<T>& own, const std::optional<T>& base) {
+  return own ? own : base;
+}
+
+/// A number as the shortest text that reads back the same.
+std::string numberText(double value) {
+  std::array<char, 64> text{};
+  const auto [end, ec] = std::to_chars(text.data(), text.data() + text.size(), value);
+  return std::string(text.data(), ec == std::errc{} ? end : text.data());
+}
+
+}  // namespace
+
+JobSettings JobSettings::over(const JobSettings& base) const {
+  JobSettings merged;
+  merged.setup = either(setup, base.setup);
+  // The drawing and the target program are one choice, what the part is checked against.
+  const bool ownTarget = drawing || targetProgram;
+  merged.drawing = ownTarget ? drawing : base.drawing;
+  merged.targetProgram = ownTarget ? targetProgram : base.targetProgram;
+  merged.toleranceMm = either(toleranceMm, base.toleranceMm);
+  merged.voxelMm = either(voxelMm, base.voxelMm);
+  merged.timeLimitS = either(timeLimitS, base.timeLimitS);
+  merged.options = base.options;
+  merged.options.insert(merged.options.end(), options.begin(), options.end());
+  return merged;
+}
+
+bool BatchJob::checksDrawing() const {
+  return (settings.drawing && !settings.drawing->empty()) || settings.targetProgram.has_value();
+}
+
+std::vector<std::string> commandArguments(const BatchJob& job, const std::filesystem::path& folder) {
+  const JobSettings& s = job.settings;
+  std::vector<std::string> args{job.checksDrawing() ? "check" : "run", job.program.string()};
+  if (s.setup) args.insert(args.end(), {"--setup", s.setup->string()});
+  if (job.checksDrawing()) {
+    if (s.drawing && !s.drawing->empty())
+      args.insert(args.end(), {"--target", s.drawing->string()});
+    else
+      args.insert(args.end(), {"--target-program", s.targetProgram->string()});
+    if (s.toleranceMm) args.insert(args.end(), {"--tol", numberText(*s.toleranceMm)});
+  }
+  if (s.voxelMm) args.insert(args.end(), {"--voxel", numberText(*s.voxelMm)});
+  args.insert(args.end(), s.options.begin(), s.options.end());
+  args.insert(args.end(), {"--out", folder.string()});
+  return args;
+}
+
+std::optional<std::string> reservedOption(const std::string& option) {
+  static const std::array<std::pair<const char*, const char*>, 6> kReserved{{{"--out", "the batch's --out"},
+                                                                             {"--setup", "setup"},
+                                                                             {"--target", "drawing"},
+                                                                             {"--target-program", "target_program"},
+                                                                             {"--tol", "tolerance"},
+                                                                             {"--voxel", "voxel"}}};
+  const std::string name = option.substr(0, option.find('='));  // --voxel=0.1 too
+  for (const auto& [reserved, instead] : kReserved)
+    if (name == reserved) return std::string(instead);
+  return std::nullopt;
+}
+
+}  // namespace lathesim::batch
