@@ -159,7 +159,7 @@ nlohmann::ordered_json toJson(const JobResult& r) {
   using Ordered = nlohmann::ordered_json;
   const auto orNull = [](const auto& optional) { return optional ? Ordered(*optional) : Ordered(nullptr); };
   Ordered row;
-  row["index"] = r.index;
+  row["index"] = r.index + 1;  // the job's place in the manifest, counted from 1
   row["name"] = r.name;
   row["program"] = r.program;
   row["command"] = r.command;
@@ -198,7 +198,7 @@ nlohmann::ordered_json toJson(const JobResult& r) {
 
 JobResult resultFromJson(const Json& row) {
   JobResult r;
-  r.index = row.at("index").get<int>();
+  r.index = row.at("index").get<int>() - 1;
   r.name = row.at("name").get<std::string>();
   r.program = row.at("program").get<std::string>();
   r.command = row.at("command").get<std::string>();

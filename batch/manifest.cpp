@@ -14,12 +14,14 @@ std::string lowerExtension(const std::filesystem::path& file) {
   return extension;
 }
 
-interp::Diagnostic problem(const std::filesystem::path& source, int line, std::string message) {
+interp::Diagnostic problem(const std::filesystem::path& source, int line, std::string message,
+                           std::string_view sourceText = {}) {
   interp::Diagnostic d;
   d.file = source.string();
   d.line = line;
   d.column = line > 0 ? 1 : 0;
   d.message = std::move(message);
+  d.sourceLine = interp::lineOf(sourceText, line);
   return d;
 }
 
@@ -56,13 +58,13 @@ std::optional<std::string> badJobName(const std::string& name) {
   return std::nullopt;
 }
 
-bool checkNamesUnique(const std::vector<BatchJob>& jobs, const std::filesystem::path& source,
+bool checkNamesUnique(const std::vector<BatchJob>& jobs, const std::filesystem::path& source, std::string_view sourceText,
                       std::vector<interp::Diagnostic>& diagnostics) {
   std::map<std::string, const BatchJob*> seen;
   bool unique = true;
   for (const BatchJob& job : jobs) {
     if (auto bad = badJobName(job.name)) {
-      diagnostics.push_back(problem(source, job.manifestLine, *bad + "; give the job a name"));
+      diagnostics.push_back(problem(source, job.manifestLine, *bad + "; give the job a name", sourceText));
       unique = false;
       continue;
     }
@@ -72,7 +74,8 @@ bool checkNamesUnique(const std::vector<BatchJob>& jobs, const std::filesystem::
                                                         : " (" + first->second->program.string() + ")";
     diagnostics.push_back(problem(source, job.manifestLine,
                                   "two jobs are named \"" + job.name + "\" (" + job.program.string() +
-                                      " and the job" + where + "); each needs its own output folder, give one a name"));
+                                      " and the job" + where + "); each needs its own output folder, give one a name",
+                                  sourceText));
     unique = false;
   }
   return unique;

@@ -44,8 +44,9 @@ std::string defaultJobName(const std::filesystem::path& program);
 /// or nullopt.
 std::optional<std::string> badJobName(const std::string& name);
 
-/// Adds a diagnostic for every job whose name another job took first; false if any.
-bool checkNamesUnique(const std::vector<BatchJob>& jobs, const std::filesystem::path& source,
+/// Adds a diagnostic for every job whose name is bad or another job took first (at the
+/// job's line of `sourceText`, the manifest's text); false if any.
+bool checkNamesUnique(const std::vector<BatchJob>& jobs, const std::filesystem::path& source, std::string_view sourceText,
                       std::vector<interp::Diagnostic>& diagnostics);
 
 }  // namespace lathesim::batch

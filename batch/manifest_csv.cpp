@@ -169,7 +169,7 @@ JobList readCsvManifest(const std::filesystem::path& file, const JobSettings& de
     jobs.push_back(jobOf(entry, defaults, static_cast<int>(jobs.size()), record.line));
   }
   if (jobs.empty() && diagnostics.empty()) report(records.front().line, 1, "the manifest lists no jobs below its header");
-  if (!diagnostics.empty() || !checkNamesUnique(jobs, file, diagnostics)) return {std::nullopt, std::move(diagnostics)};
+  if (!diagnostics.empty() || !checkNamesUnique(jobs, file, text, diagnostics)) return {std::nullopt, std::move(diagnostics)};
   return {std::move(jobs), {}};
 }
 

@@ -135,7 +135,8 @@ JobList readTomlManifest(const std::filesystem::path& file, const JobSettings& d
                                   : "unknown key '" + std::string(key.str()) + "' (expected [defaults] and [[job]] tables)");
     }
   }
-  if (!jobTables && report.diagnostics.empty()) report.at(root.source(), "the manifest lists no [[job]]");
+  if (!jobTables && report.diagnostics.empty())
+    report.diagnostics.push_back({interp::Severity::Error, file.string(), 0, 0, "the manifest lists no [[job]]", ""});
   std::vector<BatchJob> jobs;
   if (jobTables)
     for (const auto& node : *jobTables) {
@@ -143,7 +144,7 @@ JobList readTomlManifest(const std::filesystem::path& file, const JobSettings& d
       if (auto entry = readEntry(table, false, baseDir, report))
         jobs.push_back(jobOf(*entry, layered, static_cast<int>(jobs.size()), static_cast<int>(table.source().begin.line)));
     }
-  if (!report.diagnostics.empty() || !checkNamesUnique(jobs, file, report.diagnostics))
+  if (!report.diagnostics.empty() || !checkNamesUnique(jobs, file, report.text(), report.diagnostics))
     return {std::nullopt, std::move(report.diagnostics)};
   return {std::move(jobs), {}};
 }

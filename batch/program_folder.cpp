@@ -79,7 +79,7 @@ JobList jobsInFolder(const fs::path& folder, const JobSettings& defaults) {
     jobs.push_back(std::move(job));
   }
   std::vector<interp::Diagnostic> diagnostics;
-  if (!checkNamesUnique(jobs, folder, diagnostics)) return {std::nullopt, std::move(diagnostics)};
+  if (!checkNamesUnique(jobs, folder, {}, diagnostics)) return {std::nullopt, std::move(diagnostics)};
   return {std::move(jobs), {}};
 }
 
