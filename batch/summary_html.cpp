@@ -207,7 +207,7 @@ constexpr const char* kScript = R"(
     heads[column].setAttribute('aria-sort', descending ? 'descending' : 'ascending');
   }
   function sortFromAddress() {
-    var match = /^#sort=(-?)([a-z_]+)$/.exec(window.location.hash);
+    var match = /^#sort=(-?)([a-z0-9_]+)$/.exec(window.location.hash);
     if (match) sortBy(match[2], match[1] === '-');
   }
   heads.forEach(function (h) {
