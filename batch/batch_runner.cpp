@@ -122,7 +122,9 @@ class BatchRun {
         break;
       }
       killOverdue();
-      reapFinished();
+      std::vector<Ended> ended = reapEnded();
+      startWhatFits();  // before the thumbnails and stamps: no CPU waits on the batch's own work
+      for (const Ended& e : ended) finish(e.job, e.waitStatus);
     }
     if (stoppedBy) stopAll();
     pthread_sigmask(SIG_SETMASK, &previous, nullptr);
@@ -192,17 +194,25 @@ class BatchRun {
       }
   }
 
-  void reapFinished() {
+  struct Ended {
+    RunningJob job;
+    int waitStatus;
+  };
+
+  /// The jobs whose process has ended, reaped, their slots and memory freed.
+  std::vector<Ended> reapEnded() {
+    std::vector<Ended> ended;
     for (auto it = running_.begin(); it != running_.end();) {
       const std::optional<int> status = it->process.poll();
       if (!status) {
         ++it;
         continue;
       }
-      finish(*it, *status);
       runningBytes_ -= it->bytes;
+      ended.push_back({std::move(*it), *status});
       it = running_.erase(it);
     }
+    return ended;
   }
 
   void finish(const RunningJob& r, int waitStatus) {
