@@ -1,8 +1,9 @@
 #include "batch/batch_job.hpp"
 
 #include <array>
-#include <charconv>
 #include <utility>
+
+#include "batch/number_text.hpp"
 
 namespace lathesim::batch {
 namespace {
@@ -10,13 +11,6 @@ namespace {
 template <class T>
 std::optional<T> either(const std::optional<T>& own, const std::optional<T>& base) {
   return own ? own : base;
-}
-
-/// A number as the shortest text that reads back the same.
-std::string numberText(double value) {
-  std::array<char, 64> text{};
-  const auto [end, ec] = std::to_chars(text.data(), text.data() + text.size(), value);
-  return std::string(text.data(), ec == std::errc{} ? end : text.data());
 }
 
 }  // namespace
@@ -49,9 +43,9 @@ std::vector<std::string> commandArguments(const BatchJob& job, const std::filesy
       args.insert(args.end(), {"--target", s.drawing->string()});
     else
       args.insert(args.end(), {"--target-program", s.targetProgram->string()});
-    if (s.toleranceMm) args.insert(args.end(), {"--tol", numberText(*s.toleranceMm)});
+    if (s.toleranceMm) args.insert(args.end(), {"--tol", shortestText(*s.toleranceMm)});
   }
-  if (s.voxelMm) args.insert(args.end(), {"--voxel", numberText(*s.voxelMm)});
+  if (s.voxelMm) args.insert(args.end(), {"--voxel", shortestText(*s.voxelMm)});
   args.insert(args.end(), s.options.begin(), s.options.end());
   args.insert(args.end(), {"--out", folder.string()});
   return args;

@@ -7,6 +7,8 @@
 #include <regex>
 #include <sstream>
 
+#include "batch/number_text.hpp"
+
 namespace lathesim::batch {
 namespace {
 
@@ -21,12 +23,6 @@ constexpr std::array<std::pair<JobStatus, std::string_view>, 6> kStatusNames{{{J
 
 // `lathesim check` exits 3 when the part is out of tolerance (app/commands.hpp).
 constexpr int kExitOutOfTolerance = 3;
-
-std::string numberText(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 template <class T>
 std::optional<T> optionalAt(const Json& object, const char* key) {
@@ -123,7 +119,7 @@ JobResult resultOf(const BatchJob& job, const std::string& folder, const ChildOu
   if (outcome.timedOut) {
     result.status = JobStatus::Timeout;
     result.message = JobMessage{"error", "", 0, 0,
-                                "stopped at the time limit of " + numberText(job.settings.timeLimitS.value_or(0)) + " s"};
+                                "stopped at the time limit of " + shortestText(job.settings.timeLimitS.value_or(0)) + " s"};
     return result;
   }
   if (outcome.signal) {

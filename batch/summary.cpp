@@ -1,11 +1,11 @@
 #include "batch/summary.hpp"
 
-#include <charconv>
 #include <fstream>
 #include <functional>
 #include <sstream>
 #include <stdexcept>
 
+#include "batch/number_text.hpp"
 #include "batch/summary_html.hpp"
 
 namespace lathesim::batch {
@@ -20,12 +20,7 @@ std::string csvField(const std::string& text) {
   return quoted + "\"";
 }
 
-std::string csvNumber(std::optional<double> value) {
-  if (!value) return "";
-  char text[64];
-  const auto [end, ec] = std::to_chars(text, text + sizeof text, *value);
-  return std::string(text, ec == std::errc{} ? end : text);
-}
+std::string csvNumber(std::optional<double> value) { return value ? shortestText(*value) : std::string(); }
 
 std::string csvInt(std::optional<int> value) { return value ? std::to_string(*value) : std::string(); }
 

@@ -1,5 +1,7 @@
 #include "batch/summary_html.hpp"
 
+#include "batch/number_text.hpp"
+
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
@@ -67,12 +69,6 @@ std::string fixed(double value, int decimals) {
   return text;
 }
 
-std::string exact(double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 /// A table cell sorted by `value` (empty: sorts last), showing `html`.
 std::string cell(const std::string& value, const std::string& html, const std::string& cls = "") {
   return "<td" + (cls.empty() ? std::string() : " class=\"" + cls + "\"") + " data-value=\"" + escaped(value) + "\">" +
@@ -80,7 +76,7 @@ std::string cell(const std::string& value, const std::string& html, const std::s
 }
 
 std::string numberCell(const std::optional<double>& value, int decimals, const std::string& cls = "num") {
-  return value ? cell(exact(*value), fixed(*value, decimals), cls) : cell("", "", cls);
+  return value ? cell(shortestText(*value), fixed(*value, decimals), cls) : cell("", "", cls);
 }
 
 /// Worst last when sorted ascending: the order a teacher scans a class in.

@@ -23,6 +23,7 @@
 #include "job/setup.hpp"
 #include "tests/render/png_pixels.hpp"
 #include "tests/support/lathesim_process.hpp"
+#include "tests/support/processes.hpp"
 #include "tests/support/volume_tolerance.hpp"
 
 namespace lathesim::batch {
@@ -89,31 +90,6 @@ FileIdentity identityOf(const fs::path& file) {
   struct stat st {};
   if (::stat(file.c_str(), &st) != 0) return {};
   return {st.st_ino, static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec};
-}
-
-/// Live processes (zombies excluded) whose command line mentions `text`.
-std::vector<pid_t> processesMentioning(const std::string& text) {
-  std::vector<pid_t> found;
-  for (const auto& entry : fs::directory_iterator("/proc")) {
-    const std::string name = entry.path().filename().string();
-    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::string cmdline = readFile(entry.path() / "cmdline");
-    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
-    const std::string stat = readFile(entry.path() / "stat");
-    const auto close = stat.rfind(')');
-    const bool zombie = close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z';
-    if (!zombie && cmdline.find(text) != std::string::npos) found.push_back(std::stoi(name));
-  }
-  return found;
-}
-
-bool noProcessMentionsWithin(const std::string& text, std::chrono::seconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (!processesMentioning(text).empty()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return true;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -240,7 +216,7 @@ TEST_F(MixedBatch, TheSlowJobIsStoppedAtItsLimitAndLeavesNothingHalfWritten) {
   std::set<std::string> files;
   for (const auto& entry : fs::directory_iterator(out() / "too-slow")) files.insert(entry.path().filename().string());
   EXPECT_EQ(files, (std::set<std::string>{"lathesim.log", "batch-stamp.json"}));
-  EXPECT_TRUE(processesMentioning(out().string()).empty());
+  EXPECT_EQ(test::processesMentioning(out().string()), std::vector<std::string>{});
 }
 
 // Seed 001: R-24 cuts the drawn cone, R-20 leaves 2√5/3 mm of excess at (Ø50, Z−50/3)
@@ -475,7 +451,7 @@ TEST(BatchInterrupted, ResumesWithoutRedoingFinishedJobs) {
   EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
   stamped = waitForStamps(out, 1, std::chrono::seconds(0));  // one may have finished meanwhile
   remember(stamped);
-  EXPECT_TRUE(noProcessMentionsWithin(out.string(), std::chrono::seconds(5)));
+  EXPECT_EQ(test::processesLeftMentioning(out.string(), std::chrono::seconds(5)), std::vector<std::string>{});
   const Json interrupted = jsonFile(out / "summary.json");
   int notRun = 0;
   for (const auto& row : interrupted.at("jobs")) {
@@ -500,7 +476,7 @@ TEST(BatchInterrupted, ResumesWithoutRedoingFinishedJobs) {
   ::kill(batch.pid(), SIGKILL);
   batch.wait();
   remember(more);
-  EXPECT_TRUE(noProcessMentionsWithin(out.string(), std::chrono::seconds(5)));
+  EXPECT_EQ(test::processesLeftMentioning(out.string(), std::chrono::seconds(5)), std::vector<std::string>{});
 
   // To the end: the stamped jobs are taken as they are, the rest run.
   const test::ProcessOutcome last = lathesim(dir, args);

@@ -12,6 +12,7 @@
 
 #include "batch/child_process.hpp"
 #include "tests/support/lathesim_process.hpp"
+#include "tests/support/processes.hpp"
 
 namespace lathesim::batch {
 namespace {
@@ -20,17 +21,9 @@ namespace fs = std::filesystem;
 using test::readFile;
 using test::ScratchDir;
 
-/// Whether `pid` is a live process (a zombie counts as gone).
-bool alive(pid_t pid) {
-  const std::string stat = readFile("/proc/" + std::to_string(pid) + "/stat");
-  if (stat.empty()) return false;
-  const auto close = stat.rfind(')');
-  return close != std::string::npos && close + 2 < stat.size() && stat[close + 2] != 'Z';
-}
-
 bool goneWithin(pid_t pid, std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (alive(pid)) {
+  while (test::alive(pid)) {
     if (std::chrono::steady_clock::now() > deadline) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
@@ -85,7 +78,7 @@ TEST(ChildProcess, KillingTheGroupTakesWhatTheJobStarted) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   ASSERT_GT(grandchild, 0);
-  ASSERT_TRUE(alive(grandchild));
+  ASSERT_TRUE(test::alive(grandchild));
   child.killGroup();
   const int status = child.wait();
   EXPECT_TRUE(WIFSIGNALED(status));
@@ -111,9 +104,9 @@ TEST(ChildProcess, AMissingBinaryExits127AndADroppedChildIsKilled) {
   {
     ChildProcess sleeper = ChildProcess::start("/bin/sleep", {"60"}, dir.path() / "log.txt");
     pid = sleeper.pid();
-    EXPECT_TRUE(alive(pid));
+    EXPECT_TRUE(test::alive(pid));
   }
-  EXPECT_FALSE(alive(pid));  // killed and reaped by the destructor
+  EXPECT_FALSE(test::alive(pid));  // killed and reaped by the destructor
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ using Json = nlohmann::json;
 BatchJob job(bool check = false) {
   BatchJob j;
   j.index = 4;
-  j.name = "p";
+  j.name = "part";
   j.program = "class/p.nc";
   if (check) j.settings.drawing = "d.toml";
   j.settings.timeLimitS = 30;
@@ -39,7 +39,7 @@ ChildOutcome exited(int code) {
 }
 
 TEST(JobResult, ARunThatExitedZeroIsOkWithItsReportsFigures) {
-  const JobResult r = resultOf(job(), "p", exited(0), "", report());
+  const JobResult r = resultOf(job(), "part", exited(0), "", report());
   EXPECT_EQ(r.status, JobStatus::Ok);
   EXPECT_EQ(r.command, "run");
   EXPECT_EQ(r.index, 4);
@@ -68,7 +68,7 @@ TEST(JobResult, ARunThatExitedZeroIsOkWithItsReportsFigures) {
 TEST(JobResult, ACheckExitingThreeIsOutOfTolerance) {
   Json checked = report();
   checked["check"] = {{"tolerance_mm", 0.5}, {"within_tolerance", false}, {"max_gouge_mm", 0.1}, {"max_excess_mm", 1.49}};
-  const JobResult r = resultOf(job(true), "p", exited(3), "", checked);
+  const JobResult r = resultOf(job(true), "part", exited(3), "", checked);
   EXPECT_EQ(r.status, JobStatus::OutOfTolerance);
   EXPECT_EQ(r.command, "check");
   ASSERT_TRUE(r.check);
@@ -77,7 +77,7 @@ TEST(JobResult, ACheckExitingThreeIsOutOfTolerance) {
   EXPECT_EQ(r.check->maxGougeMm, 0.1);
   EXPECT_EQ(r.check->maxExcessMm, 1.49);
   // Exit 3 without a failed check is not "out of tolerance": something else went wrong.
-  EXPECT_EQ(resultOf(job(), "p", exited(3), "", report()).status, JobStatus::Failed);
+  EXPECT_EQ(resultOf(job(), "part", exited(3), "", report()).status, JobStatus::Failed);
 }
 
 TEST(JobResult, ABadProgramFailsWithItsFirstErrorAndPlace) {
@@ -87,7 +87,7 @@ TEST(JobResult, ABadProgramFailsWithItsFirstErrorAndPlace) {
       "   N40 G94 X20 Z5.0 R-5.5\n"
       "                    ^\n"
       "class/p.nc:9:1: error: a later one\n";
-  const JobResult r = resultOf(job(), "p", exited(1), log, std::nullopt);
+  const JobResult r = resultOf(job(), "part", exited(1), log, std::nullopt);
   EXPECT_EQ(r.status, JobStatus::Failed);
   EXPECT_EQ(r.exitCode, 1);
   ASSERT_TRUE(r.message);
@@ -103,27 +103,27 @@ TEST(JobResult, KilledAtTheTimeLimitOrEndedByASignal) {
   ChildOutcome killed;
   killed.signal = SIGKILL;
   killed.timedOut = true;
-  JobResult r = resultOf(job(), "p", killed, "", std::nullopt);
+  JobResult r = resultOf(job(), "part", killed, "", std::nullopt);
   EXPECT_EQ(r.status, JobStatus::Timeout);
   EXPECT_EQ(r.message->text, "stopped at the time limit of 30 s");
   EXPECT_EQ(r.signal, SIGKILL);
   EXPECT_FALSE(r.exitCode);
   ChildOutcome crashed;
   crashed.signal = SIGSEGV;
-  r = resultOf(job(), "p", crashed, "half a line", std::nullopt);
+  r = resultOf(job(), "part", crashed, "half a line", std::nullopt);
   EXPECT_EQ(r.status, JobStatus::Crashed);
   EXPECT_EQ(r.message->text, "lathesim was ended by signal 11 (Segmentation fault)");
 }
 
 TEST(JobResult, ExitZeroWithoutAReportOrANonZeroExitWithoutWordsStillFails) {
-  JobResult r = resultOf(job(), "p", exited(0), "", std::nullopt);
+  JobResult r = resultOf(job(), "part", exited(0), "", std::nullopt);
   EXPECT_EQ(r.status, JobStatus::Failed);
   EXPECT_EQ(r.message->text, "lathesim wrote no report.json");
-  r = resultOf(job(), "p", exited(2), "", std::nullopt);
+  r = resultOf(job(), "part", exited(2), "", std::nullopt);
   EXPECT_EQ(r.status, JobStatus::Failed);
   EXPECT_EQ(r.message->text, "lathesim exited with status 2");
   // A report with a non-zero exit (a status other than 0 and 3): failed, the figures kept.
-  r = resultOf(job(), "p", exited(2), "", report());
+  r = resultOf(job(), "part", exited(2), "", report());
   EXPECT_EQ(r.status, JobStatus::Failed);
   EXPECT_EQ(r.finalVolumeMm3, 800.25);
 }
@@ -153,7 +153,7 @@ TEST(FirstError, LocatedFiledOrTheFirstWords) {
 TEST(JobResult, JsonRoundTrip) {
   Json checked = report();
   checked["check"] = {{"tolerance_mm", 0.5}, {"within_tolerance", false}, {"max_gouge_mm", 0.1}, {"max_excess_mm", 1.49}};
-  JobResult r = resultOf(job(true), "p", exited(3), "", checked);
+  JobResult r = resultOf(job(true), "part", exited(3), "", checked);
   r.thumbnail = "thumbnail.png";
   r.resumed = true;
   const Json json = toJson(r);
@@ -162,7 +162,7 @@ TEST(JobResult, JsonRoundTrip) {
   const JobResult back = resultFromJson(json);
   EXPECT_EQ(toJson(back), toJson(r));
   EXPECT_EQ(back.index, 4);
-  JobResult failed = resultOf(job(), "p", exited(1), "p.nc:1:2: error: x\n", std::nullopt);
+  JobResult failed = resultOf(job(), "part", exited(1), "p.nc:1:2: error: x\n", std::nullopt);
   EXPECT_EQ(toJson(resultFromJson(toJson(failed))), toJson(failed));
   Json broken = toJson(failed);
   broken["status"] = "fine";

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "tests/support/lathesim_process.hpp"
+#include "tests/support/processes.hpp"
 
 namespace lathesim::batch {
 namespace {
@@ -32,31 +33,22 @@ test::ProcessOutcome shell(const fs::path& scratch, const std::string& command) 
   return test::runProcess("/bin/sh", {"-c", command}, scratch);
 }
 
-bool onPath(const std::string& program) {
-  return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
+std::string quoted(const fs::path& path) {
+  std::string text(1, '\'');
+  text += path.string();
+  text += '\'';
+  return text;
 }
 
-/// Live processes (zombies excluded) whose command line mentions `text`.
-std::vector<std::string> processesMentioning(const std::string& text) {
-  std::vector<std::string> found;
-  for (const auto& entry : fs::directory_iterator("/proc")) {
-    const std::string pid = entry.path().filename().string();
-    if (pid.find_first_not_of("0123456789") != std::string::npos || pid == std::to_string(::getpid())) continue;
-    std::string cmdline = readFile(entry.path() / "cmdline");
-    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
-    const std::string stat = readFile(entry.path() / "stat");
-    const auto close = stat.rfind(')');
-    const bool zombie = close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z';
-    if (!zombie && cmdline.find(text) != std::string::npos) found.push_back(pid + ": " + cmdline);
-  }
-  return found;
+bool onPath(const std::string& program) {
+  return std::system(("command -v " + program + " >/dev/null 2>&1").c_str()) == 0;
 }
 
 /// The cluster for the test's lifetime: stopped however the test ends.
 class LocalCluster {
  public:
   explicit LocalCluster(const fs::path& dir) : dir_(dir) {
-    const auto started = shell(dir, "'" + (kScripts / "local-cluster.sh").string() + "' start '" + (dir / "cluster").string() + "'");
+    const auto started = shell(dir, clusterCommand("start"));
     started_ = started.status == 0;
     problem_ = started.out + started.err;
     if (started_) ::setenv("SLURM_CONF", (dir / "cluster" / "slurm.conf").c_str(), 1);
@@ -67,9 +59,12 @@ class LocalCluster {
   test::ProcessOutcome stop() {
     if (stopped_) return {};
     stopped_ = true;
-    auto outcome = shell(dir_, "'" + (kScripts / "local-cluster.sh").string() + "' stop '" + (dir_ / "cluster").string() + "'");
+    auto outcome = shell(dir_, clusterCommand("stop"));
     ::unsetenv("SLURM_CONF");
     return outcome;
+  }
+  std::string clusterCommand(const std::string& action) const {
+    return quoted(kScripts / "local-cluster.sh") + " " + action + " " + quoted(dir_ / "cluster");
   }
   std::string logs() const {
     std::string text;
@@ -121,13 +116,12 @@ TEST(SlurmCluster, PartsBatchAsAJobArrayEqualsTheOneMachineBatch) {
 
   ScratchDir dir("slurm");
   const fs::path local = dir.path() / "local", cluster = dir.path() / "cluster-out";
-  const std::vector<std::string> options{"--voxel", "0.5"};
 
   LocalCluster slurm(dir.path());
   ASSERT_TRUE(slurm.started()) << slurm.problem();
-  const std::string submit = "LATHESIM='" + kBinary.string() + "' sbatch --parsable --array=1-3 -o '" +
-                             (dir.path() / "task-%A_%a.out").string() + "' '" + (kScripts / "batch.sbatch").string() +
-                             "' '" + kPartsDir.string() + "' '" + cluster.string() + "' --voxel 0.5";
+  const std::string submit = "LATHESIM=" + quoted(kBinary) + " sbatch --parsable --array=1-3 -o " +
+                             quoted(dir.path() / "task-%A_%a.out") + " " + quoted(kScripts / "batch.sbatch") + " " +
+                             quoted(kPartsDir) + " " + quoted(cluster) + " --voxel 0.5";
   const test::ProcessOutcome submitted = shell(dir.path(), submit);
   ASSERT_EQ(submitted.status, 0) << submitted.out << submitted.err;
   const std::string jobId = submitted.out.substr(0, submitted.out.find_first_of(";\n"));
@@ -171,12 +165,8 @@ TEST(SlurmCluster, PartsBatchAsAJobArrayEqualsTheOneMachineBatch) {
   const test::ProcessOutcome stopped = slurm.stop();
   EXPECT_EQ(stopped.status, 0) << stopped.out << stopped.err;
   // No daemon, job step or lathesim of the test's is left (zombies awaiting PID 1 aside).
-  const auto deadlineGone = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  std::vector<std::string> left;
-  while (!(left = processesMentioning(dir.path().string())).empty() && std::chrono::steady_clock::now() < deadlineGone)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  EXPECT_TRUE(left.empty()) << left.front();
-  EXPECT_TRUE(processesMentioning("slurmstepd").empty());
+  EXPECT_EQ(test::processesLeftMentioning(dir.path().string(), std::chrono::seconds(10)), std::vector<std::string>{});
+  EXPECT_EQ(test::processesMentioning("slurmstepd"), std::vector<std::string>{});
 }
 
 }  // namespace
