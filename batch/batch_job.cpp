@@ -51,6 +51,18 @@ std::vector<std::string> commandArguments(const BatchJob& job, const std::filesy
   return args;
 }
 
+std::vector<std::string> optionValues(const std::vector<std::string>& options, const std::string& name) {
+  std::vector<std::string> values;
+  for (std::size_t i = 0; i < options.size(); ++i) {
+    if (options[i].starts_with(name + "=")) {
+      values.push_back(options[i].substr(name.size() + 1));
+    } else if (options[i] == name) {
+      while (i + 1 < options.size() && !options[i + 1].starts_with("-")) values.push_back(options[++i]);
+    }
+  }
+  return values;
+}
+
 std::optional<std::string> reservedOption(const std::string& option) {
   static const std::array<std::pair<const char*, const char*>, 6> kReserved{{{"--out", "the batch's --out"},
                                                                              {"--setup", "setup"},

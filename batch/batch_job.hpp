@@ -40,6 +40,10 @@ struct BatchJob {
 /// run|check PROGRAM [--setup S] [--target D | --target-program P] [--tol T] [--voxel V] OPTIONS… --out FOLDER.
 std::vector<std::string> commandArguments(const BatchJob& job, const std::filesystem::path& folder);
 
+/// The values `options` gives option `name`: the words after it up to the next option, or
+/// what follows '=' (`--programs a b`, `--stock=D40xL80`), for every time it is given.
+std::vector<std::string> optionValues(const std::vector<std::string>& options, const std::string& name);
+
 /// Options a job may not pass through because the batch sets them itself (from its keys).
 /// Returns the key to use instead, or nullopt if `option` may be passed through.
 std::optional<std::string> reservedOption(const std::string& option);

@@ -299,9 +299,10 @@ int runBatch(const BatchOptions& options) {
   fs::create_directories(options.out);
 
   std::vector<std::pair<const BatchJob*, std::string>> pending;
+  InputStamper stamper(summary.buildId);
   for (const BatchJob& job : jobs) {
     if (!options.shard.holds(job.index)) continue;
-    std::string inputs = inputStamp(job, summary.buildId);
+    std::string inputs = stamper.stampOf(job);
     if (auto stamped = stampedResult(options.out / job.name, inputs, job)) {
       stamped->folder = job.name;
       summary.jobs.push_back(std::move(*stamped));

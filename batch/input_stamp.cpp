@@ -1,15 +1,17 @@
 #include "batch/input_stamp.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "batch/content_hash.hpp"
+#include "interp/text/program_library.hpp"
 
 namespace lathesim::batch {
 
-std::string inputStamp(const BatchJob& job, const std::string& buildId) {
+std::string InputStamper::stampOf(const BatchJob& job) {
   ContentHash hash;
-  hash.add(buildId);
+  hash.add(buildId_);
   const std::vector<std::string> args = commandArguments(job, "");
   std::error_code ec;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -24,7 +26,27 @@ std::string inputStamp(const BatchJob& job, const std::string& buildId) {
       hash.add(args[i]);
     }
   }
+  std::vector<std::filesystem::path> folders{job.program.parent_path().empty() ? "." : job.program.parent_path()};
+  for (const auto& folder : optionValues(job.settings.options, "--programs")) folders.emplace_back(folder);
+  for (const auto& folder : folders) hash.add(programFilesHash(folder));
   return hash.hex();
+}
+
+const std::string& InputStamper::programFilesHash(const std::filesystem::path& folder) {
+  const std::filesystem::path key = folder.lexically_normal();
+  if (const auto known = folderHashes_.find(key); known != folderHashes_.end()) return known->second;
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(key, ec))
+    if (entry.is_regular_file(ec) && interp::isProgramFileName(entry.path().filename().string()))
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  ContentHash hash;
+  for (const auto& file : files) {
+    hash.add(file.filename().string());
+    hash.addFile(file);
+  }
+  return folderHashes_[key] = hash.hex();
 }
 
 void writeStamp(const std::filesystem::path& folder, const std::string& inputs, const JobResult& result) {

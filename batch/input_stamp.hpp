@@ -4,6 +4,7 @@
 // again; its result is read from the stamp.
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -15,9 +16,21 @@ namespace lathesim::batch {
 inline constexpr const char* kStampFileName = "batch-stamp.json";
 
 /// The hash of what a job's result depends on: the lathesim build, the command (run or
-/// check and every option), and the contents of the program and of every file an argument
-/// names (setup, drawing, …) — not their paths, so a moved folder keeps its results.
-std::string inputStamp(const BatchJob& job, const std::string& buildId);
+/// check and every option), the contents of the program and of every file an argument
+/// names (setup, drawing, …), and of every file M98 could read a subprogram from (named
+/// O1234.nc and the like, interp/text/program_library.hpp) in the program's folder and the
+/// --programs folders — not their paths, so a moved folder keeps its results.
+class InputStamper {
+ public:
+  explicit InputStamper(std::string buildId) : buildId_(std::move(buildId)) {}
+  std::string stampOf(const BatchJob& job);
+
+ private:
+  /// The names and contents of a folder's program files, hashed once per batch.
+  const std::string& programFilesHash(const std::filesystem::path& folder);
+  std::string buildId_;
+  std::map<std::filesystem::path, std::string> folderHashes_;
+};
 
 /// Writes the stamp (atomically: a temporary renamed into place).
 void writeStamp(const std::filesystem::path& folder, const std::string& inputs, const JobResult& result);

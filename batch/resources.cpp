@@ -7,7 +7,9 @@
 #include <sstream>
 #include <string>
 
+#include "interp/text/stated_stock.hpp"
 #include "job/setup.hpp"
+#include "job/stock_option.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::batch {
@@ -22,15 +24,33 @@ std::optional<long long> environmentNumber(const char* name) {
   return value;
 }
 
+/// The bar the job will simulate, chosen as job::loadJob chooses it: --stock, else the
+/// setup's [stock], else the bar the program states, else the setup's default; nullopt if
+/// the setup or --stock cannot be read (the job will stop at once on them).
+std::optional<sim::StockSpec> barOf(const BatchJob& job, const job::Setup& setup) {
+  if (const auto stock = optionValues(job.settings.options, "--stock"); !stock.empty()) {
+    const auto bar = job::parseStockOption(stock.back());
+    if (const auto* spec = std::get_if<sim::StockSpec>(&bar)) return *spec;
+    return std::nullopt;
+  }
+  if (setup.stockGiven) return setup.stock;
+  std::ifstream in(job.program, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (const auto stated = interp::stockStatedIn(text.str())) return sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
+  return setup.stock;
+}
+
 }  // namespace
 
 std::uint64_t estimatedJobBytes(const BatchJob& job) {
   std::optional<job::Setup> setup = job::defaultSetup();
   if (job.settings.setup) setup = job::loadSetup(*job.settings.setup).setup;
   if (!setup) return kProcessBaseBytes;
+  const std::optional<sim::StockSpec> bar = barOf(job, *setup);
   const double voxelMm = job.settings.voxelMm.value_or(setup->voxelMm.value_or(job::kDefaultVoxelMm));
-  if (!(voxelMm > 0)) return kProcessBaseBytes;
-  return kProcessBaseBytes + sim::estimatedStockBytes(setup->stock, voxelMm);
+  if (!bar || !(voxelMm > 0)) return kProcessBaseBytes;
+  return kProcessBaseBytes + sim::estimatedStockBytes(*bar, voxelMm);
 }
 
 int availableCpus() {

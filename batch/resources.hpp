@@ -14,10 +14,11 @@ namespace lathesim::batch {
 /// — the libraries, VTK's render window under Mesa llvmpipe, the mesh and its writers.
 inline constexpr std::uint64_t kProcessBaseBytes = 280ull << 20;
 
-/// The memory `job` is expected to take at its peak (bytes): its stock's level set at its
+/// The memory `job` is expected to take at its peak (bytes): its bar's level set at its
 /// voxel size (sim::estimatedStockBytes, which allows for the surface cutting adds) plus
-/// kProcessBaseBytes. A setup that cannot be read counts as the process base alone (the
-/// job will stop at once with the setup's diagnostics).
+/// kProcessBaseBytes. The bar is --stock's, the setup's, the program's own statement or the
+/// default, as `run` chooses. A setup or --stock that cannot be read counts as the process
+/// base alone (the job will stop at once with its diagnostics).
 std::uint64_t estimatedJobBytes(const BatchJob& job);
 
 /// CPUs this process may use: its affinity mask, and under Slurm the CPUs it was given.

@@ -28,13 +28,13 @@ struct StampFixture : ::testing::Test {
     job.settings.voxelMm = 0.25;
     job.settings.options = {"--dialect", "hnc"};
   }
-  std::string stamp() const { return inputStamp(job, "build-1"); }
+  std::string stamp() const { return InputStamper("build-1").stampOf(job); }
 };
 
 TEST_F(StampFixture, AnyInputChangesIt) {
   const std::string original = stamp();
   EXPECT_EQ(stamp(), original);  // the same inputs, the same stamp
-  EXPECT_NE(inputStamp(job, "build-2"), original);
+  EXPECT_NE(InputStamper("build-2").stampOf(job), original);
   const auto changed = [&](auto&& change) {
     BatchJob saved = job;
     change();
@@ -68,6 +68,28 @@ TEST_F(StampFixture, MovedFilesKeepItTheirContentsDecide) {
   EXPECT_EQ(stamp(), original);
 }
 
+// M98 may read a subprogram from a file beside the program or in a --programs folder
+// (O1234.nc and the like): such files are inputs; other files there are not.
+TEST_F(StampFixture, SubprogramFilesBesideTheProgramOrInProgramsFoldersAreInputs) {
+  const std::string original = stamp();
+  writeFile(dir.path() / "notes.txt", "not a program");
+  writeFile(dir.path() / "other-student.nc", "G0 X1");
+  EXPECT_EQ(stamp(), original);
+  writeFile(dir.path() / "O1234.nc", "O1234\nG1 W-2\nM99\n");
+  const std::string withSubprogram = stamp();
+  EXPECT_NE(withSubprogram, original);
+  writeFile(dir.path() / "O1234.nc", "O1234\nG1 W-3\nM99\n");
+  EXPECT_NE(stamp(), withSubprogram);
+  const fs::path library = dir.path() / "library";
+  fs::create_directories(library);
+  job.settings.options = {"--dialect", "hnc", "--programs", library.string()};
+  const std::string withLibrary = stamp();
+  writeFile(library / "7615", "O7615\nM99\n");
+  EXPECT_NE(stamp(), withLibrary);
+  writeFile(library / "readme.md", "");
+  EXPECT_EQ(stamp(), InputStamper("build-1").stampOf(job));
+}
+
 JobResult resultWith(JobStatus status, std::optional<double> timeLimitS = std::nullopt) {
   JobResult r;
   r.name = "old-name";
@@ -93,7 +115,7 @@ TEST_F(StampFixture, AStampedResultStandsForTheSameInputs) {
   EXPECT_EQ(kept->index, 7);  // today's place, name and program
   EXPECT_EQ(kept->name, "p");
   EXPECT_EQ(kept->program, job.program.string());
-  EXPECT_FALSE(stampedResult(folder, inputStamp(job, "build-2"), job));
+  EXPECT_FALSE(stampedResult(folder, InputStamper("build-2").stampOf(job), job));
   EXPECT_FALSE(fs::exists(folder / "batch-stamp.json.tmp"));
 }
 

@@ -274,6 +274,15 @@ TEST(JobCommand, RunOrCheckWithTheJobsOptionsAndFolder) {
                                                                   "--dialect", "hnc", "--out", "o"}));
 }
 
+TEST(JobCommand, OptionValuesSpacedOrJoined) {
+  const std::vector<std::string> options{"--programs", "lib", "shared", "--stock=D40xL80", "--dialect", "hnc",
+                                         "--programs=more", "--stock", "D50xL90"};
+  EXPECT_EQ(optionValues(options, "--programs"), (std::vector<std::string>{"lib", "shared", "more"}));
+  EXPECT_EQ(optionValues(options, "--stock"), (std::vector<std::string>{"D40xL80", "D50xL90"}));
+  EXPECT_EQ(optionValues(options, "--dialect"), (std::vector<std::string>{"hnc"}));
+  EXPECT_EQ(optionValues(options, "--voxel"), std::vector<std::string>{});
+}
+
 TEST(JobNames, DefaultsAndRules) {
   EXPECT_EQ(defaultJobName("class/alice.nc"), "alice");
   EXPECT_EQ(defaultJobName("parts/g74-drill/program.nc"), "g74-drill");

@@ -51,6 +51,36 @@ TEST(EstimatedJobBytes, FromTheSetupsStockAndTheVoxel) {
   EXPECT_EQ(estimatedJobBytes(job), kProcessBaseBytes);
 }
 
+// The bar is chosen as `run` chooses it: --stock, else the setup's [stock], else the bar the
+// program states (a billet line), else the default setup's.
+TEST(EstimatedJobBytes, TheBarRunWouldSimulate) {
+  ScratchDir dir("estimate-bar");
+  writeFile(dir.path() / "stated.nc", "[BILLET X56 Z84\nG0 X60 Z2\n");
+  writeFile(dir.path() / "plain.nc", "G0 X60 Z2\n");
+  writeFile(dir.path() / "with-stock.toml", "[stock]\ndiameter = 30\nlength = 40\nface_z = 0\n");
+  writeFile(dir.path() / "no-stock.toml", "[sim]\nvoxel = 0.25\n");
+  const auto bytes = [](double diameter, double length, double voxel) {
+    return kProcessBaseBytes + sim::estimatedStockBytes({diameter, length, 0}, voxel);
+  };
+  BatchJob job;
+  job.program = dir.path() / "stated.nc";
+  job.settings.setup = dir.path() / "no-stock.toml";
+  EXPECT_EQ(estimatedJobBytes(job), bytes(56, 84, 0.25));  // the program's billet line
+  job.settings.setup = dir.path() / "with-stock.toml";
+  EXPECT_EQ(estimatedJobBytes(job), bytes(30, 40, 0.2));  // the setup's [stock] over it
+  job.settings.options = {"--stock", "D80xL100"};
+  EXPECT_EQ(estimatedJobBytes(job), bytes(80, 100, 0.2));  // --stock over both
+  job.settings.options = {"--stock=D80xL100xZ3"};
+  EXPECT_EQ(estimatedJobBytes(job), bytes(80, 100, 0.2));
+  job.settings.options = {"--stock", "D80"};  // unreadable: the job stops at once
+  EXPECT_EQ(estimatedJobBytes(job), kProcessBaseBytes);
+  job.settings.options.clear();
+  job.program = dir.path() / "plain.nc";
+  job.settings.setup = dir.path() / "no-stock.toml";
+  const sim::StockSpec fallback = lathesim::job::defaultSetup().stock;
+  EXPECT_EQ(estimatedJobBytes(job), bytes(fallback.diameterMm, fallback.lengthMm, 0.25));
+}
+
 TEST(Resources, CpusAndMemoryUnderSlurmLimits) {
   const int cpus = availableCpus();
   EXPECT_GE(cpus, 1);
