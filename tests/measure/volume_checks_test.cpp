@@ -1,5 +1,5 @@
-// The checks that keep a run from reporting volumes nobody should trust, and issue 10's bar
-// through the command: Φ100×80 with its face at Z0.5, at 0.2 mm, once lost a 128³ block.
+// The checks that keep a run from reporting volumes nobody should trust, each on hand-made
+// figures: issue 10's lost block (Φ100×80, face at Z0.5, 0.2 mm) among them.
 
 #include "measure/volume_checks.hpp"
 
