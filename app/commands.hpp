@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "interp/control/dialect.hpp"
+#include "job/job.hpp"
 
 namespace lathesim::app {
 
@@ -24,7 +24,7 @@ struct RunOptions {
   std::optional<std::filesystem::path> setup;
   std::filesystem::path out = "out";
   std::optional<double> voxelMm;
-  std::optional<interp::Dialect> dialect;  // overrides [machine] dialect
+  job::SetupOverrides overrides;  // --dialect, --control, --block-skip
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
 };
 
@@ -43,6 +43,6 @@ int checkCommand(const CheckOptions& options);
 inline constexpr int kExitOutOfTolerance = 3;
 
 int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
-                  std::optional<interp::Dialect> dialect = std::nullopt);
+                  const job::SetupOverrides& overrides = {});
 
 }  // namespace lathesim::app

@@ -6,10 +6,35 @@
 
 namespace lathesim::app {
 
+namespace {
+
+nlohmann::ordered_json valueJson(const interp::ParameterValue& value) {
+  if (const auto* name = std::get_if<std::string>(&value)) return *name;
+  if (const auto* number = std::get_if<double>(&value)) return *number;
+  return std::get<std::vector<std::string>>(value);
+}
+
+nlohmann::ordered_json controlJson(const interp::Control& control) {
+  nlohmann::ordered_json parameters;
+  for (const auto& s : control.settings)
+    parameters[s.key] = {{"value", valueJson(s.value)}, {"manual", s.manual}, {"verified", s.verified}, {"set_by", s.source}};
+  return {{"preset", control.preset}, {"parameters", parameters}};
+}
+
+}  // namespace
+
 nlohmann::ordered_json reportJson(const RunFigures& f) {
   nlohmann::ordered_json report;
   report["program"] = f.program;
   report["setup"] = f.setup;
+  report["control"] = controlJson(f.control);
+  const auto source = [](bool derived, const char* key) {
+    return derived ? std::string("derived from [machine] reference and start and the bar") : "[machine] " + std::string(key);
+  };
+  report["travel"] = {{"x_diameter_mm", {f.travel.xMinDiameterMm, f.travel.xMaxDiameterMm}},
+                      {"z_mm", {f.travel.zMinMm, f.travel.zMaxMm}},
+                      {"x_from", source(f.travel.xDerived, "travel_x")},
+                      {"z_from", source(f.travel.zDerived, "travel_z")}};
   report["voxel_mm"] = f.voxelMm;
   if (f.atLine) report["at_line"] = *f.atLine;
   report["stock_volume_mm3"] = f.stockVolumeMm3;

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "interp/control/control_preset.hpp"
+#include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
 #include "interp/move.hpp"
 #include "sim/simulate.hpp"
@@ -19,6 +21,8 @@ struct RunTimings {
 struct RunFigures {
   std::string program;
   std::string setup;
+  interp::Control control;  // the preset and every parameter in force
+  interp::TravelLimits travel;  // the machine's travel the moves were checked against
   double voxelMm = 0;
   std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar

@@ -20,7 +20,7 @@ int runCommand(const RunOptions& options) {
   run->progress->stage("done");
   run->progress->finish();
 
-  std::cout << figures.program << ": " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
+  std::cout << figures.program << " (control " << figures.control.preset << "): " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
             << options.out.string() << "/\n";
@@ -30,8 +30,8 @@ int runCommand(const RunOptions& options) {
 }
 
 int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
-                  std::optional<interp::Dialect> dialect) {
-  const std::optional<job::Job> loaded = job::loadJob(program, setup, dialect);
+                  const job::SetupOverrides& overrides) {
+  const std::optional<job::Job> loaded = job::loadJob(program, setup, overrides);
   if (!loaded) return 1;
   interp::writeToolpathCsv(loaded->toolpath, std::cout);
   return 0;

@@ -23,7 +23,7 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
 }
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
-  std::optional<job::Job> loaded = job::loadJob(options.program, options.setup, options.dialect);
+  std::optional<job::Job> loaded = job::loadJob(options.program, options.setup, options.overrides);
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
   run.job = std::move(*loaded);
@@ -39,6 +39,8 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   }
   figures.program = options.program.string();
   figures.setup = setup.sourceName;
+  figures.control = setup.control;
+  figures.travel = job::travelOf(setup);
   figures.voxelMm = voxel;
   figures.moves = run.job.toolpath.moves.size();
   figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);

@@ -8,7 +8,10 @@
 #include "interp/motion/feed_warnings.hpp"
 #include "interp/execution/modal_state.hpp"
 #include "interp/compensation/nose_compensation.hpp"
+#include "interp/motion/rapid_path.hpp"
+#include "interp/motion/travel_limits.hpp"
 #include "interp/text/program.hpp"
+#include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -20,10 +23,11 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
                   Toolpath& toolpath, std::vector<Error>& warnings) {
   ModalState state;
   state.position = options.startPosition;
-  state.feedMode = options.initialFeedMode;
+  state.feedMode = options.control.powerOnFeedMode;
+  state.compound = CompoundCycleParams::of(options.control);
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
 
-  const Program program = readProgram(programText, options.blockDelete, options.dialect);
+  const Program program = readProgram(programText, options.control.blockSkip, options.dialect);
   CallStack calls(program);
   std::size_t next = 0;
   while (!state.ended && next < program.blocks.size()) {
@@ -58,7 +62,18 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
   if (!state.ended) {
     if (auto error = calls.unfinished()) return *error;
   }
+  if (auto mixed = state.lengthWriting.mixedWarning(NumberReading::of(options.control, state.inch)))
+    warnings.push_back(*mixed);
   return success();
+}
+
+// The moves are made in the program's frame; G50 moves that frame (Move::workShift).
+void shiftIntoSetupFrame(std::vector<Move>& moves) {
+  for (Move& move : moves) {
+    move.from += move.workShift;
+    move.to += move.workShift;
+    move.center += move.workShift;
+  }
 }
 
 }  // namespace
@@ -75,9 +90,16 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
   Status status = runProgram(programText, options, result.toolpath, warnings);
-  // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
-  if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
-  if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);
+  // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied, the
+  // moves placed in the setup's frame, and each rapid given the path the machine makes.
+  std::vector<Move>& moves = result.toolpath.moves;
+  if (status.ok()) status = compensateNoseRadius(moves);
+  if (status.ok()) status = applyToolOffsets(moves, options.offsets);
+  if (status.ok()) {
+    shiftIntoSetupFrame(moves);
+    if (options.control.rapidPath == RapidPath::NonLinear) splitRapidsIntoAxisLegs(moves, options.machine);
+    if (options.machine.travel) status = checkTravel(moves, *options.machine.travel);
+  }
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.
     const Error& error = status.error();

@@ -43,6 +43,8 @@ struct Move {
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
   std::optional<double> spindleLimitRpm;  // G50 S, in force under G96
+  RZ workShift{0, 0};  // where the program's zero lies in the setup's frame (G50 X Z moves it,
+                       // lathe-cycles.md §7): the program's own coordinates are from − workShift
   double timeS = 0;   // how long the move takes on the machine (see interp/motion/cycle_time.hpp)
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block

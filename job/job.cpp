@@ -6,6 +6,7 @@
 
 #include "interp/motion/cycle_time.hpp"
 #include "interp/interpreter.hpp"
+#include "job/control_setup.hpp"
 
 namespace lathesim::job {
 namespace {
@@ -27,8 +28,9 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.startPosition = setup.startPosition;
   options.referencePosition = setup.referencePosition;
   options.machine = setup.machine;
+  options.machine.travel = travelOf(setup);
   options.dialect = setup.dialect;
-  options.initialFeedMode = setup.initialFeedMode;
+  options.control = setup.control.parameters;
   options.offsets = setup.offsets;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
@@ -39,8 +41,26 @@ interp::Diagnostic Job::warningAt(int line, int column, std::string message) con
           interp::lineOf(programText, line)};
 }
 
+std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
+  if (overrides.dialect) setup.dialect = *overrides.dialect;
+  if (overrides.controlPreset) {
+    std::optional<interp::Control> chosen = withPreset(setup.control, *overrides.controlPreset);
+    if (!chosen) {
+      std::string names;
+      for (std::string_view n : interp::controlPresets()) names += (names.empty() ? "" : ", ") + std::string(n);
+      std::cerr << "lathesim: error: --control " << *overrides.controlPreset << ": no such control preset (expected "
+                << names << ")\n";
+      return std::nullopt;
+    }
+    setup.control = std::move(*chosen);
+  }
+  if (overrides.blockSkip)
+    (void)setup.control.set("block_skip", std::string(*overrides.blockSkip ? "on" : "off"), "command line");
+  return setup;
+}
+
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect) {
+                           const SetupOverrides& overrides) {
   Job job{defaultSetup(), {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
@@ -50,7 +70,9 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
     job.warnings = std::move(loaded.diagnostics);  // what is left are warnings (e.g. an insert that
                                                    // does not match its holder's seat)
   }
-  if (dialect) job.setup.dialect = *dialect;
+  std::optional<Setup> setup = overridden(std::move(job.setup), overrides);
+  if (!setup) return std::nullopt;
+  job.setup = std::move(*setup);
 
   std::ifstream in(program, std::ios::binary);
   if (!in) {

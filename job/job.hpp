@@ -27,8 +27,18 @@ struct Job {
 /// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.
 interp::InterpreterOptions interpreterOptionsOf(const Setup& setup);
 
-/// `dialect`, when given (--dialect), overrides the setup's [machine] dialect.
+/// What the command line overrides in the setup.
+struct SetupOverrides {
+  std::optional<interp::Dialect> dialect;    // --dialect: [machine] dialect
+  std::optional<std::string> controlPreset;  // --control: the preset; the setup's [control] keys still apply
+  std::optional<bool> blockSkip;             // --block-skip on|off: control.block_skip
+};
+
+/// The setup with the command line's overrides; nullopt (the problem printed) for an unknown
+/// preset.
+std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides);
+
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect = std::nullopt);
+                           const SetupOverrides& overrides = {});
 
 }  // namespace lathesim::job

@@ -29,7 +29,11 @@ class CompoundCycle {
   Error errorAt(int column, std::string message) const {
     return Error{block_.line, column, std::move(message)};
   }
-  double length(const Word& word) const { return lengthMm(word, state_.inch); }
+  // A length word in mm, noted for the mixed decimal point warning.
+  double length(const Word& word) {
+    state_.lengthWriting.note(word, block_.line, place_ ? place_->program.blocks[place_->index].ordinal : -1);
+    return lengthMm(word, NumberReading::of(options_.control, state_.inch));
+  }
   Status positive(const std::optional<Word>& word, std::string_view meaning) const;
   Status notNegative(const std::optional<Word>& word, std::string_view meaning) const;
   Status oneOf(const std::optional<Word>& absolute, const std::optional<Word>& incremental,
@@ -192,6 +196,7 @@ Status CompoundCycle::roughing() {
   params.allowanceXMm = b.allowanceXMm;
   params.allowanceZMm = b.allowanceZMm;
   params.typeII = c.firstBlockHasX && c.firstBlockHasZ;
+  params.retractAtFeed = options_.control.roughingRetractAtFeed;
   const RZ start = state_.position;
   auto legs = turning ? turningRoughingLegs(start, c.contour, params)
                       : facingRoughingLegs(start, c.contour, params);
@@ -237,6 +242,7 @@ Status CompoundCycle::patternRepeat() {
   params.reliefXMm = state_.compound.patternReliefXMm;
   params.reliefZMm = state_.compound.patternReliefZMm;
   params.passes = state_.compound.patternPasses;
+  params.singlePassRunsTwice = options_.control.patternSinglePass == PatternSinglePass::RunsTwice;
   params.allowanceXMm = b.allowanceXMm;
   params.allowanceZMm = b.allowanceZMm;
   outcome_.legs = patternRepeatLegs(state_.position, c.contour, c.firstBlockSegments,
@@ -275,9 +281,11 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   if (z) end.y() = length(*z);
   if (w) end.y() += length(*w);
 
-  const double xScale = kPeckXWordsAreDiameters ? 0.5 : 1.0;
+  // GSK documents G74/G75's X-axis P and G74's R(Δd) as diameters, Fanuc figures as radii
+  // (control parameter g74_x_words). G75's back-off e is a radius like every other retract.
+  const double xScale = options_.control.peckXWordsAreDiameters ? 0.5 : 1.0;
   const auto increment = [this](const std::optional<Word>& word, double scale) {
-    return word ? leastIncrementLengthMm(*word, state_.inch) * scale : 0.0;
+    return word ? incrementLengthMm(*word, NumberReading::of(options_.control, state_.inch)) * scale : 0.0;
   };
   // G74: Q pecks in Z, P steps in X; G75: P pecks in X, Q steps in Z.
   const std::optional<Word>& peckWord = g74 ? q : p;

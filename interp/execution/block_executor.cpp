@@ -63,6 +63,12 @@ class Executor {
   // incremental, like U and W); coordinates a block declares (G50) are always absolute.
   enum class Coordinates { Target, Declared };
   Result<AxisWords> takeAxisWords(Coordinates meaning = Coordinates::Target);
+  NumberReading reading() const { return NumberReading::of(options_.control, state_.inch); }
+  // A length word in mm, noted for the mixed decimal point warning.
+  double length(const Word& word) {
+    state_.lengthWriting.note(word, block_.line, ordinal_);
+    return lengthMm(word, reading());
+  }
   Status applyFeed();
   void applySpindleMode();
   Status applySpindleSpeed();
@@ -74,7 +80,7 @@ class Executor {
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applyArc(const std::optional<Code>& code);
-  RZ endPoint(const AxisWords& axes) const;
+  RZ endPoint(const AxisWords& axes);
   std::optional<ArcWord> arcWord(char letter);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
   Status applyCompoundCycle(const Code& code);
@@ -191,7 +197,7 @@ Status Executor::applyFeed() {
                                           "(mm/rev under G99, mm/min under G98)",
                                           f->text()));
   }
-  state_.feed = lengthMm(*f, state_.inch);
+  state_.feed = reading().mm(f->value);  // mm (inch) per minute or revolution
   return success();
 }
 
@@ -282,27 +288,27 @@ Status Executor::applyDwell(const Code& code) {
     return errorAt(code.column,
                    "G04 needs a dwell time: X or U (seconds) or P (milliseconds)");
   }
-  const double seconds = time->letter == 'P' ? time->value / kMsPerS : time->value;
+  const double seconds = time->letter == 'P' ? time->value / kMsPerS : dwellSeconds(*time, reading());
   emit(MoveKind::Dwell, state_.position, state_.position, 0);
   moves_.back().dwellS = seconds;
   return success();
 }
 
-Status Executor::applyCoordinateSetting(const Code& code) {
-  // G50 X(U) Z(W): the tool is declared to stand at these part coordinates; no move.
+Status Executor::applyCoordinateSetting(const Code&) {
+  // G50 X(U) Z(W) (GSK980TDi §3.18): the tool is declared to stand at these coordinates; it
+  // does not move, the program's frame does. An axis not given keeps its coordinate, so a
+  // bare G50 changes nothing.
   auto axes = takeAxisWords(Coordinates::Declared);
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
   const auto s = block_.take('S');
-  if (!a.any() && !s) {
-    return errorAt(code.column, "G50 needs X(U) and/or Z(W) to set coordinates, or S to "
-                                "limit the spindle speed");
-  }
-  RZ& p = state_.position;
-  if (a.x) p.x() = lengthMm(*a.x, state_.inch) / 2.0;
-  if (a.u) p.x() += lengthMm(*a.u, state_.inch) / 2.0;
-  if (a.z) p.y() = lengthMm(*a.z, state_.inch);
-  if (a.w) p.y() += lengthMm(*a.w, state_.inch);
+  RZ declared = state_.position;
+  if (a.x) declared.x() = length(*a.x) / 2.0;
+  if (a.u) declared.x() += length(*a.u) / 2.0;
+  if (a.z) declared.y() = length(*a.z);
+  if (a.w) declared.y() += length(*a.w);
+  state_.workShift += state_.position - declared;
+  state_.position = declared;
   if (s) state_.spindleLimitRpm = s->value;
   return success();
 }
@@ -317,11 +323,12 @@ Status Executor::applyReferenceReturn(const Code& code) {
   }
   const RZ& p = state_.position;
   std::optional<double> radiusMm, zMm;
-  if (a.x) radiusMm = lengthMm(*a.x, state_.inch) / 2.0;
-  if (a.u) radiusMm = p.x() + lengthMm(*a.u, state_.inch) / 2.0;
-  if (a.z) zMm = lengthMm(*a.z, state_.inch);
-  if (a.w) zMm = p.y() + lengthMm(*a.w, state_.inch);
-  const RZ reference = options_.referencePosition.value_or(options_.startPosition);
+  if (a.x) radiusMm = length(*a.x) / 2.0;
+  if (a.u) radiusMm = p.x() + length(*a.u) / 2.0;
+  if (a.z) zMm = length(*a.z);
+  if (a.w) zMm = p.y() + length(*a.w);
+  // The reference point is the machine's: in the program's frame it moves with G50.
+  const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.workShift;
   const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
   for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step);
   if (!legs.empty()) state_.position = legs.back().to;
@@ -371,19 +378,19 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   return success();
 }
 
-RZ Executor::endPoint(const AxisWords& a) const {
+RZ Executor::endPoint(const AxisWords& a) {
   RZ to = state_.position;
-  if (a.x) to.x() = lengthMm(*a.x, state_.inch) / 2.0;
-  if (a.u) to.x() += lengthMm(*a.u, state_.inch) / 2.0;
-  if (a.z) to.y() = lengthMm(*a.z, state_.inch);
-  if (a.w) to.y() += lengthMm(*a.w, state_.inch);
+  if (a.x) to.x() = length(*a.x) / 2.0;
+  if (a.u) to.x() += length(*a.u) / 2.0;
+  if (a.z) to.y() = length(*a.z);
+  if (a.w) to.y() += length(*a.w);
   return to;
 }
 
 std::optional<ArcWord> Executor::arcWord(char letter) {
   const auto word = block_.take(letter);
   if (!word) return std::nullopt;
-  return ArcWord{word->text(), word->column, lengthMm(*word, state_.inch)};  // I: a radius
+  return ArcWord{word->text(), word->column, length(*word)};  // I: a radius
 }
 
 // G02/G03 (interp/motion/arc_move.hpp): one arc move to the end point; nothing without axis or
@@ -436,17 +443,17 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   CycleRetained& kept = state_.cycle;
 
   std::optional<double> xDiameterMm = kept.xDiameterMm;
-  if (a.x) xDiameterMm = lengthMm(*a.x, state_.inch);
-  if (a.u) xDiameterMm = diameterOf(start) + lengthMm(*a.u, state_.inch);
+  if (a.x) xDiameterMm = length(*a.x);
+  if (a.u) xDiameterMm = diameterOf(start) + length(*a.u);
   std::optional<double> zMm = kept.zMm;
-  if (a.z) zMm = lengthMm(*a.z, state_.inch);
-  if (a.w) zMm = start.y() + lengthMm(*a.w, state_.inch);
+  if (a.z) zMm = length(*a.z);
+  if (a.w) zMm = start.y() + length(*a.w);
   if (!xDiameterMm || !zMm) {
     return errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
                                        "in this block nor kept from an earlier {0} block",
                                        name, !xDiameterMm ? "X(U)" : "Z(W)"));
   }
-  const double rMm = r ? lengthMm(*r, state_.inch) : kept.rMm.value_or(0.0);
+  const double rMm = r ? length(*r) : kept.rMm.value_or(0.0);
   if (!state_.feed) {
     return errorAt(anchor, fmt::format("feed rate F is not set: {} cuts at feed; give F (e.g. "
                                        "F0.2 mm/rev) in this block or before it",
@@ -465,7 +472,7 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
     return errorAt(column, *problem);
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
-  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, name});
+  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.workShift, name});
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
   const NoseComp comp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
   emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
@@ -481,7 +488,7 @@ Status Executor::applyCompoundCycle(const Code& code) {
   const CompoundOutcome& done = outcome.value();
   // The parameter block of a two-block cycle (G71 U R; …) moves nothing and starts nothing.
   if (!done.legs.empty() || !done.contourMoves.empty())
-    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, code.text});
+    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.workShift, code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
   emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
@@ -519,6 +526,7 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   const bool surfaceSpeed = state_.spindleMode == SpindleMode::SurfaceSpeed;
   move.spindleS = surfaceSpeed ? state_.surfaceSpeedMPerMin : state_.spindleSpeed;
   if (surfaceSpeed) move.spindleLimitRpm = state_.spindleLimitRpm;
+  move.workShift = state_.workShift;
   move.block = ordinal_;
   move.line = block_.line;
   move.column = block_.column;

@@ -6,6 +6,7 @@
 
 #include "geometry/rz.hpp"
 #include "interp/cycles/compound_params.hpp"
+#include "interp/execution/length_writing.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -42,9 +43,12 @@ struct ModalState {
   int tool = 0;
   int toolOffset = 0;
   NoseSide noseSide = NoseSide::None;  // group 07: G40 / G41 / G42
-  RZ position{0.0, 0.0};  // where the tool is, part coordinates (radius mm, Z mm)
+  RZ position{0.0, 0.0};  // where the tool is, in the program's coordinates (radius mm, Z mm)
+  RZ workShift{0.0, 0.0};  // the program's zero in the setup's frame: setup = program + this.
+                           // G50 X Z declares the position, moving the frame, not the tool
   CycleRetained cycle;
   CompoundCycleParams compound;  // G71–G75 first-block values
+  LengthWriting lengthWriting;   // lengths read with and without a decimal point
   bool ended = false;  // M02/M30 read: nothing after it runs
 };
 

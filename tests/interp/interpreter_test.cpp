@@ -190,12 +190,39 @@ TEST(Interpreter, ZeroLengthMoveIsNotEmitted) {
   EXPECT_EQ(result.toolpath.blockCount, 3);
 }
 
-TEST(Interpreter, G50DeclaresWhereTheToolIs) {
-  // The tool stands at (100, 200); G50 calls that X150 Z100, then U/W shift it again.
+TEST(Interpreter, G50DeclaresWhereTheToolIsAndMovesTheFrameNotTheTool) {
+  // The tool stands at (r 100, Z200) of the setup. G50 X150 Z100 calls that (75, 100): the
+  // program's zero lies at (100 − 75, 200 − 100) = (25, 100) of the setup. G00 X50 Z10 =
+  // program (25, 10) = setup (50, 110). G50 U10 W-5 calls the tool's (25, 10) (30, 5): the
+  // zero moves by (−5, +5) to (20, 105). G00 X40 = program (20, 5) = setup (40, 110). The
+  // tool never jumps: each move starts where the last ended.
   const auto result = run("G50 X150 Z100\nG00 X50 Z10\nG50 U10 W-5\nG00 X40\n");
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
   expectMoves(result.toolpath.moves,
-              {{kRapid, 75, 100, 25, 10, 0, 0}, {kRapid, 30, 5, 20, 5, 0, 0}});
+              {{kRapid, 100, 200, 50, 110, 0, 0}, {kRapid, 50, 110, 40, 110, 0, 0}});
+  EXPECT_EQ(result.toolpath.moves[1].workShift, RZ(20, 105));
+}
+
+TEST(Interpreter, ASubprogramCalledBeforeAndAfterG50CutsInTwoPlaces) {
+  // O100 is G01 W-2 from wherever the tool is, then back: called at program Z0, then after
+  // G50 W30 (the tool's Z0 is now called Z30, so the zero moves 30 mm toward the chuck) the
+  // same program Z0 is setup Z-30.
+  const auto result =
+      run("G00 X40 Z0\nM98 P100\nG50 W30\nG00 Z0\nM98 P100\nM30\nO100\nG01 W-2 F0.1\nG00 W2\nM99\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 0, 0, 0},
+                                      {kFeed, 20, 0, 20, -2, 0.1, 0},
+                                      {kRapid, 20, -2, 20, 0, 0, 0},
+                                      {kRapid, 20, 0, 20, -30, 0, 0},
+                                      {kFeed, 20, -30, 20, -32, 0.1, 0},
+                                      {kRapid, 20, -32, 20, -30, 0, 0}});
+}
+
+TEST(Interpreter, BareG50ChangesNothing) {
+  // GSK980TDi §3.18: an axis G50 does not name keeps its coordinate.
+  const auto result = run("G50\nG00 X40 Z0\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 0, 0, 0}});
 }
 
 TEST(Interpreter, InchValuesBecomeMillimetres) {
@@ -226,7 +253,7 @@ TEST(Interpreter, BlockDeleteSkipsSlashBlocksWhenOn) {
   EXPECT_EQ(on.toolpath.moves[0].block, 1);
 
   auto options = test::defaultOptions();
-  options.blockDelete = false;
+  options.control.blockSkip = false;
   const auto off = run(program, options);
   ASSERT_TRUE(off.ok());
   expectMoves(off.toolpath.moves,
@@ -351,7 +378,6 @@ TEST(InterpreterErrors, BadToolSpeedAndCoordinateWords) {
   expectError(run("T01.01\n"), 1, 1, "T01.01 is not a tool word");
   expectError(run("T1\n"), 1, 1, "tool 0 (T1) is not defined");
   expectError(run("M03 S-5\n"), 1, 5, "S-5 is not a spindle speed");
-  expectError(run("G50\n"), 1, 1, "G50 needs X(U) and/or Z(W)");
   EXPECT_TRUE(run("G50 S2000\n").ok());
 }
 
