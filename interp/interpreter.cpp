@@ -28,6 +28,7 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
 
   const Program program = readProgram(programText, options.control.blockSkip, options.dialect);
+  if (program.textAfterEnd) warnings.push_back(*program.textAfterEnd);
   CallStack calls(program);
   std::size_t next = 0;
   while (!state.ended && next < program.blocks.size()) {

@@ -38,6 +38,9 @@ enum class OffsetAfterReturn { Cancelled, Kept };
 /// X and U (Z and W) in one block.
 enum class AbsoluteWithIncremental { AbsoluteWins, Alarm };
 
+/// The word that gives a direct drawing dimension's angle: Q (GSK), A or ,A (Fanuc, by CCR).
+enum class DrawingAngleWord { Q, A, CommaA };
+
 /// The defaults are the gsk980tdi preset's values (control_preset.cpp; a test keeps them equal).
 struct ControlParameters {
   RapidPath rapidPath{};
@@ -54,6 +57,7 @@ struct ControlParameters {
   double arcRadiusToleranceMm = 0.01;   // how far an arc's end may lie off its circle
   OffsetAfterReturn offsetAfterReturn{};
   AbsoluteWithIncremental absoluteWithIncremental{};
+  DrawingAngleWord drawingAngleWord{};
   std::vector<std::string> toolWordForms{"2+2"};  // the T word's forms (tool_word.hpp)
   // The compound cycles' first-block values before a program gives them:
   double roughingDepthMm = 1.0;     // G71/G72 Δd

@@ -161,6 +161,13 @@ void CompoundCycle::continueAfter(ContourSpan span) {
 Status CompoundCycle::finishing() {
   auto span = contourSpan();
   if (!span.ok()) return span.error();
+  if (span.value().first > place_->index) {
+    const ProgramBlock& ns = place_->program.blocks[span.value().first];
+    return errorAt(code_.column, fmt::format("{}'s contour N{} starts on line {}, after it: G70 finishes a contour "
+                                             "roughed before it and must follow its blocks (GSK980TDi §3.23.4 "
+                                             "note 1)",
+                                             code_.text, *ns.sequenceNumber, ns.line));
+  }
   const RZ start = state_.position;
   auto run = runContourBlocks(place_->program, span.value(), contourStartState(), options_);
   if (!run.ok()) return run.error();
@@ -270,7 +277,7 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   const auto r = block_.take('R');
   if (auto s = oneOf(x, u, "X"); !s.ok()) return s;
   if (auto s = oneOf(z, w, "Z"); !s.ok()) return s;
-  for (const auto* word : {&p, &q, &r}) {
+  for (const auto* word : {&p, &q}) {
     if (auto s = notNegative(*word, "a distance"); !s.ok()) return s;
   }
   if (auto s = needFeed(); !s.ok()) return s;
@@ -294,7 +301,12 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   params.peckMm = increment(peckWord, g74 ? 1.0 : xScale);
   params.shiftMm = increment(shiftWord, g74 ? xScale : 1.0);
   params.retractMm = state_.compound.peckRetractMm;
-  params.reliefMm = increment(r, g74 ? xScale : 1.0);
+  // R(Δd) may be negative: its size is the relief; its sign the direction when the block moves
+  // only the peck axis, on a control that reads it so (g74_relief_without_shift).
+  const double relief = increment(r, g74 ? xScale : 1.0);
+  params.reliefMm = std::abs(relief);
+  params.reliefDirectionWithoutShift =
+      options_.control.peckReliefWithoutShift == PeckReliefWithoutShift::BySign && relief < 0 ? -1.0 : 1.0;
 
   const double peckTravel = g74 ? end.y() - start.y() : end.x() - start.x();
   const double shiftTravel = g74 ? end.x() - start.x() : end.y() - start.y();

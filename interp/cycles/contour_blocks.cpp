@@ -6,12 +6,10 @@
 
 #include <fmt/format.h>
 
+#include "interp/text/label_number.hpp"
+
 namespace lathesim::interp {
 namespace {
-
-bool isPlainInteger(const Word& word) {
-  return !word.number.empty() && word.number.find_first_not_of("0123456789") == std::string::npos;
-}
 
 bool allowedInContour(GGroup group, int number) {
   switch (group) {
@@ -65,20 +63,24 @@ Status checkContourBlock(const ParsedBlock& block, bool first, std::string_view 
 
 Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
                                  const ContourRequest& request, const Word& word) {
-  if (!isPlainInteger(word)) {
-    return Error{request.line, word.column,
-                 fmt::format("{} is not a sequence number: expected the digits of an N number, "
-                             "e.g. P10 for N10",
-                             word.text())};
-  }
-  const int number = static_cast<int>(word.value);
-  const auto found = program.findSequence(number, cycleIndex);
-  if (!found) {
+  auto read = labelNumberOf(word, request.line, kMaxSequenceDigits, "a sequence number (e.g. P10 for N10)");
+  if (!read.ok()) return read.error();
+  const int number = read.value();
+  const std::vector<std::size_t> found = program.findSequence(number, cycleIndex);
+  if (found.empty()) {
     return Error{request.line, word.column,
                  fmt::format("{} {}: there is no block N{} in this program", request.cycle,
                              word.text(), number)};
   }
-  return *found;
+  // GSK980TDi §3.23.1 note 14: cycles in one program give their contours their own numbers.
+  if (found.size() > 1) {
+    return Error{request.line, word.column,
+                 fmt::format("{} {}: N{} numbers two blocks, on lines {} and {}; the contours of the compound "
+                             "cycles in one program need N numbers of their own",
+                             request.cycle, word.text(), number, program.blocks[found[0]].line,
+                             program.blocks[found[1]].line)};
+  }
+  return found.front();
 }
 
 }  // namespace
@@ -100,8 +102,8 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
     return Error{request.line, request.q->column,
                  fmt::format("{} {} {}: N{} comes before N{}; Q names the contour's last block",
                              request.cycle, request.p->text(), request.q->text(),
-                             static_cast<int>(request.q->value),
-                             static_cast<int>(request.p->value))};
+                             *program.blocks[span.last].sequenceNumber,
+                             *program.blocks[span.first].sequenceNumber)};
   }
   const std::string name = spanName(program, span);
   int count = 0;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "interp/motion/arc_move.hpp"
+#include "interp/motion/drawing_angle.hpp"
 #include "interp/cycles/compound_cycle.hpp"
 #include "interp/motion/g28_return.hpp"
 #include "interp/compensation/cycle_nose_compensation.hpp"
@@ -17,6 +18,7 @@
 #include "interp/cycles/g94_cycle.hpp"
 #include "interp/motion/spindle_speed.hpp"
 #include "interp/execution/subprogram_call.hpp"
+#include "interp/control/tool_word.hpp"
 #include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
@@ -77,10 +79,13 @@ class Executor {
   Status applyDwell(const Code& code);
   Status applyCoordinateSetting(const Code& code);
   Status applyReferenceReturn(const Code& code);
+  void selectMotion(const Code& code);
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applyArc(const std::optional<Code>& code);
   RZ endPoint(const AxisWords& axes);
+  std::optional<Word> takeAngleWord();
+  double angleDegrees(const Word& angle) const;
   std::optional<ArcWord> arcWord(char letter);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
   Status applyCompoundCycle(const Code& code);
@@ -120,14 +125,10 @@ Result<BlockOutcome> Executor::run() {
                                            : NoseSide::None;
   }
 
+  // A one-shot code takes the block's axis words; a motion code beside it (G28 G00 U0 W0) only
+  // becomes the modal motion, as on the controls.
   const auto oneShot = block_.gCode(GGroup::NonModal);
-  const auto motion = block_.gCode(GGroup::Motion);
-  if (oneShot && motion) {
-    return errorAt(motion->column,
-                   fmt::format("{} and {} cannot share a block: the words X, Z, U and W would "
-                               "belong to both; put them in separate blocks",
-                               oneShot->text, motion->text));
-  }
+  if (const auto motion = block_.gCode(GGroup::Motion); oneShot && motion) selectMotion(*motion);
   const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
   if (oneShot && !compound) {
     if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
@@ -142,9 +143,8 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number != 5) state_.spindleOn = true;
   if (coolant && coolant->number == 8) state_.coolantOn = true;
 
-  if (auto status = compound ? applyCompoundCycle(*oneShot) : applyMotion(); !status.ok()) {
-    return status.error();
-  }
+  const Status moved = compound ? applyCompoundCycle(*oneShot) : oneShot ? success() : applyMotion();
+  if (!moved.ok()) return moved.error();
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
 
   if (spindle && spindle->number == 5) state_.spindleOn = false;
@@ -235,15 +235,12 @@ Status Executor::applySpindleSpeed() {
 Status Executor::applyTool() {
   const auto t = block_.take('T');
   if (!t) return success();
-  const bool integral = t->number.find_first_not_of("0123456789") == std::string::npos;
-  if (!integral || t->value > 9999) {
-    return errorAt(t->column, fmt::format("{} is not a tool word: expected T and four digits, "
-                                          "tool number then offset number, e.g. T0101",
-                                          t->text()));
-  }
-  const int toolAndOffset = static_cast<int>(t->value);
-  const int tool = toolAndOffset / 100;
-  const int offset = toolAndOffset % 100;
+  auto read = readToolWord(*t, options_.control.toolWordForms, block_.line);
+  if (!read.ok()) return read.error();
+  const auto [tool, offset, note] = read.value();
+  if (note) warnings_.push_back({block_.line, t->column, *note});
+  state_.toolOffset = offset;
+  if (tool == 0) return success();  // no tool change
   const auto& tools = options_.toolNumbers;
   if (std::find(tools.begin(), tools.end(), tool) == tools.end()) {
     std::string defined;
@@ -254,7 +251,6 @@ Status Executor::applyTool() {
                                tool, t->text(), defined.empty() ? "none" : defined));
   }
   state_.tool = tool;
-  state_.toolOffset = offset;
   return success();
 }
 
@@ -330,26 +326,33 @@ Status Executor::applyReferenceReturn(const Code& code) {
   // The reference point is the machine's: in the program's frame it moves with G50.
   const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.workShift;
   const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
-  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step);
+  // Under G41/G42 the compensation is suspended at the intermediate point (lathe-cycles.md §10):
+  // the legs are no part of the chain, which ends with the move before them and resumes with a
+  // start-up after them.
+  emitLegs(legs);
   if (!legs.empty()) state_.position = legs.back().to;
+  // GSK No.182#2: arrived at the reference, the control forgets the tool offset until a T word.
+  if (options_.control.offsetAfterReturn == OffsetAfterReturn::Cancelled) state_.toolOffset = 0;
   return success();
+}
+
+void Executor::selectMotion(const Code& code) {
+  const MotionMode mode = code.number == 0    ? MotionMode::Rapid
+                          : code.number == 1  ? MotionMode::Linear
+                          : code.number == 2  ? MotionMode::ArcCW
+                          : code.number == 3  ? MotionMode::ArcCCW
+                          : code.number == 90 ? MotionMode::AxialCycle
+                                              : MotionMode::FaceCycle;
+  // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
+  // G94 are two such codes, so switching between them clears them too. Only a cycle
+  // retains values, so naming the current mode again keeps them.
+  if (mode != state_.motion) state_.cycle = {};
+  state_.motion = mode;
 }
 
 Status Executor::applyMotion() {
   const auto code = block_.gCode(GGroup::Motion);
-  if (code) {
-    const MotionMode mode = code->number == 0    ? MotionMode::Rapid
-                            : code->number == 1  ? MotionMode::Linear
-                            : code->number == 2  ? MotionMode::ArcCW
-                            : code->number == 3  ? MotionMode::ArcCCW
-                            : code->number == 90 ? MotionMode::AxialCycle
-                                                 : MotionMode::FaceCycle;
-    // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
-    // G94 are two such codes, so switching between them clears them too. Only a cycle
-    // retains values, so naming the current mode again keeps them.
-    if (mode != state_.motion) state_.cycle = {};
-    state_.motion = mode;
-  }
+  if (code) selectMotion(*code);
   switch (state_.motion) {
     case MotionMode::AxialCycle: return applySingleCycle(kAxialCycle, code);
     case MotionMode::FaceCycle: return applySingleCycle(kFaceCycle, code);
@@ -365,9 +368,28 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   auto axes = takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
+  const std::optional<Word> angle = takeAngleWord();
+  if (angle && !a.any()) {
+    return errorAt(angle->column, fmt::format("{} alone starts a drawing dimension of two lines (their "
+                                              "intersection found by the control), which lathesim does not read "
+                                              "yet; give this line's end X or Z with the angle",
+                                              angle->text()));
+  }
   if (!a.any()) return success();
   const RZ from = state_.position;
-  const RZ to = endPoint(a);
+  RZ to = endPoint(a);
+  const bool givesX = a.x || a.u;
+  const bool givesZ = a.z || a.w;
+  if (angle && givesX && givesZ) {
+    warnings_.push_back({block_.line, angle->column,
+                         fmt::format("{} is ignored: X and Z give the end point (GSK980TDi §3.13)", angle->text())});
+  } else if (angle) {
+    auto end = lineEndByAngle(from, givesX ? std::optional(to.x()) : std::nullopt,
+                              givesZ ? std::optional(to.y()) : std::nullopt, angleDegrees(*angle), *angle,
+                              block_.line);
+    if (!end.ok()) return end.error();
+    to = end.value();
+  }
   const bool feed = state_.motion == MotionMode::Linear;
   if (feed && !state_.feed) {
     return errorAt(code ? code->column : block_.column,
@@ -376,6 +398,26 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
   state_.position = to;
   return success();
+}
+
+std::optional<Word> Executor::takeAngleWord() {
+  switch (options_.control.drawingAngleWord) {
+    case DrawingAngleWord::Q: return block_.take('Q');
+    case DrawingAngleWord::A: return block_.take('A');
+    case DrawingAngleWord::CommaA: return block_.take('a');
+  }
+  return std::nullopt;
+}
+
+// An angle in degrees: GSK's Q counts 0.001° without a point (an [LII] word, No.182#7), Fanuc's
+// A follows the decimal point input like a length.
+double Executor::angleDegrees(const Word& angle) const {
+  const bool incrementWord = options_.control.drawingAngleWord == DrawingAngleWord::Q;
+  const NumberReading r = reading();
+  const bool counted = !hasDecimalPoint(angle) &&
+                       (incrementWord ? r.incrementWordInput == IncrementWordInput::LeastIncrements
+                                      : r.decimalPointInput == DecimalPointInput::LeastIncrements);
+  return counted ? angle.value * r.leastIncrementMm : angle.value;  // 0.001° at IS-B
 }
 
 RZ Executor::endPoint(const AxisWords& a) {
@@ -423,9 +465,9 @@ Status Executor::applyArc(const std::optional<Code>& code) {
 
 Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code) {
   const char taperLetter = cycleTaperLetter(cycle.code, options_.dialect);
-  // A block repeats the cycle when it names the cycle's code or gives any of X U Z W R.
-  if (!code && !block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') &&
-      !block_.has(taperLetter)) {
+  // A block runs the cycle when it gives any of X U Z W R; the code alone (a G90 on a safety
+  // line) makes it the modal motion and moves nothing.
+  if (!block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') && !block_.has(taperLetter)) {
     return success();
   }
   const int anchor = code ? code->column : block_.column;

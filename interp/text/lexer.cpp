@@ -13,8 +13,11 @@ namespace {
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-// The address letters of lathe G-code (system A). Others are unknown letters.
-constexpr std::string_view kKnownLetters = "FGIJKLMNOPQRSTUWXZ";
+// The address letters of lathe G-code (system A; A is the angle of a direct drawing
+// dimension). Others are unknown letters.
+constexpr std::string_view kKnownLetters = "AFGIJKLMNOPQRSTUWXZ";
+// The letters Fanuc writes after a comma (",A" angle, ",C" chamfer, ",R" corner radius).
+constexpr std::string_view kCommaLetters = "ACR";
 
 bool isNumberChar(const std::string& text) {
   return text.size() == 1 && (std::isdigit(static_cast<unsigned char>(text[0])) ||
@@ -51,11 +54,36 @@ bool BlockReader::skipPercentLine() {
   std::size_t probe = at_;
   while (probe < text_.size() && isBlank(text_[probe])) ++probe;
   if (probe >= text_.size() || text_[probe] != '%') return false;
+  if (readBlock_) {
+    closeAt(probe);
+    return true;
+  }
   const std::size_t newline = text_.find('\n', probe);
   at_ = newline == std::string_view::npos ? text_.size() : newline + 1;
   ++line_;
   column_ = 1;
   return true;
+}
+
+void BlockReader::closeAt(std::size_t percent) {
+  closingPercent_ = std::pair{line_, column_ + static_cast<int>(percent - at_)};
+  // The first character after the '%' that is not blank or a line end.
+  int line = line_;
+  int column = closingPercent_->second + 1;
+  for (std::size_t i = percent + 1; i < text_.size(); i += codePointLength(text_, i)) {
+    const char c = text_[i];
+    if (c == '\n') {
+      ++line;
+      column = 1;
+      continue;
+    }
+    if (!isBlank(c)) {
+      textAfterClosing_ = std::pair{line, column};
+      break;
+    }
+    ++column;
+  }
+  at_ = text_.size();
 }
 
 Result<std::optional<RawBlock>> BlockReader::next() {
@@ -109,7 +137,10 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       }
       ++at_;
     }
-    if (started) return std::optional<RawBlock>(std::move(block));
+    if (started) {
+      readBlock_ = true;
+      return std::optional<RawBlock>(std::move(block));
+    }
   }
   return std::optional<RawBlock>();
 }
@@ -119,6 +150,20 @@ Result<std::vector<Word>> tokenize(const RawBlock& block) {
   const auto& chars = block.chars;
   std::size_t i = 0;
   while (i < chars.size()) {
+    // ",A" and its kin: the comma and the letter make one address.
+    const bool comma = chars[i].text == "," && i + 1 < chars.size() && chars[i + 1].text.size() == 1 &&
+                       std::isalpha(static_cast<unsigned char>(chars[i + 1].text[0]));
+    const int commaColumn = chars[i].column;
+    if (comma) {
+      const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(chars[i + 1].text[0])));
+      if (kCommaLetters.find(letter) == std::string_view::npos) {
+        return Error{block.line, commaColumn,
+                     fmt::format("unknown address ',{}': a comma is followed by A (angle), C (chamfer) or R "
+                                 "(corner radius)",
+                                 letter)};
+      }
+      ++i;
+    }
     const SourceChar& head = chars[i];
     const unsigned char byte = static_cast<unsigned char>(head.text[0]);
     if (head.text.size() != 1 || !std::isalpha(byte)) {
@@ -151,7 +196,9 @@ Result<std::vector<Word>> tokenize(const RawBlock& block) {
                                "with at most one decimal point",
                                letter, number)};
     }
-    words.push_back({letter, number, readNumber(number), head.column});
+    if (comma) words.push_back({static_cast<char>(std::tolower(static_cast<unsigned char>(letter))), number,
+                                readNumber(number), commaColumn});
+    else words.push_back({letter, number, readNumber(number), head.column});
     i = end;
   }
   return words;

@@ -244,6 +244,19 @@ TEST(Interpreter, InchFaceCycle) {
                                       {kRapid, 50.8, 0, 63.5, 0, 0, 4}});
 }
 
+TEST(Interpreter, TheClosingPercentEndsTheProgram) {
+  // Text after the closing % is not run, and a warning says so where it starts.
+  const auto result = run("%\nG00 X20 Z2\n%\n  G00 X999\n");
+  ASSERT_TRUE(result.ok());
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 10, 2, 0, 0}});
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].line, 4);
+  EXPECT_EQ(result.diagnostics[0].column, 3);
+  EXPECT_EQ(result.diagnostics[0].message, "the program ends at the % on line 3: this text after it is not run");
+  // A closing % with nothing after it: no warning.
+  EXPECT_TRUE(run("%\nG00 X20 Z2\n%\n\n").diagnostics.empty());
+}
+
 TEST(Interpreter, BlockDeleteSkipsSlashBlocksWhenOn) {
   const std::string_view program = "/G00 X20 Z20\nG00 X40 Z40\n";
   const auto on = run(program);
@@ -364,8 +377,26 @@ TEST(InterpreterErrors, LeftoverWord) {
   expectError(run("G01 X20 F1 P3 I2\n"), 1, 12, "P3 is not used");
 }
 
-TEST(InterpreterErrors, OneShotAndMotionInOneBlock) {
-  expectError(run("G50 G00 X20\n"), 1, 5, "G50 and G00 cannot share a block");
+TEST(Interpreter, AOneShotCodeTakesTheAxisWordsAndAMotionCodeBesideItOnlyBecomesModal) {
+  // G28 G00 U0 W0 (a common safety line): G28 returns straight to the reference (the start
+  // here, (100, 200)); G00 is the motion the next block's X20 Z0 makes.
+  const auto result = run("G01 X40 Z10 F0.2\nG28 G00 U0 W0\nX20 Z0\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kFeed, 100, 200, 20, 10, 0.2, 0},
+                                      {kRapid, 20, 10, 100, 200, 0, 2},
+                                      {kRapid, 100, 200, 10, 0, 0, 0}});
+}
+
+TEST(Interpreter, ACycleCodeAloneSetsTheMotionAndMovesNothing) {
+  // G90 on a safety line: no move; the X/Z block after it runs the cycle from where the tool is.
+  const auto result = run("G00 X50 Z2\nG90\nX40 Z-10 F0.2\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 25, 2, 0, 0},
+                                      {kRapid, 25, 2, 20, 2, 0, 1},
+                                      {kFeed, 20, 2, 20, -10, 0.2, 2},
+                                      {kFeed, 20, -10, 25, -10, 0.2, 3},
+                                      {kRapid, 25, -10, 25, 2, 0, 4}});
+  EXPECT_TRUE(run("G94\nG71\nG74\n").toolpath.moves.empty());
 }
 
 TEST(InterpreterErrors, DwellNeedsOneTime) {
@@ -375,8 +406,6 @@ TEST(InterpreterErrors, DwellNeedsOneTime) {
 }
 
 TEST(InterpreterErrors, BadToolSpeedAndCoordinateWords) {
-  expectError(run("T01.01\n"), 1, 1, "T01.01 is not a tool word");
-  expectError(run("T1\n"), 1, 1, "tool 0 (T1) is not defined");
   expectError(run("M03 S-5\n"), 1, 5, "S-5 is not a spindle speed");
   EXPECT_TRUE(run("G50 S2000\n").ok());
 }
