@@ -50,6 +50,8 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   auto& blocks = report["blocks"] = nlohmann::ordered_json::array();
   for (const auto& b : f.simulation.blocks)
     blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}});
+  auto& stops = report["stops"] = nlohmann::ordered_json::array();
+  for (const auto& s : f.stops) stops.push_back({{"line", s.line}, {"column", s.column}, {"code", s.code}});
   auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
   for (const auto& w : f.warnings) warnings.push_back({{"line", w.line}, {"column", w.column}, {"message", w.message}});
   report["peak_memory_mb"] = f.peakMemoryMb;

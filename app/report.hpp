@@ -33,6 +33,7 @@ struct RunFigures {
   double cycleTimeS = 0;  // the machine time of all moves (interp/motion/cycle_time.hpp)
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
   sim::SimulationResult simulation;
+  std::vector<interp::ProgramStop> stops;  // M00/M01 reached: listed, not timed
   std::vector<interp::Diagnostic> warnings;
   RunTimings timing;
 };

@@ -5,7 +5,6 @@
 
 #include "interp/execution/block_executor.hpp"
 #include "interp/execution/call_stack.hpp"
-#include "interp/motion/feed_warnings.hpp"
 #include "interp/execution/modal_state.hpp"
 #include "interp/compensation/nose_compensation.hpp"
 #include "interp/motion/rapid_path.hpp"
@@ -48,8 +47,14 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
       auto target = calls.call(*flow.call, index);
       if (!target.ok()) return target.error();
       next = target.value();
-    } else if (flow.returnColumn) {
-      auto target = calls.giveBack(*flow.returnColumn, index);
+    } else if (flow.giveBack && !calls.inSubprogram()) {
+      // M99 in the main program: the control starts it over, forever; it is simulated once.
+      warnings.push_back({block.line, flow.giveBack->column,
+                          "M99 ends the main program: the control runs it again from the start, forever; "
+                          "lathesim simulates it once"});
+      done.state.ended = true;
+    } else if (flow.giveBack) {
+      auto target = calls.giveBack(*flow.giveBack, index);
       if (!target.ok()) return target.error();
       next = target.value();
     } else if (flow.continueAfter) {
@@ -58,6 +63,8 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
     state = std::move(done.state);
     toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
     toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
+    if (const auto stop = block.parsed.value().mCode(MGroup::Stop))
+      toolpath.stops.push_back({block.line, stop->column, stop->text});
     warnings.insert(warnings.end(), done.warnings.begin(), done.warnings.end());
   }
   if (!state.ended) {
@@ -108,7 +115,6 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
                                   error.message, lineOf(programText, error.line)});
     return result;
   }
-  for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
   std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
     return a.line != b.line ? a.line < b.line : a.column < b.column;
   });

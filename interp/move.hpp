@@ -63,12 +63,21 @@ struct CycleStart {
   std::string code;  // "G90", "G94", …
 };
 
+/// Where the program reached M00 (program stop) or M01 (optional stop): the machine waits for
+/// the operator there, so a stop is listed, not timed.
+struct ProgramStop {
+  int line = 0;
+  int column = 0;    // of the M code
+  std::string code;  // "M00" or "M01"
+};
+
 struct Toolpath {
   std::string programName;  // the file name as given
   RZ startPosition{0, 0};   // where the tool stood before the first move
   std::vector<Move> moves;
   int blockCount = 0;       // blocks read, including those that made no move
   std::vector<CycleStart> cycleStarts;  // every cycle block run, in program order
+  std::vector<ProgramStop> stops;       // every M00/M01 reached, in program order
 };
 
 inline bool isArc(MoveKind kind) { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }

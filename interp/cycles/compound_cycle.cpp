@@ -110,6 +110,7 @@ Status CompoundCycle::oneOf(const std::optional<Word>& absolute,
 }
 
 Status CompoundCycle::needFeed() const {
+  if (auto problem = zeroFeedProblem(state_.feed, code_.text)) return errorAt(code_.column, *problem);
   if (state_.feed) return success();
   return errorAt(code_.column, fmt::format("feed rate F is not set: {} cuts at feed; give F "
                                            "(e.g. F0.2 mm/rev) in this block or before it",
@@ -175,6 +176,7 @@ Status CompoundCycle::finishing() {
   state_ = std::move(run.value().state);
   state_.noseSide = before;
   outcome_.contourMoves = std::move(run.value().moves);
+  outcome_.warnings = std::move(run.value().warnings);
   outcome_.legs.push_back({MoveKind::Rapid, state_.position, start, 0, RZ(0, 0)});
   if (state_.position == start) outcome_.legs.clear();
   state_.position = start;
@@ -191,10 +193,29 @@ Status CompoundCycle::roughing() {
     if (auto s = notNegative(retract, "a retract distance e"); !s.ok()) return s;
     if (depth) state_.compound.roughingDepthMm = length(*depth);
     if (retract) state_.compound.roughingRetractMm = length(*retract);
+    state_.compound.roughingGiven = true;
     return success();
+  }
+  // GSK's K and J (§3.23.1): K1 asks for the full monotonic check, which lathesim always makes
+  // (how the GSK roughs a contour it did not check is not documented); J1 asks type II for one
+  // more pass along the rough contour, by a path the manual does not give.
+  block_.take('K');
+  if (const auto j = block_.take('J'); j && j->value == 1) {
+    return errorAt(j->column, fmt::format("{} {}: the GSK's extra pass along the rough contour is not simulated (the "
+                                          "manual does not say how the tool gets back to its start); leave J out",
+                                          code_.text, j->text()));
   }
   auto read = contourBlock();
   if (!read.ok()) return read.error();
+  if (!state_.compound.roughingGiven) {
+    state_.compound.roughingGiven = true;
+    outcome_.warnings.push_back(
+        {block_.line, code_.column,
+         fmt::format("{0} P… Q… runs without a first block {0} {1}(Δd) R(e): Δd {2:g} mm and e {3:g} mm come from the "
+                     "control's parameters (g71_depth, g71_retract), not from the program",
+                     code_.text, turning ? 'U' : 'W', state_.compound.roughingDepthMm,
+                     state_.compound.roughingRetractMm)});
+  }
   const ContourBlock& b = read.value();
   const ExtractedContour& c = b.contour;
   RoughingParams params;
@@ -239,10 +260,20 @@ Status CompoundCycle::patternRepeat() {
     if (u) state_.compound.patternReliefXMm = length(*u);
     if (w) state_.compound.patternReliefZMm = length(*w);
     if (r) state_.compound.patternPasses = static_cast<int>(r->value);
+    state_.compound.patternGiven = true;
     return success();
   }
   auto read = contourBlock();
   if (!read.ok()) return read.error();
+  if (!state_.compound.patternGiven) {
+    state_.compound.patternGiven = true;
+    outcome_.warnings.push_back(
+        {block_.line, code_.column,
+         fmt::format("G73 P… Q… runs without a first block G73 U(Δi) W(Δk) R(d): Δi {:g} mm, Δk {:g} mm and d {} come "
+                     "from the control's parameters (g73_relief_x, g73_relief_z, g73_passes), not from the program",
+                     state_.compound.patternReliefXMm, state_.compound.patternReliefZMm,
+                     state_.compound.patternPasses)});
+  }
   const ContourBlock& b = read.value();
   const ExtractedContour& c = b.contour;
   PatternRepeatParams params;

@@ -20,6 +20,7 @@ struct CompoundOutcome {
   std::vector<Move> contourMoves;  // G70: the contour blocks' own moves, before the legs
   std::vector<CycleLeg> legs;      // the cycle block's moves
   std::optional<std::size_t> continueAfter;  // G71–G73: the nf block, when it follows
+  std::vector<Error> warnings;               // G70's contour blocks', and the cycle's own
 };
 
 /// G70 to G75.

@@ -14,11 +14,13 @@ struct CompoundCycleParams {
   double patternReliefZMm = 0;   // G73 W (Δk), signed
   int patternPasses = 1;         // G73 R (d)
   double peckRetractMm = 0;      // G74/G75 R (e)
+  bool roughingGiven = false;    // a G71/G72 first block was read (or its absence warned)
+  bool patternGiven = false;     // a G73 first block was read (or its absence warned)
 
   /// The values the control's parameters give before a program sets them.
   static CompoundCycleParams of(const ControlParameters& control) {
     return {control.roughingDepthMm, control.roughingRetractMm, control.patternReliefXMm,
-            control.patternReliefZMm, control.patternPasses,    control.peckRetractMm};
+            control.patternReliefZMm, control.patternPasses,    control.peckRetractMm, false, false};
   }
 };
 

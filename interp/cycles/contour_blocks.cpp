@@ -141,6 +141,8 @@ Result<BlockOutcome> runContourBlocks(const Program& program, ContourSpan span,
     state = std::move(done.value().state);
     const auto& moves = done.value().moves;
     outcome.moves.insert(outcome.moves.end(), moves.begin(), moves.end());
+    const auto& warnings = done.value().warnings;
+    outcome.warnings.insert(outcome.warnings.end(), warnings.begin(), warnings.end());
   }
   outcome.state = std::move(state);
   return outcome;

@@ -4,12 +4,14 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "interp/motion/arc_move.hpp"
+#include "interp/motion/feed_warnings.hpp"
 #include "interp/motion/drawing_angle.hpp"
 #include "interp/cycles/compound_cycle.hpp"
 #include "interp/motion/g28_return.hpp"
@@ -19,6 +21,7 @@
 #include "interp/motion/spindle_speed.hpp"
 #include "interp/execution/subprogram_call.hpp"
 #include "interp/control/tool_word.hpp"
+#include "interp/text/label_number.hpp"
 #include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
@@ -93,6 +96,7 @@ class Executor {
   Status checkAllWordsUsed() const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
   void warnIfSurfaceSpeedUnclamped();
+  void warnIfFeedImplausible();
   void emitLegs(const std::vector<CycleLeg>& legs);
 
   ParsedBlock block_;
@@ -107,6 +111,7 @@ class Executor {
 };
 
 Result<BlockOutcome> Executor::run() {
+  warnings_ = block_.warnings;
   block_.take('N');  // sequence number: a label only
   block_.take('O');  // program number
   if (auto status = applySubprogramCode(); !status.ok()) return status.error();
@@ -157,7 +162,14 @@ Status Executor::applySubprogramCode() {
   const auto code = block_.mCode(MGroup::Subprogram);
   if (!code) return success();
   if (code->number == 99) {
-    flow_.returnColumn = code->column;
+    SubprogramReturn giveBack{code->column, std::nullopt, 0};
+    if (const auto p = block_.take('P')) {
+      auto sequence = labelNumberOf(*p, block_.line, kMaxSequenceDigits, "a sequence number to return to");
+      if (!sequence.ok()) return sequence.error();
+      giveBack.sequence = sequence.value();
+      giveBack.sequenceColumn = p->column;
+    }
+    flow_.giveBack = giveBack;
     return success();
   }
   auto call = takeSubprogramCall(block_, *code);
@@ -174,17 +186,22 @@ Result<AxisWords> Executor::takeAxisWords(Coordinates meaning) {
     if (axes.x && !axes.u) std::swap(axes.x, axes.u);
     if (axes.z && !axes.w) std::swap(axes.z, axes.w);
   }
-  if (axes.x && axes.u) {
-    return errorAt(std::max(axes.x->column, axes.u->column),
-                   fmt::format("{} and {} both give the X axis (X absolute, U incremental); "
-                               "give one of them",
-                               axes.x->text(), axes.u->text()));
-  }
-  if (axes.z && axes.w) {
-    return errorAt(std::max(axes.z->column, axes.w->column),
-                   fmt::format("{} and {} both give the Z axis (Z absolute, W incremental); "
-                               "give one of them",
-                               axes.z->text(), axes.w->text()));
+  // X with U (Z with W): the GSK takes the absolute word (§3.2), other controls alarm. Under
+  // G91 both are distances: always an error.
+  const bool absoluteWins = options_.control.absoluteWithIncremental == AbsoluteWithIncremental::AbsoluteWins &&
+                            !state_.incremental;
+  for (auto [absolute, incremental, axis] : {std::tuple{&axes.x, &axes.u, 'X'}, std::tuple{&axes.z, &axes.w, 'Z'}}) {
+    if (!*absolute || !*incremental) continue;
+    if (!absoluteWins) {
+      return errorAt(std::max((*absolute)->column, (*incremental)->column),
+                     fmt::format("{} and {} both give the {} axis ({} absolute, {} incremental); give one of them",
+                                 (*absolute)->text(), (*incremental)->text(), axis, axis, axis == 'X' ? 'U' : 'W'));
+    }
+    warnings_.push_back({block_.line, (*incremental)->column,
+                         fmt::format("{} is ignored: {} in the same block gives the {} axis (the absolute word "
+                                     "wins, GSK980TDi §3.2)",
+                                     (*incremental)->text(), (*absolute)->text(), axis)});
+    incremental->reset();
   }
   return axes;
 }
@@ -192,12 +209,13 @@ Result<AxisWords> Executor::takeAxisWords(Coordinates meaning) {
 Status Executor::applyFeed() {
   const auto f = block_.take('F');
   if (!f) return success();
-  if (f->value <= 0) {
-    return errorAt(f->column, fmt::format("{} is not a feed rate: expected a positive number "
+  if (f->value < 0) {
+    return errorAt(f->column, fmt::format("{} is not a feed rate: expected a number ≥ 0 "
                                           "(mm/rev under G99, mm/min under G98)",
                                           f->text()));
   }
   state_.feed = reading().mm(f->value);  // mm (inch) per minute or revolution
+  state_.feedWord = f->text();
   return success();
 }
 
@@ -263,30 +281,26 @@ Status Executor::applyOneShot(const Code& code) {
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
 }
 
-Status Executor::applyDwell(const Code& code) {
-  // X and U are seconds, P milliseconds: times, not lengths, so no unit conversion.
+// G04 (GSK980TDi §3.14): X or U in seconds, P in milliseconds; with several, P wins over X and
+// X over U (the others are warned as ignored); none is an exact stop between blocks (no time);
+// a negative time dwells 0 s.
+Status Executor::applyDwell(const Code&) {
   std::optional<Word> time;
-  for (char letter : {'X', 'U', 'P'}) {
+  for (char letter : {'P', 'X', 'U'}) {
     auto word = block_.take(letter);
     if (!word) continue;
     if (time) {
-      return errorAt(word->column, fmt::format("G04 takes one dwell time, but {} and {} are "
-                                               "both given",
-                                               time->text(), word->text()));
-    }
-    if (word->value < 0) {
-      return errorAt(word->column,
-                     fmt::format("{} is not a dwell time: expected a number ≥ 0", word->text()));
+      warnings_.push_back({block_.line, word->column,
+                           fmt::format("{} is ignored: {} gives G04's time (P before X before U, GSK980TDi §3.14)",
+                                       word->text(), time->text())});
+      continue;
     }
     time = word;
   }
-  if (!time) {
-    return errorAt(code.column,
-                   "G04 needs a dwell time: X or U (seconds) or P (milliseconds)");
-  }
+  if (!time) return success();
   const double seconds = time->letter == 'P' ? time->value / kMsPerS : dwellSeconds(*time, reading());
   emit(MoveKind::Dwell, state_.position, state_.position, 0);
-  moves_.back().dwellS = seconds;
+  moves_.back().dwellS = std::max(seconds, 0.0);
   return success();
 }
 
@@ -395,6 +409,8 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
     return errorAt(code ? code->column : block_.column,
                    "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G01 move");
   }
+  if (auto problem = feed ? zeroFeedProblem(state_.feed, "G01") : std::nullopt)
+    return errorAt(code ? code->column : block_.column, *problem);
   emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
   state_.position = to;
   return success();
@@ -456,9 +472,14 @@ Status Executor::applyArc(const std::optional<Code>& code) {
                                        "before the first {} move",
                                        name));
   }
+  if (auto problem = zeroFeedProblem(state_.feed, name)) return errorAt(anchor, *problem);
+  arc.radiusToleranceMm = options_.control.arcRadiusToleranceMm;
+  arc.endOffCircle = options_.control.arcEndOffCircle;
   const auto centre = arcCentre(arc);
   if (!centre.ok()) return centre.error();
-  emit(clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, arc.start, arc.end, 0, centre.value());
+  warnings_.insert(warnings_.end(), centre.value().warnings.begin(), centre.value().warnings.end());
+  if (!centre.value().centre) return success();  // R to the start point: no move
+  emit(clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, arc.start, arc.end, 0, *centre.value().centre);
   state_.position = arc.end;
   return success();
 }
@@ -501,6 +522,7 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
                                        "F0.2 mm/rev) in this block or before it",
                                        name));
   }
+  if (auto problem = zeroFeedProblem(state_.feed, name)) return errorAt(anchor, *problem);
   // The alarm compares R with the travel U (G90, a diameter) or W (G94); without R in this
   // block it points at that travel's word.
   const double travelMm = cycle.taperAgainstX ? *xDiameterMm - diameterOf(start) : *zMm - start.y();
@@ -532,6 +554,7 @@ Status Executor::applyCompoundCycle(const Code& code) {
   if (!done.legs.empty() || !done.contourMoves.empty())
     cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.workShift, code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
+  warnings_.insert(warnings_.end(), done.warnings.begin(), done.warnings.end());
   emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
   return success();
@@ -553,6 +576,7 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   // An arc back to its start is a full circle, a dwell stands still: both are kept.
   if (from == to && !isArc(kind) && kind != MoveKind::Dwell) return;
   warnIfSurfaceSpeedUnclamped();
+  if (isCutting(kind)) warnIfFeedImplausible();
   Move move;
   move.kind = kind;
   move.from = from;
@@ -574,6 +598,15 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   move.column = block_.column;
   move.cycleStep = cycleStep;
   moves_.push_back(move);
+}
+
+// Where a cut first runs at a feed (or feed mode) other than the cut before it's.
+void Executor::warnIfFeedImplausible() {
+  const std::pair current{*state_.feed, state_.feedMode};
+  if (state_.checkedFeed == current) return;
+  state_.checkedFeed = current;
+  if (auto problem = implausibleFeed(state_.feedWord, current.first, current.second, state_.inch))
+    warnings_.push_back({block_.line, block_.column, *problem});
 }
 
 // The first move after G96 tells whether G50 S was given in time to limit it.

@@ -2,6 +2,8 @@
 // What the control remembers between blocks. All lengths are mm; X positions are radii.
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <utility>
 
 #include "geometry/rz.hpp"
@@ -25,6 +27,13 @@ struct CycleRetained {
                                       // G94 Z at the cut's start minus Z at its end
 };
 
+/// F0 (GSK §3.26: the feed becomes 0) is legal, but a cut at it never ends on a machine: the
+/// error for `what` ("G01", "G90") cutting at F0, or nullopt when the feed in force is not 0.
+inline std::optional<std::string> zeroFeedProblem(std::optional<double> feed, std::string_view what) {
+  if (!feed || *feed != 0) return std::nullopt;
+  return std::string(what) + " cuts at F0, a feed of 0: the machine would wait there forever; give F > 0";
+}
+
 struct ModalState {
   MotionMode motion = MotionMode::Rapid;
   Plane plane = Plane::ZX;
@@ -32,6 +41,8 @@ struct ModalState {
   bool incremental = false;  // G91 in dialects that have it: X and Z words are distances
   FeedMode feedMode = FeedMode::PerRevolution;
   std::optional<double> feed;  // mm/min (G98) or mm/rev (G99); unset until the first F
+  std::string feedWord;        // that F as the program wrote it, for messages
+  std::optional<std::pair<double, FeedMode>> checkedFeed;  // the feed the last cut was checked at
   SpindleMode spindleMode = SpindleMode::Rpm;  // G97 is the power-on state
   double spindleSpeed = 0.0;                   // rpm under G97 (S, or kept from G96)
   double surfaceSpeedMPerMin = 0.0;            // G96 S, remembered across G97 periods

@@ -119,6 +119,8 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       const std::size_t length = codePointLength(text_, at_);
       if (!started && c == '/') {
         block.deleted = true;
+      } else if (c == '/' && !block.skipFrom) {
+        block.skipFrom = block.chars.size();
       } else {
         block.chars.push_back({std::string(text_.substr(at_, length)), column_});
       }

@@ -28,6 +28,9 @@ struct RawBlock {
   int column = 0;        // 1-based column of its first significant character
   bool deleted = false;  // it started with '/' (block delete)
   std::vector<SourceChar> chars;  // everything after the '/', spaces and comments removed
+  // A '/' inside the block (Fanuc's optional block skip mid-block ⚠): the index into chars where
+  // the words it skips start; with block skip on, they are dropped.
+  std::optional<std::size_t> skipFrom;
 };
 
 /// A letter and its number: "X20 .0" is the word X20.0. Fanuc's comma words (",A-45.", ",C1.")

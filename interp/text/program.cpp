@@ -63,7 +63,8 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
       break;
     }
     if (!next.value()) break;
-    const RawBlock& raw = *next.value();
+    RawBlock& raw = *next.value();
+    if (raw.skipFrom && blockDelete) raw.chars.resize(*raw.skipFrom);
     block.line = raw.line;
     block.column = raw.column;
     block.deleted = raw.deleted;

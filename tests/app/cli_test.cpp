@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "interp/control/control_preset.hpp"
 #include "interp/toolpath_csv.hpp"
 
 namespace lathesim::app {
@@ -179,7 +180,7 @@ TEST_F(RunSeed001, ReportNamesTheControlAndTheTravel) {
   const auto& control = r.at("control");
   EXPECT_EQ(control.at("preset"), "gsk980tdi");
   const auto& parameters = control.at("parameters");
-  EXPECT_EQ(parameters.size(), 21u);
+  EXPECT_EQ(parameters.size(), interp::controlParameterKeys().size());  // every one
   EXPECT_EQ(parameters.at("power_on_feed_mode").at("value"), "G99");
   EXPECT_EQ(parameters.at("power_on_feed_mode").at("set_by"), "setup");
   EXPECT_EQ(parameters.at("rapid_positioning").at("value"), "nonlinear");

@@ -295,6 +295,34 @@ TEST(G71, FirstBlockValuesDefaultToTheParameters) {
   ASSERT_GE(moves.size(), 3u);
   expectMoves({moves[1], moves[2]},
               {{kRapid, 20, 2, 19, 2, 0, 2}, {kFeed, 19, 2, 19, -5, 0.2, 3}});
+  // Said, not silent: the values are the machine's, not the program's.
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].line, 2);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "G71 P… Q… runs without a first block G71 U(Δd) R(e): Δd 1 mm and e 0.5 mm come from the control's "
+            "parameters (g71_depth, g71_retract), not from the program");
+  // A control whose parameters differ roughs differently: g71_depth 1.5 gives levels 18.5 only.
+  InterpreterOptions options = test::defaultOptions();
+  options.control.roughingDepthMm = 1.5;
+  const auto deeper = run("G00 X40 Z2\nG71 P10 Q20 F0.2\nN10 G00 X34\nN20 G01 Z-5\n", options);
+  ASSERT_TRUE(deeper.ok());
+  expectMoves({deeper.toolpath.moves[1], deeper.toolpath.moves[2]},
+              {{kRapid, 20, 2, 18.5, 2, 0, 2}, {kFeed, 18.5, 2, 18.5, -5, 0.2, 3}});
+  // With a first block, no warning.
+  EXPECT_TRUE(run("G00 X40 Z2\nG71 U1 R1\nG71 P10 Q20 F0.2\nN10 G00 X34\nN20 G01 Z-5\n").diagnostics.empty());
+}
+
+TEST(G71, GsksKAndJWordsAreRead) {
+  // K0/K1 (the monotonic check, always made) and J0 change nothing; J1's extra pass is refused.
+  const std::string_view base = "G00 X40 Z2\nG71 U1 R1\nG71 P10 Q20 F0.2 ";
+  const auto plain = run(std::string(base) + "\nN10 G00 X34\nN20 G01 Z-5\n");
+  for (const char* words : {"K0", "K1", "K1 J0"}) {
+    const auto result = run(std::string(base) + words + "\nN10 G00 X34\nN20 G01 Z-5\n");
+    ASSERT_TRUE(result.ok()) << words << ": " << result.diagnostics[0].message;
+    EXPECT_EQ(result.toolpath.moves.size(), plain.toolpath.moves.size()) << words;
+  }
+  expectError(run(std::string(base) + "J1\nN10 G00 X34\nN20 G01 Z-5\n"), 3, 18,
+              "G71 J1: the GSK's extra pass along the rough contour is not simulated");
 }
 
 TEST(G72, FirstBlockWIsTheDepthAndPassesRunAlongX) {
