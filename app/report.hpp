@@ -35,6 +35,7 @@ struct RunFigures {
   sim::SimulationResult simulation;
   std::vector<interp::ProgramStop> stops;  // M00/M01 reached: listed, not timed
   std::vector<interp::Diagnostic> warnings;
+  std::vector<interp::Diagnostic> notes;
   RunTimings timing;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 // G-code text → Toolpath. The single entry point of the interp module.
 
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,6 +14,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/execution/work_frame.hpp"
 
 namespace lathesim::interp {
 
@@ -19,18 +22,25 @@ struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
                                    // T word. A T word naming another number is an error.
+  std::function<std::string(int tool)> toolDefinitionHint;  // how to define a missing tool (the
+                                                            // setup's TOML), for that error
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
   ControlParameters control;          // how the control reads and runs it (control_preset.hpp);
                                       // gsk980tdi's parameters by default
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
+  WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)
+  std::vector<std::filesystem::path> programDirectories;  // where M98 finds programs the text
+                                                         // lacks, in order (program_library.hpp)
+  std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
+                                  // reference point (or the start) if unset
 };
 
 struct InterpretResult {
   Toolpath toolpath;
   std::vector<Diagnostic> diagnostics;  // the error that stopped the program alone, or the
-                                        // warnings of a program that ran, by line
+                                        // warnings and notes of a program that ran, by line
   bool ok() const;
 };
 

@@ -264,7 +264,8 @@ std::optional<std::pair<double, double>> rangeOf(const toml::node& node, const s
 
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   rejectUnknownKeys(table, "machine.",
-                    {"start", "rapid", "max_rpm", "reference", "travel_x", "travel_z", "dialect", "initial_feed_mode"},
+                    {"start", "rapid", "max_rpm", "reference", "travel_x", "travel_z", "dialect", "initial_feed_mode",
+                     "zero"},
                     report);
   if (const auto* node = table.get("travel_x")) setup.travelXDiameterMm = rangeOf(*node, "machine.travel_x", report);
   if (const auto* node = table.get("travel_z")) setup.travelZMm = rangeOf(*node, "machine.travel_z", report);
@@ -289,6 +290,8 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   setup.referencePosition = setup.startPosition;
   if (const auto* node = table.get("reference"))
     if (auto p = positionOf(*node, "machine.reference", report)) setup.referencePosition = *p;
+  if (const auto* node = table.get("zero"))
+    if (auto p = positionOf(*node, "machine.zero", report)) setup.machineZero = *p;
   if (const auto* node = table.get("rapid")) readRapid(*node, setup.machine, report);
   if (const auto* node = table.get("max_rpm"))
     if (auto v = positiveRate(*node, "machine.max_rpm", "rpm", report)) setup.machine.maxRpm = *v;
@@ -444,7 +447,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "control", "sim", "tool", "chuck", "offset"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "control", "sim", "tool", "chuck", "offset", "work_offset"}, report);
   // [control] before [machine]: its preset is what machine.initial_feed_mode modifies.
   if (const auto* node = root.get("control")) {
     if (const auto* table = tableAt(*node, "control", report)) {
@@ -453,13 +456,18 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
       });
     }
   }
-  if (const auto* node = root.get("stock"))
+  if (const auto* node = root.get("stock")) {
+    setup.stockGiven = true;
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
+  }
   if (const auto* node = root.get("machine"))
     if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);
   if (const auto* node = root.get("sim"))
     if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
-  if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);
+  if (const auto* node = root.get("tool")) {
+    setup.toolsGiven = true;
+    readTools(*node, setup.tools, report);
+  }
   if (const auto* node = root.get("chuck"))
     if (const auto* table = tableAt(*node, "chuck", report)) readChuck(*table, setup.chuck, report);
   if (setup.chuck.jawDiameterMm && *setup.chuck.jawDiameterMm <= setup.stock.diameterMm)
@@ -467,6 +475,12 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
               "chuck.jaw_diameter must exceed the stock's diameter (" + floatText(setup.stock.diameterMm) + " mm)");
   if (const auto* node = root.get("offset")) {
     readOffsets(*node, setup.offsets, [&report](const toml::source_region& where, std::string message) {
+      report.at(where, std::move(message));
+    });
+  }
+
+  if (const auto* node = root.get("work_offset")) {
+    readWorkOffsets(*node, setup.workOffsets, [&report](const toml::source_region& where, std::string message) {
       report.at(where, std::move(message));
     });
   }

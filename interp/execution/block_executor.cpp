@@ -19,8 +19,10 @@
 #include "interp/cycles/g90_cycle.hpp"
 #include "interp/cycles/g94_cycle.hpp"
 #include "interp/motion/spindle_speed.hpp"
+#include "interp/execution/data_setting.hpp"
 #include "interp/execution/subprogram_call.hpp"
 #include "interp/control/tool_word.hpp"
+#include "interp/execution/work_coordinates.hpp"
 #include "interp/text/label_number.hpp"
 #include "interp/text/word_units.hpp"
 
@@ -83,6 +85,13 @@ class Executor {
   Status applyCoordinateSetting(const Code& code);
   Status applyReferenceReturn(const Code& code);
   void selectMotion(const Code& code);
+  Status applyMachineCoordinateMove(const Code& code);
+  void applyWorkSystem(const std::optional<Code>& oneShot);
+  void noteDrillingCycleCancel();
+  void warnIfCycleRepeatsAfterG80(const std::optional<Code>& code, std::string_view name);
+  const ToolOffsets& offsetTable() const {
+    return state_.offsetTable ? *state_.offsetTable : options_.offsets;
+  }
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applyArc(const std::optional<Code>& code);
@@ -94,6 +103,7 @@ class Executor {
   Status applyCompoundCycle(const Code& code);
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
+  std::optional<std::string> missingMachineryOf(const Word& word) const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
   void warnIfSurfaceSpeedUnclamped();
   void warnIfFeedImplausible();
@@ -133,6 +143,8 @@ Result<BlockOutcome> Executor::run() {
   // A one-shot code takes the block's axis words; a motion code beside it (G28 G00 U0 W0) only
   // becomes the modal motion, as on the controls.
   const auto oneShot = block_.gCode(GGroup::NonModal);
+  applyWorkSystem(oneShot);
+  noteDrillingCycleCancel();
   if (const auto motion = block_.gCode(GGroup::Motion); oneShot && motion) selectMotion(*motion);
   const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
   if (oneShot && !compound) {
@@ -258,8 +270,25 @@ Status Executor::applyTool() {
   const auto [tool, offset, note] = read.value();
   if (note) warnings_.push_back({block_.line, t->column, *note});
   state_.toolOffset = offset;
+  state_.offset = offsetNumbered(offsetTable(), offset);
   if (tool == 0) return success();  // no tool change
   const auto& tools = options_.toolNumbers;
+  if (std::find(tools.begin(), tools.end(), tool) == tools.end() && options_.toolDefinitionHint && place_) {
+    std::vector<std::string> seen;  // the program's T words, each once, where first written
+    std::string used;
+    for (const ProgramBlock& b : place_->program.blocks) {
+      if (b.skipped || !b.parsed.ok() || !b.parsed.value().has('T')) continue;
+      const std::string text = b.parsed.value().words.at('T').text();
+      if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
+      seen.push_back(text);
+      used += fmt::format("{}{} (line {})", used.empty() ? "" : ", ", text, b.line);
+    }
+    return errorAt(t->column,
+                   fmt::format("tool {} ({}) is defined neither in the setup nor by a comment on its "
+                               "block naming an insert (CNMG 120408) or a kind (GROOVE 3MM, DRILL 12, "
+                               "THREAD 60 DEG); the program's tools: {}; add it to the setup:\n{}",
+                               tool, t->text(), used, options_.toolDefinitionHint(tool)));
+  }
   if (std::find(tools.begin(), tools.end(), tool) == tools.end()) {
     std::string defined;
     for (int number : tools) defined += (defined.empty() ? "" : ", ") + std::to_string(number);
@@ -278,6 +307,8 @@ Status Executor::applyOneShot(const Code& code) {
   state_.cycle = {};
   if (code.number == 50) return applyCoordinateSetting(code);
   if (code.number == 28) return applyReferenceReturn(code);
+  if (code.number == 53) return applyMachineCoordinateMove(code);
+  if (code.number == 10) return applyDataSetting(block_, code, state_, options_);
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
 }
 
@@ -317,7 +348,7 @@ Status Executor::applyCoordinateSetting(const Code&) {
   if (a.u) declared.x() += length(*a.u) / 2.0;
   if (a.z) declared.y() = length(*a.z);
   if (a.w) declared.y() += length(*a.w);
-  state_.workShift += state_.position - declared;
+  state_.frame.coordinateSetting += state_.position - declared;
   state_.position = declared;
   if (s) state_.spindleLimitRpm = s->value;
   return success();
@@ -337,8 +368,8 @@ Status Executor::applyReferenceReturn(const Code& code) {
   if (a.u) radiusMm = p.x() + length(*a.u) / 2.0;
   if (a.z) zMm = length(*a.z);
   if (a.w) zMm = p.y() + length(*a.w);
-  // The reference point is the machine's: in the program's frame it moves with G50.
-  const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.workShift;
+  // The reference point is the machine's: in the program's frame it moves with G54–G59 and G50.
+  const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.frame.shift();
   const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
   // Under G41/G42 the compensation is suspended at the intermediate point (lathe-cycles.md §10):
   // the legs are no part of the chain, which ends with the move before them and resumes with a
@@ -346,7 +377,10 @@ Status Executor::applyReferenceReturn(const Code& code) {
   emitLegs(legs);
   if (!legs.empty()) state_.position = legs.back().to;
   // GSK No.182#2: arrived at the reference, the control forgets the tool offset until a T word.
-  if (options_.control.offsetAfterReturn == OffsetAfterReturn::Cancelled) state_.toolOffset = 0;
+  if (options_.control.offsetAfterReturn == OffsetAfterReturn::Cancelled) {
+    state_.toolOffset = 0;
+    state_.offset = offsetNumbered(offsetTable(), 0);
+  }
   return success();
 }
 
@@ -360,8 +394,56 @@ void Executor::selectMotion(const Code& code) {
   // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
   // G94 are two such codes, so switching between them clears them too. Only a cycle
   // retains values, so naming the current mode again keeps them.
-  if (mode != state_.motion) state_.cycle = {};
+  if (mode != state_.motion) {
+    state_.cycle = {};
+    state_.drillCancelWithCycle.reset();
+  }
   state_.motion = mode;
+}
+
+Status Executor::applyMachineCoordinateMove(const Code& code) {
+  auto target = machineCoordinateTarget(block_, code, state_, options_);
+  if (!target.ok()) return target.error();
+  state_.noseSide = NoseSide::None;  // G53 cancels G41/G42 (GSK980TDi 3.20): its move is the cancel
+  emit(MoveKind::Rapid, state_.position, target.value(), 0);
+  state_.position = target.value();
+  return success();
+}
+
+// G54–G59 before the block's motion, so the block's own move is in the new system. In a G50
+// block the selection is ignored and G50 acts (GSK980TDi 3.21 note 6).
+void Executor::applyWorkSystem(const std::optional<Code>& oneShot) {
+  const auto code = block_.gCode(GGroup::WorkCoordinates);
+  if (!code) return;
+  if (oneShot && oneShot->number == 50) {
+    warnings_.push_back({block_.line, code->column,
+                         fmt::format("{} in a G50 block is ignored: G50 sets the coordinates "
+                                     "(GSK980TDi 3.21); select the work system in a block of its own",
+                                     code->text)});
+    return;
+  }
+  selectWorkSystem(*code, state_);
+}
+
+// G80 cancels the drilling cycles (group 10 on Fanuc T and GSK: G83–G89); it does not end
+// G90/G92/G94, which only another group-01 code ends. Remember it, so that a block that then
+// repeats such a cycle says so.
+void Executor::noteDrillingCycleCancel() {
+  const auto code = block_.gCode(GGroup::DrillingCycle);
+  if (!code) return;
+  if (state_.motion == MotionMode::AxialCycle || state_.motion == MotionMode::FaceCycle)
+    state_.drillCancelWithCycle = std::pair{block_.line, code->column};
+}
+
+void Executor::warnIfCycleRepeatsAfterG80(const std::optional<Code>& code, std::string_view name) {
+  const auto g80 = state_.drillCancelWithCycle;
+  state_.drillCancelWithCycle.reset();
+  if (code || !g80) return;
+  warnings_.push_back({block_.line, block_.column,
+                       fmt::format("this block repeats {}: the G80 on line {} cancels drilling "
+                                   "cycles only, and {} stays modal until a G00, G01, G02 or G03 "
+                                   "(Fanuc and GSK group 01)",
+                                   name, g80->first, name)});
 }
 
 Status Executor::applyMotion() {
@@ -493,6 +575,7 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   }
   const int anchor = code ? code->column : block_.column;
   const std::string name = writtenGCode(cycle.code, GGroup::Motion, options_.dialect);
+  warnIfCycleRepeatsAfterG80(code, name);
   if (state_.plane != Plane::ZX) {
     return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
                                        "needs the ZX plane; select it with G18",
@@ -536,9 +619,9 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
     return errorAt(column, *problem);
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
-  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.workShift, name});
+  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), name});
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
-  const NoseComp comp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
+  const NoseComp comp = noseCompWith(state_.noseSide, state_.offset);
   emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
   return success();  // the cycle ends at A: the position is unchanged
 }
@@ -552,12 +635,35 @@ Status Executor::applyCompoundCycle(const Code& code) {
   const CompoundOutcome& done = outcome.value();
   // The parameter block of a two-block cycle (G71 U R; …) moves nothing and starts nothing.
   if (!done.legs.empty() || !done.contourMoves.empty())
-    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.workShift, code.text});
+    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
   warnings_.insert(warnings_.end(), done.warnings.begin(), done.warnings.end());
   emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
   return success();
+}
+
+// A word no code took that names machinery this two-axis, one-spindle lathe does not have.
+std::optional<std::string> Executor::missingMachineryOf(const Word& word) const {
+  if (word.letter == 'C') {
+    return fmt::format("{}: this lathe has no C axis (the spindle cannot be positioned or "
+                       "milled around); live tooling and C-axis work cannot be simulated",
+                       word.text());
+  }
+  if (word.letter == 'B') {
+    return fmt::format("{}: this lathe has no B axis (a sub-spindle's or a tilting tool "
+                       "spindle's travel)",
+                       word.text());
+  }
+  // Fanuc's multi-spindle control selects the spindle with P11, P12, P21, P22 beside S or M03.
+  const bool spindleBlock = block_.mCode(MGroup::Spindle) || block_.has('S');
+  const bool spindleSelect = word.number == "11" || word.number == "12" || word.number == "21" || word.number == "22";
+  if (word.letter == 'P' && spindleSelect && spindleBlock) {
+    return fmt::format("{} selects a spindle (multi-spindle control: P11 the main, P12 or P2x a "
+                       "sub-spindle); this lathe has one spindle",
+                       word.text());
+  }
+  return std::nullopt;
 }
 
 Status Executor::checkAllWordsUsed() const {
@@ -567,6 +673,7 @@ Status Executor::checkAllWordsUsed() const {
   for (const auto& [letter, word] : block_.words) {
     if (first == nullptr || word.column < first->column) first = &word;
   }
+  if (const auto lacking = missingMachineryOf(*first)) return errorAt(first->column, *lacking);
   return errorAt(first->column, fmt::format("{} is not used by any code in this block; remove "
                                             "it or add the code that takes {}",
                                             first->text(), first->letter));
@@ -586,13 +693,14 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   move.feedMode = state_.feedMode;
   move.tool = state_.tool;
   move.toolOffset = state_.toolOffset;
-  move.noseComp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
+  move.offsetShift = offsetShift(state_.offset);
+  move.workShift = state_.frame.shift();
+  move.noseComp = noseCompWith(state_.noseSide, state_.offset);
   move.spindleOn = state_.spindleOn;
   move.spindleMode = state_.spindleMode;
   const bool surfaceSpeed = state_.spindleMode == SpindleMode::SurfaceSpeed;
   move.spindleS = surfaceSpeed ? state_.surfaceSpeedMPerMin : state_.spindleSpeed;
   if (surfaceSpeed) move.spindleLimitRpm = state_.spindleLimitRpm;
-  move.workShift = state_.workShift;
   move.block = ordinal_;
   move.line = block_.line;
   move.column = block_.column;

@@ -5,6 +5,25 @@
 //                        ( ... ) comments and '%' lines, and notes a leading '/';
 //   tokenize()           turns a block's remaining characters into words like X20.0.
 // The lexer knows nothing of modal state.
+//
+// Text as shops and DNC links send it:
+//   - Before the program's first block or '%' line, tape and DNC leftovers are skipped: control
+//     characters (ESC, DC2, XON … any C0 code but tab and line ends, and DEL) and header lines
+//     that start with '&' (`&HE:…`). Inside the program a control character is an error.
+//   - `;` ends a block, as in the seeds (`G00 X42 Z0.5; G94 X25.5 Z-5 F100; Z-10;`). The rest
+//     of its line is a comment instead when it reads as prose (`T0505 ;parting tool 3mm`):
+//     when its first character cannot begin a block (anything but an ASCII letter and
+//     # / : % [ ( ), or when its first letter is followed — spaces aside — by another letter,
+//     as in words of prose but never in G-code (`X AXIS`, `turn od`). Macro statements are not
+//     prose: IF or WHILE followed by '[', GOTO, END or DO followed by a number, '#' or '['.
+//     A word followed by prose (`; M08 coolant on`) is not a comment: it is an error at the
+//     first letter that is not a word.
+//   - A line that opens with '[' is a school trainer's directive (`[BILLET X56.4 Z84`), not a
+//     block: skipped with a note (job/ reads the billet as the bar); a Macro B block never
+//     opens with '['.
+//   - A '%' line before the first block opens the program; one after it closes it: the text
+//     ends there (what follows is not run, and the interpreter says so).
+//   - A '/' inside a block marks where the optional block skip drops the rest of it (Fanuc ⚠).
 
 #include <optional>
 #include <utility>
@@ -28,9 +47,17 @@ struct RawBlock {
   int column = 0;        // 1-based column of its first significant character
   bool deleted = false;  // it started with '/' (block delete)
   std::vector<SourceChar> chars;  // everything after the '/', spaces and comments removed
-  // A '/' inside the block (Fanuc's optional block skip mid-block ⚠): the index into chars where
-  // the words it skips start; with block skip on, they are dropped.
-  std::optional<std::size_t> skipFrom;
+  std::vector<std::string> comments;       // its ( … ) comments and a prose tail after its ';'
+  std::vector<std::string> commentsAbove;  // comment-only lines directly above it
+  std::optional<std::size_t> skipFrom;     // a '/' inside the block: the index into chars where
+                                           // the words it skips start
+};
+
+/// Something the reader skipped that the user should know of, located like an error.
+struct ReadNote {
+  int line = 0;
+  int column = 0;
+  std::string message;
 };
 
 /// A letter and its number: "X20 .0" is the word X20.0. Fanuc's comma words (",A-45.", ",C1.")
@@ -46,8 +73,7 @@ struct Word {
   }
 };
 
-/// Splits program text into blocks, one at a time, so nothing after M30 is ever read. A '%'
-/// line before the first block opens the program; one after it closes it: the text ends there.
+/// Splits program text into blocks, one at a time, so nothing after M30 is ever read.
 class BlockReader {
  public:
   explicit BlockReader(std::string_view text) : text_(text) {}
@@ -56,6 +82,9 @@ class BlockReader {
   /// Fails on a comment that is not closed on its line.
   Result<std::optional<RawBlock>> next();
 
+  /// What was skipped so far: the tape leader and the prose comments after ';'.
+  std::vector<ReadNote> notes() const;
+
   /// Where the closing '%' is (line, column), and where the first text after it starts, if
   /// there is any (known once next() returned the end).
   std::optional<std::pair<int, int>> closingPercent() const { return closingPercent_; }
@@ -63,6 +92,12 @@ class BlockReader {
 
  private:
   bool skipPercentLine();  // at a line start: skips a '%' line, returns whether it did
+  bool skipLeaderLine();   // before the program: skips an '&' header line
+  bool skipDirectiveLine();  // a '[' line
+  void noteLeaderControl(char c, int column);
+  void advance(std::size_t bytes);  // within the line
+  void endLine();                   // past the newline at at_
+  void takeProseTail(RawBlock& block);
   void closeAt(std::size_t percent);  // the '%' at `percent` ends the program
 
   std::string_view text_;
@@ -70,9 +105,15 @@ class BlockReader {
   int line_ = 1;
   int column_ = 1;
   bool atLineStart_ = true;
+  bool inProgram_ = false;  // a block or '%' line has been read: the leader is over
   bool readBlock_ = false;  // a block was returned: the next '%' closes the program
   std::optional<std::pair<int, int>> closingPercent_;
   std::optional<std::pair<int, int>> textAfterClosing_;
+  std::vector<std::string> pendingAbove_;  // comment-only lines since the last block
+  std::vector<std::string> leaderSkipped_;  // what the leader held, e.g. "ESC", "the line '&HE:1'"
+  std::optional<ReadNote> leaderAt_;
+  std::vector<ReadNote> prose_;  // each ';' tail read as a comment
+  std::vector<ReadNote> directives_;  // each '[' line skipped
 };
 
 /// The words of a block. Fails on an unexpected character, an unknown letter, a letter

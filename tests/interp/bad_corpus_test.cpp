@@ -62,6 +62,7 @@ TEST(BadCorpus, EachProgramGivesItsExpectedDiagnostic) {
       ASSERT_TRUE(preset) << control[1];
       options.control = preset->parameters;
     }
+    options.programDirectories = {path.parent_path()};  // subprograms kept beside the program
     const auto result = interpret(text, name, options);
     test::expectError(result, line, column, part);
     if (result.diagnostics.empty()) continue;
