@@ -10,6 +10,7 @@
 #include "interp/execution/call_stack.hpp"
 #include "interp/execution/modal_state.hpp"
 #include "interp/compensation/nose_compensation.hpp"
+#include "interp/motion/corners.hpp"
 #include "interp/motion/rapid_path.hpp"
 #include "interp/motion/travel_limits.hpp"
 #include "interp/text/control_family.hpp"
@@ -163,6 +164,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   // the setup's frame, then G41/G42 and the tool offsets' shifts are applied, each rapid is
   // given the path the machine makes, and the whole checked against the machine's travel.
   std::vector<Move>& moves = result.toolpath.moves;
+  if (status.ok()) status = insertCorners(moves, warnings);
   if (status.ok()) placeInSetupFrame(moves);
   if (status.ok()) status = compensateNoseRadius(moves);
   if (status.ok()) status = applyToolOffsets(moves);

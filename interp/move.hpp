@@ -27,6 +27,16 @@ struct NoseComp {
   bool operator==(const NoseComp&) const = default;
 };
 
+/// A chamfer or corner radius a move asks for at its end, before the next move (GSK L / D,
+/// Fanuc ,C / ,R; interp/motion/corners.hpp inserts it).
+struct CornerRequest {
+  bool round = false;          // a corner radius; else a chamfer
+  double sizeMm = 0;           // the radius, or the chamfer's size
+  bool chamferLength = false;  // the chamfer's own length (GSK L, No.181#0 = 0), else from the corner
+  std::string word;            // as written, for messages
+  int column = 0;
+};
+
 struct Move {
   MoveKind kind = MoveKind::Rapid;
   RZ from{0, 0};  // (radius mm, Z mm) — halved from the programmed diameter
@@ -46,6 +56,7 @@ struct Move {
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
   std::optional<double> spindleLimitRpm;  // G50 S, in force under G96
+  std::optional<CornerRequest> cornerAfter;  // a chamfer or corner radius to the next move
   double timeS = 0;   // how long the move takes on the machine (see interp/motion/cycle_time.hpp)
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block

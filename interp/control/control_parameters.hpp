@@ -41,6 +41,14 @@ enum class AbsoluteWithIncremental { AbsoluteWins, Alarm };
 /// The word that gives a direct drawing dimension's angle: Q (GSK), A or ,A (Fanuc, by CCR).
 enum class DrawingAngleWord { Q, A, CommaA };
 
+/// The words that ask for a chamfer or a corner radius between two moves: L and D (GSK §3.11),
+/// or ,C and ,R (Fanuc).
+enum class CornerWords { LD, CommaCR };
+
+/// What the GSK's chamfer L measures (No.181#0): the chamfer's own length, or the distance
+/// from the corner along each line (Fanuc's ,C always measures that).
+enum class ChamferSize { Length, FromCorner };
+
 /// The defaults are the gsk980tdi preset's values (control_preset.cpp; a test keeps them equal).
 struct ControlParameters {
   RapidPath rapidPath{};
@@ -58,6 +66,8 @@ struct ControlParameters {
   OffsetAfterReturn offsetAfterReturn{};
   AbsoluteWithIncremental absoluteWithIncremental{};
   DrawingAngleWord drawingAngleWord{};
+  CornerWords cornerWords{};
+  ChamferSize chamferSize{};
   std::vector<std::string> toolWordForms{"2+2"};  // the T word's forms (tool_word.hpp)
   // The compound cycles' first-block values before a program gives them:
   double roughingDepthMm = 1.0;     // G71/G72 Δd

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "interp/motion/corners.hpp"
+
 #include "interp/text/label_number.hpp"
 
 namespace lathesim::interp {
@@ -164,6 +166,8 @@ Result<ExtractedContour> extractContour(const Program& program, ContourSpan span
                                         const InterpreterOptions& options) {
   auto run = runContourBlocks(program, span, state, options);
   if (!run.ok()) return run.error();
+  std::vector<Error> cornerWarnings;  // G70 gives them, when it runs the same blocks
+  if (auto corners = insertCorners(run.value().moves, cornerWarnings); !corners.ok()) return corners.error();
   const ProgramBlock& first = program.blocks[span.start];
   const ParsedBlock& firstParsed = first.parsed.value();
   ExtractedContour extracted;

@@ -97,6 +97,7 @@ class Executor {
   Status applyArc(const std::optional<Code>& code);
   RZ endPoint(const AxisWords& axes);
   std::optional<Word> takeAngleWord();
+  Result<std::optional<CornerRequest>> takeCornerWord();
   double angleDegrees(const Word& angle) const;
   std::optional<ArcWord> arcWord(char letter);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
@@ -487,15 +488,38 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
     to = end.value();
   }
   const bool feed = state_.motion == MotionMode::Linear;
+  auto corner = feed ? takeCornerWord() : Result<std::optional<CornerRequest>>(std::nullopt);
+  if (!corner.ok()) return corner.error();
   if (feed && !state_.feed) {
     return errorAt(code ? code->column : block_.column,
                    "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G01 move");
   }
   if (auto problem = feed ? zeroFeedProblem(state_.feed, "G01") : std::nullopt)
     return errorAt(code ? code->column : block_.column, *problem);
+  const std::size_t before = moves_.size();
   emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
+  if (corner.value() && moves_.size() > before) moves_.back().cornerAfter = corner.value();
   state_.position = to;
   return success();
+}
+
+// L / D (GSK §3.11) or ,C / ,R (Fanuc): a chamfer or a corner radius after this block's move.
+Result<std::optional<CornerRequest>> Executor::takeCornerWord() {
+  const bool gsk = options_.control.cornerWords == CornerWords::LD;
+  const auto chamfer = block_.take(gsk ? 'L' : 'c');
+  const auto round = block_.take(gsk ? 'D' : 'r');
+  if (chamfer && round) {
+    return errorAt(round->column, fmt::format("{} and {} both ask for a corner; give one of them", chamfer->text(),
+                                              round->text()));
+  }
+  const std::optional<Word>& word = chamfer ? chamfer : round;
+  if (!word) return std::optional<CornerRequest>();
+  if (word->value <= 0) {
+    return errorAt(word->column, fmt::format("{} is not a {}: expected a size > 0", word->text(),
+                                             chamfer ? "chamfer" : "corner radius"));
+  }
+  const bool chamferLength = chamfer && gsk && options_.control.chamferSize == ChamferSize::Length;
+  return std::optional(CornerRequest{!chamfer, length(*word), chamferLength, word->text(), word->column});
 }
 
 std::optional<Word> Executor::takeAngleWord() {
@@ -544,6 +568,13 @@ Status Executor::applyArc(const std::optional<Code>& code) {
   ArcRequest arc{name, clockwise, state_.position, endPoint(axes.value()),
                  arcWord('R'), arcWord('I'), arcWord('K'), block_.line, anchor};
   if (!axes.value().any() && !arc.r && !arc.i && !arc.k) return success();
+  auto corner = takeCornerWord();
+  if (!corner.ok()) return corner.error();
+  if (corner.value()) {
+    return errorAt(corner.value()->column, fmt::format("{} after an arc: chamfers and corners next to arcs are not "
+                                                       "simulated yet; give the corner as its own G01 or G02/G03",
+                                                       corner.value()->word));
+  }
   if (state_.plane != Plane::ZX) {
     return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so an arc "
                                        "needs the ZX plane; select it with G18",

@@ -59,8 +59,8 @@ bool readsAsProse(std::string_view tail) {
 // The address letters of lathe G-code (system A). Others are unknown letters.
 // B and C are read as words so that a code taking them (G10's C) can; left over, they are
 // refused as the axes this lathe lacks (block_executor.cpp). A is a direct drawing
-// dimension's angle.
-constexpr std::string_view kKnownLetters = "ABCFGIJKLMNOPQRSTUWXZ";
+// dimension's angle, D the GSK's corner radius.
+constexpr std::string_view kKnownLetters = "ABCDFGIJKLMNOPQRSTUWXZ";
 // The letters Fanuc writes after a comma (",A" angle, ",C" chamfer, ",R" corner radius).
 constexpr std::string_view kCommaLetters = "ACR";
 
