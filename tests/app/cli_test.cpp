@@ -350,6 +350,20 @@ TEST(Cli, ControlAndBlockSkipOnTheCommandLineOverrideTheSetup) {
   EXPECT_NE(outcome.err.find("fanuc-10t"), std::string::npos) << outcome.err;
 }
 
+// parts/g50-shift-twice stops at M01 on line 7: report.json lists it (not timed).
+TEST(Cli, ReportListsTheProgramStops) {
+  TempDir dir("stops");
+  const fs::path part = kPartsDir / "g50-shift-twice";
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(),
+                                    "--out", out.string(), "--voxel", "0.5"},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
+  EXPECT_EQ(r.at("stops"), nlohmann::json::parse(R"([{"line": 7, "column": 1, "code": "M01"}])"));
+  EXPECT_NEAR(r.at("cycle_time_s").get<double>(), 13.205, 1e-9);  // the stop adds nothing
+}
+
 TEST(Cli, UnknownSetupKeyIsNamedAndWritesNothing) {
   TempDir dir("setup");
   const fs::path setup = dir.path() / "setup.toml";
