@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "interp/control/tool_word.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/text/stated_stock.hpp"
 #include "interp/text/program.hpp"
@@ -45,7 +46,9 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
   for (const interp::ProgramBlock& block : program.blocks) {
     if (block.skipped || !block.parsed.ok() || !block.parsed.value().has('T')) continue;
     const interp::Word t = block.parsed.value().words.at('T');
-    const int number = static_cast<int>(t.value) / 100;
+    const auto read = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line);
+    if (!read.ok() || read.value().tool == 0) continue;  // the interpreter reports a bad T word
+    const int number = read.value().tool;
     const bool defined = std::any_of(setup.tools.begin(), setup.tools.end(), [&](const ToolDefinition& tool) {
       return tool.number == number && (setup.toolsGiven || number != 1);
     });

@@ -77,11 +77,11 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
     if (!block.skipped) {
       auto words = tokenize(raw);
       if (words.ok()) {
-        const Status labels = readLabel(words.value(), 'N', raw.line, block.sequenceNumber);
-        const Status program = readLabel(words.value(), 'O', raw.line, block.programNumber);
-        block.parsed = !labels.ok()    ? Result<ParsedBlock>(labels.error())
-                       : !program.ok() ? Result<ParsedBlock>(program.error())
-                                       : parseBlock(words.value(), raw.line, raw.column, dialect);
+        const Status sequence = readLabel(words.value(), 'N', raw.line, block.sequenceNumber);
+        const Status number = readLabel(words.value(), 'O', raw.line, block.programNumber);
+        block.parsed = !sequence.ok() ? Result<ParsedBlock>(sequence.error())
+                       : !number.ok() ? Result<ParsedBlock>(number.error())
+                                      : parseBlock(words.value(), raw.line, raw.column, dialect);
       } else {
         block.parsed = words.error();
       }

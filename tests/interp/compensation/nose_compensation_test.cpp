@@ -492,7 +492,7 @@ TEST(NoseCompensation, G28EndsTheChainAtItsIntermediatePoint) {
 // it (⚠). Offset 5 shifts the tip by x 0.4 (diameter): +0.2 of radius. The G28 legs run under
 // the offset; the move after them is unshifted on the GSK, shifted on the Fanuc.
 TEST(ToolOffsets, G28CancelsTheOffsetWhereThePresetSays) {
-  for (const auto [after, shiftMm] : {std::pair{OffsetAfterReturn::Cancelled, 0.0}, {OffsetAfterReturn::Kept, 0.2}}) {
+  for (const auto& [after, shiftMm] : {std::pair{OffsetAfterReturn::Cancelled, 0.0}, {OffsetAfterReturn::Kept, 0.2}}) {
     InterpreterOptions options = compOptions();
     options.offsets[5] = ToolOffset{0.4, 0, 0, 0, 0, 0};
     options.control.offsetAfterReturn = after;
