@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 
+#include "app/batch_cli.hpp"
 #include "app/commands.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
@@ -70,6 +71,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"on", "off"}));
   }
 
+  lathesim::app::BatchCli batch(cli);
+
   CLI11_PARSE(cli, argc, argv);
   const auto overridesOf = [](const OverrideArguments& args) {
     lathesim::job::SetupOverrides overrides;
@@ -82,6 +85,7 @@ int main(int argc, char** argv) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
   };
   try {
+    if (batch.chosen()) return batch.run();
     if (*runCmd) {
       run.setup = optionalPath(runSetup);
       run.overrides = overridesOf(runArgs);

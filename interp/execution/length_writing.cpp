@@ -5,6 +5,8 @@
 namespace lathesim::interp {
 
 void LengthWriting::note(const Word& word, int line, int block) {
+  // Zero reads the same under both: X0 is no evidence either way.
+  if (word.value == 0) return;
   if (block != block_) {
     block_ = block;
     blockBare_.reset();

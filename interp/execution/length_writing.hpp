@@ -15,7 +15,8 @@ namespace lathesim::interp {
 
 class LengthWriting {
  public:
-  /// Notes a length word of the block with ordinal `block` at `line`.
+  /// Notes a length word of the block with ordinal `block` at `line` (zero, the same either way,
+  /// is not noted).
   void note(const Word& word, int line, int block);
 
   /// One warning for a program that mixes the two forms, at a length written without a point

@@ -79,6 +79,8 @@ TEST(DecimalPoint, AProgramThatMixesAcrossBlocksIsWarnedOnceAtTheFirstBareLength
   // All with a point, or all without: nothing to warn.
   EXPECT_TRUE(warningsOf(interpret("G99 G00 X20. Z2.\nG01 Z-10. F.2\n", "t.nc", under("gsk980tdi"))).empty());
   EXPECT_TRUE(warningsOf(interpret("G99 G00 X20 Z2\nG01 Z-10 F.2\n", "t.nc", under("gsk980tdi"))).empty());
+  // X0 reads the same either way: no evidence of a mix.
+  EXPECT_TRUE(warningsOf(interpret("G99 G00 X0 Z2.\nG01 Z-10. F.2\n", "t.nc", under("gsk980tdi"))).empty());
 }
 
 TEST(DecimalPoint, CycleLengthsCountIncrementsTooInAnInchShopProgram) {
