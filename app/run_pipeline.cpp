@@ -51,11 +51,14 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   }
   figures.program = options.program.string();
   figures.setup = setup.sourceName;
+  figures.control = setup.control;
+  figures.travel = job::travelOf(setup);
   figures.voxelMm = voxel;
   figures.moves = run.job.toolpath.moves.size();
   figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
   figures.warnings = run.job.warnings;
   figures.notes = run.job.notes;
+  figures.stops = run.job.toolpath.stops;
 
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
