@@ -1,7 +1,6 @@
 #include "measure/volume_checks.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <fmt/format.h>
 
@@ -10,14 +9,14 @@
 namespace lathesim::measure {
 
 std::optional<std::string> barVolumeProblem(const sim::StockSpec& bar, double levelSetMm3, double voxelMm) {
-  const double r = bar.diameterMm / 2.0;
-  const double exact = std::numbers::pi * r * r * bar.lengthMm;
-  const double tolerance = sim::volumeToleranceMm3(2.0 * std::numbers::pi * r * (r + bar.lengthMm), voxelMm);
+  const double exact = sim::exactVolumeMm3(bar);
+  const double tolerance = sim::volumeToleranceMm3(sim::surfaceAreaMm2(bar), voxelMm);
   if (std::abs(levelSetMm3 - exact) <= tolerance) return std::nullopt;
+  const std::string bore = bar.boreMm > 0.0 ? fmt::format(" (bore Φ{:g})", bar.boreMm) : "";
   return fmt::format(
-      "the bar's level set holds {:.1f} mm³ where the Φ{:g}×{:g} bar is {:.1f} mm³, {:+.1f} mm³ off, beyond the "
+      "the bar's level set holds {:.1f} mm³ where the Φ{:g}×{:g}{} bar is {:.1f} mm³, {:+.1f} mm³ off, beyond the "
       "{:.1f} mm³ tolerance: the volumes in this report are not to be trusted",
-      levelSetMm3, bar.diameterMm, bar.lengthMm, exact, levelSetMm3 - exact, tolerance);
+      levelSetMm3, bar.diameterMm, bar.lengthMm, bore, exact, levelSetMm3 - exact, tolerance);
 }
 
 std::optional<std::string> meshVolumeProblem(double levelSetMm3, const TriangleMesh& mesh, double voxelMm) {

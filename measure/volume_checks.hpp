@@ -10,8 +10,8 @@
 
 namespace lathesim::measure {
 
-/// Why the untouched bar's level-set volume is not the cylinder's exact πr²L within the
-/// tolerance over the bar's surface, or nullopt.
+/// Why the untouched bar's level-set volume is not its exact π(R² − r²)L (r the bore's
+/// radius, 0 for a solid bar) within the tolerance over the bar's surface, or nullopt.
 std::optional<std::string> barVolumeProblem(const sim::StockSpec& bar, double levelSetMm3, double voxelMm);
 
 /// Why the part's level-set volume and the volume enclosed by its mesh (all of it, crumbs
