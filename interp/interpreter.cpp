@@ -104,6 +104,12 @@ Status runProgram(Program& program, const InterpreterOptions& options, Toolpath&
       next = *flow.continueAfter + 1;
     }
     state = std::move(done.state);
+    if (const auto catcher = block.parsed.value().mCode(MGroup::PartsCatcher)) {
+      const bool own = block.source == 0 || !calls.outermostCall();
+      const ProgramBlock& at = own ? block : program.blocks[*calls.outermostCall()];
+      toolpath.partsCatcher.push_back(
+          {toolpath.moves.size(), at.line, own ? catcher->column : at.column, catcher->text, catcher->number != 37});
+    }
     toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
     toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
     if (const auto stop = block.parsed.value().mCode(MGroup::Stop)) {
