@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "sim/move_sweep.hpp"
+#include "sim/part_off.hpp"
 #include "sim/simulation_warnings.hpp"
 
 namespace lathesim::sim {
@@ -37,6 +38,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
   auto cycleStart = toolpath.cycleStarts.begin();
   int spindleWarnedBlock = -1;  // one spindle warning per block
   RZ frame(0, 0);               // the G50 frame of the moves so far
+  PartOffWatch partOffs;
   bool checkShift = false;      // after G50 moved it: until the first cut, or a warning
 
   for (std::size_t first = 0; first < moves.size();) {
@@ -67,8 +69,10 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
       pieces.insert(pieces.end(), swept.begin(), swept.end());
       block.timeS += moves[m].timeS;
     }
-    const double removed = pieces.empty() ? 0.0 : stock.remove(RevolvedRegion(pieces));
+    const RevolvedRegion region(pieces);
+    const double removed = pieces.empty() ? 0.0 : stock.remove(region);
     block.removedMm3 += removed;
+    partOffs.afterCut(toolpath, first, end, region, removed, stock, result);
     if (auto warning = cutWithSpindleStopped(head, removed, stock.voxelMm()); warning && spindleWarnedBlock != head.block) {
       result.warnings.push_back(*warning);
       spindleWarnedBlock = head.block;

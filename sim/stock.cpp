@@ -194,9 +194,17 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   return mesh;
 }
 
-void Stock::writeVdb(const std::filesystem::path& file) const {
+Stock::Stock(std::unique_ptr<StockGrid> grid) : impl_(std::move(grid)) {}
+
+void Stock::writeVdb(const std::filesystem::path& file, const Stock* part) const {
+  openvdb::GridPtrVec grids{impl_->grid};
+  if (part) {
+    openvdb::GridBase::Ptr piece = part->impl_->grid->copyGrid();  // shares the tree; only the name differs
+    piece->setName("part");
+    grids.push_back(piece);
+  }
   openvdb::io::File out(file.string());
-  out.write({impl_->grid});
+  out.write(grids);
   out.close();
 }
 

@@ -75,13 +75,22 @@ class Stock {
   /// a band's width beyond (see stock_outline.cpp).
   SampledSection meridianSection() const;
 
-  /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock".
-  void writeVdb(const std::filesystem::path& file) const;
+  /// Takes the material that no longer hangs together with the chuck's end out of this stock
+  /// and returns it as a stock of its own, or nullptr when all material still does (see
+  /// loose_pieces.cpp). The chuck's end is the material nearest the chuck: the lowest Z.
+  /// `lastCut`, the region removed since the material last hung together (crumbs aside), lets
+  /// it look only around that region when the cut plainly parted nothing.
+  std::unique_ptr<Stock> takeLoosePieces(const RevolvedRegion* lastCut = nullptr);
+
+  /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock", and `part`'s
+  /// (a piece taken out by takeLoosePieces) beside it under the name "part".
+  void writeVdb(const std::filesystem::path& file, const Stock* part = nullptr) const;
 
   std::uint64_t activeVoxelCount() const;
   std::uint64_t memoryBytes() const;
 
  private:
+  explicit Stock(std::unique_ptr<StockGrid> grid);
   std::unique_ptr<StockGrid> impl_;
 };
 
