@@ -68,6 +68,10 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks);
   figures.finalVolumeMm3 = run.stock->volumeMm3();
+  if (run.partedOff()) {  // what is left is the stub and the pieces that fell
+    figures.stubVolumeMm3 = figures.finalVolumeMm3;
+    for (const auto& off : figures.simulation.partOffs) figures.finalVolumeMm3 += off.volumeMm3;
+  }
   figures.timing.simulateS = clock.lap();
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
   return run;
@@ -76,12 +80,21 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
 void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.progress->stage("meshing");
   RunFigures& figures = run.figures;
-  run.part = run.stock->mesh(kExportAdaptivity);
+  run.part = run.partStock().mesh(kExportAdaptivity);
   // The level set's volume is checked against the whole mesh; crumbs thinner than a voxel
   // are then left out of the STL, and what they held is reported.
-  if (auto problem = measure::meshVolumeProblem(figures.finalVolumeMm3, run.part, figures.voxelMm)) warn(run, *problem);
+  const double partMm3 = run.partedOff() ? figures.simulation.partOffs.front().volumeMm3 : figures.finalVolumeMm3;
+  if (auto problem = measure::meshVolumeProblem(partMm3, run.part, figures.voxelMm)) warn(run, *problem);
   figures.meshCrumbs = dropCrumbs(run.part, figures.voxelMm);
   if (auto problem = measure::meshClosureProblem(run.part)) warn(run, *problem);
+  if (run.partedOff()) {
+    run.stub = run.stock->mesh(kExportAdaptivity);
+    if (auto problem = measure::meshVolumeProblem(figures.stubVolumeMm3, run.stub, figures.voxelMm, "stub"))
+      warn(run, *problem);
+    (void)dropCrumbs(run.stub, figures.voxelMm);
+    if (auto problem = measure::meshClosureProblem(run.stub, "stub")) warn(run, *problem);
+    figures.stubMeshVolumeMm3 = enclosedVolumeMm3(run.stub);
+  }
   figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
   figures.volumeToleranceMm3 = sim::volumeToleranceMm3(surfaceAreaMm2(run.part), figures.voxelMm);
   figures.meshTriangles = run.part.triangles.size();
@@ -91,12 +104,13 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
 void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   run.progress->stage("writing STL, VDB and the render");
   render::writeBinaryStl(run.part, out.stage("part.stl"));
+  if (run.partedOff()) render::writeBinaryStl(run.stub, out.stage("stub.stl"));
   {
     std::ofstream csv(out.stage("toolpath.csv"));
     interp::writeToolpathCsv(run.job.toolpath, csv);
   }
   render::writeToolpathVtp(run.job.toolpath, out.stage("toolpath.vtp"));
-  run.stock->writeVdb(out.stage("stock.vdb"));
+  run.stock->writeVdb(out.stage("stock.vdb"), run.figures.simulation.part.get());
   render::PartImageOptions image;
   image.title = run.figures.program;
   image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);

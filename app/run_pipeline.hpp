@@ -31,10 +31,15 @@ class Stopwatch {
 
 struct SimulatedRun {
   job::Job job;
-  std::unique_ptr<sim::Stock> stock;
+  std::unique_ptr<sim::Stock> stock;  // after a part-off, the stub left in the chuck
   std::unique_ptr<Progress> progress;
   RunFigures figures;  // parse and simulate filled; mesh and render by the later steps
   TriangleMesh part;   // empty until meshPart
+  TriangleMesh stub;   // after a part-off: the stub's mesh (meshPart)
+
+  bool partedOff() const { return figures.simulation.part != nullptr; }
+  /// The finished part: the piece that parted off, or else the stock.
+  const sim::Stock& partStock() const { return partedOff() ? *figures.simulation.part : *stock; }
 };
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
@@ -43,10 +48,11 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup);
 /// Bad input: the diagnostics are printed and nullopt returned.
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock);
 
-/// Meshes the final stock into run.part (figures: mesh volume, triangles, time).
+/// Meshes the part into run.part, and after a part-off the stub into run.stub (figures: mesh
+/// volumes, triangles, time).
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
-/// Stages the run's files into `out`, and times them as rendering.
+/// Stages the run's files into `out` (stub.stl too after a part-off), and times them as rendering.
 void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock);
 
 /// This process's peak resident memory so far (MB; an Xvfb it started is not counted).
