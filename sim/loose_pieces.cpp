@@ -7,11 +7,13 @@
 // of voxel centres), its material samples (φ < 0) are joined through their four neighbours,
 // and the pieces that do not reach the row of samples nearest the chuck (the lowest Z that
 // holds material) have come loose. A tube parts when the cut reaches its bore, a bar when it
-// reaches the axis or passes it: either way the section falls in two. A loose piece with no
-// sample more than a quarter of a voxel inside is a crumb a cut left behind, not a part,
-// and stays (the mesh leaves such crumbs out): a wall t thick always has a sample (t − h)/2
-// deep, so every piece thicker than one and a half voxels counts, and nothing thinner than
-// half a voxel does.
+// reaches the axis or passes it: either way the section falls in two. A loose piece is a
+// crumb a cut left behind, not a part, and stays (the mesh leaves such crumbs out), when no
+// sample of it lies more than a quarter of a voxel inside — a wall t thick always has a
+// sample (t − h)/2 deep, so every piece thicker than one and a half voxels has one, and
+// nothing thinner than half a voxel does — or when it holds less than ten voxels' worth of
+// material: the pip a turning tool's flank leaves on the axis of a face cut to X0 stands on
+// the face by less than a voxel, and the samples see it loose.
 //
 // The loose pieces are then moved voxel by voxel into a grid of their own: every voxel,
 // band and interior tiles alike, belongs to the piece whose material is nearest in the
@@ -140,10 +142,16 @@ bool hangsTogetherAround(const Samples& w, const Samples& all) {
   return std::all_of(reachesEdge.begin(), reachesEdge.end(), [](char reaches) { return reaches != 0; });
 }
 
-/// Which pieces have come loose: those with no sample in the lowest row holding material, and
-/// a sample deeper than a quarter of a voxel. Empty when none has.
+/// A loose piece with less material than this many voxels' worth is a crumb.
+constexpr double kMinPieceVoxels = 10.0;
+
+/// Which pieces have come loose: those with no sample in the lowest row holding material, a
+/// sample deeper than a quarter of a voxel, and more than kMinPieceVoxels of material (each
+/// sample standing for its ring, as Stock::materialInside counts). Empty when none has.
 std::vector<bool> loosePieces(const Samples& section, const Pieces& pieces, double voxelMm) {
+  const double h = voxelMm;
   std::vector<bool> held(pieces.count, false), deep(pieces.count, false);
+  std::vector<double> voxels(pieces.count, 0.0);
   int heldRow = -1;
   for (int k = 0; k < section.zCount && heldRow < 0; ++k)
     for (int i = 0; i < section.rCount; ++i)
@@ -151,11 +159,19 @@ std::vector<bool> loosePieces(const Samples& section, const Pieces& pieces, doub
         held[piece] = true;
         heldRow = k;
       }
-  for (std::size_t n = 0; n < section.phi.size(); ++n)
-    if (pieces.label[n] != kUnreached && section.phi[n] < -0.25 * voxelMm) deep[pieces.label[n]] = true;
+  for (int k = 0; k < section.zCount; ++k)
+    for (int i = 0; i < section.rCount; ++i) {
+      const std::size_t n = section.at(i, k);
+      const int piece = pieces.label[n];
+      if (piece == kUnreached) continue;
+      deep[piece] = deep[piece] || section.phi[n] < -0.25 * h;
+      const int rho = section.i0 + i;  // in voxels: a ring of 2πρ·h³, the axis's own disc π h³/4
+      voxels[piece] += insideFraction(section.phi[n], h) * (rho == 0 ? M_PI / 4.0 : 2.0 * M_PI * rho);
+    }
   std::vector<bool> loose(pieces.count, false);
   bool any = false;
-  for (int piece = 0; piece < pieces.count; ++piece) any |= loose[piece] = !held[piece] && deep[piece];
+  for (int piece = 0; piece < pieces.count; ++piece)
+    any |= loose[piece] = !held[piece] && deep[piece] && voxels[piece] > kMinPieceVoxels;
   if (!any) loose.clear();
   return loose;
 }

@@ -24,13 +24,15 @@ ToolOutlines tools() {
   outlines.emplace(2, *ConvexPolygon::fromOutline(axialBlade).polygon);
   const std::vector<RZ> innerBlade{{0, 0}, {6, 0}, {6, 3}, {0, 3}};  // an internal groove 3 mm wide
   outlines.emplace(3, *ConvexPolygon::fromOutline(innerBlade).polygon);
+  const std::vector<RZ> turning{{0, 0}, {10, 1}, {12, 12}, {1, 10}};  // the default tool, flanks leaning 1 in 10
+  outlines.emplace(4, *ConvexPolygon::fromOutline(turning).polygon);
   return outlines;
 }
 
 interp::Toolpath toolpathOf(const std::string& program) {
   interp::InterpreterOptions options;
   options.startPosition = {50.0, 50.0};
-  options.toolNumbers = {1, 2, 3};
+  options.toolNumbers = {1, 2, 3, 4};
   interp::InterpretResult result = interp::interpret(program, "part_off.nc", options);
   EXPECT_TRUE(result.ok()) << (result.diagnostics.empty() ? "" : interp::format(result.diagnostics[0]));
   return result.toolpath;
@@ -117,6 +119,16 @@ TEST(PartOff, AGrooveThatLeavesACoreDoesNotPartTheBar) {
   const PartOffRun run = simulateProgram({40.0, 50.0, 0.0}, 0.25, "G99 M03 S500\nG00 X44. Z-20.\nG01 X2. F0.05\nG00 X60.\nM30\n");
   EXPECT_TRUE(run.result.partOffs.empty());
   EXPECT_FALSE(run.result.part);
+}
+
+// Facing to X0 with a flank that leans 1 in 10 leaves a cone on the axis, its point on the face
+// (r < z/10 over the 1 mm cut: 0.01 mm³): loose, but a crumb, not a part.
+TEST(PartOff, ThePipAFaceCutToTheCentreLeavesIsNoPart) {
+  for (const double voxel : {0.2, 0.25}) {
+    const PartOffRun run = simulateProgram({40.0, 50.0, 1.0}, voxel, "G99 M03 S500\nT0404\nG00 X44. Z0.\nG01 X0. F0.2\nM30\n");
+    EXPECT_TRUE(run.result.partOffs.empty()) << voxel << " mm voxels: " << run.result.partOffs[0].volumeMm3 << " mm³";
+    EXPECT_NEAR(run.stubMm3, 400 * M_PI * 49, tolerance(surface(20, 0, 49), voxel));  // Z-49..0 left
+  }
 }
 
 // The section falls in two with no Z free of material: a face groove (r 14…16, 10 deep) meets an
