@@ -3,65 +3,12 @@
 #include <algorithm>
 #include <utility>
 
-#include "interp/execution/block_executor.hpp"
-#include "interp/execution/call_stack.hpp"
-#include "interp/motion/feed_warnings.hpp"
-#include "interp/execution/modal_state.hpp"
 #include "interp/compensation/nose_compensation.hpp"
+#include "interp/execution/program_runner.hpp"
+#include "interp/motion/feed_warnings.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp {
-namespace {
-
-// Runs the program from its first block until M02/M30, the end of the text, or the first
-// error; appends to `toolpath` and `warnings`. A block's read error is reported when
-// execution reaches it.
-Status runProgram(std::string_view programText, const InterpreterOptions& options,
-                  Toolpath& toolpath, std::vector<Error>& warnings) {
-  ModalState state;
-  state.position = options.startPosition;
-  state.feedMode = options.initialFeedMode;
-  if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
-
-  const Program program = readProgram(programText, options.blockDelete, options.dialect);
-  CallStack calls(program);
-  std::size_t next = 0;
-  while (!state.ended && next < program.blocks.size()) {
-    const std::size_t index = next++;
-    const ProgramBlock& block = program.blocks[index];
-    toolpath.blockCount = std::max(toolpath.blockCount, block.ordinal + 1);
-    if (block.skipped) continue;
-    if (!block.parsed.ok()) return block.parsed.error();
-
-    const BlockPlace place{program, index};
-    auto outcome = executeBlock(block.parsed.value(), state, options, block.ordinal, &place);
-    if (!outcome.ok()) return outcome.error();
-
-    BlockOutcome& done = outcome.value();
-    const ProgramFlow& flow = done.flow;
-    if (flow.call) {
-      auto target = calls.call(*flow.call, index);
-      if (!target.ok()) return target.error();
-      next = target.value();
-    } else if (flow.returnColumn) {
-      auto target = calls.giveBack(*flow.returnColumn, index);
-      if (!target.ok()) return target.error();
-      next = target.value();
-    } else if (flow.continueAfter) {
-      next = *flow.continueAfter + 1;
-    }
-    state = std::move(done.state);
-    toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
-    toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
-    warnings.insert(warnings.end(), done.warnings.begin(), done.warnings.end());
-  }
-  if (!state.ended) {
-    if (auto error = calls.unfinished()) return *error;
-  }
-  return success();
-}
-
-}  // namespace
 
 bool InterpretResult::ok() const {
   return std::none_of(diagnostics.begin(), diagnostics.end(),
@@ -74,7 +21,8 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
-  Status status = runProgram(programText, options, result.toolpath, warnings);
+  const Program program = readProgram(programText, options.blockDelete, options.dialect);
+  Status status = runProgram(program, options, result.toolpath, warnings);
   // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
   if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
   if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);

@@ -1,6 +1,7 @@
 #pragma once
 // G-code text → Toolpath. The single entry point of the interp module.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -9,6 +10,7 @@
 #include "interp/diagnostic.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
+#include "interp/execution/step_guard.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
 
@@ -24,6 +26,10 @@ struct InterpreterOptions {
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
+  long long maxSteps = kDefaultMaxSteps;  // blocks a run may execute (each run of a block counts):
+                                    // ends endless macro loops (execution/step_guard.hpp)
+  std::map<int, double> macroVariables;  // common macro variables set before the run
+                                         // (#100–#199, #500–#999)
 };
 
 struct InterpretResult {

@@ -26,7 +26,7 @@ constexpr std::array kGCodes{
     GCodeInfo{41, GGroup::NoseRadius, true, "nose radius compensation left"},
     GCodeInfo{42, GGroup::NoseRadius, true, "nose radius compensation right"},
     GCodeInfo{50, GGroup::NonModal, true, "coordinate system setting"},
-    GCodeInfo{65, GGroup::NonModal, false, "macro call"},
+    GCodeInfo{65, GGroup::NonModal, true, "macro call"},
     GCodeInfo{70, GGroup::NonModal, true, "finishing cycle"},
     GCodeInfo{71, GGroup::NonModal, true, "OD/ID roughing cycle"},
     GCodeInfo{72, GGroup::NonModal, true, "face roughing cycle"},

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "interp/execution/sorted_words.hpp"
+
 namespace lathesim::interp {
 namespace {
 
@@ -83,8 +85,10 @@ Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
 
 }  // namespace
 
-Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleIndex,
-                                      const ContourRequest& request) {
+Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequest& request,
+                                      const ModalState& state, const InterpreterOptions& options) {
+  const Program& program = cycle.program;
+  const std::size_t cycleIndex = cycle.index;
   if (!request.p || !request.q) {
     return Error{request.line, request.column,
                  fmt::format("{} needs P(ns) and Q(nf), the N numbers of the contour's first "
@@ -110,14 +114,21 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
     const ProgramBlock& block = program.blocks[i];
     if (block.skipped) continue;
     ++count;
-    if (!block.parsed.ok()) return block.parsed.error();
+    if (const auto* macroBlock = block.macroBlock(); macroBlock != nullptr && macroBlock->statement) {
+      return Error{block.line, block.column,
+                   fmt::format("a macro statement is not allowed in the contour of {} ({}): only blocks of "
+                               "G00–G03, G04, G96/G97, G98/G99 and G40–G42",
+                               request.cycle, name)};
+    }
+    auto words = sortedWords(block, cycle.variables, state.inch, options.dialect);
+    if (!words.ok()) return words.error();
     if (block.sequenceNumber && !numbers.insert(*block.sequenceNumber).second) {
       return Error{block.line, block.column,
                    fmt::format("N{} appears twice in the contour of {} ({}); give each block "
                                "its own N number",
                                *block.sequenceNumber, request.cycle, name)};
     }
-    auto status = checkContourBlock(block.parsed.value(), i == span.first, request.cycle, name);
+    auto status = checkContourBlock(words.value(), i == span.first, request.cycle, name);
     if (!status.ok()) return status.error();
   }
   if (count > kMaxContourBlocks) {
@@ -128,13 +139,15 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
   return span;
 }
 
-Result<BlockOutcome> runContourBlocks(const Program& program, ContourSpan span,
+Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
                                       ModalState state, const InterpreterOptions& options) {
   BlockOutcome outcome;
   for (std::size_t i = span.first; i <= span.last; ++i) {
-    const ProgramBlock& block = program.blocks[i];
+    const ProgramBlock& block = cycle.program.blocks[i];
     if (block.skipped) continue;
-    auto done = executeBlock(block.parsed.value(), std::move(state), options, block.ordinal);
+    auto words = sortedWords(block, cycle.variables, state.inch, options.dialect);
+    if (!words.ok()) return words.error();
+    auto done = executeBlock(words.value(), std::move(state), options, block.ordinal);
     if (!done.ok()) return done.error();
     state = std::move(done.value().state);
     const auto& moves = done.value().moves;
@@ -144,13 +157,15 @@ Result<BlockOutcome> runContourBlocks(const Program& program, ContourSpan span,
   return outcome;
 }
 
-Result<ExtractedContour> extractContour(const Program& program, ContourSpan span,
+Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan span,
                                         const ModalState& state,
                                         const InterpreterOptions& options) {
-  auto run = runContourBlocks(program, span, state, options);
+  auto run = runContourBlocks(cycle, span, state, options);
   if (!run.ok()) return run.error();
-  const ProgramBlock& first = program.blocks[span.first];
-  const ParsedBlock& firstParsed = first.parsed.value();
+  const ProgramBlock& first = cycle.program.blocks[span.first];
+  auto firstWords = sortedWords(first, cycle.variables, state.inch, options.dialect);
+  if (!firstWords.ok()) return firstWords.error();
+  const ParsedBlock& firstParsed = firstWords.value();
   ExtractedContour extracted;
   extracted.firstBlockRapid = firstParsed.gCode(GGroup::Motion)->number == 0;
   extracted.firstBlockHasX = firstParsed.has('X') || firstParsed.has('U');

@@ -1,13 +1,17 @@
 #pragma once
-// M98/M99 in one file: the subprograms that are running, innermost last.
+// M98/M99 and G65 in one file: the subprograms and macros that are running, innermost last.
 //   M98 P… in block i      → go to O<program>'s block; M99 comes back to block i + 1
 //                            after the last repeat, or to O<program> again before it
+//   G65 P… L… in block i   → the same for a macro call, which also gets fresh local
+//                            variables (the caller keeps them: macro/variables.hpp)
 //   M99 in the main program → an error (a control would repeat the program forever)
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
+#include "interp/macro/macro_call.hpp"
 #include "interp/text/program.hpp"
 #include "interp/execution/program_flow.hpp"
 #include "interp/result.hpp"
@@ -16,6 +20,18 @@ namespace lathesim::interp {
 
 /// How deep M98 calls may nest: 4 levels on the Fanuc 0i-T and the GSK980TDi.
 constexpr int kMaxSubprogramNesting = 4;
+/// How deep G65 macro calls may nest: 4 levels, local variable levels 0–4 (Fanuc 16i/18i
+/// custom macro manual; M98 calls are counted apart).
+constexpr int kMaxMacroNesting = 4;
+
+/// What M99 did.
+struct CallReturn {
+  std::size_t next = 0;    // the block to run next
+  bool repeat = false;     // the called program runs again (a repeat count)
+  bool leftMacro = false;  // a G65 macro ended: its caller's local variables come back
+  std::size_t callBlock = 0;  // the M98/G65 block that called the program
+  int callColumn = 0;         // of its P word
+};
 
 class CallStack {
  public:
@@ -24,19 +40,28 @@ class CallStack {
 
   /// The block to run next for the M98 in block `index`.
   Result<std::size_t> call(const SubprogramCall& call, std::size_t index);
-  /// The block to run next for the M99 at `column` of block `index`.
-  Result<std::size_t> giveBack(int column, std::size_t index);
+  /// The block to run next for the G65 in block `index`.
+  Result<std::size_t> callMacro(const macro::MacroCall& call, std::size_t index);
+  /// Where the M99 at `column` of block `index` goes.
+  Result<CallReturn> giveBack(int column, std::size_t index);
   /// When the text ended inside a subprogram: the error, located at its M98.
   std::optional<Error> unfinished() const;
+  /// How many subprograms and macros are running.
+  std::size_t depth() const { return frames_.size(); }
 
  private:
   struct Frame {
     int programNumber = 0;
+    bool macro = false;        // called by G65
     std::size_t start = 0;     // the O block
-    std::size_t callFrom = 0;  // the M98 block
-    int column = 0;            // of the M98 block's P word
+    std::size_t callFrom = 0;  // the M98/G65 block
+    int column = 0;            // of the calling block's P word
     int repeatsLeft = 0;       // after the run in progress
   };
+
+  Result<std::size_t> programStart(int programNumber, const char* code, int column, std::size_t index) const;
+  std::string chainTo(int programNumber) const;  // "O0001 → O1000 → " + the called program
+  int framesOfKind(bool macro) const;
 
   const Program& program_;
   std::vector<Frame> frames_;

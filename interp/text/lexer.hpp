@@ -1,9 +1,12 @@
 #pragma once
-// Source text → blocks of words, each located by line and column (columns count UTF-8
+// Source text → blocks of tokens, each located by line and column (columns count UTF-8
 // code points). Two stages, so a deleted block is skipped without being tokenized:
-//   BlockReader::next()  splits the text at ';' and newlines, drops spaces, tabs,
-//                        ( ... ) comments and '%' lines, and notes a leading '/';
-//   tokenize()           turns a block's remaining characters into words like X20.0.
+//   BlockReader::next()  splits the text at ';' and newlines, drops spaces, tabs and '%'
+//                        lines, keeps ( ... ) comments aside, and notes a leading '/';
+//   lexBlock()           turns a block's remaining characters into tokens: words like X20.0,
+//                        and the pieces of Fanuc Custom Macro B (# [ ] = + - * / , numbers,
+//                        and names such as SIN, GT, WHILE); tokenize() is the same for a
+//                        block of plain words only.
 // The lexer knows nothing of modal state.
 
 #include <optional>
@@ -21,21 +24,58 @@ struct SourceChar {
   int column = 0;    // 1-based, in code points
 };
 
+/// A ( … ) comment: its text between the parentheses, and where its '(' stands.
+struct BlockComment {
+  std::string text;
+  int column = 0;
+};
+
 /// A block as written, minus spaces and comments.
 struct RawBlock {
   int line = 0;          // 1-based line of the block
   int column = 0;        // 1-based column of its first significant character
   bool deleted = false;  // it started with '/' (block delete)
   std::vector<SourceChar> chars;  // everything after the '/', spaces and comments removed
+  std::vector<BlockComment> comments;  // the comments within the block, in order (#3000's
+                                       // alarm message is one)
 };
 
 /// A letter and its number: "X20 .0" is the word X20.0.
 struct Word {
   char letter = 0;     // upper case
-  std::string number;  // as written without spaces, e.g. "-5.5", ".5", "0101"
+  std::string number;  // as written without spaces, e.g. "-5.5", ".5", "0101"; for a value a
+                       // macro expression gave, as the control reads it (macro/address_value.hpp)
   double value = 0.0;  // the number as read, in the program's units
   int column = 0;      // column of the letter
+  bool evaluated = false;  // the value came from a macro expression (X#1, X[#1+2]): Fanuc reads
+                           // it as a real number, as if written with a decimal point
   std::string text() const { return std::string(1, letter) + number; }
+};
+
+/// What a token of a block is. A plain G-code block is all Words; the rest belong to
+/// Fanuc Custom Macro B.
+enum class TokenKind {
+  Word,     // a letter and its number, X20.0
+  Address,  // a letter whose value follows as a macro expression: the X of X#1, X-#1, X[#1+2]
+  Name,     // a macro keyword, function or operator: IF GOTO THEN WHILE DO END, SIN …, EQ …, AND …
+  Number,   // a number inside a macro expression or statement: the 1 of #1, the 2.5 of #1=2.5
+  Hash,     // #
+  Open,     // [
+  Close,    // ]
+  Equals,   // =
+  Plus,     // +
+  Minus,    // -
+  Times,    // *
+  Divide,   // /
+  Comma,    // , (POW[a,b], ATAN[a,b])
+};
+
+struct Token {
+  TokenKind kind = TokenKind::Word;
+  int column = 0;
+  Word word;         // Word: the word; Address: the letter (word.letter) alone
+  std::string text;  // as written: the upper-cased name, the number's digits, the character
+  double value = 0.0;  // Number: its value
 };
 
 /// Splits program text into blocks, one at a time, so nothing after M30 is ever read.
@@ -57,8 +97,14 @@ class BlockReader {
   bool atLineStart_ = true;
 };
 
-/// The words of a block. Fails on an unexpected character, an unknown letter, a letter
-/// with no number, or a malformed number such as "20.3.".
+/// The tokens of a block. Fails on an unexpected character, an unknown letter, a letter with
+/// no number, or a malformed number such as "20.3.". A block holding G65 (a macro call) may
+/// use every letter but G L N O P as an argument (A, B, Y …); others only the letters of lathe
+/// G-code.
+Result<std::vector<Token>> lexBlock(const RawBlock& block);
+
+/// The words of a block of plain words; fails like lexBlock, and at the first token that is
+/// not a word.
 Result<std::vector<Word>> tokenize(const RawBlock& block);
 
 }  // namespace lathesim::interp

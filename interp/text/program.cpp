@@ -2,16 +2,30 @@
 
 #include <utility>
 
+#include "interp/macro/block_syntax.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-std::optional<int> numberOf(const std::vector<Word>& words, char letter) {
-  for (const Word& word : words) {
-    if (word.letter == letter) return static_cast<int>(word.value);
+std::optional<int> numberOf(const std::vector<Token>& tokens, char letter) {
+  for (const Token& token : tokens) {
+    if (token.kind == TokenKind::Word && token.word.letter == letter) return static_cast<int>(token.word.value);
   }
   return std::nullopt;
+}
+
+Result<BlockContent> contentOf(const std::vector<Token>& tokens, const RawBlock& raw, Dialect dialect) {
+  if (macro::needsMacroReader(tokens)) {
+    auto macroBlock = macro::readMacroBlock(tokens, raw);
+    if (!macroBlock.ok()) return macroBlock.error();
+    return BlockContent{std::move(macroBlock).value()};
+  }
+  std::vector<Word> words;
+  for (const Token& token : tokens) words.push_back(token.word);
+  auto parsed = parseBlock(words, raw.line, raw.column, dialect);
+  if (!parsed.ok()) return parsed.error();
+  return BlockContent{std::move(parsed).value()};
 }
 
 }  // namespace
@@ -44,7 +58,7 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
     if (!next.ok()) {  // an unclosed comment: nothing after it can be split into blocks
       block.line = next.error().line;
       block.column = next.error().column;
-      block.parsed = next.error();
+      block.content = next.error();
       program.programOf.push_back(currentProgram);
       program.blocks.push_back(std::move(block));
       break;
@@ -56,13 +70,13 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
     block.deleted = raw.deleted;
     block.skipped = raw.deleted && blockDelete;
     if (!block.skipped) {
-      auto words = tokenize(raw);
-      if (words.ok()) {
-        block.sequenceNumber = numberOf(words.value(), 'N');
-        block.programNumber = numberOf(words.value(), 'O');
-        block.parsed = parseBlock(words.value(), raw.line, raw.column, dialect);
+      auto tokens = lexBlock(raw);
+      if (tokens.ok()) {
+        block.sequenceNumber = numberOf(tokens.value(), 'N');
+        block.programNumber = numberOf(tokens.value(), 'O');
+        block.content = contentOf(tokens.value(), raw, dialect);
       } else {
-        block.parsed = words.error();
+        block.content = tokens.error();
       }
     }
     const std::size_t index = program.blocks.size();

@@ -1,20 +1,28 @@
 #pragma once
 // The whole program text read into blocks before any runs, so that execution can jump:
-// M98 to an O number, G70–G73 to the N numbers of their contour. Each block is tokenized
-// and sorted into words as it is read; an error in a block is kept with the block and
-// reported only if execution reaches it (text after M30 that never runs is never checked,
-// as when the program was read block by block).
+// M98 to an O number, G70–G73 to the N numbers of their contour, GOTO and WHILE of Custom
+// Macro B. Each block is tokenized as it is read; a block of plain words is sorted into codes
+// then, a block of Custom Macro B (a statement, an expression in an address, a G65 call) is
+// kept as read, its words sorted each time it runs, since their values may change between
+// runs. An error in a block is kept with the block and reported only if execution reaches it
+// (text after M30 that never runs is never checked, as when the program was read block by
+// block).
 
 #include <cstddef>
 #include <map>
 #include <optional>
 #include <string_view>
+#include <variant>
 #include <vector>
 
+#include "interp/macro/statement.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/result.hpp"
 
 namespace lathesim::interp {
+
+/// What a block says: plain words sorted into codes, or a block of Custom Macro B.
+using BlockContent = std::variant<ParsedBlock, macro::MacroBlock>;
 
 struct ProgramBlock {
   int ordinal = 0;        // 0-based position among the blocks of the text
@@ -24,7 +32,16 @@ struct ProgramBlock {
   bool skipped = false;   // deleted while block delete is on: never runs, never checked
   std::optional<int> sequenceNumber;  // its N word
   std::optional<int> programNumber;   // its O word: a program starts here
-  Result<ParsedBlock> parsed = Error{};  // the sorted words, or why the block cannot run
+  Result<BlockContent> content = Error{};  // what the block says, or why it cannot run
+
+  /// The sorted words of a block of plain words; nullptr for a macro block or a bad one.
+  const ParsedBlock* plainWords() const {
+    return content.ok() ? std::get_if<ParsedBlock>(&content.value()) : nullptr;
+  }
+  /// The block of Custom Macro B; nullptr for a block of plain words or a bad one.
+  const macro::MacroBlock* macroBlock() const {
+    return content.ok() ? std::get_if<macro::MacroBlock>(&content.value()) : nullptr;
+  }
 };
 
 struct Program {

@@ -148,9 +148,9 @@ TEST(Tokenize, YSaysThereIsNoYAxis) {
 }
 
 TEST(Tokenize, StrayCharacterIsAnError) {
-  const Error error = tokenizeError("G00 X10 # 5");
+  const Error error = tokenizeError("G00 X10 @ 5");
   EXPECT_EQ(error.column, 9);
-  EXPECT_NE(error.message.find("unexpected character '#'"), std::string::npos);
+  EXPECT_NE(error.message.find("unexpected character '@'"), std::string::npos);
 }
 
 }  // namespace

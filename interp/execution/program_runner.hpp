@@ -1,0 +1,21 @@
+#pragma once
+// A program read by readProgram, run block by block from the first until M02/M30, the end of
+// the text or the first error: plain blocks through the block executor, blocks of Custom
+// Macro B with their words evaluated as they run (their values may change between runs),
+// the statements through MacroFlow, and the calls (M98, G65) and returns (M99) through the
+// call stack. Every run of a block counts against the step limit.
+
+#include <vector>
+
+#include "interp/interpreter.hpp"
+#include "interp/result.hpp"
+#include "interp/text/program.hpp"
+
+namespace lathesim::interp {
+
+/// Runs `program`, appending its moves to `toolpath` and its warnings to `warnings`. A
+/// block's read error is reported when execution reaches it.
+Status runProgram(const Program& program, const InterpreterOptions& options, Toolpath& toolpath,
+                  std::vector<Error>& warnings);
+
+}  // namespace lathesim::interp

@@ -1,0 +1,25 @@
+#include "interp/execution/sorted_words.hpp"
+
+#include "interp/macro/block_words.hpp"
+
+namespace lathesim::interp {
+
+Result<ParsedBlock> sortedWords(const ProgramBlock& block, const macro::VariableStore* variables, bool inch,
+                                Dialect dialect) {
+  if (!block.content.ok()) return block.content.error();
+  if (const ParsedBlock* words = block.plainWords()) return *words;
+  const macro::MacroBlock& macroBlock = *block.macroBlock();
+  if (macroBlock.statement) return Error{block.line, block.column, "a macro statement has no words to run here"};
+  const macro::VariableStore none;
+  auto evaluated = macro::evaluateWords(macroBlock, variables != nullptr ? *variables : none, block.line, inch);
+  if (!evaluated.ok()) return evaluated.error();
+  auto parsed = parseBlock(evaluated.value().words, block.line, block.column, dialect);
+  if (!parsed.ok() && !evaluated.value().leftOut.empty()) {
+    Error error = parsed.error();
+    error.message += " (" + macro::leftOutNote(evaluated.value().leftOut) + ")";
+    return error;
+  }
+  return parsed;
+}
+
+}  // namespace lathesim::interp

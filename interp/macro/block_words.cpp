@@ -1,0 +1,110 @@
+#include "interp/macro/block_words.hpp"
+
+#include <cmath>
+#include <optional>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "interp/macro/evaluator.hpp"
+#include "interp/macro/functions.hpp"
+
+namespace lathesim::interp::macro {
+namespace {
+
+constexpr std::string_view kWholeNumberLetters = "GMNOPQLSTHD";
+constexpr int kMacroCallCode = 65;
+// IS-B, the usual increment system: 0.001 mm, 0.0001 inch (as interp/text/word_units.hpp).
+constexpr double kLengthIncrementMm = 0.001;
+constexpr double kLengthIncrementInch = 0.0001;
+
+bool isWholeNumberLetter(char letter) { return kWholeNumberLetters.find(letter) != std::string_view::npos; }
+
+// The least input increment an expression's value is rounded to in `letter`; none for F.
+std::optional<double> incrementOf(char letter, bool inch) {
+  if (isWholeNumberLetter(letter)) return 1.0;
+  if (letter == 'F') return std::nullopt;
+  return inch ? kLengthIncrementInch : kLengthIncrementMm;
+}
+
+// "20." "12.346" "-0.5": the fewest digits that give the value back, and always a decimal point.
+std::string withDecimalPoint(double value) {
+  std::string text = fmt::format("{}", value == 0.0 ? 0.0 : value);
+  if (text.find_first_of(".e") == std::string::npos) text += '.';
+  return text;
+}
+
+// How an address's value is shown when it was vacant: X#1, Z-#26, X#[…].
+std::string writtenVacant(char letter, const Expression& expression) {
+  const Expression* variable = &expression;
+  std::string sign;
+  if (variable->kind == Expression::Kind::Negate) {
+    sign = "-";
+    variable = &variable->operands.front();
+  }
+  if (variable->kind == Expression::Kind::Variable && variable->operands.front().kind == Expression::Kind::Number) {
+    return fmt::format("{}{}#{}", letter, sign, variable->operands.front().text);
+  }
+  return fmt::format("{}{}#[…]", letter, sign);
+}
+
+}  // namespace
+
+Word evaluatedWord(char letter, int column, double value, bool inch) {
+  Word word;
+  word.letter = letter;
+  word.column = column;
+  word.evaluated = true;
+  const auto increment = incrementOf(letter, inch);
+  word.value = increment ? roundToIncrement(value, *increment) : value;
+  if (word.value == 0.0) word.value = 0.0;  // no "-0."
+  constexpr double kLargestWholeText = 1e15;  // beyond, no address takes it anyway
+  word.number = isWholeNumberLetter(letter) && std::abs(word.value) < kLargestWholeText
+                    ? fmt::format("{}", static_cast<long long>(word.value))
+                    : withDecimalPoint(word.value);
+  return word;
+}
+
+Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& variables, int line, bool inch) {
+  BlockWords out;
+  for (const MacroWord& word : block.words) {
+    if (word.word.letter == 'G' && !word.expression && word.word.value == kMacroCallCode) out.macroCall = true;
+    // G20/G21 in the block itself set the unit its lengths are rounded in.
+    if (word.word.letter == 'G' && !word.expression && (word.word.value == 20 || word.word.value == 21)) {
+      inch = word.word.value == 20;
+    }
+  }
+  for (const MacroWord& word : block.words) {
+    if (!word.expression) {
+      out.words.push_back(word.word);
+      continue;
+    }
+    const char letter = word.word.letter;
+    const EvaluationContext context{variables, line, out.macroCall ? std::nullopt : incrementOf(letter, inch)};
+    auto value = evaluate(*word.expression, context);
+    if (!value.ok()) return value.error();
+    if (!value.value()) {
+      out.leftOut.push_back({letter, word.word.column, writtenVacant(letter, *word.expression)});
+      continue;
+    }
+    if (out.macroCall) {
+      Word argument{letter, withDecimalPoint(*value.value()), *value.value(), word.word.column, true};
+      out.words.push_back(argument);
+    } else {
+      out.words.push_back(evaluatedWord(letter, word.word.column, *value.value(), inch));
+    }
+  }
+  return out;
+}
+
+std::string leftOutNote(const std::vector<VacantWord>& leftOut) {
+  std::string note;
+  for (const VacantWord& word : leftOut) {
+    const std::string variable = word.written.substr(word.written.find('#'));
+    note += fmt::format("{}{} at column {} was left out: {} is vacant", note.empty() ? "" : "; ", word.written,
+                        word.column, variable);
+  }
+  return note;
+}
+
+}  // namespace lathesim::interp::macro
