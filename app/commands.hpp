@@ -26,6 +26,7 @@ struct RunOptions {
   std::optional<double> voxelMm;
   std::optional<interp::Dialect> dialect;  // overrides [machine] dialect
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
+  std::optional<long long> maxSteps;  // overrides [macro] max_steps
 };
 
 int runCommand(const RunOptions& options);
@@ -43,6 +44,7 @@ int checkCommand(const CheckOptions& options);
 inline constexpr int kExitOutOfTolerance = 3;
 
 int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
-                  std::optional<interp::Dialect> dialect = std::nullopt);
+                  std::optional<interp::Dialect> dialect = std::nullopt,
+                  std::optional<long long> maxSteps = std::nullopt);
 
 }  // namespace lathesim::app

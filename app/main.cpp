@@ -41,6 +41,13 @@ int main(int argc, char** argv) {
   expandCmd->add_option("program", expandProgram, "the G-code program")->required()->check(CLI::ExistingFile);
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
 
+  std::optional<long long> expandMaxSteps;
+  const std::string maxStepsHelp = "blocks the program may run again before it is stopped as an endless loop "
+                                   "(overrides [macro] max_steps)";
+  runCmd->add_option("--max-steps", run.maxSteps, maxStepsHelp)->check(CLI::PositiveNumber);
+  checkCmd->add_option("--max-steps", check.run.maxSteps, maxStepsHelp)->check(CLI::PositiveNumber);
+  expandCmd->add_option("--max-steps", expandMaxSteps, maxStepsHelp)->check(CLI::PositiveNumber);
+
   std::string runDialect, expandDialect;
   std::vector<std::string> dialects;
   for (auto dialect : lathesim::interp::kDialects) dialects.emplace_back(lathesim::interp::dialectName(dialect));
@@ -69,7 +76,8 @@ int main(int argc, char** argv) {
       check.run.setup = optionalPath(checkSetup);
       return lathesim::app::checkCommand(check);
     }
-    return lathesim::app::expandCommand(expandProgram, optionalPath(expandSetup), optionalDialect(expandDialect));
+    return lathesim::app::expandCommand(expandProgram, optionalPath(expandSetup), optionalDialect(expandDialect),
+                                        expandMaxSteps);
   } catch (const std::exception& e) {  // I/O failures and broken invariants
     std::cerr << "lathesim: error: " << e.what() << '\n';
     return 1;

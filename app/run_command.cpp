@@ -30,8 +30,8 @@ int runCommand(const RunOptions& options) {
 }
 
 int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
-                  std::optional<interp::Dialect> dialect) {
-  const std::optional<job::Job> loaded = job::loadJob(program, setup, dialect);
+                  std::optional<interp::Dialect> dialect, std::optional<long long> maxSteps) {
+  const std::optional<job::Job> loaded = job::loadJob(program, setup, dialect, maxSteps);
   if (!loaded) return 1;
   interp::writeToolpathCsv(loaded->toolpath, std::cout);
   return 0;

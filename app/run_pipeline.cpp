@@ -23,7 +23,7 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
 }
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
-  std::optional<job::Job> loaded = job::loadJob(options.program, options.setup, options.dialect);
+  std::optional<job::Job> loaded = job::loadJob(options.program, options.setup, options.dialect, options.maxSteps);
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
   run.job = std::move(*loaded);

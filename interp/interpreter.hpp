@@ -26,8 +26,8 @@ struct InterpreterOptions {
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
-  long long maxSteps = kDefaultMaxSteps;  // blocks a run may execute (each run of a block counts):
-                                    // ends endless macro loops (execution/step_guard.hpp)
+  long long maxSteps = kDefaultMaxSteps;  // blocks a run may run again (a block's first run is
+                                         // free): ends endless loops (execution/step_guard.hpp)
   std::map<int, double> macroVariables;  // common macro variables set before the run
                                          // (#100–#199, #500–#999)
 };

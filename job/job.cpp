@@ -30,6 +30,8 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.dialect = setup.dialect;
   options.initialFeedMode = setup.initialFeedMode;
   options.offsets = setup.offsets;
+  options.maxSteps = setup.macro.maxSteps;
+  options.macroVariables = setup.macro.variables;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
 }
@@ -40,7 +42,7 @@ interp::Diagnostic Job::warningAt(int line, int column, std::string message) con
 }
 
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect) {
+                           std::optional<interp::Dialect> dialect, std::optional<long long> maxSteps) {
   Job job{defaultSetup(), {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
@@ -51,6 +53,7 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
                                                    // does not match its holder's seat)
   }
   if (dialect) job.setup.dialect = *dialect;
+  if (maxSteps) job.setup.macro.maxSteps = *maxSteps;
 
   std::ifstream in(program, std::ios::binary);
   if (!in) {

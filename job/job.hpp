@@ -27,8 +27,10 @@ struct Job {
 /// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.
 interp::InterpreterOptions interpreterOptionsOf(const Setup& setup);
 
-/// `dialect`, when given (--dialect), overrides the setup's [machine] dialect.
+/// `dialect`, when given (--dialect), overrides the setup's [machine] dialect; `maxSteps`
+/// (--max-steps) its [macro] max_steps.
 std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect = std::nullopt);
+                           std::optional<interp::Dialect> dialect = std::nullopt,
+                           std::optional<long long> maxSteps = std::nullopt);
 
 }  // namespace lathesim::job

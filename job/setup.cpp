@@ -400,7 +400,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck", "offset"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck", "offset", "macro"}, report);
   if (const auto* node = root.get("stock"))
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
   if (const auto* node = root.get("machine"))
@@ -415,6 +415,12 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
               "chuck.jaw_diameter must exceed the stock's diameter (" + floatText(setup.stock.diameterMm) + " mm)");
   if (const auto* node = root.get("offset")) {
     readOffsets(*node, setup.offsets, [&report](const toml::source_region& where, std::string message) {
+      report.at(where, std::move(message));
+    });
+  }
+
+  if (const auto* node = root.get("macro")) {
+    readMacroSetup(*node, setup.macro, [&report](const toml::source_region& where, std::string message) {
       report.at(where, std::move(message));
     });
   }

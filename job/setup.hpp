@@ -13,6 +13,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "job/macro_setup.hpp"
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
@@ -40,6 +41,7 @@ struct Setup {
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
   interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
+  MacroSetup macro;                   // [macro] (job/macro_setup.hpp): step limit, variables
 };
 
 struct SetupResult {

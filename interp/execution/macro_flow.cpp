@@ -57,7 +57,7 @@ Status MacroFlow::assign(const macro::Assignment& assignment, int line, const st
   const long long code = std::llround(value.value().value_or(0.0));
   if (number.value() == macro::kAlarmVariable) {
     return Error{line, assignment.column,
-                 fmt::format("the program raises alarm {} (#3000 = {}): {}", macro::kAlarmVariable + code, code,
+                 fmt::format("the program raises alarm {} with #3000 = {}: {}", macro::kAlarmVariable + code, code,
                              message.empty() ? "no message given" : message)};
   }
   if (number.value() == macro::kStopVariable) {

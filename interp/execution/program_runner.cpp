@@ -29,7 +29,7 @@ class ProgramRunner {
         warnings_(warnings),
         calls_(program),
         variables_(options.macroVariables),
-        guard_(options.maxSteps),
+        guard_(options.maxSteps, program.blocks.size()),
         flow_(program, variables_, guard_) {
     state_.position = options.startPosition;
     state_.feedMode = options.initialFeedMode;
@@ -89,8 +89,9 @@ Status ProgramRunner::run() {
 }
 
 Error ProgramRunner::stepLimitError(std::size_t index) const {
-  const std::string limit = fmt::format("{} blocks", guard_.maxSteps());
-  const std::string raise = "raise the limit with --max-steps or [sim] max_steps if the program is meant to run longer";
+  const std::string limit = fmt::format("{} blocks run again", guard_.maxSteps());
+  const std::string raise = "raise the step limit with --max-steps or [macro] max_steps if the program is meant to "
+                            "run longer";
   if (const auto loop = guard_.stuckLoop()) {
     const ProgramBlock& block = program_.blocks[loop->block];
     return Error{block.line, loop->column,
@@ -99,7 +100,7 @@ Error ProgramRunner::stepLimitError(std::size_t index) const {
                              limit, raise)};
   }
   const ProgramBlock& block = program_.blocks[index];
-  return Error{block.line, block.column, fmt::format("the program has run {} and is not finished; {}", limit, raise)};
+  return Error{block.line, block.column, fmt::format("the program has reached {} and is not finished; {}", limit, raise)};
 }
 
 void ProgramRunner::warnLeftOut(int line, const std::vector<macro::VacantWord>& leftOut) {

@@ -8,6 +8,10 @@ bool StepGuard::step(std::size_t index) {
   Frame& loops = frames_.back();
   // A loop is left once execution stands outside the blocks it spans.
   std::erase_if(loops, [index](const RunningLoop& loop) { return index < loop.first || index > loop.last; });
+  if (!ran_[index]) {
+    ran_[index] = true;
+    return false;
+  }
   return ++steps_ > maxSteps_;
 }
 

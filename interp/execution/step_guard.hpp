@@ -1,7 +1,9 @@
 #pragma once
-// The step limit: a program may run at most so many blocks (each run of a block counts), so
+// The step limit: a program may run its blocks again at most so many times (a block's first
+// run is free, so a long program without loops is never stopped; every later run counts), so
 // that an endless WHILE or GOTO loop, or calls repeated beyond reason, end in an error rather
-// than a hang. The error names the loop the program is stuck in: of the loops running when
+// than a hang or a toolpath that fills the memory. The error names the loop the program is
+// stuck in: of the loops running when
 // the limit is reached, the one in the outermost program (main program, then the
 // subprograms and macros it called) that spans the most blocks, so an endless outer loop is
 // blamed rather than a finite inner one it keeps restarting.
@@ -16,9 +18,9 @@
 
 namespace lathesim::interp {
 
-/// The default limit: ten million blocks, a few seconds of interpretation; shop programs with
-/// loops run a few thousand.
-constexpr long long kDefaultMaxSteps = 10'000'000;
+/// The default limit: a million blocks run again. An endless loop of moves stops after about
+/// a second and 150 MB of moves; the Macro B programs of shops repeat a few thousand blocks.
+constexpr long long kDefaultMaxSteps = 1'000'000;
 
 /// Where a loop is written: the block that starts it (WHILE, DO), jumps back (GOTO) or calls
 /// the program repeated.
@@ -29,7 +31,8 @@ struct LoopSite {
 
 class StepGuard {
  public:
-  explicit StepGuard(long long maxSteps) : maxSteps_(maxSteps), frames_(1) {}
+  /// `blockCount`: how many blocks the program has.
+  StepGuard(long long maxSteps, std::size_t blockCount) : maxSteps_(maxSteps), ran_(blockCount, false), frames_(1) {}
 
   /// Counts a run of block `index` of the innermost running program. True when the limit is
   /// passed: then stuckLoop() says where.
@@ -53,7 +56,8 @@ class StepGuard {
   using Frame = std::vector<RunningLoop>;
 
   long long maxSteps_;
-  long long steps_ = 0;
+  long long steps_ = 0;     // runs of blocks that had run before
+  std::vector<bool> ran_;   // per block: it has run
   std::vector<Frame> frames_;  // the main program first
 };
 

@@ -205,7 +205,7 @@ TEST(MacroProgram, LoopStructureErrors) {
 
 TEST(MacroProgram, StepLimitNamesTheEndlessLoop) {
   expectError(run("#1 = 0\nWHILE [#1 GE 0] DO 1\n#1 = #1 + 1\nEND 1\nM30\n", withMaxSteps(1000)), 2, 1,
-              "still in this loop after 1000 blocks");
+              "still in this loop after 1000 blocks run again");
   expectError(run("N10 #1 = #1 + 1\nG00 U0\nIF [#1 GT -1] GOTO 10\nM30\n", withMaxSteps(1000)), 3, 15,
               "still in this loop");
   // DO without WHILE is Fanuc's endless loop.
@@ -251,11 +251,16 @@ TEST(MacroProgram, StepLimitNamesARepeatedCall) {
       "END 1\n"
       "M99\n",
       withMaxSteps(2000));
-  expectError(result, 2, 5, "still in this loop after 2000 blocks");
+  expectError(result, 2, 5, "still in this loop after 2000 blocks run again");
 }
 
-TEST(MacroProgram, StepLimitWithoutALoop) {
-  expectError(run("G00 X50\nG00 Z5\nG00 X60\nM30\n", withMaxSteps(2)), 3, 1, "the program has run 2 blocks");
+TEST(MacroProgram, StepLimitCountsOnlyBlocksRunAgain) {
+  // Five blocks run once each: far under any limit, even 1.
+  EXPECT_TRUE(run("G00 X50\nG00 Z5\nG00 X60\nG00 Z6\nM30\n", withMaxSteps(1)).ok());
+  // The second call runs O1000's four blocks again: the fourth of them (M99) passes 3. No
+  // loop jumps back, so the block where the limit falls is named.
+  expectError(run("M98 P1000\nM98 P1000\nM98 P1000\nM30\nO1000\nG00 U-1\nG00 U1\nM99\n", withMaxSteps(3)), 8, 1,
+              "the program has reached 3 blocks run again");
 }
 
 TEST(MacroProgram, MacroCallArgumentSpecificationI) {
@@ -365,7 +370,7 @@ TEST(MacroProgram, MacroCallErrors) {
 
 TEST(MacroProgram, AlarmAndStopMessages) {
   expectError(run("G00 X50\n#1 = 12\nIF [#1 GT 10] THEN #3000 = 1 (TOO BIG)\nM30\n"), 3, 20,
-              "the program raises alarm 3001 (#3000 = 1): TOO BIG");
+              "the program raises alarm 3001 with #3000 = 1: TOO BIG");
   const auto stopped = run("G00 X50\n#3006 = 1 (MEASURE THE PART)\nG00 Z5\nM30\n");
   ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
   EXPECT_EQ(stopped.toolpath.moves.size(), 2u);
