@@ -54,15 +54,15 @@ Status MacroFlow::assign(const macro::Assignment& assignment, int line, const st
   if (!number.ok()) return number.error();
   auto value = macro::evaluate(assignment.value, context);
   if (!value.ok()) return value.error();
-  const long long code = std::llround(value.value().value_or(0.0));
+  const double code = std::round(value.value().value_or(0.0));
   if (number.value() == macro::kAlarmVariable) {
     return Error{line, assignment.column,
-                 fmt::format("the program raises alarm {} with #3000 = {}: {}", macro::kAlarmVariable + code, code,
-                             message.empty() ? "no message given" : message)};
+                 fmt::format("the program raises alarm {:.0f} with #3000 = {:.0f}: {}", macro::kAlarmVariable + code,
+                             code, message.empty() ? "no message given" : message)};
   }
   if (number.value() == macro::kStopVariable) {
     warnings.push_back({line, assignment.column,
-                        fmt::format("program stop (#3006 = {}): {} — the control waits here for cycle start; "
+                        fmt::format("program stop (#3006 = {:.0f}): {} — the control waits here for cycle start; "
                                     "lathesim goes on",
                                     code, message.empty() ? "no message given" : message)});
     return success();

@@ -12,7 +12,7 @@
 namespace lathesim::interp::macro {
 namespace {
 
-constexpr std::string_view kWholeNumberLetters = "GMNOPQLSTHD";
+constexpr std::string_view kWholeNumberLetters = "MNOPQLSTHD";
 constexpr int kMacroCallCode = 65;
 // IS-B, the usual increment system: 0.001 mm, 0.0001 inch (as interp/text/word_units.hpp).
 constexpr double kLengthIncrementMm = 0.001;
@@ -20,10 +20,11 @@ constexpr double kLengthIncrementInch = 0.0001;
 
 bool isWholeNumberLetter(char letter) { return kWholeNumberLetters.find(letter) != std::string_view::npos; }
 
-// The least input increment an expression's value is rounded to in `letter`; none for F.
+// The least input increment an expression's value is rounded to in `letter`; none for F and
+// for G, whose codes are not rounded (G#1 with 1.5 is no code, not G02).
 std::optional<double> incrementOf(char letter, bool inch) {
   if (isWholeNumberLetter(letter)) return 1.0;
-  if (letter == 'F') return std::nullopt;
+  if (letter == 'F' || letter == 'G') return std::nullopt;
   return inch ? kLengthIncrementInch : kLengthIncrementMm;
 }
 
@@ -59,9 +60,9 @@ Word evaluatedWord(char letter, int column, double value, bool inch) {
   word.value = increment ? roundToIncrement(value, *increment) : value;
   if (word.value == 0.0) word.value = 0.0;  // no "-0."
   constexpr double kLargestWholeText = 1e15;  // beyond, no address takes it anyway
-  word.number = isWholeNumberLetter(letter) && std::abs(word.value) < kLargestWholeText
-                    ? fmt::format("{}", static_cast<long long>(word.value))
-                    : withDecimalPoint(word.value);
+  const bool whole = isWholeNumberLetter(letter) || (letter == 'G' && std::floor(word.value) == word.value);
+  word.number = whole && std::abs(word.value) < kLargestWholeText ? fmt::format("{}", static_cast<long long>(word.value))
+                                                                  : withDecimalPoint(word.value);
   return word;
 }
 

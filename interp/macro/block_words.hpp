@@ -2,9 +2,10 @@
 // The NC words of a macro block with their values as the block runs (the variables may have
 // changed since it last ran). A word an expression gives is written as the control reads it
 // (Fanuc: "the value of a variable is rounded to the least input increment of the address"):
-//   G M N O P Q L S T H D   a whole number, rounded half away from zero (M#1 with #1 = 3.5 is
+//   M N O P Q L S T H D     a whole number, rounded half away from zero (M#1 with #1 = 3.5 is
 //                           M04; S[1000.5] is S1001), written without a decimal point: P and
 //                           Q of G74/G75 are then counts of least increments, as written
+//   G                       not rounded ("except G codes"): G#1 with 1.5 is no code
 //   F                       the value as it is (not rounded; not checked in a manual)
 //   other letters (X Z U W I K R …)  a length: rounded to 0.001 mm (0.0001 inch under G20)
 //                           and written with a decimal point, so a control that reads

@@ -58,6 +58,15 @@ std::optional<BinaryOp> multiplicativeOp(const Token& token) {
   return std::nullopt;
 }
 
+// Counts one more operation of the block; fails past kMaxOperations.
+Status countOperation(TokenCursor& cursor, int column) {
+  if (++cursor.operations <= kMaxOperations) return success();
+  return Error{cursor.line(), column,
+               fmt::format("this block holds more than {} operations; split the calculation over several "
+                           "blocks",
+                           kMaxOperations)};
+}
+
 Expression node(Expression::Kind kind, int column, std::vector<Expression> operands = {}) {
   Expression e;
   e.kind = kind;
@@ -146,6 +155,7 @@ Result<Expression> parsePrimary(TokenCursor& cursor) {
     case TokenKind::Minus:
     case TokenKind::Plus: {
       cursor.take();
+      if (auto counted = countOperation(cursor, token.column); !counted.ok()) return counted.error();
       auto operand = parsePrimary(cursor);
       if (!operand.ok()) return operand.error();
       if (token.kind == TokenKind::Plus) return operand;
@@ -155,6 +165,7 @@ Result<Expression> parsePrimary(TokenCursor& cursor) {
       for (const NamedFunction& f : kFunctions) {
         if (f.name == token.text) {
           cursor.take();
+          if (auto counted = countOperation(cursor, token.column); !counted.ok()) return counted.error();
           return parseCall(cursor, token, f.function);
         }
       }
@@ -184,6 +195,7 @@ Result<Expression> parseTerm(TokenCursor& cursor) {
     const auto op = multiplicativeOp(*cursor.peek());
     if (!op) break;
     const Token& token = cursor.take();
+    if (auto counted = countOperation(cursor, token.column); !counted.ok()) return counted.error();
     auto right = parsePrimary(cursor);
     if (!right.ok()) return right;
     Expression binary = node(Expression::Kind::Binary, token.column, {std::move(result), std::move(right).value()});
@@ -203,6 +215,7 @@ std::string describe(const Token& token) {
 
 Result<Expression> parseVariable(TokenCursor& cursor) {
   const Token& hash = cursor.take();
+  if (auto counted = countOperation(cursor, hash.column); !counted.ok()) return counted.error();
   if (cursor.nextIs(TokenKind::Hash)) {
     return cursor.errorHere("a variable numbered by a variable is written #[#…] on a Fanuc control, e.g. #[#1], "
                             "not ##1");
@@ -226,6 +239,7 @@ Result<Expression> parseExpression(TokenCursor& cursor) {
     const auto op = additiveOp(*cursor.peek());
     if (!op) break;
     const Token& token = cursor.take();
+    if (auto counted = countOperation(cursor, token.column); !counted.ok()) return counted.error();
     auto right = parseTerm(cursor);
     if (!right.ok()) return right;
     Expression binary = node(Expression::Kind::Binary, token.column, {std::move(result), std::move(right).value()});

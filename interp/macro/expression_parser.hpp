@@ -20,6 +20,9 @@ namespace lathesim::interp::macro {
 
 /// Fanuc allows brackets five deep, counting a function's.
 constexpr int kMaxBracketDepth = 5;
+/// Operations (signs, operators, functions, variables) one block may hold: far beyond any
+/// program a control runs, and a bound on how deep an expression's tree can grow.
+constexpr int kMaxOperations = 500;
 
 /// The tokens of one block, read front to back.
 class TokenCursor {
@@ -42,6 +45,7 @@ class TokenCursor {
   Error errorHere(std::string message) const { return Error{line_, column(), std::move(message)}; }
 
   int bracketDepth = 0;  // '[' open around the token being read
+  int operations = 0;    // read so far in the block (kMaxOperations)
 
  private:
   const std::vector<Token>& tokens_;

@@ -222,6 +222,17 @@ TEST(MacroSyntax, BracketsNestFiveDeep) {
   EXPECT_EQ(e.column, 9);
 }
 
+TEST(MacroSyntax, AnExpressionTooLongForAnyControlIsAnErrorNotACrash) {
+  // Long chains of signs or terms would nest the evaluation deeper than the stack allows.
+  EXPECT_EQ(valueOf(std::string(400, '-') + "1"), 1.0);  // an even number of minus signs
+  EXPECT_NE(errorOf(std::string(100000, '-') + "1").message.find("more than 500 operations"), std::string::npos);
+  std::string sum = "1";
+  for (int i = 0; i < 100000; ++i) sum += "+1";
+  const Error e = errorOf(sum);
+  EXPECT_EQ(e.column, 1002);  // the 501st '+'
+  EXPECT_NE(e.message.find("more than 500 operations"), std::string::npos);
+}
+
 TEST(MacroSyntax, MalformedExpressionsSayWhatWasExpected) {
   EXPECT_NE(errorOf("[1+2").message.find("expected ']'"), std::string::npos);
   EXPECT_NE(errorOf("SIN30").message.find("SIN needs its argument in brackets"), std::string::npos);

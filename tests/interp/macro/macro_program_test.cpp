@@ -111,6 +111,11 @@ TEST(MacroProgram, AddressValuesAreRoundedToTheLeastIncrement) {
   EXPECT_DOUBLE_EQ(moves[2].spindleS, 1001.0);
 }
 
+TEST(MacroProgram, GCodesFromVariablesAreNotRounded) {
+  const auto result = run("#1 = 1\nG#1 X50 Z2 F0.2\n#1 = 1.5\nG#1 X40\n");
+  expectError(result, 4, 1, "unknown G code G1.5");
+}
+
 TEST(MacroProgram, NegatedVariableAndBracketsInAddresses) {
   // X#[#2-2] is X#1 = X7 (radius 3.5); Z-#2 is Z-3; U-[#1-5] is U-2.
   const auto good = run("#1 = 7\n#2 = 3\nG00 X#[#2-2] Z-#2\nU-[#1-5]\nM30\n");
