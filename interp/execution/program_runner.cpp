@@ -118,17 +118,15 @@ Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro:
   if (!evaluated.ok()) return evaluated.error();
   const macro::BlockWords& words = evaluated.value();
   warnLeftOut(placed.line, words.leftOut);
-  Result<std::size_t> after = words.macroCall ? callMacro(index, words.words) : [&]() -> Result<std::size_t> {
-    auto parsed = parseBlock(words.words, placed.line, placed.column, options_.dialect);
-    if (!parsed.ok()) return parsed.error();
-    return runWords(index, parsed.value());
-  }();
-  if (!after.ok() && !words.leftOut.empty()) {
-    // The word left out is often why the block fails (G90 without its X): say so.
-    Error error = after.error();
-    error.message += " (" + macro::leftOutNote(words.leftOut) + ")";
-    return error;
+  Result<std::size_t> after = index + 1;
+  if (words.macroCall) {
+    after = callMacro(index, words.words);
+  } else if (auto parsed = parseBlock(words.words, placed.line, placed.column, options_.dialect); parsed.ok()) {
+    after = runWords(index, parsed.value());
+  } else {
+    after = parsed.error();
   }
+  if (!after.ok()) return macro::withLeftOutNote(after.error(), words.leftOut);
   return after;
 }
 

@@ -14,11 +14,7 @@ Result<ParsedBlock> sortedWords(const ProgramBlock& block, const macro::Variable
   auto evaluated = macro::evaluateWords(macroBlock, variables != nullptr ? *variables : none, block.line, inch);
   if (!evaluated.ok()) return evaluated.error();
   auto parsed = parseBlock(evaluated.value().words, block.line, block.column, dialect);
-  if (!parsed.ok() && !evaluated.value().leftOut.empty()) {
-    Error error = parsed.error();
-    error.message += " (" + macro::leftOutNote(evaluated.value().leftOut) + ")";
-    return error;
-  }
+  if (!parsed.ok()) return macro::withLeftOutNote(parsed.error(), evaluated.value().leftOut);
   return parsed;
 }
 

@@ -98,14 +98,15 @@ Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& v
   return out;
 }
 
-std::string leftOutNote(const std::vector<VacantWord>& leftOut) {
+Error withLeftOutNote(Error error, const std::vector<VacantWord>& leftOut) {
   std::string note;
   for (const VacantWord& word : leftOut) {
     const std::string variable = word.written.substr(word.written.find('#'));
     note += fmt::format("{}{} at column {} was left out: {} is vacant", note.empty() ? "" : "; ", word.written,
                         word.column, variable);
   }
-  return note;
+  if (!note.empty()) error.message += " (" + note + ")";
+  return error;
 }
 
 }  // namespace lathesim::interp::macro

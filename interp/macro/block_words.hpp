@@ -42,7 +42,9 @@ Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& v
 /// A word for `letter` with a value a macro expression gave, rounded and written as above.
 Word evaluatedWord(char letter, int column, double value, bool inch);
 
-/// "X#1 was left out: #1 is vacant", for the messages of a block that has such words.
-std::string leftOutNote(const std::vector<VacantWord>& leftOut);
+/// `error` of a block whose words `leftOut` were left out, with a note naming them ("X#1 at
+/// column 5 was left out: #1 is vacant"): the word left out is often why the block fails (G90
+/// without its X).
+Error withLeftOutNote(Error error, const std::vector<VacantWord>& leftOut);
 
 }  // namespace lathesim::interp::macro
