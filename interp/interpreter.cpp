@@ -21,8 +21,10 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
-  const Program program = readProgram(programText, options.blockDelete, options.dialect);
-  Status status = runProgram(program, options, result.toolpath, warnings);
+  Status status = [&] {  // the program read is freed before compensation needs memory
+    const Program program = readProgram(programText, options.blockDelete, options.dialect);
+    return runProgram(program, options, result.toolpath, warnings);
+  }();
   // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
   if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
   if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);

@@ -19,7 +19,7 @@ Result<BlockContent> contentOf(const std::vector<Token>& tokens, const RawBlock&
   if (macro::needsMacroReader(tokens)) {
     auto macroBlock = macro::readMacroBlock(tokens, raw);
     if (!macroBlock.ok()) return macroBlock.error();
-    return BlockContent{std::move(macroBlock).value()};
+    return BlockContent{std::make_shared<const macro::MacroBlock>(std::move(macroBlock).value())};
   }
   std::vector<Word> words;
   for (const Token& token : tokens) words.push_back(token.word);

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <variant>
@@ -21,8 +22,9 @@
 
 namespace lathesim::interp {
 
-/// What a block says: plain words sorted into codes, or a block of Custom Macro B.
-using BlockContent = std::variant<ParsedBlock, macro::MacroBlock>;
+/// What a block says: plain words sorted into codes, or a block of Custom Macro B (held apart,
+/// so that the many plain blocks of a long program stay small).
+using BlockContent = std::variant<ParsedBlock, std::shared_ptr<const macro::MacroBlock>>;
 
 struct ProgramBlock {
   int ordinal = 0;        // 0-based position among the blocks of the text
@@ -40,7 +42,9 @@ struct ProgramBlock {
   }
   /// The block of Custom Macro B; nullptr for a block of plain words or a bad one.
   const macro::MacroBlock* macroBlock() const {
-    return content.ok() ? std::get_if<macro::MacroBlock>(&content.value()) : nullptr;
+    if (!content.ok()) return nullptr;
+    const auto* held = std::get_if<std::shared_ptr<const macro::MacroBlock>>(&content.value());
+    return held != nullptr ? held->get() : nullptr;
   }
 };
 
