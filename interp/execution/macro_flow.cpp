@@ -1,6 +1,8 @@
 #include "interp/execution/macro_flow.hpp"
 
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -14,7 +16,15 @@ constexpr int kMaxSequenceNumber = 99999;
 }  // namespace
 
 MacroFlow::MacroFlow(const Program& program, macro::VariableStore& variables, StepGuard& guard)
-    : program_(program), variables_(variables), guard_(guard), pairs_(macro::pairLoops(program)), loops_(1) {}
+    : program_(program), variables_(variables), guard_(guard), pairs_(macro::pairLoops(program)), loops_(1) {
+  std::map<std::pair<int, int>, std::size_t> first;  // (program, N) → its first block
+  for (std::size_t i = 0; i < program.blocks.size(); ++i) {
+    const ProgramBlock& block = program.blocks[i];
+    if (block.skipped || !block.sequenceNumber) continue;
+    const auto [where, inserted] = first.emplace(std::pair{program.programOf[i], *block.sequenceNumber}, i);
+    if (!inserted) numberedTwice_.emplace(where->second, i);
+  }
+}
 
 void MacroFlow::enterProgram() {
   loops_.emplace_back();
@@ -87,6 +97,13 @@ Result<std::size_t> MacroFlow::jump(const macro::Jump& jump, std::size_t index) 
   if (!found) {
     return Error{line, jump.target.column,
                  fmt::format("GOTO {}: there is no block N{} in this program (alarm 128)", number, number)};
+  }
+  // Which of two blocks numbered alike a control jumps to (the first, the next one down …)
+  // could not be checked in a manual: refuse rather than guess.
+  if (const auto twice = numberedTwice_.find(*found); twice != numberedTwice_.end()) {
+    return Error{line, jump.target.column,
+                 fmt::format("GOTO {}: this program has N{} twice (lines {} and {}); number the blocks apart",
+                             number, number, program_.blocks[*found].line, program_.blocks[twice->second].line)};
   }
   // Loops the target lies outside of are left.
   auto& running = loops_.back();

@@ -7,6 +7,7 @@
 // leave loops but not enter one, as on the controls.
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,8 @@ class MacroFlow {
   macro::VariableStore& variables_;
   StepGuard& guard_;
   macro::LoopPairs pairs_;
+  std::map<std::size_t, std::size_t> numberedTwice_;  // first block of an N the program repeats →
+                                                      // its second
   std::vector<std::vector<RunningLoop>> loops_;  // per running program, innermost loop last
 };
 

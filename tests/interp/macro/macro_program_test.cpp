@@ -163,6 +163,7 @@ TEST(MacroProgram, GotoForwardBackwardAndToAnExpression) {
 TEST(MacroProgram, GotoToAMissingNumberIsAnError) {
   expectError(run("G00 X50\nGOTO 30\nN20 M30\n"), 2, 6, "GOTO 30: there is no block N30 in this program");
   expectError(run("GOTO 0\n"), 1, 6, "sequence numbers run from 1 to 99999");
+  expectError(run("N10 G00 X50\nGOTO 10\nN10 G00 X60\n"), 2, 6, "this program has N10 twice (lines 1 and 3)");
 }
 
 TEST(MacroProgram, NestedLoopsAndAGotoOutOfALoop) {
