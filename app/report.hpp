@@ -30,6 +30,7 @@ struct RunFigures {
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
   sim::SimulationResult simulation;
   std::vector<interp::Diagnostic> warnings;
+  std::vector<interp::Diagnostic> notes;
   RunTimings timing;
 };
 

@@ -29,9 +29,13 @@ int runCommand(const RunOptions& options) {
   return 0;
 }
 
-int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
-                  std::optional<interp::Dialect> dialect, std::optional<long long> maxSteps) {
-  const std::optional<job::Job> loaded = job::loadJob(program, setup, dialect, maxSteps);
+job::JobRequest jobRequestOf(const RunOptions& options) {
+  return {options.program, options.setup, options.dialect, options.programDirectories, options.stock,
+          options.maxSteps};
+}
+
+int expandCommand(const job::JobRequest& request) {
+  const std::optional<job::Job> loaded = job::loadJob(request);
   if (!loaded) return 1;
   interp::writeToolpathCsv(loaded->toolpath, std::cout);
   return 0;

@@ -23,7 +23,7 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
 }
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
-  std::optional<job::Job> loaded = job::loadJob(options.program, options.setup, options.dialect, options.maxSteps);
+  std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
   run.job = std::move(*loaded);
@@ -43,6 +43,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.moves = run.job.toolpath.moves.size();
   figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
   figures.warnings = run.job.warnings;
+  figures.notes = run.job.notes;
 
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);

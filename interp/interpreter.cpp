@@ -3,12 +3,39 @@
 #include <algorithm>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "interp/compensation/nose_compensation.hpp"
 #include "interp/execution/program_runner.hpp"
 #include "interp/motion/feed_warnings.hpp"
+#include "interp/text/control_family.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp {
+namespace {
+
+// Each move from its work coordinate system into the setup's frame. A change of system
+// re-expresses the position (work_coordinates.cpp), so consecutive moves stay joined.
+void placeInSetupFrame(std::vector<Move>& moves) {
+  for (Move& move : moves) {
+    move.from += move.workShift;
+    move.to += move.workShift;
+    if (isArc(move.kind)) move.center += move.workShift;
+  }
+}
+
+// A program of another control family is refused as a whole, naming the family.
+Status refuseForeignProgram(std::string_view programText) {
+  const auto foreign = recogniseForeignProgram(programText);
+  if (!foreign) return success();
+  return Error{foreign->line, foreign->column,
+               fmt::format("this is a program for {} ('{}'), not Fanuc/GSK lathe G-code: lathesim "
+                           "reads the dialects fanuc-a, fanuc-b and hnc and does not translate other "
+                           "control families",
+                           foreign->family, foreign->evidence)};
+}
+
+}  // namespace
 
 bool InterpretResult::ok() const {
   return std::none_of(diagnostics.begin(), diagnostics.end(),
@@ -21,28 +48,37 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
-  Status status = [&] {  // the program read is freed before compensation needs memory
-    const Program program = readProgram(programText, options.blockDelete, options.dialect);
-    return runProgram(program, options, result.toolpath, warnings);
-  }();
-  // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
+  std::vector<Error> notes;
+  Program program = readProgram(programText, options.blockDelete, options.dialect);
+  for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
+  Status status = refuseForeignProgram(programText);
+  if (status.ok()) status = runProgram(program, options, result.toolpath, warnings);
+  // The blocks are freed before compensation needs memory; the texts stay for the messages.
+  program.blocks = {};
+  program.programOf = {};
+  // The moves are made as programmed, in the work coordinate systems; placed in the setup's
+  // frame, then G41/G42 and the tool offsets' shifts are applied.
+  if (status.ok()) placeInSetupFrame(result.toolpath.moves);
   if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
-  if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);
+  if (status.ok()) status = applyToolOffsets(result.toolpath.moves);
+  // A diagnostic in the file it names: the program's own, or a subprogram's.
+  const auto diagnostic = [&](Severity severity, const Error& e) {
+    std::string_view text = programText;
+    for (const SourceText& source : program.sources)
+      if (!e.file.empty() && source.name == e.file) text = source.text;
+    return Diagnostic{severity, e.file.empty() ? fileName : e.file, e.line, e.column, e.message, lineOf(text, e.line)};
+  };
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.
-    const Error& error = status.error();
-    result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,
-                                  error.message, lineOf(programText, error.line)});
+    result.diagnostics.push_back(diagnostic(Severity::Error, status.error()));
     return result;
   }
   for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
   std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
     return a.line != b.line ? a.line < b.line : a.column < b.column;
   });
-  for (const Error& warning : warnings) {
-    result.diagnostics.push_back({Severity::Warning, fileName, warning.line, warning.column,
-                                  warning.message, lineOf(programText, warning.line)});
-  }
+  for (const Error& warning : warnings) result.diagnostics.push_back(diagnostic(Severity::Warning, warning));
+  for (const Error& note : notes) result.diagnostics.push_back(diagnostic(Severity::Note, note));
   return result;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // G-code text → Toolpath. The single entry point of the interp module.
 
+#include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -13,6 +15,7 @@
 #include "interp/execution/step_guard.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/execution/work_frame.hpp"
 
 namespace lathesim::interp {
 
@@ -20,12 +23,19 @@ struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
                                    // T word. A T word naming another number is an error.
+  std::function<std::string(int tool)> toolDefinitionHint;  // how to define a missing tool (the
+                                                            // setup's TOML), for that error
   bool blockDelete = true;         // '/' blocks are skipped when true
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
   FeedMode initialFeedMode = FeedMode::PerRevolution;  // G98/G99 before the program sets one
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
+  WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)
+  std::vector<std::filesystem::path> programDirectories;  // where M98 finds programs the text
+                                                         // lacks, in order (program_library.hpp)
+  std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
+                                  // reference point (or the start) if unset
   long long maxSteps = kDefaultMaxSteps;  // blocks a run may run again (a block's first run is
                                          // free): ends endless loops (execution/step_guard.hpp)
   std::map<int, double> macroVariables;  // common macro variables set before the run
@@ -35,7 +45,7 @@ struct InterpreterOptions {
 struct InterpretResult {
   Toolpath toolpath;
   std::vector<Diagnostic> diagnostics;  // the error that stopped the program alone, or the
-                                        // warnings of a program that ran, by line
+                                        // warnings and notes of a program that ran, by line
   bool ok() const;
 };
 

@@ -24,7 +24,9 @@ bool allowedInContour(GGroup group, int number) {
     case GGroup::NoseRadius:                    // G40 G41 G42
     case GGroup::Distance: return true;         // G90/G91 of the dialects that have them
     case GGroup::Plane:
-    case GGroup::Units: return false;
+    case GGroup::Units:
+    case GGroup::WorkCoordinates:
+    case GGroup::DrillingCycle: return false;
   }
   return false;
 }
@@ -83,6 +85,13 @@ Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
   return *found;
 }
 
+// A block that holds its N number and nothing else.
+bool isLabelOnly(const ProgramBlock& block) {
+  const ParsedBlock* parsed = block.plainWords();
+  return parsed != nullptr && parsed->gCodes.empty() && parsed->mCodes.empty() && parsed->words.size() == 1 &&
+         parsed->has('N');
+}
+
 }  // namespace
 
 Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequest& request,
@@ -99,7 +108,7 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
   if (!first.ok()) return first.error();
   auto last = findSequence(program, cycleIndex, request, *request.q);
   if (!last.ok()) return last.error();
-  const ContourSpan span{first.value(), last.value()};
+  ContourSpan span{first.value(), last.value(), first.value()};
   if (span.last < span.first) {
     return Error{request.line, request.q->column,
                  fmt::format("{} {} {}: N{} comes before N{}; Q names the contour's last block",
@@ -108,6 +117,8 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
                              static_cast<int>(request.p->value))};
   }
   const std::string name = spanName(program, span);
+  while (span.start < span.last && (program.blocks[span.start].skipped || isLabelOnly(program.blocks[span.start])))
+    ++span.start;
   int count = 0;
   std::set<int> numbers;
   for (std::size_t i = span.first; i <= span.last; ++i) {
@@ -128,7 +139,7 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
                                "its own N number",
                                *block.sequenceNumber, request.cycle, name)};
     }
-    auto status = checkContourBlock(words.value(), i == span.first, request.cycle, name);
+    auto status = checkContourBlock(words.value(), i == span.start, request.cycle, name);
     if (!status.ok()) return status.error();
   }
   if (count > kMaxContourBlocks) {
@@ -162,7 +173,7 @@ Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan spa
                                         const InterpreterOptions& options) {
   auto run = runContourBlocks(cycle, span, state, options);
   if (!run.ok()) return run.error();
-  const ProgramBlock& first = cycle.program.blocks[span.first];
+  const ProgramBlock& first = cycle.program.blocks[span.start];
   auto firstWords = sortedWords(first, cycle.variables, state.inch, options.dialect);
   if (!firstWords.ok()) return firstWords.error();
   const ParsedBlock& firstParsed = firstWords.value();

@@ -46,8 +46,11 @@ class CallStack {
   Result<CallReturn> giveBack(int column, std::size_t index);
   /// When the text ended inside a subprogram: the error, located at its M98.
   std::optional<Error> unfinished() const;
-  /// How many subprograms and macros are running.
-  std::size_t depth() const { return frames_.size(); }
+  /// The main program's block whose M98 or G65 the running programs descend from, if any runs.
+  std::optional<std::size_t> outermostCall() const {
+    if (frames_.empty()) return std::nullopt;
+    return frames_.front().callFrom;
+  }
 
  private:
   struct Frame {

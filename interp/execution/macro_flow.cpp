@@ -16,12 +16,20 @@ constexpr int kMaxSequenceNumber = 99999;
 }  // namespace
 
 MacroFlow::MacroFlow(const Program& program, macro::VariableStore& variables, StepGuard& guard)
-    : program_(program), variables_(variables), guard_(guard), pairs_(macro::pairLoops(program)), loops_(1) {
+    : program_(program), variables_(variables), guard_(guard), loops_(1) {
+  findStructure();
+}
+
+void MacroFlow::programGrew() { findStructure(); }
+
+void MacroFlow::findStructure() {
+  pairs_ = macro::pairLoops(program_);
+  numberedTwice_.clear();
   std::map<std::pair<int, int>, std::size_t> first;  // (program, N) → its first block
-  for (std::size_t i = 0; i < program.blocks.size(); ++i) {
-    const ProgramBlock& block = program.blocks[i];
+  for (std::size_t i = 0; i < program_.blocks.size(); ++i) {
+    const ProgramBlock& block = program_.blocks[i];
     if (block.skipped || !block.sequenceNumber) continue;
-    const auto [where, inserted] = first.emplace(std::pair{program.programOf[i], *block.sequenceNumber}, i);
+    const auto [where, inserted] = first.emplace(std::pair{program_.programOf[i], *block.sequenceNumber}, i);
     if (!inserted) numberedTwice_.emplace(where->second, i);
   }
 }

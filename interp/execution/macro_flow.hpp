@@ -29,6 +29,9 @@ class MacroFlow {
   /// `warnings`.
   Result<std::size_t> run(std::size_t index, std::vector<Error>& warnings);
 
+  /// The program gained blocks (a called program read from its file): their loops and N
+  /// numbers are found.
+  void programGrew();
   /// A subprogram or macro starts or ends; M99 runs the program again (a repeat count): the
   /// loops it had running are abandoned.
   void enterProgram();
@@ -47,6 +50,7 @@ class MacroFlow {
   Result<std::size_t> loopStart(const macro::LoopStart& start, std::size_t index);
   Result<std::size_t> loopEnd(const macro::LoopEnd& end, std::size_t index);
   Result<std::size_t> partnerOf(std::size_t index) const;
+  void findStructure();  // the loop pairs and the N numbers given twice
 
   const Program& program_;
   macro::VariableStore& variables_;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 #include <string>
+#include <string_view>
+#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -15,14 +17,14 @@
 #include "interp/macro/block_words.hpp"
 #include "interp/macro/macro_call.hpp"
 #include "interp/macro/variables.hpp"
+#include "interp/text/program_library.hpp"
 
 namespace lathesim::interp {
 namespace {
 
 class ProgramRunner {
  public:
-  ProgramRunner(const Program& program, const InterpreterOptions& options, Toolpath& toolpath,
-                std::vector<Error>& warnings)
+  ProgramRunner(Program& program, const InterpreterOptions& options, Toolpath& toolpath, std::vector<Error>& warnings)
       : program_(program),
         options_(options),
         toolpath_(toolpath),
@@ -31,7 +33,8 @@ class ProgramRunner {
         variables_(options.macroVariables),
         guard_(options.maxSteps, program.blocks.size()),
         flow_(program, variables_, guard_) {
-    state_.position = options.startPosition;
+    state_.frame.offsets = options.workOffsets;
+    state_.position = options.startPosition - state_.frame.shift();
     state_.feedMode = options.initialFeedMode;
     if (!options.toolNumbers.empty()) state_.tool = options.toolNumbers.front();
   }
@@ -39,14 +42,23 @@ class ProgramRunner {
   Status run();
 
  private:
+  Result<std::size_t> runBlock(std::size_t index);
   Error stepLimitError(std::size_t index) const;
   Result<std::size_t> runMacroWords(std::size_t index, const macro::MacroBlock& block);
   Result<std::size_t> runWords(std::size_t index, const ParsedBlock& words);
   Result<std::size_t> callMacro(std::size_t index, const std::vector<Word>& words);
   Result<std::size_t> giveBack(int column, std::size_t index);
-  void warnLeftOut(int line, const std::vector<macro::VacantWord>& leftOut);
+  Status loadProgram(int programNumber, std::string_view code, int column, std::size_t caller);
+  void warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut);
+  void warn(Error warning, std::size_t index) { warnings_.push_back(inFile(std::move(warning), index)); }
+  // An error or warning of block `index`, naming its file when it is a subprogram's own.
+  Error inFile(Error error, std::size_t index) const {
+    const ProgramBlock& block = program_.blocks[index];
+    if (block.source != 0) error.file = program_.sources[static_cast<std::size_t>(block.source)].name;
+    return error;
+  }
 
-  const Program& program_;
+  Program& program_;
   const InterpreterOptions& options_;
   Toolpath& toolpath_;
   std::vector<Error>& warnings_;
@@ -62,23 +74,7 @@ Status ProgramRunner::run() {
   std::size_t next = 0;
   while (!state_.ended && next < program_.blocks.size()) {
     const std::size_t index = next;
-    const ProgramBlock& block = program_.blocks[index];
-    toolpath_.blockCount = std::max(toolpath_.blockCount, block.ordinal + 1);
-    if (block.skipped) {
-      ++next;
-      continue;
-    }
-    if (!block.content.ok()) return block.content.error();
-    if (guard_.step(index)) return stepLimitError(index);
-
-    Result<std::size_t> after = index + 1;
-    if (const ParsedBlock* words = block.plainWords()) {
-      after = runWords(index, *words);
-    } else if (const macro::MacroBlock* macroBlock = block.macroBlock(); macroBlock->statement) {
-      after = flow_.run(index, warnings_);
-    } else {
-      after = runMacroWords(index, *macroBlock);
-    }
+    auto after = runBlock(index);
     if (!after.ok()) return after.error();
     next = after.value();
   }
@@ -88,40 +84,69 @@ Status ProgramRunner::run() {
   return success();
 }
 
+// Runs block `index`; the block to run next, or the error located in its file. Loading a
+// called program's file grows the blocks: no reference to one is kept across a call.
+Result<std::size_t> ProgramRunner::runBlock(std::size_t index) {
+  const ProgramBlock& block = program_.blocks[index];
+  toolpath_.blockCount = std::max(toolpath_.blockCount, block.ordinal + 1);
+  if (block.skipped) return index + 1;
+  if (!block.content.ok()) return inFile(block.content.error(), index);
+  if (guard_.step(index)) return stepLimitError(index);
+
+  Result<std::size_t> after = index + 1;
+  if (const ParsedBlock* words = block.plainWords()) {
+    after = runWords(index, *words);
+  } else if (const macro::MacroBlock* macroBlock = block.macroBlock(); macroBlock->statement) {
+    std::vector<Error> stops;
+    after = flow_.run(index, stops);
+    for (Error& stop : stops) warn(std::move(stop), index);
+  } else {
+    after = runMacroWords(index, *macroBlock);
+  }
+  if (!after.ok()) return after.error().file.empty() ? inFile(after.error(), index) : after.error();
+  return after;
+}
+
 Error ProgramRunner::stepLimitError(std::size_t index) const {
   const std::string limit = fmt::format("{} blocks run again", guard_.maxSteps());
   const std::string raise = "raise the step limit with --max-steps or [macro] max_steps if the program is meant to "
                             "run longer";
   if (const auto loop = guard_.stuckLoop()) {
     const ProgramBlock& block = program_.blocks[loop->block];
-    return Error{block.line, loop->column,
-                 fmt::format("the program is still in this loop after {}: it never ends, or runs longer than "
-                             "the step limit; {}",
-                             limit, raise)};
+    return inFile(Error{block.line, loop->column,
+                        fmt::format("the program is still in this loop after {}: it never ends, or runs longer than "
+                                    "the step limit; {}",
+                                    limit, raise)},
+                  loop->block);
   }
   const ProgramBlock& block = program_.blocks[index];
-  return Error{block.line, block.column, fmt::format("the program has reached {} and is not finished; {}", limit, raise)};
+  return inFile(Error{block.line, block.column,
+                      fmt::format("the program has reached {} and is not finished; {}", limit, raise)},
+                index);
 }
 
-void ProgramRunner::warnLeftOut(int line, const std::vector<macro::VacantWord>& leftOut) {
+void ProgramRunner::warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut) {
+  const int line = program_.blocks[index].line;
   for (const macro::VacantWord& word : leftOut) {
     if (!warnedLeftOut_.insert({line, word.column}).second) continue;
-    warnings_.push_back({line, word.column,
-                         fmt::format("{}: {} is vacant, so {} is left out of this block, as a Fanuc control does",
-                                     word.written, word.written.substr(word.written.find('#')), word.letter)});
+    warn({line, word.column,
+          fmt::format("{}: {} is vacant, so {} is left out of this block, as a Fanuc control does", word.written,
+                      word.written.substr(word.written.find('#')), word.letter)},
+         index);
   }
 }
 
 Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro::MacroBlock& block) {
-  const ProgramBlock& placed = program_.blocks[index];
-  auto evaluated = macro::evaluateWords(block, variables_, placed.line, state_.inch);
+  const int line = program_.blocks[index].line;
+  const int column = program_.blocks[index].column;
+  auto evaluated = macro::evaluateWords(block, variables_, line, state_.inch);
   if (!evaluated.ok()) return evaluated.error();
-  const macro::BlockWords& words = evaluated.value();
-  warnLeftOut(placed.line, words.leftOut);
+  const macro::BlockWords words = std::move(evaluated).value();  // owned: a call may grow the blocks
+  warnLeftOut(index, words.leftOut);
   Result<std::size_t> after = index + 1;
   if (words.macroCall) {
     after = callMacro(index, words.words);
-  } else if (auto parsed = parseBlock(words.words, placed.line, placed.column, options_.dialect); parsed.ok()) {
+  } else if (auto parsed = parseBlock(words.words, line, column, options_.dialect); parsed.ok()) {
     after = runWords(index, parsed.value());
   } else {
     after = parsed.error();
@@ -131,36 +156,42 @@ Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro:
 }
 
 Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock& words) {
-  const ProgramBlock& block = program_.blocks[index];
+  const int source = program_.blocks[index].source;
   const BlockPlace place{program_, index, &variables_};
-  auto outcome = executeBlock(words, state_, options_, block.ordinal, &place);
+  auto outcome = executeBlock(words, state_, options_, program_.blocks[index].ordinal, &place);
   if (!outcome.ok()) return outcome.error();
 
   BlockOutcome& done = outcome.value();
-  const ProgramFlow& flow = done.flow;
-  std::size_t next = index + 1;
-  if (flow.call) {
-    auto target = calls_.call(*flow.call, index);
-    if (!target.ok()) return target.error();
-    flow_.enterProgram();
-    next = target.value();
-  } else if (flow.returnColumn) {
-    auto target = giveBack(*flow.returnColumn, index);
-    if (!target.ok()) return target.error();
-    next = target.value();
-  } else if (flow.continueAfter) {
-    next = *flow.continueAfter + 1;
+  if (source != 0 && calls_.outermostCall()) {  // a subprogram's own file: the main program's call
+    const ProgramBlock& site = program_.blocks[*calls_.outermostCall()];
+    for (Move& move : done.moves) std::tie(move.line, move.column) = std::pair{site.line, site.column};
+    for (CycleStart& start : done.cycleStarts) std::tie(start.line, start.column) = std::pair{site.line, site.column};
   }
+  for (Error& warning : done.warnings) warn(std::move(warning), index);
+  const ProgramFlow flow = done.flow;
   state_ = std::move(done.state);
   toolpath_.moves.insert(toolpath_.moves.end(), done.moves.begin(), done.moves.end());
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
-  warnings_.insert(warnings_.end(), done.warnings.begin(), done.warnings.end());
-  return next;
+  if (flow.call) {
+    if (auto loaded = loadProgram(flow.call->programNumber, "M98", flow.call->column, index); !loaded.ok()) {
+      return loaded.error();
+    }
+    auto target = calls_.call(*flow.call, index);
+    if (!target.ok()) return target.error();
+    flow_.enterProgram();
+    return target;
+  }
+  if (flow.returnColumn) return giveBack(*flow.returnColumn, index);
+  if (flow.continueAfter) return *flow.continueAfter + 1;
+  return index + 1;
 }
 
 Result<std::size_t> ProgramRunner::callMacro(std::size_t index, const std::vector<Word>& words) {
   auto call = macro::readMacroCall(words, program_.blocks[index].line);
   if (!call.ok()) return call.error();
+  if (auto loaded = loadProgram(call.value().programNumber, "G65", call.value().column, index); !loaded.ok()) {
+    return loaded.error();
+  }
   auto target = calls_.callMacro(call.value(), index);
   if (!target.ok()) return target.error();
   variables_.pushLevel(call.value().arguments);
@@ -182,9 +213,33 @@ Result<std::size_t> ProgramRunner::giveBack(int column, std::size_t index) {
   return done.next;
 }
 
+// A program M98 or G65 calls that the text does not hold: read it from its file
+// (program_library.hpp), or say which names were looked for where.
+Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int column, std::size_t caller) {
+  if (program_.programStart.count(programNumber) != 0) return success();
+  if (const auto file = findProgramFile(programNumber, options_.programDirectories)) {
+    appendProgramFile(program_, file->path.string(), file->text, programNumber, options_.blockDelete,
+                      options_.dialect);
+    guard_.programGrew(program_.blocks.size());
+    flow_.programGrew();
+    return success();
+  }
+  const auto names = programFileNames(programNumber);
+  std::string directories;
+  for (const auto& directory : options_.programDirectories)
+    directories += (directories.empty() ? "" : ", ") + directory.string();
+  return inFile(Error{program_.blocks[caller].line, column,
+                      fmt::format("{} calls O{:04}, which is neither in this program nor in a file: "
+                                  "looked for {}, {}, {} … {} in {}; give the directory of the "
+                                  "control's programs with --programs DIR",
+                                  code, programNumber, names[0], names[1], names[2], names.back(),
+                                  directories.empty() ? "no directory" : directories)},
+                caller);
+}
+
 }  // namespace
 
-Status runProgram(const Program& program, const InterpreterOptions& options, Toolpath& toolpath,
+Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
                   std::vector<Error>& warnings) {
   return ProgramRunner(program, options, toolpath, warnings).run();
 }

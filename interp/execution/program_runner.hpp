@@ -4,6 +4,10 @@
 // Macro B with their words evaluated as they run (their values may change between runs),
 // the statements through MacroFlow, and the calls (M98, G65) and returns (M99) through the
 // call stack. Every run of a block counts against the step limit.
+// A program called that the text lacks is read from its file (text/program_library.hpp) and
+// appended to `program`; an error or warning of a block of that file names the file, and its
+// moves carry the line of the call in the main program that led there, so every line of the
+// toolpath is a line of the program.
 
 #include <vector>
 
@@ -15,7 +19,7 @@ namespace lathesim::interp {
 
 /// Runs `program`, appending its moves to `toolpath` and its warnings to `warnings`. A
 /// block's read error is reported when execution reaches it.
-Status runProgram(const Program& program, const InterpreterOptions& options, Toolpath& toolpath,
+Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
                   std::vector<Error>& warnings);
 
 }  // namespace lathesim::interp

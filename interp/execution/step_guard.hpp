@@ -39,6 +39,8 @@ class StepGuard {
   bool step(std::size_t index);
   /// A jump back from block `from` to block `to` (≤ from) of the innermost running program.
   void jumpedBack(std::size_t from, std::size_t to, LoopSite site);
+  /// The program gained blocks (a called program read from its file): `blockCount` in all.
+  void programGrew(std::size_t blockCount) { ran_.resize(blockCount, false); }
   /// A subprogram or macro starts (it has loops of its own) or ends.
   void enterProgram() { frames_.emplace_back(); }
   void leaveProgram() { frames_.pop_back(); }

@@ -169,7 +169,7 @@ Result<MacroBlock> readMacroBlock(const std::vector<Token>& tokens, const RawBlo
   const int endColumn = raw.chars.empty() ? raw.column : raw.chars.back().column + 1;
   TokenCursor cursor(tokens, raw.line, endColumn);
   MacroBlock block;
-  if (!raw.comments.empty()) block.message = raw.comments.front().text;
+  if (!raw.comments.empty()) block.message = raw.comments.front();
   // A statement may follow the block's N number.
   while (cursor.nextIs(TokenKind::Word) && cursor.peek()->word.letter == 'N') block.words.push_back({cursor.take().word, {}});
   if (startsStatement(cursor)) {

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "interp/text/lookalikes.hpp"
 #include "interp/text/utf8.hpp"
 
 namespace lathesim::interp {
@@ -16,32 +17,56 @@ namespace {
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
+// C0 control codes but tab and the line ends, and DEL: tape and DNC leftovers.
+bool isControl(char c) {
+  const auto byte = static_cast<unsigned char>(c);
+  return (byte < 0x20 && c != '\t' && c != '\n' && c != '\r') || byte == 0x7F;
+}
+
+std::string controlName(char c) {
+  static constexpr std::string_view kNames[] = {
+      "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS",  "HT",  "LF",
+      "VT",  "FF",  "CR",  "SO",  "SI",  "DLE", "DC1", "DC2", "DC3", "DC4", "NAK",
+      "SYN", "ETB", "CAN", "EM",  "SUB", "ESC", "FS",  "GS",  "RS",  "US"};
+  const auto byte = static_cast<unsigned char>(c);
+  return byte < 0x20 ? std::string(kNames[byte]) : std::string("DEL");
+}
+
+bool isAsciiLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isAsciiDigit(char c) { return c >= '0' && c <= '9'; }
+
+// The rule in lexer.hpp: does the rest of a line after ';' read as prose?
+bool readsAsProse(std::string_view tail) {
+  std::size_t i = 0;
+  const auto skipBlanks = [&](std::size_t at) {
+    while (at < tail.size() && isBlank(tail[at])) ++at;
+    return at;
+  };
+  i = skipBlanks(i);
+  if (i == tail.size()) return false;
+  if (!isAsciiLetter(tail[i])) return std::string_view("#/:%[(").find(tail[i]) == std::string_view::npos;
+  std::size_t run = i;
+  while (run < tail.size() && isAsciiLetter(tail[run])) ++run;
+  const std::size_t after = skipBlanks(run);
+  const char next = after < tail.size() ? tail[after] : '\0';
+  if (run - i == 1) return isAsciiLetter(next);
+  std::string word(tail.substr(i, run - i));
+  for (char& c : word) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if ((word == "IF" || word == "WHILE") && next == '[') return false;
+  if ((word == "GOTO" || word == "END" || word == "DO") && (isAsciiDigit(next) || next == '#' || next == '['))
+    return false;
+  return true;
+}
+
 // The address letters of lathe G-code (system A). Others are unknown letters, except in a
 // G65 block, where every letter but G L N O P passes an argument.
-constexpr std::string_view kKnownLetters = "FGIJKLMNOPQRSTUWXZ";
+// B and C are read as words so that a code taking them (G10's C) can; left over, they are
+// refused as the axes this lathe lacks (block_executor.cpp).
+constexpr std::string_view kKnownLetters = "BCFGIJKLMNOPQRSTUWXZ";
 
-// The words of Fanuc Custom Macro B. A run of letters that is one of these is a name, never
-// address letters: GOTO is not G with no number (the controls read them the same way, and
-// spaces inside a block are insignificant there too).
-constexpr std::array<std::string_view, 33> kMacroNames{
-    "IF",  "GOTO", "THEN", "WHILE", "DO",  "END",                                // statements
-    "SIN", "COS",  "TAN",  "ASIN",  "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX",  // functions
-    "FUP", "LN",   "EXP",  "POW",   "BIN", "BCD",  "ADP",
-    "EQ",  "NE",   "GT",   "GE",    "LT",  "LE",                                 // comparisons
-    "AND", "OR",   "XOR",  "MOD"};                                               // operators
-
-bool isAsciiLetter(const SourceChar& c) {
-  return c.text.size() == 1 && std::isalpha(static_cast<unsigned char>(c.text[0]));
-}
-
-bool isDigit(const SourceChar& c) {
-  return c.text.size() == 1 && std::isdigit(static_cast<unsigned char>(c.text[0]));
-}
-
-bool is(const SourceChar& c, char expected) { return c.text.size() == 1 && c.text[0] == expected; }
-
-bool isNumberChar(const SourceChar& c) {
-  return isDigit(c) || is(c, '.') || is(c, '+') || is(c, '-');
+bool isNumberChar(const std::string& text) {
+  return text.size() == 1 && (std::isdigit(static_cast<unsigned char>(text[0])) ||
+                              text[0] == '.' || text[0] == '+' || text[0] == '-');
 }
 
 // Accepts an optional sign, then digits with at most one decimal point, at least one digit.
@@ -68,6 +93,20 @@ double readNumber(std::string_view number) {
   return value;
 }
 
+// The words of Fanuc Custom Macro B. A run of letters that is one of these is a name, never
+// address letters: GOTO is not G with no number (the controls read them the same way, and
+// spaces inside a block are insignificant there too).
+constexpr std::array<std::string_view, 33> kMacroNames{
+    "IF",  "GOTO", "THEN", "WHILE", "DO",  "END",                                // statements
+    "SIN", "COS",  "TAN",  "ASIN",  "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX",  // functions
+    "FUP", "LN",   "EXP",  "POW",   "BIN", "BCD",  "ADP",
+    "EQ",  "NE",   "GT",   "GE",    "LT",  "LE",                                 // comparisons
+    "AND", "OR",   "XOR",  "MOD"};                                               // operators
+
+bool isLetter(const SourceChar& c) { return c.text.size() == 1 && isAsciiLetter(c.text[0]); }
+bool isDigit(const SourceChar& c) { return c.text.size() == 1 && isAsciiDigit(c.text[0]); }
+bool is(const SourceChar& c, char expected) { return c.text.size() == 1 && c.text[0] == expected; }
+
 std::string upperCase(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return text;
@@ -77,14 +116,14 @@ std::string upperCase(std::string text) {
 std::string numberAt(const std::vector<SourceChar>& chars, std::size_t from, std::size_t& end) {
   std::string number;
   end = from;
-  while (end < chars.size() && isNumberChar(chars[end])) number += chars[end++].text;
+  while (end < chars.size() && isNumberChar(chars[end].text)) number += chars[end++].text;
   return number;
 }
 
 // Whether the block holds the word G65 written as a plain number (G65, g065).
 bool holdsMacroCall(const std::vector<SourceChar>& chars) {
   for (std::size_t i = 0; i < chars.size(); ++i) {
-    if (!isAsciiLetter(chars[i]) || std::toupper(static_cast<unsigned char>(chars[i].text[0])) != 'G') continue;
+    if (!isLetter(chars[i]) || std::toupper(static_cast<unsigned char>(chars[i].text[0])) != 'G') continue;
     std::size_t end = 0;
     const std::string number = numberAt(chars, i + 1, end);
     if (isWellFormedNumber(number) && readNumber(number) == 65.0) return true;
@@ -132,13 +171,80 @@ std::optional<TokenKind> punctuation(const SourceChar& c) {
 
 bool BlockReader::skipPercentLine() {
   std::size_t probe = at_;
-  while (probe < text_.size() && isBlank(text_[probe])) ++probe;
+  while (probe < text_.size() && (isBlank(text_[probe]) || (!inProgram_ && isControl(text_[probe])))) ++probe;
   if (probe >= text_.size() || text_[probe] != '%') return false;
-  const std::size_t newline = text_.find('\n', probe);
+  for (std::size_t i = at_; i < probe; ++i)
+    if (isControl(text_[i])) noteLeaderControl(text_[i], column_ + static_cast<int>(i - at_));
+  at_ = probe;
+  inProgram_ = true;
+  endLine();
+  return true;
+}
+
+void BlockReader::noteLeaderControl(char c, int column) {
+  const std::string name = controlName(c);
+  if (std::find(leaderSkipped_.begin(), leaderSkipped_.end(), name) == leaderSkipped_.end())
+    leaderSkipped_.push_back(name);
+  if (!leaderAt_) leaderAt_ = ReadNote{line_, column, {}};
+}
+
+bool BlockReader::skipLeaderLine() {
+  std::size_t probe = at_;
+  while (probe < text_.size() && (isBlank(text_[probe]) || isControl(text_[probe]))) ++probe;
+  if (probe >= text_.size() || text_[probe] != '&') return false;
+  for (std::size_t i = at_; i < probe; ++i)
+    if (isControl(text_[i])) noteLeaderControl(text_[i], column_ + static_cast<int>(i - at_));
+  std::size_t end = text_.find('\n', probe);
+  if (end == std::string_view::npos) end = text_.size();
+  std::string header(text_.substr(probe, end - probe));
+  while (!header.empty() && isBlank(header.back())) header.pop_back();
+  leaderSkipped_.push_back(fmt::format("the header line '{}'", header));
+  if (!leaderAt_) leaderAt_ = ReadNote{line_, 1, {}};
+  at_ = end;
+  endLine();
+  return true;
+}
+
+bool BlockReader::skipDirectiveLine() {
+  std::size_t probe = at_;
+  while (probe < text_.size() && isBlank(text_[probe])) ++probe;
+  if (probe >= text_.size() || text_[probe] != '[') return false;
+  std::size_t end = text_.find('\n', probe);
+  if (end == std::string_view::npos) end = text_.size();
+  std::string directive(text_.substr(probe, end - probe));
+  while (!directive.empty() && isBlank(directive.back())) directive.pop_back();
+  directives_.push_back({line_, column_ + static_cast<int>(probe - at_), directive});
+  at_ = end;
+  endLine();
+  return true;
+}
+
+void BlockReader::advance(std::size_t bytes) {
+  column_ += codePointCount(text_.substr(at_, bytes));
+  at_ += bytes;
+}
+
+void BlockReader::endLine() {
+  const std::size_t newline = text_.find('\n', at_);
   at_ = newline == std::string_view::npos ? text_.size() : newline + 1;
   ++line_;
   column_ = 1;
-  return true;
+  atLineStart_ = true;
+}
+
+// Just past a ';': the rest of the line, if it reads as prose, becomes a comment of `block`
+// (or of the next block, when `block` is empty).
+void BlockReader::takeProseTail(RawBlock& block) {
+  std::size_t end = text_.find('\n', at_);
+  if (end == std::string_view::npos) end = text_.size();
+  const std::string_view tail = text_.substr(at_, end - at_);
+  if (!readsAsProse(tail)) return;
+  const std::size_t first = tail.find_first_not_of(" \t");
+  std::string comment(tail.substr(first));
+  while (!comment.empty() && (isBlank(comment.back()))) comment.pop_back();
+  prose_.push_back({line_, column_ + codePointCount(tail.substr(0, first)), comment});
+  (block.chars.empty() ? pendingAbove_ : block.comments).push_back(std::move(comment));
+  advance(end - at_);
 }
 
 Result<std::optional<RawBlock>> BlockReader::next() {
@@ -146,17 +252,25 @@ Result<std::optional<RawBlock>> BlockReader::next() {
   if (at_ == 0 && text_.substr(0, 3) == "\xEF\xBB\xBF") at_ = 3;
 
   while (at_ < text_.size()) {
+    const bool lineStart = atLineStart_;
+    if (atLineStart_ && !inProgram_ && skipLeaderLine()) continue;
     if (atLineStart_ && skipPercentLine()) continue;
+    if (atLineStart_ && skipDirectiveLine()) continue;
     atLineStart_ = false;
 
     RawBlock block;
     block.line = line_;
     bool started = false;
+    std::vector<std::string> comments;
     while (at_ < text_.size() && text_[at_] != '\n' && text_[at_] != ';') {
       const char c = text_[at_];
       if (isBlank(c)) {
-        ++at_;
-        ++column_;
+        advance(1);
+        continue;
+      }
+      if (!inProgram_ && isControl(c)) {  // tape and DNC leftovers before the program
+        noteLeaderControl(c, column_);
+        advance(1);
         continue;
       }
       if (c == '(') {
@@ -167,9 +281,8 @@ Result<std::optional<RawBlock>> BlockReader::next() {
                        "comment opened here is not closed: expected ')' before the end of the "
                        "line"};
         }
-        block.comments.push_back({std::string(text_.substr(at_ + 1, end - at_ - 1)), column_});
-        column_ += codePointCount(text_.substr(at_, end + 1 - at_));
-        at_ = end + 1;
+        comments.emplace_back(text_.substr(at_ + 1, end - at_ - 1));
+        advance(end + 1 - at_);
         continue;
       }
       const std::size_t length = codePointLength(text_, at_);
@@ -180,50 +293,142 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       }
       if (!started) block.column = column_;
       started = true;
+      inProgram_ = true;
       at_ += length;
       ++column_;
     }
-    if (at_ < text_.size()) {  // consume the end of block
-      if (text_[at_] == '\n') {
-        ++line_;
-        column_ = 1;
-        atLineStart_ = true;
-      } else {
-        ++column_;
-      }
+    block.comments = std::move(comments);
+    const bool semicolon = at_ < text_.size() && text_[at_] == ';';
+    if (semicolon) {
       ++at_;
+      ++column_;
+      takeProseTail(block);
+    } else if (at_ < text_.size()) {
+      endLine();
     }
-    if (started) return std::optional<RawBlock>(std::move(block));
+    if (started) {
+      block.commentsAbove = std::move(pendingAbove_);
+      pendingAbove_.clear();
+      return std::optional<RawBlock>(std::move(block));
+    }
+    // No block: its comments stand above the next one; an empty line parts them.
+    if (!block.comments.empty()) {
+      pendingAbove_.insert(pendingAbove_.end(), block.comments.begin(), block.comments.end());
+    } else if (lineStart && !semicolon && block.chars.empty()) {
+      pendingAbove_.clear();
+    }
   }
   return std::optional<RawBlock>();
 }
 
+std::vector<ReadNote> BlockReader::notes() const {
+  std::vector<ReadNote> notes;
+  if (leaderAt_) {
+    std::string what;
+    for (std::size_t i = 0; i < leaderSkipped_.size(); ++i)
+      what += (i == 0 ? "" : i + 1 == leaderSkipped_.size() ? " and " : ", ") + leaderSkipped_[i];
+    notes.push_back({leaderAt_->line, leaderAt_->column,
+                     fmt::format("skipped the tape/DNC leader before the program: {}", what)});
+  }
+  if (!directives_.empty()) {
+    const ReadNote& first = directives_.front();
+    notes.push_back({first.line, first.column,
+                     fmt::format("a line opening with '[' is a trainer's directive, not a block: skipped "
+                                 "'{}'{}",
+                                 first.message,
+                                 directives_.size() > 1 ? fmt::format(" (and {} more)", directives_.size() - 1)
+                                                        : std::string())});
+  }
+  if (!prose_.empty()) {
+    const ReadNote& first = prose_.front();
+    notes.push_back({first.line, first.column,
+                     fmt::format("the text after ';' reads as prose, so it is a comment, not a block: "
+                                 "'{}'{}",
+                                 first.message,
+                                 prose_.size() > 1 ? fmt::format(" (and {} more like it)", prose_.size() - 1)
+                                                   : std::string())});
+  }
+  return notes;
+}
+
+namespace {
+
+// A control character or a typographic look-alike among the block's characters.
+std::optional<Error> strangeCharacter(const RawBlock& block) {
+  for (const SourceChar& c : block.chars) {
+    if (c.text.size() == 1 && isControl(c.text[0])) {
+      return Error{block.line, c.column,
+                   fmt::format("control character {} (0x{:02X}) inside the program: a tape or DNC "
+                               "leftover; delete it",
+                               controlName(c.text[0]), static_cast<unsigned char>(c.text[0]))};
+    }
+    if (c.text.size() == 1) continue;
+    if (const auto alike = lookAlikeOf(c.text)) {
+      const bool space = alike->meant == " ";
+      return Error{block.line, c.column,
+                   fmt::format("'{}' ({} {}) looks like {} but is not: controls read ASCII only; "
+                               "retype it as {}",
+                               c.text, codePointLabel(c.text), alike->name,
+                               space ? "a space" : fmt::format("'{}'", alike->meant),
+                               space ? "a plain space" : fmt::format("'{}'", alike->meant))};
+    }
+  }
+  return std::nullopt;
+}
+
+bool isLetterO(const SourceChar& c) { return c.text == "O" || c.text == "o"; }
+
+// The letter O typed for a zero: right after an address letter (`GO`) or inside a number
+// (`X1O.5`), with no space between.
+std::optional<Error> letterOForZero(const RawBlock& block, std::size_t at, char letter, const std::string& number) {
+  const auto& chars = block.chars;
+  if (at >= chars.size() || !isLetterO(chars[at]) || chars[at].column != chars[at - 1].column + 1) return std::nullopt;
+  // Followed at once by another letter, it is prose ("co" in "coolant"), not a zero.
+  const bool letterFollows = at + 1 < chars.size() && chars[at + 1].column == chars[at].column + 1 &&
+                             chars[at + 1].text.size() == 1 && isAsciiLetter(chars[at + 1].text[0]);
+  if (letterFollows) return std::nullopt;
+  std::string meant = std::string(1, letter) + number + "0";
+  for (std::size_t k = at + 1; k < chars.size() && isNumberChar(chars[k].text); ++k) meant += chars[k].text;
+  return Error{block.line, chars[at].column,
+               fmt::format("the letter '{}' {}; did you mean the digit 0 ({})?", chars[at].text,
+                           number.empty() ? fmt::format("right after {}, where a number belongs", letter)
+                                          : fmt::format("inside the number {}{}", letter, number),
+                           meant)};
+}
+
+}  // namespace
+
 Result<std::vector<Token>> lexBlock(const RawBlock& block) {
+  if (auto strange = strangeCharacter(block)) return *strange;
   std::vector<Token> tokens;
   const auto& chars = block.chars;
   const bool macroCall = holdsMacroCall(chars);
   std::size_t i = 0;
   while (i < chars.size()) {
     const SourceChar& head = chars[i];
-    if (isAsciiLetter(head)) {
+    // ':' is the ISO tape's program number address, the same as O (`:0100` is O0100).
+    const bool colon = head.text == ":";
+    if (isLetter(head) || colon) {
       std::size_t runEnd = i;
       std::string run;
-      while (runEnd < chars.size() && isAsciiLetter(chars[runEnd])) run += chars[runEnd++].text;
+      while (!colon && runEnd < chars.size() && isLetter(chars[runEnd])) run += chars[runEnd++].text;
       run = upperCase(run);
       if (run.size() > 1 && std::find(kMacroNames.begin(), kMacroNames.end(), run) != kMacroNames.end()) {
         tokens.push_back(makeToken(TokenKind::Name, head.column, run));
         i = runEnd;
         continue;
       }
-      const char letter = run[0];
-      if (auto problem = letterProblem(letter, head.text, macroCall)) return Error{block.line, head.column, *problem};
+      const char letter = colon ? 'O' : run[0];
+      if (auto problem = letterProblem(letter, head.text, macroCall || colon)) {
+        return Error{block.line, head.column, *problem};
+      }
       Word word;
       word.letter = letter;
       word.column = head.column;
       // X#1, X[#1+2], X-#1, X-[…]: the value is an expression that follows.
       const std::size_t next = i + 1;
-      const bool signed_ = next < chars.size() && (is(chars[next], '-') || is(chars[next], '+'));
-      const std::size_t valueAt = signed_ ? next + 1 : next;
+      const bool sign = next < chars.size() && (is(chars[next], '-') || is(chars[next], '+'));
+      const std::size_t valueAt = sign ? next + 1 : next;
       if (valueAt < chars.size() && (is(chars[valueAt], '#') || is(chars[valueAt], '['))) {
         tokens.push_back(makeToken(TokenKind::Address, head.column, std::string(1, letter), 0.0, word));
         i = next;
@@ -231,6 +436,9 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
       }
       std::size_t end = 0;
       word.number = numberAt(chars, next, end);
+      if (letter != 'O') {
+        if (auto zero = letterOForZero(block, end, letter, word.number)) return *zero;
+      }
       if (word.number.empty()) {
         return Error{block.line, head.column,
                      fmt::format("{} has no number: expected a value after it, such as {}20", letter, letter)};

@@ -16,11 +16,17 @@
 namespace lathesim::interp::macro {
 namespace {
 
+// `text` (ASCII) as the characters of a block on line 1, spaces dropped, each at its column.
+// Built here rather than by BlockReader, which reads a line opening with '[' as a trainer's
+// directive: an expression alone on a line is no program block.
 RawBlock blockOf(std::string_view text) {
-  BlockReader reader(text);
-  auto block = reader.next();
-  EXPECT_TRUE(block.ok() && block.value());
-  return block.ok() && block.value() ? *block.value() : RawBlock{};
+  RawBlock block;
+  block.line = 1;
+  block.column = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != ' ') block.chars.push_back({std::string(1, text[i]), static_cast<int>(i) + 1});
+  }
+  return block;
 }
 
 // `text` is one expression (or, with a comparison, one bracketed condition) written on line 1.

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "../test_support.hpp"
@@ -367,8 +369,25 @@ TEST(MacroProgram, MacroCallRepeatsWithL) {
                                       {kFeed, 18, 2, 17, 2, 0.1, 0}});
 }
 
+TEST(MacroProgram, MacroKeptInItsOwnFileIsCalledAndItsErrorsNameTheFile) {
+  const std::filesystem::path directory = std::filesystem::temp_directory_path() / "lathesim_macro_library_test";
+  std::filesystem::create_directories(directory);
+  std::ofstream(directory / "O9500.nc") << "O9500\nG01 U#1 F0.1\nIF [#1 LT -5] THEN #3000 = 1 (TOO DEEP)\nM99\n";
+  InterpreterOptions options = test::defaultOptions();
+  options.programDirectories = {directory};
+  const auto result = run("G00 X40 Z2\nG65 P9500 A-2\nM30\n", options);
+  ASSERT_TRUE(result.ok()) << messageOf(result);
+  // The move made in the macro's file carries the line of the call (2).
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 2, 0, 0}, {kFeed, 20, 2, 19, 2, 0.1, 0}});
+  EXPECT_EQ(result.toolpath.moves[1].line, 2);
+  const auto alarm = run("G00 X40 Z2\nG65 P9500 A-6\nM30\n", options);
+  expectError(alarm, 3, 20, "the program raises alarm 3001 with #3000 = 1: TOO DEEP");
+  EXPECT_EQ(alarm.diagnostics[0].file, (directory / "O9500.nc").string());
+  std::filesystem::remove_all(directory);
+}
+
 TEST(MacroProgram, MacroCallErrors) {
-  expectError(run("G65 P9999\n"), 1, 5, "G65 calls O9999 but the program has no block O9999");
+  expectError(run("G65 P9999\n"), 1, 5, "G65 calls O9999, which is neither in this program nor in a file");
   expectError(run("G65 P1000 A1 A2\n"), 1, 14, "A is given twice");
   expectError(run("G65 G00 P1000\n"), 1, 5, "a macro call takes only P, L and arguments");
   expectError(run("G65 P1000 L0\n"), 1, 11, "L0 is not a repeat count");
