@@ -52,7 +52,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   Program program = readProgram(programText, options.blockDelete, options.dialect);
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
-  if (status.ok()) status = runProgram(program, options, result.toolpath, warnings);
+  if (status.ok()) status = runProgram(program, options, result.toolpath, warnings, notes);
   // The blocks are freed before compensation needs memory; the texts stay for the messages.
   program.blocks = {};
   program.programOf = {};

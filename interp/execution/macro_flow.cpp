@@ -44,12 +44,12 @@ void MacroFlow::leaveProgram() {
   guard_.leaveProgram();
 }
 
-Result<std::size_t> MacroFlow::run(std::size_t index, std::vector<Error>& warnings) {
+Result<std::size_t> MacroFlow::run(std::size_t index, std::vector<Error>& stops) {
   const ProgramBlock& block = program_.blocks[index];
   const macro::MacroBlock& macroBlock = *block.macroBlock();
   const macro::Statement& statement = *macroBlock.statement;
   if (const auto* assignment = std::get_if<macro::Assignment>(&statement)) {
-    if (auto status = assign(*assignment, block.line, macroBlock.message, warnings); !status.ok()) return status.error();
+    if (auto status = assign(*assignment, block.line, macroBlock.message, stops); !status.ok()) return status.error();
     return index + 1;
   }
   if (const auto* jumpTo = std::get_if<macro::Jump>(&statement)) return jump(*jumpTo, index);
@@ -60,13 +60,13 @@ Result<std::size_t> MacroFlow::run(std::size_t index, std::vector<Error>& warnin
   if (!holds.ok()) return holds.error();
   if (!holds.value()) return index + 1;
   if (const auto* jumpTo = std::get_if<macro::Jump>(&ifStatement.then)) return jump(*jumpTo, index);
-  auto status = assign(std::get<macro::Assignment>(ifStatement.then), block.line, macroBlock.message, warnings);
+  auto status = assign(std::get<macro::Assignment>(ifStatement.then), block.line, macroBlock.message, stops);
   if (!status.ok()) return status.error();
   return index + 1;
 }
 
 Status MacroFlow::assign(const macro::Assignment& assignment, int line, const std::string& message,
-                         std::vector<Error>& warnings) {
+                         std::vector<Error>& stops) {
   const macro::EvaluationContext context{variables_, line, std::nullopt};
   auto number = macro::variableNumber(assignment.variable, context);
   if (!number.ok()) return number.error();
@@ -79,7 +79,7 @@ Status MacroFlow::assign(const macro::Assignment& assignment, int line, const st
                              code, message.empty() ? "no message given" : message)};
   }
   if (number.value() == macro::kStopVariable) {
-    warnings.push_back({line, assignment.column,
+    stops.push_back({line, assignment.column,
                         fmt::format("program stop (#3006 = {:.0f}): {} — the control waits here for cycle start; "
                                     "lathesim goes on",
                                     code, message.empty() ? "no message given" : message)});

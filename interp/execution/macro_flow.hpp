@@ -26,8 +26,8 @@ class MacroFlow {
   MacroFlow(const Program& program, macro::VariableStore& variables, StepGuard& guard);
 
   /// Runs the statement of block `index`; the block to run next. A #3006 stop is added to
-  /// `warnings`.
-  Result<std::size_t> run(std::size_t index, std::vector<Error>& warnings);
+  /// `stops`.
+  Result<std::size_t> run(std::size_t index, std::vector<Error>& stops);
 
   /// The program gained blocks (a called program read from its file): their loops and N
   /// numbers are found.
@@ -45,7 +45,7 @@ class MacroFlow {
   };
 
   Status assign(const macro::Assignment& assignment, int line, const std::string& message,
-                std::vector<Error>& warnings);
+                std::vector<Error>& stops);
   Result<std::size_t> jump(const macro::Jump& jump, std::size_t index);
   Result<std::size_t> loopStart(const macro::LoopStart& start, std::size_t index);
   Result<std::size_t> loopEnd(const macro::LoopEnd& end, std::size_t index);

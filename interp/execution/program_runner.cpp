@@ -24,11 +24,13 @@ namespace {
 
 class ProgramRunner {
  public:
-  ProgramRunner(Program& program, const InterpreterOptions& options, Toolpath& toolpath, std::vector<Error>& warnings)
+  ProgramRunner(Program& program, const InterpreterOptions& options, Toolpath& toolpath, std::vector<Error>& warnings,
+                std::vector<Error>& notes)
       : program_(program),
         options_(options),
         toolpath_(toolpath),
         warnings_(warnings),
+        notes_(notes),
         calls_(program),
         variables_(options.macroVariables),
         guard_(options.maxSteps, program.blocks.size()),
@@ -62,12 +64,14 @@ class ProgramRunner {
   const InterpreterOptions& options_;
   Toolpath& toolpath_;
   std::vector<Error>& warnings_;
+  std::vector<Error>& notes_;
   ModalState state_;
   CallStack calls_;
   macro::VariableStore variables_;
   StepGuard guard_;
   MacroFlow flow_;
   std::set<std::pair<int, int>> warnedLeftOut_;  // (line, column): each said once
+  std::set<std::size_t> notedStops_;             // blocks whose #3006 stop is listed: once each
 };
 
 Status ProgramRunner::run() {
@@ -99,7 +103,8 @@ Result<std::size_t> ProgramRunner::runBlock(std::size_t index) {
   } else if (const macro::MacroBlock* macroBlock = block.macroBlock(); macroBlock->statement) {
     std::vector<Error> stops;
     after = flow_.run(index, stops);
-    for (Error& stop : stops) warn(std::move(stop), index);
+    for (Error& stop : stops)
+      if (notedStops_.insert(index).second) notes_.push_back(inFile(std::move(stop), index));
   } else {
     after = runMacroWords(index, *macroBlock);
   }
@@ -240,8 +245,8 @@ Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int 
 }  // namespace
 
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
-                  std::vector<Error>& warnings) {
-  return ProgramRunner(program, options, toolpath, warnings).run();
+                  std::vector<Error>& warnings, std::vector<Error>& notes) {
+  return ProgramRunner(program, options, toolpath, warnings, notes).run();
 }
 
 }  // namespace lathesim::interp

@@ -396,11 +396,14 @@ TEST(MacroProgram, MacroCallErrors) {
 TEST(MacroProgram, AlarmAndStopMessages) {
   expectError(run("G00 X50\n#1 = 12\nIF [#1 GT 10] THEN #3000 = 1 (TOO BIG)\nM30\n"), 3, 20,
               "the program raises alarm 3001 with #3000 = 1: TOO BIG");
-  const auto stopped = run("G00 X50\n#3006 = 1 (MEASURE THE PART)\nG00 Z5\nM30\n");
+  // A stop is a note, listed once however often the block runs; the run goes on.
+  const auto stopped = run("G00 X50\n#3006 = 1 (MEASURE THE PART)\nG00 Z5\nM98 P1000 L2\nM30\nO1000\n#3006 = 2\nM99\n");
   ASSERT_TRUE(stopped.ok()) << messageOf(stopped);
   EXPECT_EQ(stopped.toolpath.moves.size(), 2u);
-  ASSERT_EQ(stopped.diagnostics.size(), 1u);
-  EXPECT_EQ(stopped.diagnostics[0].severity, Severity::Warning);
+  ASSERT_EQ(stopped.diagnostics.size(), 2u);
+  EXPECT_EQ(stopped.diagnostics[0].severity, Severity::Note);
+  EXPECT_EQ(stopped.diagnostics[1].line, 7);
+  EXPECT_NE(stopped.diagnostics[1].message.find("(#3006 = 2): no message given"), std::string::npos);
   EXPECT_EQ(stopped.diagnostics[0].line, 2);
   EXPECT_NE(stopped.diagnostics[0].message.find("program stop (#3006 = 1): MEASURE THE PART"), std::string::npos);
 }
