@@ -365,8 +365,11 @@ TEST(CompoundCycleErrors, ContourWithoutAMove) {
 TEST(CompoundCycleErrors, ContourCycleOnItsOwn) {
   // A block run without its program (as the contour blocks themselves are) cannot reach a
   // contour.
-  auto words = tokenize(RawBlock{1, 1, false, {{"G", 1}, {"7", 2}, {"0", 3}, {"P", 4},
-                                               {"1", 5}, {"Q", 6}, {"2", 7}}, {}, {}});
+  RawBlock raw;
+  raw.line = 1;
+  raw.column = 1;
+  raw.chars = {{"G", 1}, {"7", 2}, {"0", 3}, {"P", 4}, {"1", 5}, {"Q", 6}, {"2", 7}};
+  auto words = tokenize(raw);
   ASSERT_TRUE(words.ok());
   auto block = parseBlock(words.value(), 1, 1);
   ASSERT_TRUE(block.ok());

@@ -84,7 +84,9 @@ TEST(WorkCoordinates, SweepOfShiftsKeepsThePartTheSameShapeMovedByTheShift) {
         const Move& b = moved.toolpath.moves[i];
         EXPECT_NEAR(b.to.x(), a.to.x() + dx, 1e-9);
         EXPECT_NEAR(b.to.y(), a.to.y() + dz, 1e-9);
-        if (i > 0) EXPECT_NEAR(b.from.y(), a.from.y() + dz, 1e-9);
+        if (i > 0) {
+          EXPECT_NEAR(b.from.y(), a.from.y() + dz, 1e-9);
+        }
       }
     }
   }
