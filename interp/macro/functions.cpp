@@ -47,7 +47,7 @@ Result<std::uint64_t> bitwiseOperand(double value, std::string_view op) {
 
 Result<double> checkedRange(double value) {
   if (!std::isfinite(value) || std::abs(value) > kMaxMagnitude) {
-    return problem(fmt::format("the result is out of the range a macro variable holds (±1e47; alarm 111)"));
+    return problem("the result is out of the range a macro variable holds (±1e47; alarm 111)");
   }
   return value;
 }
