@@ -6,6 +6,7 @@
 
 #include "app/batch_cli.hpp"
 #include "app/commands.hpp"
+#include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 
 int main(int argc, char** argv) {
@@ -49,26 +50,42 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingDirectory);
     auto& stock = command == runCmd ? run.stock : command == checkCmd ? check.run.stock : expand.stock;
     command->add_option("--stock", stock, "the bar: D<diameter>xL<length>[xZ<face>], e.g. D40xL80 (over the setup's)");
-    auto& maxSteps = command == runCmd ? run.maxSteps : command == checkCmd ? check.run.maxSteps : expand.maxSteps;
-    command->add_option("--max-steps", maxSteps,
+  }
+  expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
+
+  // --dialect, --control, --block-skip and --max-steps on every command that reads a program.
+  struct OverrideArguments {
+    std::string dialect, control, blockSkip;
+    std::optional<long long> maxSteps;
+  };
+  OverrideArguments runArgs, checkArgs, expandArgs;
+  std::vector<std::string> dialects;
+  for (auto dialect : lathesim::interp::kDialects) dialects.emplace_back(lathesim::interp::dialectName(dialect));
+  std::vector<std::string> presets;
+  for (auto preset : lathesim::interp::controlPresets()) presets.emplace_back(preset);
+  for (auto [command, args] : {std::pair{runCmd, &runArgs}, {checkCmd, &checkArgs}, {expandCmd, &expandArgs}}) {
+    command->add_option("--dialect", args->dialect, "how the program writes its codes (overrides [machine] dialect)")
+        ->check(CLI::IsMember(dialects));
+    command->add_option("--control", args->control, "the control preset (overrides [control] name)")
+        ->check(CLI::IsMember(presets));
+    command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
+        ->check(CLI::IsMember({"on", "off"}));
+    command->add_option("--max-steps", args->maxSteps,
                         "blocks the program may run again before it is stopped as an endless loop (overrides "
                         "[macro] max_steps)")
         ->check(CLI::PositiveNumber);
   }
-  expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
-
-  std::string runDialect, expandDialect;
-  std::vector<std::string> dialects;
-  for (auto dialect : lathesim::interp::kDialects) dialects.emplace_back(lathesim::interp::dialectName(dialect));
-  runCmd->add_option("--dialect", runDialect, "G-code dialect (overrides [machine] dialect)")->check(CLI::IsMember(dialects));
-  expandCmd->add_option("--dialect", expandDialect, "G-code dialect (overrides [machine] dialect)")
-      ->check(CLI::IsMember(dialects));
 
   lathesim::app::BatchCli batch(cli);
 
   CLI11_PARSE(cli, argc, argv);
-  const auto optionalDialect = [](const std::string& s) {
-    return s.empty() ? std::nullopt : lathesim::interp::dialectNamed(s);
+  const auto overridesOf = [](const OverrideArguments& args) {
+    lathesim::job::SetupOverrides overrides;
+    if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
+    if (!args.control.empty()) overrides.controlPreset = args.control;
+    if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
+    overrides.maxSteps = args.maxSteps;
+    return overrides;
   };
   const auto optionalPath = [](const std::string& s) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
@@ -77,7 +94,7 @@ int main(int argc, char** argv) {
     if (batch.chosen()) return batch.run();
     if (*runCmd) {
       run.setup = optionalPath(runSetup);
-      run.dialect = optionalDialect(runDialect);
+      run.overrides = overridesOf(runArgs);
       return lathesim::app::runCommand(run);
     }
     if (*checkCmd) {
@@ -86,10 +103,11 @@ int main(int argc, char** argv) {
         return 1;
       }
       check.run.setup = optionalPath(checkSetup);
+      check.run.overrides = overridesOf(checkArgs);
       return lathesim::app::checkCommand(check);
     }
     expand.setup = optionalPath(expandSetup);
-    expand.dialect = optionalDialect(expandDialect);
+    expand.overrides = overridesOf(expandArgs);
     return lathesim::app::expandCommand(lathesim::app::jobRequestOf(expand));
   } catch (const std::exception& e) {  // I/O failures and broken invariants
     std::cerr << "lathesim: error: " << e.what() << '\n';

@@ -7,7 +7,9 @@
 
 #include "interp/compensation/nose_compensation.hpp"
 #include "interp/execution/program_runner.hpp"
-#include "interp/motion/feed_warnings.hpp"
+#include "interp/motion/corners.hpp"
+#include "interp/motion/rapid_path.hpp"
+#include "interp/motion/travel_limits.hpp"
 #include "interp/text/control_family.hpp"
 #include "interp/text/program.hpp"
 
@@ -49,18 +51,23 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
   std::vector<Error> notes;
-  Program program = readProgram(programText, options.blockDelete, options.dialect);
+  Program program = readProgram(programText, options.control.blockSkip, options.dialect);
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
   if (status.ok()) status = runProgram(program, options, result.toolpath, warnings, notes);
   // The blocks are freed before compensation needs memory; the texts stay for the messages.
   program.blocks = {};
   program.programOf = {};
-  // The moves are made as programmed, in the work coordinate systems; placed in the setup's
-  // frame, then G41/G42 and the tool offsets' shifts are applied.
-  if (status.ok()) placeInSetupFrame(result.toolpath.moves);
-  if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
-  if (status.ok()) status = applyToolOffsets(result.toolpath.moves);
+  // The moves are made as programmed, in the work coordinate systems (G54–G59, G50); placed in
+  // the setup's frame, then G41/G42 and the tool offsets' shifts are applied, each rapid is
+  // given the path the machine makes, and the whole checked against the machine's travel.
+  std::vector<Move>& moves = result.toolpath.moves;
+  if (status.ok()) status = insertCorners(moves, warnings);
+  if (status.ok()) placeInSetupFrame(moves);
+  if (status.ok()) status = compensateNoseRadius(moves);
+  if (status.ok()) status = applyToolOffsets(moves);
+  if (status.ok() && options.control.rapidPath == RapidPath::NonLinear) splitRapidsIntoAxisLegs(moves, options.machine);
+  if (status.ok() && options.machine.travel) status = checkTravel(moves, *options.machine.travel);
   // A diagnostic in the file it names: the program's own, or a subprogram's.
   const auto diagnostic = [&](Severity severity, const Error& e) {
     std::string_view text = programText;
@@ -73,7 +80,6 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
     result.diagnostics.push_back(diagnostic(Severity::Error, status.error()));
     return result;
   }
-  for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
   std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
     return a.line != b.line ? a.line < b.line : a.column < b.column;
   });

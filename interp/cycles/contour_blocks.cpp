@@ -7,13 +7,11 @@
 #include <fmt/format.h>
 
 #include "interp/execution/sorted_words.hpp"
+#include "interp/motion/corners.hpp"
+#include "interp/text/label_number.hpp"
 
 namespace lathesim::interp {
 namespace {
-
-bool isPlainInteger(const Word& word) {
-  return !word.number.empty() && word.number.find_first_not_of("0123456789") == std::string::npos;
-}
 
 bool allowedInContour(GGroup group, int number) {
   switch (group) {
@@ -69,20 +67,24 @@ Status checkContourBlock(const ParsedBlock& block, bool first, std::string_view 
 
 Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
                                  const ContourRequest& request, const Word& word) {
-  if (!isPlainInteger(word)) {
-    return Error{request.line, word.column,
-                 fmt::format("{} is not a sequence number: expected the digits of an N number, "
-                             "e.g. P10 for N10",
-                             word.text())};
-  }
-  const int number = static_cast<int>(word.value);
-  const auto found = program.findSequence(number, cycleIndex);
-  if (!found) {
+  auto read = labelNumberOf(word, request.line, kMaxSequenceDigits, "a sequence number (e.g. P10 for N10)");
+  if (!read.ok()) return read.error();
+  const int number = read.value();
+  const std::vector<std::size_t> found = program.findSequence(number, cycleIndex);
+  if (found.empty()) {
     return Error{request.line, word.column,
                  fmt::format("{} {}: there is no block N{} in this program", request.cycle,
                              word.text(), number)};
   }
-  return *found;
+  // GSK980TDi §3.23.1 note 14: cycles in one program give their contours their own numbers.
+  if (found.size() > 1) {
+    return Error{request.line, word.column,
+                 fmt::format("{} {}: N{} numbers two blocks, on lines {} and {}; the contours of the compound "
+                             "cycles in one program need N numbers of their own",
+                             request.cycle, word.text(), number, program.blocks[found[0]].line,
+                             program.blocks[found[1]].line)};
+  }
+  return found.front();
 }
 
 // A block that holds its N number and nothing else.
@@ -113,8 +115,8 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
     return Error{request.line, request.q->column,
                  fmt::format("{} {} {}: N{} comes before N{}; Q names the contour's last block",
                              request.cycle, request.p->text(), request.q->text(),
-                             static_cast<int>(request.q->value),
-                             static_cast<int>(request.p->value))};
+                             *program.blocks[span.last].sequenceNumber,
+                             *program.blocks[span.first].sequenceNumber)};
   }
   const std::string name = spanName(program, span);
   while (span.start < span.last && (program.blocks[span.start].skipped || isLabelOnly(program.blocks[span.start])))
@@ -131,7 +133,7 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
                                "G00–G03, G04, G96/G97, G98/G99 and G40–G42",
                                request.cycle, name)};
     }
-    auto words = sortedWords(block, cycle.variables, state.inch, options.dialect);
+    auto words = sortedWords(block, cycle.variables, state, options);
     if (!words.ok()) return words.error();
     if (block.sequenceNumber && !numbers.insert(*block.sequenceNumber).second) {
       return Error{block.line, block.column,
@@ -156,13 +158,15 @@ Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
   for (std::size_t i = span.first; i <= span.last; ++i) {
     const ProgramBlock& block = cycle.program.blocks[i];
     if (block.skipped) continue;
-    auto words = sortedWords(block, cycle.variables, state.inch, options.dialect);
+    auto words = sortedWords(block, cycle.variables, state, options);
     if (!words.ok()) return words.error();
     auto done = executeBlock(words.value(), std::move(state), options, block.ordinal);
     if (!done.ok()) return done.error();
     state = std::move(done.value().state);
     const auto& moves = done.value().moves;
     outcome.moves.insert(outcome.moves.end(), moves.begin(), moves.end());
+    const auto& warnings = done.value().warnings;
+    outcome.warnings.insert(outcome.warnings.end(), warnings.begin(), warnings.end());
   }
   outcome.state = std::move(state);
   return outcome;
@@ -173,8 +177,10 @@ Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan spa
                                         const InterpreterOptions& options) {
   auto run = runContourBlocks(cycle, span, state, options);
   if (!run.ok()) return run.error();
+  std::vector<Error> cornerWarnings;  // G70 gives them, when it runs the same blocks
+  if (auto corners = insertCorners(run.value().moves, cornerWarnings); !corners.ok()) return corners.error();
   const ProgramBlock& first = cycle.program.blocks[span.start];
-  auto firstWords = sortedWords(first, cycle.variables, state.inch, options.dialect);
+  auto firstWords = sortedWords(first, cycle.variables, state, options);
   if (!firstWords.ok()) return firstWords.error();
   const ParsedBlock& firstParsed = firstWords.value();
   ExtractedContour extracted;

@@ -79,19 +79,23 @@ Result<std::size_t> CallStack::callMacro(const macro::MacroCall& call, std::size
   return start;
 }
 
-Result<CallReturn> CallStack::giveBack(int column, std::size_t index) {
-  if (frames_.empty()) {
-    return Error{program_.blocks[index].line, column,
-                 "M99 in the main program: it ends a subprogram called by M98 or a macro called by G65 "
-                 "(a control would repeat the main program forever; end the main program with M30 or "
-                 "M02 before its subprograms)"};
-  }
+Result<CallReturn> CallStack::giveBack(const SubprogramReturn& giveBack, std::size_t index) {
   Frame& frame = frames_.back();
   if (frame.repeatsLeft > 0) {
     --frame.repeatsLeft;
     return CallReturn{frame.start, true, false, frame.callFrom, frame.column};
   }
-  const CallReturn back{frame.callFrom + 1, false, frame.macro, frame.callFrom, frame.column};
+  std::size_t next = frame.callFrom + 1;
+  if (giveBack.sequence) {
+    const std::vector<std::size_t> found = program_.findSequence(*giveBack.sequence, frame.callFrom);
+    if (found.empty()) {
+      return Error{program_.blocks[index].line, giveBack.sequenceColumn,
+                   fmt::format("M99 P{0} returns to N{0} of the calling program, which has no block N{0}",
+                               *giveBack.sequence)};
+    }
+    next = found.front();
+  }
+  const CallReturn back{next, false, frame.macro, frame.callFrom, frame.column};
   frames_.pop_back();
   return back;
 }

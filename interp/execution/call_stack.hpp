@@ -4,7 +4,8 @@
 //                            after the last repeat, or to O<program> again before it
 //   G65 P… L… in block i   → the same for a macro call, which also gets fresh local
 //                            variables (the caller keeps them: macro/variables.hpp)
-//   M99 in the main program → an error (a control would repeat the program forever)
+//   M99 P… in a subprogram → after the last repeat, to N… of the calling program
+//   M99 in the main program → the program runner's: the control would run it again, forever
 
 #include <cstddef>
 #include <optional>
@@ -26,7 +27,7 @@ constexpr int kMaxMacroNesting = 4;
 
 /// What M99 did.
 struct CallReturn {
-  std::size_t next = 0;    // the block to run next
+  std::size_t next = 0;    // the block to run next (M99 P: N… of the calling program)
   bool repeat = false;     // the called program runs again (a repeat count)
   bool leftMacro = false;  // a G65 macro ended: its caller's local variables come back
   std::size_t callBlock = 0;  // the M98/G65 block that called the program
@@ -42,8 +43,10 @@ class CallStack {
   Result<std::size_t> call(const SubprogramCall& call, std::size_t index);
   /// The block to run next for the G65 in block `index`.
   Result<std::size_t> callMacro(const macro::MacroCall& call, std::size_t index);
-  /// Where the M99 at `column` of block `index` goes.
-  Result<CallReturn> giveBack(int column, std::size_t index);
+  /// Where the M99 of block `index` goes; a subprogram or macro must be running.
+  Result<CallReturn> giveBack(const SubprogramReturn& giveBack, std::size_t index);
+  /// Whether a subprogram or macro is running (else M99 ends the main program).
+  bool inSubprogram() const { return !frames_.empty(); }
   /// When the text ended inside a subprogram: the error, located at its M98.
   std::optional<Error> unfinished() const;
   /// The main program's block whose M98 or G65 the running programs descend from, if any runs.

@@ -1,8 +1,7 @@
 #include "interp/execution/macro_flow.hpp"
 
 #include <cmath>
-#include <map>
-#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -16,22 +15,13 @@ constexpr int kMaxSequenceNumber = 99999;
 }  // namespace
 
 MacroFlow::MacroFlow(const Program& program, macro::VariableStore& variables, StepGuard& guard)
-    : program_(program), variables_(variables), guard_(guard), loops_(1) {
-  findStructure();
-}
+    : program_(program), variables_(variables), guard_(guard), pairs_(macro::pairLoops(program)), loops_(1) {}
 
-void MacroFlow::programGrew() { findStructure(); }
+void MacroFlow::programGrew() { pairs_ = macro::pairLoops(program_); }
 
-void MacroFlow::findStructure() {
-  pairs_ = macro::pairLoops(program_);
-  numberedTwice_.clear();
-  std::map<std::pair<int, int>, std::size_t> first;  // (program, N) → its first block
-  for (std::size_t i = 0; i < program_.blocks.size(); ++i) {
-    const ProgramBlock& block = program_.blocks[i];
-    if (block.skipped || !block.sequenceNumber) continue;
-    const auto [where, inserted] = first.emplace(std::pair{program_.programOf[i], *block.sequenceNumber}, i);
-    if (!inserted) numberedTwice_.emplace(where->second, i);
-  }
+void MacroFlow::cameTo(std::size_t index) {
+  auto& running = loops_.back();
+  while (!running.empty() && (index < running.back().start || index > running.back().end)) running.pop_back();
 }
 
 void MacroFlow::enterProgram() {
@@ -101,23 +91,22 @@ Result<std::size_t> MacroFlow::jump(const macro::Jump& jump, std::size_t index) 
                  fmt::format("GOTO {:g}: sequence numbers run from 1 to {} (alarm 128)", *target.value(),
                              kMaxSequenceNumber)};
   }
-  const auto found = program_.findSequence(static_cast<int>(number), index);
-  if (!found) {
+  const std::vector<std::size_t> found = program_.findSequence(static_cast<int>(number), index);
+  if (found.empty()) {
     return Error{line, jump.target.column,
                  fmt::format("GOTO {}: there is no block N{} in this program (alarm 128)", number, number)};
   }
   // Which of two blocks numbered alike a control jumps to (the first, the next one down …)
   // could not be checked in a manual: refuse rather than guess.
-  if (const auto twice = numberedTwice_.find(*found); twice != numberedTwice_.end()) {
+  if (found.size() > 1) {
     return Error{line, jump.target.column,
                  fmt::format("GOTO {}: this program has N{} twice (lines {} and {}); number the blocks apart",
-                             number, number, program_.blocks[*found].line, program_.blocks[twice->second].line)};
+                             number, number, program_.blocks[found[0]].line, program_.blocks[found[1]].line)};
   }
-  // Loops the target lies outside of are left.
-  auto& running = loops_.back();
-  while (!running.empty() && (*found < running.back().start || *found > running.back().end)) running.pop_back();
-  if (*found <= index) guard_.jumpedBack(index, *found, {index, jump.column});
-  return *found;
+  const std::size_t to = found.front();
+  cameTo(to);
+  if (to <= index) guard_.jumpedBack(index, to, {index, jump.column});
+  return to;
 }
 
 Result<std::size_t> MacroFlow::partnerOf(std::size_t index) const {

@@ -7,7 +7,6 @@
 // leave loops but not enter one, as on the controls.
 
 #include <cstddef>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -37,6 +36,9 @@ class MacroFlow {
   void enterProgram();
   void leaveProgram();
   void restartProgram() { loops_.back().clear(); }
+  /// Execution jumped to block `index` of the innermost running program (a GOTO, or M99 P
+  /// back in the caller): the loops it lies outside of are left.
+  void cameTo(std::size_t index);
 
  private:
   struct RunningLoop {
@@ -50,14 +52,11 @@ class MacroFlow {
   Result<std::size_t> loopStart(const macro::LoopStart& start, std::size_t index);
   Result<std::size_t> loopEnd(const macro::LoopEnd& end, std::size_t index);
   Result<std::size_t> partnerOf(std::size_t index) const;
-  void findStructure();  // the loop pairs and the N numbers given twice
 
   const Program& program_;
   macro::VariableStore& variables_;
   StepGuard& guard_;
   macro::LoopPairs pairs_;
-  std::map<std::size_t, std::size_t> numberedTwice_;  // first block of an N the program repeats →
-                                                      // its second
   std::vector<std::vector<RunningLoop>> loops_;  // per running program, innermost loop last
 };
 

@@ -18,6 +18,7 @@
 #include "interp/macro/macro_call.hpp"
 #include "interp/macro/variables.hpp"
 #include "interp/text/program_library.hpp"
+#include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -37,7 +38,8 @@ class ProgramRunner {
         flow_(program, variables_, guard_) {
     state_.frame.offsets = options.workOffsets;
     state_.position = options.startPosition - state_.frame.shift();
-    state_.feedMode = options.initialFeedMode;
+    state_.feedMode = options.control.powerOnFeedMode;
+    state_.compound = CompoundCycleParams::of(options.control);
     if (!options.toolNumbers.empty()) state_.tool = options.toolNumbers.front();
   }
 
@@ -49,7 +51,8 @@ class ProgramRunner {
   Result<std::size_t> runMacroWords(std::size_t index, const macro::MacroBlock& block);
   Result<std::size_t> runWords(std::size_t index, const ParsedBlock& words);
   Result<std::size_t> callMacro(std::size_t index, const std::vector<Word>& words);
-  Result<std::size_t> giveBack(int column, std::size_t index);
+  Result<std::size_t> giveBack(const SubprogramReturn& giveBack, std::size_t index);
+  void listStop(std::size_t index, const ParsedBlock& words);
   Status loadProgram(int programNumber, std::string_view code, int column, std::size_t caller);
   void warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut);
   void warn(Error warning, std::size_t index) { warnings_.push_back(inFile(std::move(warning), index)); }
@@ -75,6 +78,7 @@ class ProgramRunner {
 };
 
 Status ProgramRunner::run() {
+  if (program_.textAfterEnd) warnings_.push_back(*program_.textAfterEnd);
   std::size_t next = 0;
   while (!state_.ended && next < program_.blocks.size()) {
     const std::size_t index = next;
@@ -85,6 +89,8 @@ Status ProgramRunner::run() {
   if (!state_.ended) {
     if (auto error = calls_.unfinished()) return *error;
   }
+  if (auto mixed = state_.lengthWriting.mixedWarning(NumberReading::of(options_.control, state_.inch)))
+    warnings_.push_back(*mixed);
   return success();
 }
 
@@ -144,12 +150,16 @@ void ProgramRunner::warnLeftOut(std::size_t index, const std::vector<macro::Vaca
 Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro::MacroBlock& block) {
   const int line = program_.blocks[index].line;
   const int column = program_.blocks[index].column;
-  auto evaluated = macro::evaluateWords(block, variables_, line, state_.inch);
+  auto evaluated = macro::evaluateWords(block, variables_, line, NumberReading::of(options_.control, state_.inch));
   if (!evaluated.ok()) return evaluated.error();
   const macro::BlockWords words = std::move(evaluated).value();  // owned: a call may grow the blocks
   warnLeftOut(index, words.leftOut);
   Result<std::size_t> after = index + 1;
   if (words.macroCall) {
+    // A length argument written without a decimal point is read like any such length.
+    for (const macro::MacroWord& word : block.words)
+      if (!word.expression && macro::isLengthArgument(word.word.letter))
+        state_.lengthWriting.note(word.word, line, program_.blocks[index].ordinal);
     after = callMacro(index, words.words);
   } else if (auto parsed = parseBlock(words.words, line, column, options_.dialect); parsed.ok()) {
     after = runWords(index, parsed.value());
@@ -177,6 +187,7 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   state_ = std::move(done.state);
   toolpath_.moves.insert(toolpath_.moves.end(), done.moves.begin(), done.moves.end());
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
+  listStop(index, words);
   if (flow.call) {
     if (auto loaded = loadProgram(flow.call->programNumber, "M98", flow.call->column, index); !loaded.ok()) {
       return loaded.error();
@@ -186,7 +197,16 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
     flow_.enterProgram();
     return target;
   }
-  if (flow.returnColumn) return giveBack(*flow.returnColumn, index);
+  if (flow.giveBack && !calls_.inSubprogram()) {
+    // M99 in the main program: the control starts it over, forever; it is simulated once.
+    warn({program_.blocks[index].line, flow.giveBack->column,
+          "M99 ends the main program: the control runs it again from the start, forever; lathesim simulates it "
+          "once"},
+         index);
+    state_.ended = true;
+    return index + 1;
+  }
+  if (flow.giveBack) return giveBack(*flow.giveBack, index);
   if (flow.continueAfter) return *flow.continueAfter + 1;
   return index + 1;
 }
@@ -204,8 +224,19 @@ Result<std::size_t> ProgramRunner::callMacro(std::size_t index, const std::vecto
   return target;
 }
 
-Result<std::size_t> ProgramRunner::giveBack(int column, std::size_t index) {
-  auto back = calls_.giveBack(column, index);
+// M00/M01 are listed in the report at their line; in a subprogram's own file, at the line of
+// the main program's call that led there.
+void ProgramRunner::listStop(std::size_t index, const ParsedBlock& words) {
+  const auto stop = words.mCode(MGroup::Stop);
+  if (!stop) return;
+  const ProgramBlock& block = program_.blocks[index];
+  const bool own = block.source == 0 || !calls_.outermostCall();
+  const ProgramBlock& at = own ? block : program_.blocks[*calls_.outermostCall()];
+  toolpath_.stops.push_back({at.line, own ? stop->column : at.column, stop->text});
+}
+
+Result<std::size_t> ProgramRunner::giveBack(const SubprogramReturn& giveBack, std::size_t index) {
+  auto back = calls_.giveBack(giveBack, index);
   if (!back.ok()) return back.error();
   const CallReturn& done = back.value();
   if (done.repeat) {
@@ -215,6 +246,10 @@ Result<std::size_t> ProgramRunner::giveBack(int column, std::size_t index) {
   }
   if (done.leftMacro) variables_.popLevel();
   flow_.leaveProgram();
+  // M99 P to a block of the caller at or before its call: the caller loops through the call,
+  // a loop of its own as a GOTO back would be (the M99's P is where it is written).
+  flow_.cameTo(done.next);
+  if (done.next <= done.callBlock) guard_.jumpedBack(done.callBlock, done.next, {index, giveBack.sequenceColumn});
   return done.next;
 }
 
@@ -223,7 +258,7 @@ Result<std::size_t> ProgramRunner::giveBack(int column, std::size_t index) {
 Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int column, std::size_t caller) {
   if (program_.programStart.count(programNumber) != 0) return success();
   if (const auto file = findProgramFile(programNumber, options_.programDirectories)) {
-    appendProgramFile(program_, file->path.string(), file->text, programNumber, options_.blockDelete,
+    appendProgramFile(program_, file->path.string(), file->text, programNumber, options_.control.blockSkip,
                       options_.dialect);
     guard_.programGrew(program_.blocks.size());
     flow_.programGrew();

@@ -4,7 +4,8 @@
 // variables. For blocks run from elsewhere than the program runner (the contour blocks of
 // G70–G73).
 
-#include "interp/control/dialect.hpp"
+#include "interp/execution/modal_state.hpp"
+#include "interp/interpreter.hpp"
 #include "interp/macro/variables.hpp"
 #include "interp/result.hpp"
 #include "interp/text/block_parser.hpp"
@@ -13,8 +14,9 @@
 namespace lathesim::interp {
 
 /// Fails for a block that cannot be read, or a macro statement (it has no words to run).
-/// `variables` may be null when no macro variables exist (a block run on its own).
-Result<ParsedBlock> sortedWords(const ProgramBlock& block, const macro::VariableStore* variables, bool inch,
-                                Dialect dialect);
+/// `variables` may be null when no macro variables exist (a block run on its own). The values
+/// are read as the control does from `state` (G20) under `options` (its dialect and parameters).
+Result<ParsedBlock> sortedWords(const ProgramBlock& block, const macro::VariableStore* variables,
+                                const ModalState& state, const InterpreterOptions& options);
 
 }  // namespace lathesim::interp

@@ -143,7 +143,7 @@ Status readWords(TokenCursor& cursor, MacroBlock& block) {
           !startsStatement(cursor)) {
         return cursor.errorHere(fmt::format("{} after {}'s value: an expression in an address is written in "
                                             "brackets, e.g. {}[#1+2]",
-                                            describe(*cursor.peek()), token.word.letter, token.word.letter));
+                                            describe(*cursor.peek()), token.text, token.text));
       }
       block.words.push_back({token.word, std::move(value).value()});
       continue;

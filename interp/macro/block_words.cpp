@@ -13,19 +13,19 @@ namespace lathesim::interp::macro {
 namespace {
 
 constexpr std::string_view kWholeNumberLetters = "MNOPQLSTHD";
+// The G65 arguments whose address is a length: counted in least increments when written
+// without a decimal point under least-increment input.
+constexpr std::string_view kLengthArgumentLetters = "XYZUVWIJKR";
 constexpr int kMacroCallCode = 65;
-// IS-B, the usual increment system: 0.001 mm, 0.0001 inch (as interp/text/word_units.hpp).
-constexpr double kLengthIncrementMm = 0.001;
-constexpr double kLengthIncrementInch = 0.0001;
 
 bool isWholeNumberLetter(char letter) { return kWholeNumberLetters.find(letter) != std::string_view::npos; }
 
 // The least input increment an expression's value is rounded to in `letter`; none for F and
 // for G, whose codes are not rounded (G#1 with 1.5 is no code, not G02).
-std::optional<double> incrementOf(char letter, bool inch) {
+std::optional<double> incrementOf(char letter, const NumberReading& reading) {
   if (isWholeNumberLetter(letter)) return 1.0;
   if (letter == 'F' || letter == 'G') return std::nullopt;
-  return inch ? kLengthIncrementInch : kLengthIncrementMm;
+  return reading.leastIncrement();
 }
 
 // "20." "12.346" "-0.5": the fewest digits that give the value back, and always a decimal point.
@@ -49,14 +49,26 @@ std::string writtenVacant(char letter, const Expression& expression) {
   return fmt::format("{}{}#[…]", letter, sign);
 }
 
+// A G65 argument written as a number, as the called macro's variable receives it.
+Word argumentAsPassed(const Word& word, const NumberReading& reading) {
+  const bool counted =
+      reading.decimalPointInput == DecimalPointInput::LeastIncrements && !hasDecimalPoint(word) && isLengthArgument(word.letter);
+  if (!counted) return word;
+  Word passed = word;
+  passed.value = word.value * reading.leastIncrement();
+  return passed;
+}
+
 }  // namespace
 
-Word evaluatedWord(char letter, int column, double value, bool inch) {
+bool isLengthArgument(char letter) { return kLengthArgumentLetters.find(letter) != std::string_view::npos; }
+
+Word evaluatedWord(char letter, int column, double value, const NumberReading& reading) {
   Word word;
   word.letter = letter;
   word.column = column;
   word.evaluated = true;
-  const auto increment = incrementOf(letter, inch);
+  const auto increment = incrementOf(letter, reading);
   word.value = increment ? roundToIncrement(value, *increment) : value;
   if (word.value == 0.0) word.value = 0.0;  // no "-0."
   constexpr double kLargestWholeText = 1e15;  // beyond, no address takes it anyway
@@ -66,22 +78,23 @@ Word evaluatedWord(char letter, int column, double value, bool inch) {
   return word;
 }
 
-Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& variables, int line, bool inch) {
+Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& variables, int line,
+                                 NumberReading reading) {
   BlockWords out;
   for (const MacroWord& word : block.words) {
     if (word.word.letter == 'G' && !word.expression && word.word.value == kMacroCallCode) out.macroCall = true;
     // G20/G21 in the block itself set the unit its lengths are rounded in.
     if (word.word.letter == 'G' && !word.expression && (word.word.value == 20 || word.word.value == 21)) {
-      inch = word.word.value == 20;
+      reading.inch = word.word.value == 20;
     }
   }
   for (const MacroWord& word : block.words) {
     if (!word.expression) {
-      out.words.push_back(word.word);
+      out.words.push_back(out.macroCall ? argumentAsPassed(word.word, reading) : word.word);
       continue;
     }
     const char letter = word.word.letter;
-    const EvaluationContext context{variables, line, out.macroCall ? std::nullopt : incrementOf(letter, inch)};
+    const EvaluationContext context{variables, line, out.macroCall ? std::nullopt : incrementOf(letter, reading)};
     auto value = evaluate(*word.expression, context);
     if (!value.ok()) return value.error();
     if (!value.value()) {
@@ -92,7 +105,7 @@ Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& v
       Word argument{letter, withDecimalPoint(*value.value()), *value.value(), word.word.column, true};
       out.words.push_back(argument);
     } else {
-      out.words.push_back(evaluatedWord(letter, word.word.column, *value.value(), inch));
+      out.words.push_back(evaluatedWord(letter, word.word.column, *value.value(), reading));
     }
   }
   return out;

@@ -7,11 +7,20 @@
 //                           Q of G74/G75 are then counts of least increments, as written
 //   G                       not rounded ("except G codes"): G#1 with 1.5 is no code
 //   F                       the value as it is (not rounded; not checked in a manual)
-//   other letters (X Z U W I K R …)  a length: rounded to 0.001 mm (0.0001 inch under G20)
-//                           and written with a decimal point, so a control that reads
-//                           "X20" as 0.020 mm still reads X#1 with #1 = 20 as 20 mm
-// In G65's arguments the value is kept unrounded. An address given a <vacant> value is left
-// out, as if the word were not written (Fanuc: G00 X#1 with #1 vacant is G00 alone).
+//   other letters (X Z U W I K R …)  a length in mm (inch under G20): rounded to the least
+//                           input increment (0.001 mm at IS-B, 0.0001 mm at IS-C; a tenth of
+//                           that in inches) and written with a decimal point, so a control that
+//                           reads "X20" as 0.020 mm (least-increment input, Fanuc DPI = 0)
+//                           still reads X#1 with #1 = 20 as 20 mm (Fanuc: "#1 = 123" holds
+//                           123.000; X#1 with 12.3456 at 0.001 mm is X12.346)
+// In G65's arguments a value an expression gives is kept unrounded; an argument written
+// without a decimal point is counted in the least input increment of its address (Fanuc
+// 16i/18i custom macro manual: "The units used for argument data passed without a decimal
+// point correspond to the least input increment of each address"): under least-increment
+// input, X20 passes 0.020 mm in X Y Z U V W I J K R; the other letters pass the number as
+// written (whether A B C count 0.001° on a lathe with those axes is not checked: ⚠).
+// An address given a <vacant> value is left out, as if the word were not written (Fanuc:
+// G00 X#1 with #1 vacant is G00 alone).
 
 #include <string>
 #include <vector>
@@ -20,6 +29,7 @@
 #include "interp/macro/variables.hpp"
 #include "interp/result.hpp"
 #include "interp/text/lexer.hpp"
+#include "interp/text/word_units.hpp"
 
 namespace lathesim::interp::macro {
 
@@ -36,11 +46,16 @@ struct BlockWords {
   bool macroCall = false;  // the block holds G65: its words are a call's, arguments unrounded
 };
 
-/// The words of `block` (which holds no statement). `inch`: G20 in force for the block.
-Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& variables, int line, bool inch);
+/// The words of `block` (which holds no statement), read as the control reads them: `reading`
+/// holds the unit in force (G20, or G20/G21 in the block itself) and the input parameters.
+Result<BlockWords> evaluateWords(const MacroBlock& block, const VariableStore& variables, int line,
+                                 NumberReading reading);
+
+/// Whether a G65 argument of `letter` is a length (X Y Z U V W I J K R), as above.
+bool isLengthArgument(char letter);
 
 /// A word for `letter` with a value a macro expression gave, rounded and written as above.
-Word evaluatedWord(char letter, int column, double value, bool inch);
+Word evaluatedWord(char letter, int column, double value, const NumberReading& reading);
 
 /// `error` of a block whose words `leftOut` were left out, with a note naming them ("X#1 at
 /// column 5 was left out: #1 is vacant"): the word left out is often why the block fails (G90

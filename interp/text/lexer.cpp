@@ -61,8 +61,11 @@ bool readsAsProse(std::string_view tail) {
 // The address letters of lathe G-code (system A). Others are unknown letters, except in a
 // G65 block, where every letter but G L N O P passes an argument.
 // B and C are read as words so that a code taking them (G10's C) can; left over, they are
-// refused as the axes this lathe lacks (block_executor.cpp).
-constexpr std::string_view kKnownLetters = "BCFGIJKLMNOPQRSTUWXZ";
+// refused as the axes this lathe lacks (block_executor.cpp). A is a direct drawing
+// dimension's angle, D the GSK's corner radius.
+constexpr std::string_view kKnownLetters = "ABCDFGIJKLMNOPQRSTUWXZ";
+// The letters Fanuc writes after a comma (",A" angle, ",C" chamfer, ",R" corner radius).
+constexpr std::string_view kCommaLetters = "ACR";
 
 bool isNumberChar(const std::string& text) {
   return text.size() == 1 && (std::isdigit(static_cast<unsigned char>(text[0])) ||
@@ -173,12 +176,37 @@ bool BlockReader::skipPercentLine() {
   std::size_t probe = at_;
   while (probe < text_.size() && (isBlank(text_[probe]) || (!inProgram_ && isControl(text_[probe])))) ++probe;
   if (probe >= text_.size() || text_[probe] != '%') return false;
+  if (readBlock_) {
+    closeAt(probe);
+    return true;
+  }
   for (std::size_t i = at_; i < probe; ++i)
     if (isControl(text_[i])) noteLeaderControl(text_[i], column_ + static_cast<int>(i - at_));
   at_ = probe;
   inProgram_ = true;
   endLine();
   return true;
+}
+
+void BlockReader::closeAt(std::size_t percent) {
+  closingPercent_ = std::pair{line_, column_ + static_cast<int>(percent - at_)};
+  // The first character after the '%' that is not blank or a line end.
+  int line = line_;
+  int column = closingPercent_->second + 1;
+  for (std::size_t i = percent + 1; i < text_.size(); i += codePointLength(text_, i)) {
+    const char c = text_[i];
+    if (c == '\n') {
+      ++line;
+      column = 1;
+      continue;
+    }
+    if (!isBlank(c)) {
+      textAfterClosing_ = std::pair{line, column};
+      break;
+    }
+    ++column;
+  }
+  at_ = text_.size();
 }
 
 void BlockReader::noteLeaderControl(char c, int column) {
@@ -261,6 +289,8 @@ Result<std::optional<RawBlock>> BlockReader::next() {
     RawBlock block;
     block.line = line_;
     bool started = false;
+    int bracketDepth = 0;    // inside a Macro B expression's [ ]
+    bool assigning = false;  // past the '=' of a Macro B assignment
     std::vector<std::string> comments;
     while (at_ < text_.size() && text_[at_] != '\n' && text_[at_] != ';') {
       const char c = text_[at_];
@@ -288,8 +318,12 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       const std::size_t length = codePointLength(text_, at_);
       if (!started && c == '/') {
         block.deleted = true;
+      } else if (c == '/' && bracketDepth == 0 && !assigning && !block.skipFrom) {
+        block.skipFrom = block.chars.size();
       } else {
         block.chars.push_back({std::string(text_.substr(at_, length)), column_});
+        bracketDepth += c == '[' ? 1 : c == ']' && bracketDepth > 0 ? -1 : 0;
+        assigning = assigning || c == '=';
       }
       if (!started) block.column = column_;
       started = true;
@@ -307,6 +341,7 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       endLine();
     }
     if (started) {
+      readBlock_ = true;
       block.commentsAbove = std::move(pendingAbove_);
       pendingAbove_.clear();
       return std::optional<RawBlock>(std::move(block));
@@ -404,7 +439,23 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
   const auto& chars = block.chars;
   const bool macroCall = holdsMacroCall(chars);
   std::size_t i = 0;
+  int bracketDepth = 0;
   while (i < chars.size()) {
+    // ",A" and its kin: the comma and the letter make one address. Inside a macro expression's
+    // [ ] a comma parts a function's arguments (ATAN[#1,SIN[#2]]).
+    const bool comma = bracketDepth == 0 && chars[i].text == "," && i + 1 < chars.size() &&
+                       chars[i + 1].text.size() == 1 && std::isalpha(static_cast<unsigned char>(chars[i + 1].text[0]));
+    const int commaColumn = chars[i].column;
+    if (comma) {
+      const char after = static_cast<char>(std::toupper(static_cast<unsigned char>(chars[i + 1].text[0])));
+      if (kCommaLetters.find(after) == std::string_view::npos) {
+        return Error{block.line, commaColumn,
+                     fmt::format("unknown address ',{}': a comma is followed by A (angle), C (chamfer) or R "
+                                 "(corner radius)",
+                                 after)};
+      }
+      ++i;
+    }
     const SourceChar& head = chars[i];
     // ':' is the ISO tape's program number address, the same as O (`:0100` is O0100).
     const bool colon = head.text == ":";
@@ -423,14 +474,14 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
         return Error{block.line, head.column, *problem};
       }
       Word word;
-      word.letter = letter;
-      word.column = head.column;
+      word.letter = comma ? static_cast<char>(std::tolower(static_cast<unsigned char>(letter))) : letter;
+      word.column = comma ? commaColumn : head.column;
       // X#1, X[#1+2], X-#1, X-[…]: the value is an expression that follows.
       const std::size_t next = i + 1;
       const bool sign = next < chars.size() && (is(chars[next], '-') || is(chars[next], '+'));
       const std::size_t valueAt = sign ? next + 1 : next;
       if (valueAt < chars.size() && (is(chars[valueAt], '#') || is(chars[valueAt], '['))) {
-        tokens.push_back(makeToken(TokenKind::Address, head.column, std::string(1, letter), 0.0, word));
+        tokens.push_back(makeToken(TokenKind::Address, word.column, word.text(), 0.0, word));
         i = next;
         continue;
       }
@@ -450,7 +501,7 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
                                  letter, word.number)};
       }
       word.value = readNumber(word.number);
-      tokens.push_back(makeToken(TokenKind::Word, head.column, word.text(), word.value, word));
+      tokens.push_back(makeToken(TokenKind::Word, word.column, word.text(), word.value, word));
       i = end;
       continue;
     }
@@ -467,6 +518,7 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
       continue;
     }
     if (const auto kind = punctuation(head)) {
+      bracketDepth += *kind == TokenKind::Open ? 1 : *kind == TokenKind::Close ? -1 : 0;
       tokens.push_back(makeToken(*kind, head.column, head.text));
       ++i;
       continue;
