@@ -55,7 +55,12 @@ class ProgramRunner {
   void listStop(std::size_t index, const ParsedBlock& words);
   Status loadProgram(int programNumber, std::string_view code, int column, std::size_t caller);
   void warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut);
-  void warn(Error warning, std::size_t index) { warnings_.push_back(inFile(std::move(warning), index)); }
+  // A block that runs again (a loop, a repeated call) says the same thing once.
+  void warn(Error warning, std::size_t index) {
+    Error located = inFile(std::move(warning), index);
+    if (warned_.insert({located.file, located.line, located.column, located.message}).second)
+      warnings_.push_back(std::move(located));
+  }
   // An error or warning of block `index`, naming its file when it is a subprogram's own.
   Error inFile(Error error, std::size_t index) const {
     const ProgramBlock& block = program_.blocks[index];
@@ -73,7 +78,7 @@ class ProgramRunner {
   macro::VariableStore variables_;
   StepGuard guard_;
   MacroFlow flow_;
-  std::set<std::pair<int, int>> warnedLeftOut_;  // (line, column): each said once
+  std::set<std::tuple<std::string, int, int, std::string>> warned_;  // (file, line, column, message)
   std::set<std::size_t> notedStops_;             // blocks whose #3006 stop is listed: once each
 };
 
@@ -139,7 +144,6 @@ Error ProgramRunner::stepLimitError(std::size_t index) const {
 void ProgramRunner::warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut) {
   const int line = program_.blocks[index].line;
   for (const macro::VacantWord& word : leftOut) {
-    if (!warnedLeftOut_.insert({line, word.column}).second) continue;
     warn({line, word.column,
           fmt::format("{}: {} is vacant, so {} is left out of this block, as a Fanuc control does", word.written,
                       word.written.substr(word.written.find('#')), word.letter)},

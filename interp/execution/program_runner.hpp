@@ -17,9 +17,9 @@
 
 namespace lathesim::interp {
 
-/// Runs `program`, appending its moves to `toolpath`, its warnings to `warnings` and its
-/// notes (a macro's #3006 stops) to `notes`. A block's read error is reported when execution
-/// reaches it.
+/// Runs `program`, appending its moves to `toolpath`, its warnings to `warnings` (each once,
+/// however often its block runs) and its notes (a macro's #3006 stops) to `notes`. A block's
+/// read error is reported when execution reaches it.
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
                   std::vector<Error>& warnings, std::vector<Error>& notes);
 

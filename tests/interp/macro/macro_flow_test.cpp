@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "../test_support.hpp"
 
@@ -108,6 +109,24 @@ TEST(MacroFlow, M99InsideAWhileLoopOfTheMainProgramEndsItOnce) {
   EXPECT_EQ(result.diagnostics[0].severity, Severity::Warning);
   EXPECT_EQ(result.diagnostics[0].line, 4);
   EXPECT_NE(result.diagnostics[0].message.find("M99 ends the main program"), std::string::npos);
+}
+
+TEST(MacroFlow, ABlockRunAgainWarnsOnce) {
+  // Three passes of a WHILE, and three runs of a subprogram by L3, each through a block with two
+  // motion codes: one warning each, at that block.
+  const std::pair<const char*, int> programs[] = {
+      {"G00 X50 Z2\n#1 = 0\nWHILE [#1 LT 3] DO 1\nG00 G01 W-1 F0.1\n#1 = #1 + 1\nEND 1\nM30\n", 4},
+      {"G00 X50 Z2\nM98 P100 L3\nM30\nO100\nG00 G01 W-1 F0.1\nM99\n", 5}};
+  for (const auto& [program, line] : programs) {
+    SCOPED_TRACE(program);
+    const auto result = run(program);
+    ASSERT_TRUE(result.ok()) << messageOf(result);
+    EXPECT_EQ(result.toolpath.moves.size(), 4u);
+    ASSERT_EQ(result.diagnostics.size(), 1u);
+    EXPECT_EQ(result.diagnostics[0].line, line);
+    EXPECT_EQ(result.diagnostics[0].column, 5);
+    EXPECT_NE(result.diagnostics[0].message.find("G00 and G01 are both motion"), std::string::npos);
+  }
 }
 
 TEST(MacroFlow, StepLimitStopsAnEndlessLoopThroughM99PAndNamesIt) {
