@@ -278,8 +278,9 @@ Status Executor::applyTool() {
     std::vector<std::string> seen;  // the program's T words, each once, where first written
     std::string used;
     for (const ProgramBlock& b : place_->program.blocks) {
-      if (b.skipped || !b.parsed.ok() || !b.parsed.value().has('T')) continue;
-      const std::string text = b.parsed.value().words.at('T').text();
+      const ParsedBlock* words = b.skipped ? nullptr : b.plainWords();
+      if (words == nullptr || !words->has('T')) continue;
+      const std::string text = words->words.at('T').text();
       if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
       seen.push_back(text);
       used += fmt::format("{}{} (line {})", used.empty() ? "" : ", ", text, b.line);
