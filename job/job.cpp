@@ -30,6 +30,7 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.dialect = setup.dialect;
   options.initialFeedMode = setup.initialFeedMode;
   options.offsets = setup.offsets;
+  options.threadRunoutLeads = setup.threadRunoutLeads;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
 }

@@ -246,8 +246,8 @@ std::optional<std::size_t> choiceOf(const toml::node& node, const std::string& n
 }
 
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
-  rejectUnknownKeys(table, "machine.", {"start", "rapid", "max_rpm", "reference", "dialect", "initial_feed_mode"},
-                    report);
+  rejectUnknownKeys(table, "machine.",
+                    {"start", "rapid", "max_rpm", "reference", "dialect", "initial_feed_mode", "thread_runout"}, report);
   if (const auto* node = table.get("dialect")) {
     using interp::kDialects, interp::dialectName;
     if (auto i = choiceOf(*node, "machine.dialect",
@@ -265,6 +265,15 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   if (const auto* node = table.get("rapid")) readRapid(*node, setup.machine, report);
   if (const auto* node = table.get("max_rpm"))
     if (auto v = positiveRate(*node, "machine.max_rpm", "rpm", report)) setup.machine.maxRpm = *v;
+  if (const auto* node = table.get("thread_runout")) {
+    const auto leads = numberOf(*node);
+    if (!leads || !(*leads >= 0.0) || !(*leads <= 9.9))
+      report.at(node->source(), "machine.thread_runout must be a number of leads from 0 to 9.9 (the control's "
+                                "G92/G76 run-out parameter, GSK No.19 and Fanuc No.5130 in 0.1 lead), got " +
+                                    describe(*node));
+    else
+      setup.threadRunoutLeads = *leads;
+  }
 }
 
 void readSim(const toml::table& table, std::optional<double>& voxelMm, Reporter& report) {

@@ -36,6 +36,9 @@ struct Setup {
   // [machine] initial_feed_mode: the G98/G99 state before the program sets one. Fanuc lathes
   // power on in G99 (mm/rev); a GSK980TDi in G98 (mm/min).
   interp::FeedMode initialFeedMode = interp::FeedMode::PerRevolution;
+  // [machine] thread_runout: the run-out G92 and G76 make when the program gives none, in leads
+  // (the control's parameter: GSK No.19, Fanuc No.5130, both in 0.1 lead). 0: none.
+  double threadRunoutLeads = 0.0;
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end

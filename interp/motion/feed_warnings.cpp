@@ -8,7 +8,7 @@ std::vector<Error> implausibleFeedWarnings(const Toolpath& toolpath) {
   std::vector<Error> warnings;
   const Move* previous = nullptr;
   for (const Move& move : toolpath.moves) {
-    if (!isCutting(move.kind)) continue;
+    if (!isCutting(move.kind) || move.kind == MoveKind::Thread) continue;  // a thread's F is its lead
     const bool same = previous && previous->feed == move.feed && previous->feedMode == move.feedMode;
     previous = &move;
     if (same) continue;

@@ -14,7 +14,7 @@ namespace {
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 // The address letters of lathe G-code (system A). Others are unknown letters.
-constexpr std::string_view kKnownLetters = "FGIJKLMNOPQRSTUWXZ";
+constexpr std::string_view kKnownLetters = "CEFGIJKLMNOPQRSTUWXZ";
 
 bool isNumberChar(const std::string& text) {
   return text.size() == 1 && (std::isdigit(static_cast<unsigned char>(text[0])) ||

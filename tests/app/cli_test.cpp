@@ -293,7 +293,7 @@ TEST(Cli, ExpandPrintsExactlyTheGoldenToolpath) {
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const auto lines = linesOf(outcome.out);
   ASSERT_FALSE(lines.empty());
-  EXPECT_EQ(lines[0], "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s");
+  EXPECT_EQ(lines[0], "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s,thread_deg,spindle");
   std::istringstream in(outcome.out);
   test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv");
   EXPECT_EQ(lines.size(), 1 + goldenToolpath(kPart).size());  // nothing else on stdout
