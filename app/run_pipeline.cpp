@@ -22,6 +22,13 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   return tools;
 }
 
+sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
+  sim::ToolThicknesses thicknesses;
+  for (const auto& tool : setup.tools)
+    if (tool.thicknessMm) thicknesses.emplace(tool.number, *tool.thicknessMm);
+  return thicknesses;
+}
+
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
   std::optional<job::Job> loaded = job::loadJob(options.program, options.setup, options.dialect);
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
@@ -49,7 +56,8 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.stockVolumeMm3 = run.stock->volumeMm3();
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
-                                     [&](int done, int total) { run.progress->update(done, total); }, &checks);
+                                     [&](int done, int total) { run.progress->update(done, total); }, &checks,
+                                     thicknessesOf(setup));
   figures.finalVolumeMm3 = run.stock->volumeMm3();
   figures.timing.simulateS = clock.lap();
   for (const auto& w : figures.simulation.warnings) {

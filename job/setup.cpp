@@ -297,7 +297,7 @@ std::optional<ToolDefinition> readTool(const toml::table& table, const std::stri
   std::vector<std::string_view> known{"number", "polygon"};
   known.insert(known.end(), toolShapeKeys().begin(), toolShapeKeys().end());
   rejectUnknownKeys(table, name + ".", known, report);
-  ToolDefinition tool{1, defaultOutline(), std::nullopt, 3, 0.0};
+  ToolDefinition tool{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt};
   bool ok = true;
   std::vector<ToolKeyProblem> shapeProblems;
   readToolShape(table, name, tool, shapeProblems);
@@ -393,7 +393,7 @@ Setup defaultSetup() {
   setup.startPosition = RZ(100.0, 200.0);  // X200 (diameter) Z200
   setup.referencePosition = setup.startPosition;
   setup.voxelMm = std::nullopt;
-  setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0});
+  setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt});
   return setup;
 }
 

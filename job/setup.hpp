@@ -24,6 +24,9 @@ struct ToolDefinition {
   std::optional<ConvexPolygon> holderBody;  // catalogue tools: the holder's head and shank; never cuts
   int tipNumber = 3;          // Fanuc imaginary tip 0–9: the programmed point relative to the nose
   double noseRadiusMm = 0.0;  // 0 for a polygon tool
+  // The insert's thickness across the tool's plane (mm): what a cut made with the spindle
+  // stopped removes across it. `thickness`, or an ISO insert's own; unset: sim's default.
+  std::optional<double> thicknessMm;
 };
 
 struct Setup {

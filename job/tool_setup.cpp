@@ -2,7 +2,8 @@
 // else what `kind` says; each kind takes its own keys:
 //   turning: insert, holder, tip          groove: width, corner_radius (r or [r−Z, r+Z]), depth, tip
 //   thread:  angle, pitch, nose_radius, tip   drill: diameter, point_angle, length
-// A polygon tool may give tip alone (default 3).
+// A polygon tool may give tip alone (default 3). Any tool may give thickness (mm), the
+// insert's thickness for cuts made with the spindle stopped (an ISO insert's own otherwise).
 
 #include "job/tool_setup.hpp"
 
@@ -172,13 +173,14 @@ void readTurning(ToolReader& r, ToolDefinition& tool) {
   for (const auto& w : insert.warnings) r.warn(*insertText, r.name() + ".insert: " + w);
   if (!insert.value || !holder.value || r.failed()) return;
   take(turningTool(*insert.value, *holder.value, tip), *holderText, r, tool);
+  if (!tool.thicknessMm) tool.thicknessMm = insert.value->thicknessMm;
 }
 
 }  // namespace
 
 const std::vector<std::string_view>& toolShapeKeys() {
   static const std::vector<std::string_view> keys = [] {
-    std::vector<std::string_view> all{"kind"};
+    std::vector<std::string_view> all{"kind", "thickness"};
     for (const auto& k : kinds())
       for (auto key : k.keys)
         if (std::find(all.begin(), all.end(), key) == all.end()) all.push_back(key);
@@ -190,6 +192,7 @@ const std::vector<std::string_view>& toolShapeKeys() {
 bool readToolShape(const toml::table& table, const std::string& name, ToolDefinition& tool,
                    std::vector<ToolKeyProblem>& problems) {
   ToolReader r(table, name, problems);
+  if (table.contains("thickness")) tool.thicknessMm = r.number("thickness", std::nullopt, false, "mm");
   const toml::node* kindNode = table.get("kind");
   std::string kind;
   if (kindNode) {
@@ -207,7 +210,7 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
   if (kind.empty()) {  // a polygon tool (or the default outline): only tip may be added
     for (auto&& [key, node] : table) {
       const std::string_view k = key.str();
-      if (k == "number" || k == "polygon" || k == "tip") continue;
+      if (k == "number" || k == "polygon" || k == "tip" || k == "thickness") continue;
       for (const auto& kk : kinds())
         if (std::find(kk.keys.begin(), kk.keys.end(), k) != kk.keys.end()) {
           r.error(node, name + "." + std::string(k) + " needs kind = \"" + std::string(kk.kind) + "\"");
@@ -224,7 +227,7 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
   const auto& allowed = std::find_if(kinds().begin(), kinds().end(), [&](const KindKeys& k) { return k.kind == kind; })->keys;
   for (auto&& [key, node] : table) {
     const std::string_view k = key.str();
-    if (k == "number" || k == "polygon" || k == "kind") continue;
+    if (k == "number" || k == "polygon" || k == "kind" || k == "thickness") continue;
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end() &&
         std::find(toolShapeKeys().begin(), toolShapeKeys().end(), k) != toolShapeKeys().end())
       r.error(node, name + "." + std::string(k) + " does not apply to a " + kind + " tool");

@@ -124,6 +124,8 @@ Stock::~Stock() = default;
 double Stock::voxelMm() const { return impl_->voxel; }
 
 double Stock::remove(const RevolvedRegion& region) { return writeRegion(*impl_, region, RegionWrite::Remove); }
+double Stock::remove(const HelicalSweep& sweep) { return writeRegion(*impl_, sweep, RegionWrite::Remove); }
+double Stock::remove(const StraightSlot& slot) { return writeRegion(*impl_, slot, RegionWrite::Remove); }
 
 double Stock::volumeMm3() const {
   const Tree& tree = impl_->grid->tree();
@@ -149,6 +151,11 @@ double Stock::volumeMm3() const {
 double Stock::signedDistanceAt(const RZ& point) const {
   const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
   return sampler.wsSample(openvdb::Vec3d(point.x(), 0.0, point.y()));
+}
+
+double Stock::signedDistanceAt(double xMm, double yMm, double zMm) const {
+  const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
+  return sampler.wsSample(openvdb::Vec3d(xMm, yMm, zMm));
 }
 
 TriangleMesh Stock::mesh(double adaptivity) const {

@@ -8,8 +8,10 @@
 #include <optional>
 #include <string>
 
+#include "geometry/helical_sweep.hpp"
 #include "geometry/meridian_profile.hpp"
 #include "geometry/revolved_region.hpp"
+#include "geometry/straight_slot.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock_spec.hpp"
 
@@ -41,6 +43,11 @@ class Stock {
   /// region's boundary and the material are visited. Returns the volume removed (mm³),
   /// measured on the level set before and after.
   double remove(const RevolvedRegion& region);
+  /// The same for a thread pass (helical_sweep.hpp) and for a cut made with the spindle
+  /// stopped (straight_slot.hpp): written voxel by voxel with their own 3D distance, over the
+  /// leaves near their revolved hull's boundary and the material.
+  double remove(const HelicalSweep& sweep);
+  double remove(const StraightSlot& slot);
 
   /// Volume (mm³) of material lying deeper than `marginMm` inside the revolved `region`,
   /// measured without changing anything. The stock is a solid of revolution (every cut is),
@@ -55,6 +62,9 @@ class Stock {
   /// φ at the point at radius ρ = point.x(), Z = point.y() (mm), trilinearly sampled:
   /// negative inside the material, positive outside; beyond the narrow band it is ±3 voxels.
   double signedDistanceAt(const RZ& point) const;
+  /// φ at the point (x, y, z) of the part's frame (mm), trilinearly sampled: for what is not
+  /// a solid of revolution (threads, slots cut with the spindle stopped).
+  double signedDistanceAt(double xMm, double yMm, double zMm) const;
 
   /// Closed surface at φ = 0, outward normals. adaptivity 0 keeps every voxel's facets;
   /// larger values (up to 1) merge facets on flat and gently curved areas.

@@ -227,8 +227,8 @@ TEST(ParseSetupErrors, UnknownTopLevelKey) {
 
 TEST(ParseSetupErrors, UnknownKeyInATool) {
   const Diagnostic d = onlyError("[[tool]]\nnumber = 1\n[[tool]]\nnumber = 2\nradius = 0.4\n");
-  EXPECT_EQ(d.message, "unknown key 'tool[2].radius' (expected number, polygon, kind, insert, holder, tip, width, "
-                       "corner_radius, depth, angle, pitch, nose_radius, diameter, point_angle or length)");
+  EXPECT_EQ(d.message, "unknown key 'tool[2].radius' (expected number, polygon, kind, thickness, insert, holder, tip, "
+                       "width, corner_radius, depth, angle, pitch, nose_radius, diameter, point_angle or length)");
   EXPECT_EQ(d.line, 5);
 }
 

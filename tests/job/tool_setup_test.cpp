@@ -120,6 +120,21 @@ TEST(ToolSetup, GrooveCornersMayDiffer) {
             "tool[1].corner_radius must be a radius or [−Z corner, +Z corner], non-negative mm");
 }
 
+// The insert's thickness, for cuts made with the spindle stopped: an ISO insert's own
+// (TBHG120408: 04 = 4.76 mm, iso-tools.md §1.6), or the thickness key of any tool.
+TEST(ToolSetup, InsertThickness) {
+  EXPECT_DOUBLE_EQ(*onlyTool(parse("[[tool]]\nnumber = 1\ninsert = \"TBHG120408\"\nholder = \"STFCR2525M11\"\n")).thicknessMm,
+                   4.76);
+  EXPECT_DOUBLE_EQ(*onlyTool(parse("[[tool]]\nnumber = 1\npolygon = [[0, 0], [4, 0], [4, 4]]\nthickness = 3\n")).thicknessMm,
+                   3.0);
+  EXPECT_DOUBLE_EQ(*onlyTool(parse("[[tool]]\nnumber = 1\nkind = \"groove\"\nwidth = 3\ndepth = 10\nthickness = 5\n"))
+                        .thicknessMm,
+                   5.0);
+  EXPECT_FALSE(onlyTool(parse("[[tool]]\nnumber = 1\npolygon = [[0, 0], [4, 0], [4, 4]]\n")).thicknessMm);
+  EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nthickness = -2\n").message,
+            "tool[1].thickness must be a positive number of mm, got -2");
+}
+
 TEST(ToolSetupErrors, BadInsertCodePointsAtTheCharacter) {
   const Diagnostic d = onlyError("[[tool]]\nnumber = 1\ninsert = \"TBXG120408\"\nholder = \"STFCR2525M11\"\n");
   EXPECT_EQ(d.message, "tool[1].insert: insert TBXG120408: position 3 'X' is not a tolerance class; "
