@@ -61,8 +61,12 @@ void HelicalSweep::candidatesInto(double rho, double phi, double z0, double dz, 
       for (int k = 0; k < count; ++k) out[k] = std::min(out[k], column[k]);
     }
   }
-  // The two ends: the outline in the half-plane of its azimuth, at 3D distance.
+  // The two ends: the outline in the half-plane of its azimuth, at 3D distance. In that
+  // half-plane the point stands at (ρ cos Δ, z), within ρ·(1 − cos Δ) ≤ 2ρ of (ρ, z) along r,
+  // so an end farther than the candidates' reach plus that along the travel cannot be within cap.
+  const double endSlack = slack + 2.0 * rho * std::abs(direction_.x()) * inverseLengthSquared_;
   for (const double u : {0.0, 1.0}) {
+    if (u < std::min(uA, uB) - endSlack || u > std::max(uA, uB) + endSlack) continue;
     const double delta = wrapped(phi - azimuthAt(u));
     const double across = rho * std::abs(std::sin(delta));
     if (across >= cap) continue;
