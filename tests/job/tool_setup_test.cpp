@@ -135,6 +135,26 @@ TEST(ToolSetup, InsertThickness) {
             "tool[1].thickness must be a positive number of mm, got -2");
 }
 
+// A laydown threading insert by its code alone: the thread kind, its pitch's fundamental
+// triangle (2 mm wide at the top), the 0.125·P root radius, tip 8; an internal one tip 6.
+TEST(ToolSetup, LaydownThreadingInsert) {
+  const ToolDefinition& tool = onlyTool(parse("[[tool]]\nnumber = 1\ninsert = \"16ER200ISO\"\n"));
+  EXPECT_EQ(tool.tipNumber, 8);
+  EXPECT_DOUBLE_EQ(tool.noseRadiusMm, 0.25);
+  EXPECT_NEAR(tool.outline.upperBound().y() - tool.outline.lowerBound().y(), 2.0, 1e-12);
+  EXPECT_NEAR(tool.outline.lowerBound().x(), 0.0, 1e-12);
+  const ToolDefinition& internal =
+      onlyTool(parse("[[tool]]\nnumber = 1\nkind = \"thread\"\ninsert = \"16IR1.5ISO\"\nnose_radius = 0.1\n"));
+  EXPECT_EQ(internal.tipNumber, 6);
+  EXPECT_DOUBLE_EQ(internal.noseRadiusMm, 0.1);
+  EXPECT_NEAR(internal.outline.upperBound().x(), 0.0, 1e-12);
+  const Diagnostic bad = onlyError("[[tool]]\nnumber = 1\ninsert = \"16ER2TR\"\n");
+  EXPECT_NE(bad.message.find("tool[1].insert: threading insert 16ER2TR: the thread standard is not one"), std::string::npos)
+      << bad.message;
+  EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\ninsert = \"16ER200ISO\"\npitch = 2\n").message,
+            "tool[1].pitch comes from the insert code; give one or the other");
+}
+
 TEST(ToolSetupErrors, BadInsertCodePointsAtTheCharacter) {
   const Diagnostic d = onlyError("[[tool]]\nnumber = 1\ninsert = \"TBXG120408\"\nholder = \"STFCR2525M11\"\n");
   EXPECT_EQ(d.message, "tool[1].insert: insert TBXG120408: position 3 'X' is not a tolerance class; "
