@@ -10,6 +10,7 @@
 #include "app/tool_picture.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
+#include "measure/thread_measure.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
 #include "sim/simulate.hpp"
@@ -59,6 +60,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks,
                                      thicknessesOf(setup));
   figures.finalVolumeMm3 = run.stock->volumeMm3();
+  figures.threads = measure::measureThreads(*run.stock, run.job.toolpath, outlinesOf(setup), setup.dialect);
   figures.timing.simulateS = clock.lap();
   for (const auto& w : figures.simulation.warnings) {
     figures.warnings.push_back(run.job.warningAt(w.line, w.column, w.message));

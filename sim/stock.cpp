@@ -5,6 +5,7 @@
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/VolumeToMesh.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <unistd.h>
 
@@ -156,6 +157,14 @@ double Stock::signedDistanceAt(const RZ& point) const {
 double Stock::signedDistanceAt(double xMm, double yMm, double zMm) const {
   const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
   return sampler.wsSample(openvdb::Vec3d(xMm, yMm, zMm));
+}
+
+void Stock::signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256), [&](const auto& range) {
+    const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
+    for (std::size_t i = range.begin(); i != range.end(); ++i)
+      out[i] = sampler.wsSample(openvdb::Vec3d(points[i].x(), points[i].y(), points[i].z()));
+  });
 }
 
 TriangleMesh Stock::mesh(double adaptivity) const {

@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
+
+#include <Eigen/Core>
 #include <string>
 
 #include "geometry/helical_sweep.hpp"
@@ -65,6 +68,8 @@ class Stock {
   /// φ at the point (x, y, z) of the part's frame (mm), trilinearly sampled: for what is not
   /// a solid of revolution (threads, slots cut with the spindle stopped).
   double signedDistanceAt(double xMm, double yMm, double zMm) const;
+  /// The same at many points at once (one accessor for all): out[i] for points[i].
+  void signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const;
 
   /// Closed surface at φ = 0, outward normals. adaptivity 0 keeps every voxel's facets;
   /// larger values (up to 1) merge facets on flat and gently curved areas.
