@@ -60,9 +60,14 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks,
                                      thicknessesOf(setup));
   figures.finalVolumeMm3 = run.stock->volumeMm3();
-  figures.threads = measure::measureThreads(*run.stock, run.job.toolpath, outlinesOf(setup), setup.dialect);
+  const sim::ToolOutlines outlines = outlinesOf(setup);
+  figures.threads = measure::measureThreads(*run.stock, run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap();
-  for (const auto& w : figures.simulation.warnings) {
+  std::vector<sim::SimulationWarning> warnings = figures.simulation.warnings;
+  for (const auto& thread : figures.threads)
+    if (const auto tooWide = measure::threadToolTooWide(thread, outlines.at(thread.programmed.tool), voxel))
+      warnings.push_back({thread.programmed.line, thread.programmed.column, *tooWide});
+  for (const auto& w : warnings) {
     figures.warnings.push_back(run.job.warningAt(w.line, w.column, w.message));
     std::cerr << interp::format(figures.warnings.back()) << '\n';
   }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <numbers>
 
 namespace lathesim::measure {
@@ -275,6 +277,46 @@ ThreadMeasurement measureThread(const sim::Stock& stock, const ProgrammedThread&
   if (angle < 0) angle += period;
   result.startAngleDeg = angle > period / 2 ? angle - period : angle;  // in (−period/2, period/2]
   return result;
+}
+
+namespace {
+
+// The width along Z of `polygon`'s chord at radius r (0 when the line misses it).
+double chordWidthAt(const ConvexPolygon& polygon, double r) {
+  const auto& v = polygon.vertices();
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const RZ& a = v[i];
+    const RZ& b = v[(i + 1) % v.size()];
+    if ((a.x() - r) * (b.x() - r) > 0) continue;
+    const double t = a.x() == b.x() ? 0.0 : (r - a.x()) / (b.x() - a.x());
+    for (const double z : {a.y() + t * (b.y() - a.y()), a.x() == b.x() ? b.y() : a.y() + t * (b.y() - a.y())}) {
+      low = std::min(low, z);
+      high = std::max(high, z);
+    }
+  }
+  return high >= low ? high - low : 0.0;
+}
+
+}  // namespace
+
+std::optional<std::string> threadToolTooWide(const MeasuredThread& thread, const ConvexPolygon& tool, double voxelMm) {
+  const ProgrammedThread& p = thread.programmed;
+  if (!p.leadAlongZ) return std::nullopt;
+  const double pitch = p.leadMm / p.starts;
+  // The crest relative to the programmed point: measured, or the tool's far end.
+  const double crest = thread.measured.problem
+                           ? (p.internal ? tool.lowerBound().x() + 1e-9 : tool.upperBound().x() - 1e-9)
+                           : (p.internal ? thread.measured.minorDiameterMm.mean : thread.measured.majorDiameterMm.mean) / 2 -
+                                 p.rootRadiusMm;
+  const double width = chordWidthAt(tool, crest);
+  if (width <= pitch + voxelMm) return std::nullopt;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the threading tool is %.3f mm wide at the thread's crest, more than its pitch of %.3f mm (lead %g, %d "
+                "start%s): each pass cuts into the next groove's flank; use a tool for this pitch",
+                width, pitch, p.leadMm, p.starts, p.starts == 1 ? "" : "s");
+  return std::string(text);
 }
 
 std::vector<MeasuredThread> measureThreads(const sim::Stock& stock, const interp::Toolpath& toolpath,

@@ -66,6 +66,12 @@ struct MeasuredThread {
   ThreadMeasurement measured;
 };
 
+/// Why `tool` is too wide for `thread`, or nullopt: its chord at the thread's crest (the
+/// measured crest; the tool's top when the grooves could not be told apart) is wider than
+/// the pitch (lead / starts) by more than a voxel, so each pass cuts into the neighbouring
+/// groove's flank and the crest between them.
+std::optional<std::string> threadToolTooWide(const MeasuredThread& thread, const ConvexPolygon& tool, double voxelMm);
+
 /// Every thread of `toolpath` (thread_programs.hpp), measured on `stock`.
 std::vector<MeasuredThread> measureThreads(const sim::Stock& stock, const interp::Toolpath& toolpath,
                                            const std::map<int, ConvexPolygon>& tools, interp::Dialect dialect);

@@ -157,5 +157,27 @@ TEST(ThreadMeasure, InternalThread) {
   EXPECT_TRUE(m.rightHand);
 }
 
+// A tool for pitch 3 (its V 2·(h + 0.375·(1/sin 30° − 1))·tan 30° wide h above its point,
+// nose 0.375) cutting a pitch-1 thread 0.613 deep: 1.14 mm wide at the crest, more than the
+// pitch and a voxel; a pitch-2 thread 1.227 deep: 1.85 mm at the crest, fine.
+TEST(ThreadMeasure, ToolTooWideForThePitch) {
+  const ConvexPolygon tool = threadOutline(3.0, 0.375);
+  MeasuredThread thread;
+  thread.programmed.leadMm = 1.0;
+  thread.programmed.rootRadiusMm = 10 - 0.613;
+  thread.measured.majorDiameterMm = {20, 20, 20};
+  const auto tooWide = threadToolTooWide(thread, tool, 0.1);
+  ASSERT_TRUE(tooWide);
+  EXPECT_NE(tooWide->find("1.141 mm wide at the thread's crest, more than its pitch of 1.000 mm"), std::string::npos)
+      << *tooWide;
+  thread.programmed.leadMm = 2.0;
+  thread.programmed.rootRadiusMm = 10 - 1.227;
+  EXPECT_FALSE(threadToolTooWide(thread, tool, 0.1));
+  // Grooves that ran together could not be measured: the tool's full width decides.
+  thread.programmed.leadMm = 1.0;
+  thread.measured.problem = "fewer than two complete grooves at 0°";
+  EXPECT_TRUE(threadToolTooWide(thread, tool, 0.1));
+}
+
 }  // namespace
 }  // namespace lathesim::measure
