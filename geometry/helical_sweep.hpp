@@ -14,6 +14,9 @@
 // or to the outline at either end of the pass, where the groove stops (measured in 3D: the
 // outline lies in the half-plane of its end's azimuth).
 
+#include <utility>
+#include <vector>
+
 #include "geometry/convex_polygon.hpp"
 #include "geometry/revolved_region.hpp"
 
@@ -49,8 +52,14 @@ class HelicalSweep {
   // Lowers out[k] by the outline placed at each P(u_k) for the point's azimuth φ, with u_k in
   // [uLo, uHi]; then by the two ends.
   void candidatesInto(double rho, double phi, double z0, double dz, int count, double cap, double* out) const;
+  std::pair<double, double> axialExtentIn(double a, double b) const;
 
   RevolvedRegion outline_;  // the cutter alone, as one planar piece
+  struct Edge {              // an edge of it, from its lower-radius end
+    double rLow, rHigh, zAtLow, dzPerDr, zOther;  // zOther: the other end's z (for an edge along Z)
+  };
+  std::vector<Edge> edges_;
+  std::vector<RZ> vertices_;  // its vertices, counter-clockwise
   RZ from_;
   RZ direction_;            // to − from
   double inverseLengthSquared_;
@@ -58,6 +67,8 @@ class HelicalSweep {
   double phi0_;             // the part's azimuth of the tool at u = 0 (radians)
   double omega_;            // dφ/du (radians)
   double alongReach_;       // the outline's largest extent along the direction of travel (mm)
+  double lowestRadius_ = 0; // the least radius the outline reaches along the pass
+  double inverseLength_ = 0, inverseOmega_ = 0, inverseDirectionZ_ = 0;
   RevolvedRegion hull_;
 };
 
