@@ -95,6 +95,20 @@ void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   image.title = run.figures.program;
   image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);
   render::writePartImagePng(run.part, run.job.toolpath, image, out.stage("part.png"));
+  // A close-up of the first thread measured: six pitches around the middle of its grooves,
+  // from a pitch inside its root to half a pitch outside its crest.
+  for (const auto& thread : run.figures.threads) {
+    if (thread.measured.problem) continue;
+    const measure::ThreadMeasurement& m = thread.measured;
+    const double middle = 0.5 * (m.zLowMm + m.zHighMm), pitch = m.pitchMm.mean;
+    const double inner = 0.5 * std::min(m.minorDiameterMm.min, m.majorDiameterMm.min);
+    const double outer = 0.5 * std::max(m.majorDiameterMm.max, m.minorDiameterMm.max);
+    render::PartImageOptions closeUp;
+    closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
+    closeUp.closeUp = render::CloseUp{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
+    render::writePartImagePng(run.part, run.job.toolpath, closeUp, out.stage("thread.png"));
+    break;
+  }
   run.figures.timing.renderS = clock.lap();
 }
 

@@ -105,6 +105,41 @@ TempDir* RunSeed001::dir_ = nullptr;
 fs::path RunSeed001::out_;
 Outcome* RunSeed001::outcome_ = nullptr;
 
+// A threaded part (parts/g76-m30x2) at 0.25 mm: report.json's threads, the terminal's line,
+// and the close-up thread.png besides the six outputs.
+TEST(RunThread, ReportsTheThreadMeasuredAndWritesItsCloseUp) {
+  TempDir dir("run-thread");
+  const fs::path out = dir.path() / "out";
+  const fs::path part = kPartsDir / "g76-m30x2";
+  const Outcome outcome = lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(),
+                                    "--out", out.string(), "--voxel", "0.25"},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  EXPECT_TRUE(fs::exists(out / "thread.png"));
+  const nlohmann::json threads = nlohmann::json::parse(readFile(out / "report.json")).at("threads");
+  ASSERT_EQ(threads.size(), 1u);
+  const auto& t = threads[0];
+  EXPECT_EQ(t.at("line"), 13);
+  EXPECT_EQ(t.at("code"), "G76");
+  EXPECT_EQ(t.at("kind"), "external");
+  EXPECT_EQ(t.at("programmed").at("lead_mm"), 2.0);
+  EXPECT_EQ(t.at("programmed").at("hand"), "right");
+  EXPECT_NEAR(t.at("programmed").at("root_diameter_mm").get<double>(), 27.546, 1e-9);
+  const auto& m = t.at("measured");
+  EXPECT_EQ(m.at("angles_deg").size(), 12u);
+  EXPECT_NEAR(m.at("lead_mm").at("min").get<double>(), 2.0, 0.025);  // a tenth of a voxel
+  EXPECT_NEAR(m.at("lead_mm").at("max").get<double>(), 2.0, 0.025);
+  EXPECT_EQ(m.at("starts"), 1);
+  EXPECT_EQ(m.at("hand"), "right");
+  EXPECT_NEAR(m.at("minor_diameter_mm").at("mean").get<double>() / 2, 27.546 / 2, 0.25);  // a voxel
+  for (const char* key : {"major_diameter_mm", "pitch_diameter_mm", "pitch_mm"})
+    EXPECT_TRUE(m.contains(key)) << key;
+  EXPECT_NE(outcome.out.find("thread, line 13 (G76, external): programmed lead 2.0000 mm, 1 start, right-hand; "
+                             "measured lead 2.0000 mm"),
+            std::string::npos)
+      << outcome.out;
+}
+
 TEST_F(RunSeed001, WritesExactlyTheSixOutputs) {
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(out_)) names.insert(entry.path().filename().string());
