@@ -4,8 +4,10 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "interp/control/dialect.hpp"
+#include "job/job.hpp"
 
 namespace lathesim::app {
 
@@ -26,6 +28,8 @@ struct RunOptions {
   std::optional<double> voxelMm;
   std::optional<interp::Dialect> dialect;  // overrides [machine] dialect
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
+  std::vector<std::filesystem::path> programDirectories;  // --programs
+  std::optional<std::string> stock;  // --stock D40xL80 (job/stock_option.hpp)
 };
 
 int runCommand(const RunOptions& options);
@@ -42,7 +46,9 @@ struct CheckOptions {
 int checkCommand(const CheckOptions& options);
 inline constexpr int kExitOutOfTolerance = 3;
 
-int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
-                  std::optional<interp::Dialect> dialect = std::nullopt);
+int expandCommand(const job::JobRequest& request);
+
+/// The job a run's options name.
+job::JobRequest jobRequestOf(const RunOptions& options);
 
 }  // namespace lathesim::app

@@ -35,10 +35,20 @@ int main(int argc, char** argv) {
   checkCmd->add_option("--out", check.run.out, "output folder")->capture_default_str();
   checkCmd->add_option("--voxel", check.run.voxelMm, "voxel size in mm (overrides [sim] voxel)");
 
-  std::filesystem::path expandProgram;
+  lathesim::app::RunOptions expand;
   std::string expandSetup;
   auto* expandCmd = cli.add_subcommand("expand", "print the toolpath as CSV; simulates nothing");
-  expandCmd->add_option("program", expandProgram, "the G-code program")->required()->check(CLI::ExistingFile);
+  expandCmd->add_option("program", expand.program, "the G-code program")->required()->check(CLI::ExistingFile);
+  for (auto* command : {runCmd, checkCmd, expandCmd}) {
+    auto& directories = command == runCmd ? run.programDirectories
+                        : command == checkCmd ? check.run.programDirectories
+                                              : expand.programDirectories;
+    command->add_option("--programs", directories,
+                        "a directory of the control's programs: subprograms M98 calls that the file lacks")
+        ->check(CLI::ExistingDirectory);
+    auto& stock = command == runCmd ? run.stock : command == checkCmd ? check.run.stock : expand.stock;
+    command->add_option("--stock", stock, "the bar: D<diameter>xL<length>[xZ<face>], e.g. D40xL80 (over the setup's)");
+  }
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
 
   std::string runDialect, expandDialect;
@@ -69,7 +79,9 @@ int main(int argc, char** argv) {
       check.run.setup = optionalPath(checkSetup);
       return lathesim::app::checkCommand(check);
     }
-    return lathesim::app::expandCommand(expandProgram, optionalPath(expandSetup), optionalDialect(expandDialect));
+    expand.setup = optionalPath(expandSetup);
+    expand.dialect = optionalDialect(expandDialect);
+    return lathesim::app::expandCommand(lathesim::app::jobRequestOf(expand));
   } catch (const std::exception& e) {  // I/O failures and broken invariants
     std::cerr << "lathesim: error: " << e.what() << '\n';
     return 1;

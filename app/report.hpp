@@ -32,6 +32,7 @@ struct RunFigures {
   sim::SimulationResult simulation;
   std::vector<measure::MeasuredThread> threads;  // every thread cut, as programmed and as measured
   std::vector<interp::Diagnostic> warnings;
+  std::vector<interp::Diagnostic> notes;
   RunTimings timing;
 };
 

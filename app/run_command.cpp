@@ -30,9 +30,12 @@ int runCommand(const RunOptions& options) {
   return 0;
 }
 
-int expandCommand(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setup,
-                  std::optional<interp::Dialect> dialect) {
-  const std::optional<job::Job> loaded = job::loadJob(program, setup, dialect);
+job::JobRequest jobRequestOf(const RunOptions& options) {
+  return {options.program, options.setup, options.dialect, options.programDirectories, options.stock};
+}
+
+int expandCommand(const job::JobRequest& request) {
+  const std::optional<job::Job> loaded = job::loadJob(request);
   if (!loaded) return 1;
   interp::writeToolpathCsv(loaded->toolpath, std::cout);
   return 0;

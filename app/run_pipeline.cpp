@@ -31,7 +31,7 @@ sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
 }
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
-  std::optional<job::Job> loaded = job::loadJob(options.program, options.setup, options.dialect);
+  std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
   run.job = std::move(*loaded);
@@ -51,6 +51,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.moves = run.job.toolpath.moves.size();
   figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
   figures.warnings = run.job.warnings;
+  figures.notes = run.job.notes;
 
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);

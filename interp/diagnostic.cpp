@@ -9,7 +9,9 @@
 namespace lathesim::interp {
 
 std::string format(const Diagnostic& diagnostic) {
-  const char* severity = diagnostic.severity == Severity::Error ? "error" : "warning";
+  const char* severity = diagnostic.severity == Severity::Error     ? "error"
+                         : diagnostic.severity == Severity::Warning ? "warning"
+                                                                    : "note";
   if (diagnostic.line <= 0) {
     return fmt::format("{}: {}: {}", diagnostic.file, severity, diagnostic.message);
   }

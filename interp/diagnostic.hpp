@@ -6,7 +6,7 @@
 
 namespace lathesim::interp {
 
-enum class Severity { Error, Warning };
+enum class Severity { Error, Warning, Note };  // a note: something read differently, said once
 
 struct Diagnostic {
   Severity severity = Severity::Error;

@@ -1,51 +1,92 @@
 #include "interp/interpreter.hpp"
 
 #include <algorithm>
+#include <tuple>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "interp/execution/block_executor.hpp"
 #include "interp/execution/call_stack.hpp"
 #include "interp/motion/feed_warnings.hpp"
 #include "interp/execution/modal_state.hpp"
 #include "interp/compensation/nose_compensation.hpp"
+#include "interp/text/control_family.hpp"
 #include "interp/text/program.hpp"
+#include "interp/text/program_library.hpp"
 
 namespace lathesim::interp {
 namespace {
 
+// An error or warning of a block in a subprogram's own file names that file.
+Error inFile(Error error, const Program& program, const ProgramBlock& block) {
+  if (block.source != 0) error.file = program.sources[static_cast<std::size_t>(block.source)].name;
+  return error;
+}
+
+// M98 of a program the text does not hold: read it from its file (program_library.hpp), or
+// say which names were looked for where.
+Status loadSubprogram(Program& program, const SubprogramCall& call, const ProgramBlock& caller,
+                      const InterpreterOptions& options) {
+  if (program.programStart.count(call.programNumber) != 0) return success();
+  if (const auto file = findProgramFile(call.programNumber, options.programDirectories)) {
+    appendProgramFile(program, file->path.string(), file->text, call.programNumber, options.blockDelete,
+                      options.dialect);
+    return success();
+  }
+  const auto names = programFileNames(call.programNumber);
+  std::string directories;
+  for (const auto& directory : options.programDirectories)
+    directories += (directories.empty() ? "" : ", ") + directory.string();
+  return inFile(Error{caller.line, call.column,
+                      fmt::format("M98 calls O{:04}, which is neither in this program nor in a file: "
+                                  "looked for {}, {}, {} … {} in {}; give the directory of the "
+                                  "control's programs with --programs DIR",
+                                  call.programNumber, names[0], names[1], names[2], names.back(),
+                                  directories.empty() ? "no directory" : directories)},
+                program, caller);
+}
+
 // Runs the program from its first block until M02/M30, the end of the text, or the first
 // error; appends to `toolpath` and `warnings`. A block's read error is reported when
-// execution reaches it.
-Status runProgram(std::string_view programText, const InterpreterOptions& options,
-                  Toolpath& toolpath, std::vector<Error>& warnings) {
+// execution reaches it. Moves made in a subprogram's own file carry the line of the M98 in
+// the program that called it first, so every line of the toolpath is a line of the program.
+Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
+                  std::vector<Error>& warnings) {
   ModalState state;
-  state.position = options.startPosition;
+  state.frame.offsets = options.workOffsets;
+  state.position = options.startPosition - state.frame.shift();
   state.feedMode = options.initialFeedMode;
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
 
-  const Program program = readProgram(programText, options.blockDelete, options.dialect);
   CallStack calls(program);
   std::size_t next = 0;
   while (!state.ended && next < program.blocks.size()) {
     const std::size_t index = next++;
-    const ProgramBlock& block = program.blocks[index];
+    const ProgramBlock block = program.blocks[index];  // a copy: loading a file may grow the blocks
     toolpath.blockCount = std::max(toolpath.blockCount, block.ordinal + 1);
     if (block.skipped) continue;
-    if (!block.parsed.ok()) return block.parsed.error();
+    if (!block.parsed.ok()) return inFile(block.parsed.error(), program, block);
 
     const BlockPlace place{program, index};
     auto outcome = executeBlock(block.parsed.value(), state, options, block.ordinal, &place);
-    if (!outcome.ok()) return outcome.error();
+    if (!outcome.ok()) return inFile(outcome.error(), program, block);
 
     BlockOutcome& done = outcome.value();
+    if (block.source != 0 && calls.outermostCall()) {
+      const ProgramBlock& site = program.blocks[*calls.outermostCall()];
+      for (Move& move : done.moves) std::tie(move.line, move.column) = std::pair{site.line, site.column};
+      for (CycleStart& start : done.cycleStarts) std::tie(start.line, start.column) = std::pair{site.line, site.column};
+    }
     const ProgramFlow& flow = done.flow;
     if (flow.call) {
+      if (auto loaded = loadSubprogram(program, *flow.call, block, options); !loaded.ok()) return loaded.error();
       auto target = calls.call(*flow.call, index);
-      if (!target.ok()) return target.error();
+      if (!target.ok()) return inFile(target.error(), program, block);
       next = target.value();
     } else if (flow.returnColumn) {
       auto target = calls.giveBack(*flow.returnColumn, index);
-      if (!target.ok()) return target.error();
+      if (!target.ok()) return inFile(target.error(), program, block);
       next = target.value();
     } else if (flow.continueAfter) {
       next = *flow.continueAfter + 1;
@@ -53,12 +94,33 @@ Status runProgram(std::string_view programText, const InterpreterOptions& option
     state = std::move(done.state);
     toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
     toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
-    warnings.insert(warnings.end(), done.warnings.begin(), done.warnings.end());
+    for (const Error& warning : done.warnings) warnings.push_back(inFile(warning, program, block));
   }
   if (!state.ended) {
     if (auto error = calls.unfinished()) return *error;
   }
   return success();
+}
+
+// Each move from its work coordinate system into the setup's frame. A change of system
+// re-expresses the position (work_coordinates.cpp), so consecutive moves stay joined.
+void placeInSetupFrame(std::vector<Move>& moves) {
+  for (Move& move : moves) {
+    move.from += move.workShift;
+    move.to += move.workShift;
+    if (isArc(move.kind)) move.center += move.workShift;
+  }
+}
+
+// A program of another control family is refused as a whole, naming the family.
+Status refuseForeignProgram(std::string_view programText) {
+  const auto foreign = recogniseForeignProgram(programText);
+  if (!foreign) return success();
+  return Error{foreign->line, foreign->column,
+               fmt::format("this is a program for {} ('{}'), not Fanuc/GSK lathe G-code: lathesim "
+                           "reads the dialects fanuc-a, fanuc-b and hnc and does not translate other "
+                           "control families",
+                           foreign->family, foreign->evidence)};
 }
 
 }  // namespace
@@ -74,25 +136,34 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
-  Status status = runProgram(programText, options, result.toolpath, warnings);
-  // The moves are made as programmed; then G41/G42 and the offsets' shifts are applied.
+  std::vector<Error> notes;
+  Program program = readProgram(programText, options.blockDelete, options.dialect);
+  for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
+  Status status = refuseForeignProgram(programText);
+  if (status.ok()) status = runProgram(program, options, result.toolpath, warnings);
+  // The moves are made as programmed, in the work coordinate systems; placed in the setup's
+  // frame, then G41/G42 and the tool offsets' shifts are applied.
+  if (status.ok()) placeInSetupFrame(result.toolpath.moves);
   if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
-  if (status.ok()) status = applyToolOffsets(result.toolpath.moves, options.offsets);
+  if (status.ok()) status = applyToolOffsets(result.toolpath.moves);
+  // A diagnostic in the file it names: the program's own, or a subprogram's.
+  const auto diagnostic = [&](Severity severity, const Error& e) {
+    std::string_view text = programText;
+    for (const SourceText& source : program.sources)
+      if (!e.file.empty() && source.name == e.file) text = source.text;
+    return Diagnostic{severity, e.file.empty() ? fileName : e.file, e.line, e.column, e.message, lineOf(text, e.line)};
+  };
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.
-    const Error& error = status.error();
-    result.diagnostics.push_back({Severity::Error, fileName, error.line, error.column,
-                                  error.message, lineOf(programText, error.line)});
+    result.diagnostics.push_back(diagnostic(Severity::Error, status.error()));
     return result;
   }
   for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
   std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
     return a.line != b.line ? a.line < b.line : a.column < b.column;
   });
-  for (const Error& warning : warnings) {
-    result.diagnostics.push_back({Severity::Warning, fileName, warning.line, warning.column,
-                                  warning.message, lineOf(programText, warning.line)});
-  }
+  for (const Error& warning : warnings) result.diagnostics.push_back(diagnostic(Severity::Warning, warning));
+  for (const Error& note : notes) result.diagnostics.push_back(diagnostic(Severity::Note, note));
   return result;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // G-code text → Toolpath. The single entry point of the interp module.
 
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,6 +13,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/execution/work_frame.hpp"
 
 namespace lathesim::interp {
 
@@ -18,6 +21,8 @@ struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
                                    // T word. A T word naming another number is an error.
+  std::function<std::string(int tool)> toolDefinitionHint;  // how to define a missing tool (the
+                                                            // setup's TOML), for that error
   bool blockDelete = true;         // '/' blocks are skipped when true
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
   FeedMode initialFeedMode = FeedMode::PerRevolution;  // G98/G99 before the program sets one
@@ -26,12 +31,17 @@ struct InterpreterOptions {
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
   double threadRunoutLeads = 0.0;  // G92/G76 run-out when the program gives none, in leads
                                    // (GSK No.19 and Fanuc No.5130 count it in 0.1 lead)
+  WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)
+  std::vector<std::filesystem::path> programDirectories;  // where M98 finds programs the text
+                                                         // lacks, in order (program_library.hpp)
+  std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
+                                  // reference point (or the start) if unset
 };
 
 struct InterpretResult {
   Toolpath toolpath;
   std::vector<Diagnostic> diagnostics;  // the error that stopped the program alone, or the
-                                        // warnings of a program that ran, by line
+                                        // warnings and notes of a program that ran, by line
   bool ok() const;
 };
 

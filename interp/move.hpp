@@ -1,6 +1,6 @@
 #pragma once
-// The interpreter's output: primitive moves in part coordinates, each traceable to its
-// source. Every cycle is expanded into these, so sim and render never see G-code.
+// The interpreter's output: primitive moves in the setup's frame (the frame of the stock and
+// the start point), each traceable to its source. Every cycle is expanded into these, so sim and render never see G-code.
 
 #include <optional>
 #include <string>
@@ -60,6 +60,8 @@ struct Move {
   FeedMode feedMode = FeedMode::PerRevolution;
   int tool = 0;        // the tool number mounted (T0101 → 1)
   int toolOffset = 0;  // the offset number in force (T0101 → 1)
+  RZ offsetShift{0, 0};  // where that offset moves the tip from the programmed point (radius, Z)
+  RZ workShift{0, 0};    // where program zero lies in the setup's frame (G54–G59, G10 L2)
   NoseComp noseComp;   // G41/G42 in force as programmed; the toolpath's moves are already
                        // compensated (from/to/center are the imaginary tip's path)
   bool spindleOn = false;

@@ -13,6 +13,7 @@ struct Error {
   int line = 0;    // 1-based
   int column = 0;  // 1-based, in UTF-8 code points
   std::string message;
+  std::string file = {};  // the file it is in when not the program's own (an external subprogram)
 };
 
 /// Either a T or the Error that prevented it.

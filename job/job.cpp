@@ -1,10 +1,17 @@
 #include "job/job.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "interp/motion/cycle_time.hpp"
+#include "interp/text/stated_stock.hpp"
+#include "interp/text/program.hpp"
+#include "job/comment_tools.hpp"
+#include "job/stock_option.hpp"
 #include "interp/interpreter.hpp"
 
 namespace lathesim::job {
@@ -20,6 +27,46 @@ bool hasError(const std::vector<interp::Diagnostic>& diagnostics) {
   return false;
 }
 
+// The TOML that defines tool `number`, for the error of a T word nothing defines.
+std::string toolDefinitionHint(int number) {
+  return fmt::format(
+      "  [[tool]]\n  number = {}\n  insert = \"CNMG120408\"    # or kind = \"groove\", width = 3.0, depth = 15.0\n"
+      "  holder = \"PCLNR2525M12\"  # (see the README's setup file)",
+      number);
+}
+
+// T words no setup defines, mounted from what their blocks' comments name (comment_tools.hpp).
+void mountToolsNamedInComments(Job& job, const std::string& programName) {
+  const interp::Program program = interp::readProgram(job.programText, true, job.setup.dialect);
+  Setup& setup = job.setup;
+  std::vector<int> mounted;
+  for (const interp::ProgramBlock& block : program.blocks) {
+    if (block.skipped || !block.parsed.ok() || !block.parsed.value().has('T')) continue;
+    const interp::Word t = block.parsed.value().words.at('T');
+    const int number = static_cast<int>(t.value) / 100;
+    const bool defined = std::any_of(setup.tools.begin(), setup.tools.end(), [&](const ToolDefinition& tool) {
+      return tool.number == number && (setup.toolsGiven || number != 1);
+    });
+    if (defined || std::find(mounted.begin(), mounted.end(), number) != mounted.end()) continue;
+    std::vector<std::string> comments = block.comments;
+    comments.insert(comments.end(), block.commentsAbove.begin(), block.commentsAbove.end());
+    for (const std::string& comment : comments) {
+      auto named = toolNamedIn(comment, number, setup.stock.diameterMm);
+      if (!named) continue;
+      std::erase_if(setup.tools, [&](const ToolDefinition& tool) { return tool.number == number; });
+      setup.tools.push_back(std::move(named->tool));
+      mounted.push_back(number);
+      std::string message = fmt::format("tool {} is mounted from the comment '({})': {}; no setup defines it",
+                                        number, comment, named->description);
+      for (const std::string& w : named->warnings) message += "; " + w;
+      job.warnings.push_back({interp::Severity::Warning, programName, block.line, t.column, message,
+                              interp::lineOf(job.programText, block.line)});
+      print({job.warnings.back()});
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
@@ -31,6 +78,8 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.initialFeedMode = setup.initialFeedMode;
   options.offsets = setup.offsets;
   options.threadRunoutLeads = setup.threadRunoutLeads;
+  options.workOffsets = setup.workOffsets;
+  options.machineZero = setup.machineZero;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
 }
@@ -40,9 +89,11 @@ interp::Diagnostic Job::warningAt(int line, int column, std::string message) con
           interp::lineOf(programText, line)};
 }
 
-std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect) {
-  Job job{defaultSetup(), {}, {}, {}};
+std::optional<Job> loadJob(const JobRequest& request) {
+  const std::filesystem::path& program = request.program;
+  const std::optional<std::filesystem::path>& setupFile = request.setup;
+  const std::optional<interp::Dialect>& dialect = request.dialect;
+  Job job{defaultSetup(), {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     print(loaded.diagnostics);
@@ -62,12 +113,37 @@ std::optional<Job> loadJob(const std::filesystem::path& program, const std::opti
   text << in.rdbuf();
 
   job.programText = text.str();
-  interp::InterpretResult result =
-      interp::interpret(job.programText, program.string(), interpreterOptionsOf(job.setup));
+  if (request.stock) {
+    auto stock = parseStockOption(*request.stock);
+    if (const auto* problem = std::get_if<std::string>(&stock)) {
+      std::cerr << "lathesim: error: " << *problem << '\n';
+      return std::nullopt;
+    }
+    job.setup.stock = std::get<sim::StockSpec>(stock);
+    job.setup.stockGiven = true;
+    job.setup.sourceName += " with --stock " + *request.stock;
+  } else if (!job.setup.stockGiven) {
+    if (const auto stated = interp::stockStatedIn(job.programText)) {
+      job.setup.stock = sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
+      job.notes.push_back({interp::Severity::Note, program.string(), stated->line, stated->column,
+                           fmt::format("the bar is Φ{:g} × {:g}, its face at Z0, as the program states it: "
+                                       "{} (no setup gives the stock)",
+                                       stated->diameterMm, stated->lengthMm, stated->text),
+                           interp::lineOf(job.programText, stated->line)});
+      print({job.notes.back()});
+    }
+  }
+  mountToolsNamedInComments(job, program.string());
+  interp::InterpreterOptions options = interpreterOptionsOf(job.setup);
+  options.toolDefinitionHint = toolDefinitionHint;
+  options.programDirectories = request.programDirectories;
+  options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());
+  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options);
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
+    else if (d.severity == interp::Severity::Note) job.notes.push_back(std::move(d));
   job.toolpath = std::move(result.toolpath);
   for (const interp::Error& w : interp::assignMoveTimes(job.toolpath, job.setup.machine)) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));

@@ -18,6 +18,7 @@ struct Job {
   Setup setup;
   interp::Toolpath toolpath;  // every move's timeS filled in
   std::vector<interp::Diagnostic> warnings;
+  std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   std::string programText;
 
   /// A warning located in the program, ready to print and report.
@@ -27,8 +28,19 @@ struct Job {
 /// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.
 interp::InterpreterOptions interpreterOptionsOf(const Setup& setup);
 
-/// `dialect`, when given (--dialect), overrides the setup's [machine] dialect.
-std::optional<Job> loadJob(const std::filesystem::path& program, const std::optional<std::filesystem::path>& setupFile,
-                           std::optional<interp::Dialect> dialect = std::nullopt);
+/// What a command names: the program, and what the command line says of the setup.
+struct JobRequest {
+  std::filesystem::path program;
+  std::optional<std::filesystem::path> setup;
+  std::optional<interp::Dialect> dialect;  // --dialect: overrides [machine] dialect
+  std::vector<std::filesystem::path> programDirectories;  // --programs: subprograms the program
+                                                          // lacks, looked for before its own directory
+  std::optional<std::string> stock;  // --stock D40xL80: the bar, over the setup's and the program's
+};
+
+/// The bar comes from --stock, else the setup's [stock], else the program's own statement
+/// (interp/text/stated_stock.hpp: a billet line or a stock comment, face at Z0, with a note),
+/// else the default setup's.
+std::optional<Job> loadJob(const JobRequest& request);
 
 }  // namespace lathesim::job

@@ -2,7 +2,9 @@
 
 #include "job/offset_setup.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <string_view>
@@ -86,7 +88,55 @@ std::optional<std::pair<int, interp::ToolOffset>> readOffset(const toml::table& 
   return std::pair{*number, offset};
 }
 
+constexpr std::string_view kWorkKeys[] = {"code", "x", "z"};
+constexpr std::string_view kWorkCodes[] = {"G54", "G55", "G56", "G57", "G58", "G59"};
+
+/// The system a [[work_offset]] names: 1…6 for G54…G59.
+std::optional<int> workSystemAt(const toml::table& table, const std::string& name, const ReportProblem& report) {
+  const toml::node* node = table.get("code");
+  if (node == nullptr) {
+    report(table.source(), name + " has no code (add code = \"G54\" … \"G59\")");
+    return std::nullopt;
+  }
+  if (const auto* text = node->as_string()) {
+    for (std::size_t i = 0; i < std::size(kWorkCodes); ++i)
+      if (text->get() == kWorkCodes[i]) return static_cast<int>(i) + 1;
+  }
+  report(node->source(), name + ".code must be one of \"G54\" … \"G59\"");
+  return std::nullopt;
+}
+
 }  // namespace
+
+void readWorkOffsets(const toml::node& node, interp::WorkOffsets& offsets, const ReportProblem& report) {
+  const auto* array = node.as_array();
+  if (array == nullptr || !array->is_array_of_tables()) {
+    report(node.source(), "work_offset must be given as [[work_offset]] tables");
+    return;
+  }
+  std::map<int, std::size_t> seen;  // system → 1-based index of its first table
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const auto& table = *array->get(i)->as_table();
+    const std::string name = "work_offset[" + std::to_string(i + 1) + "]";
+    bool ok = true;
+    for (auto&& [key, value] : table) {
+      if (std::find(std::begin(kWorkKeys), std::end(kWorkKeys), key.str()) != std::end(kWorkKeys)) continue;
+      report(key.source(), "unknown key '" + name + "." + std::string(key.str()) + "' (expected code, x, z)");
+      ok = false;
+    }
+    const auto system = workSystemAt(table, name, report);
+    const auto x = lengthAt(table, "x", name, report);
+    const auto z = lengthAt(table, "z", name, report);
+    if (!ok || !system || !x || !z) continue;
+    const auto [first, inserted] = seen.emplace(*system, i + 1);
+    if (!inserted) {
+      report(table.get("code")->source(), std::string(kWorkCodes[*system - 1]) + " is given twice (work_offset[" +
+                                              std::to_string(first->second) + "] and " + name + ")");
+      continue;
+    }
+    offsets[static_cast<std::size_t>(*system)] = RZ(*x / 2.0, *z);
+  }
+}
 
 void readOffsets(const toml::node& node, interp::ToolOffsets& offsets, const ReportProblem& report) {
   const auto* array = node.as_array();

@@ -247,7 +247,7 @@ std::optional<std::size_t> choiceOf(const toml::node& node, const std::string& n
 
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   rejectUnknownKeys(table, "machine.",
-                    {"start", "rapid", "max_rpm", "reference", "dialect", "initial_feed_mode", "thread_runout"}, report);
+                    {"start", "rapid", "max_rpm", "reference", "dialect", "initial_feed_mode", "thread_runout", "zero"}, report);
   if (const auto* node = table.get("dialect")) {
     using interp::kDialects, interp::dialectName;
     if (auto i = choiceOf(*node, "machine.dialect",
@@ -262,6 +262,8 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   setup.referencePosition = setup.startPosition;
   if (const auto* node = table.get("reference"))
     if (auto p = positionOf(*node, "machine.reference", report)) setup.referencePosition = *p;
+  if (const auto* node = table.get("zero"))
+    if (auto p = positionOf(*node, "machine.zero", report)) setup.machineZero = *p;
   if (const auto* node = table.get("rapid")) readRapid(*node, setup.machine, report);
   if (const auto* node = table.get("max_rpm"))
     if (auto v = positiveRate(*node, "machine.max_rpm", "rpm", report)) setup.machine.maxRpm = *v;
@@ -409,14 +411,19 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck", "offset"}, report);
-  if (const auto* node = root.get("stock"))
+  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck", "offset", "work_offset"}, report);
+  if (const auto* node = root.get("stock")) {
+    setup.stockGiven = true;
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
+  }
   if (const auto* node = root.get("machine"))
     if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);
   if (const auto* node = root.get("sim"))
     if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
-  if (const auto* node = root.get("tool")) readTools(*node, setup.tools, report);
+  if (const auto* node = root.get("tool")) {
+    setup.toolsGiven = true;
+    readTools(*node, setup.tools, report);
+  }
   if (const auto* node = root.get("chuck"))
     if (const auto* table = tableAt(*node, "chuck", report)) readChuck(*table, setup.chuck, report);
   if (setup.chuck.jawDiameterMm && *setup.chuck.jawDiameterMm <= setup.stock.diameterMm)
@@ -424,6 +431,12 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
               "chuck.jaw_diameter must exceed the stock's diameter (" + floatText(setup.stock.diameterMm) + " mm)");
   if (const auto* node = root.get("offset")) {
     readOffsets(*node, setup.offsets, [&report](const toml::source_region& where, std::string message) {
+      report.at(where, std::move(message));
+    });
+  }
+
+  if (const auto* node = root.get("work_offset")) {
+    readWorkOffsets(*node, setup.workOffsets, [&report](const toml::source_region& where, std::string message) {
       report.at(where, std::move(message));
     });
   }

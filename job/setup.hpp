@@ -13,6 +13,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/execution/work_frame.hpp"
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
@@ -32,6 +33,7 @@ struct ToolDefinition {
 struct Setup {
   std::string sourceName;  // the file it came from, or "(default setup)"
   sim::StockSpec stock;
+  bool stockGiven = false;  // the file has [stock]: a bar the program states is not used
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
   RZ referencePosition{100.0, 200.0};  // G28's reference point (radius, Z); the start if not given
   interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm
@@ -44,8 +46,11 @@ struct Setup {
   double threadRunoutLeads = 0.0;
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
+  bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
   interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
+  interp::WorkOffsets workOffsets = interp::zeroWorkOffsets();  // [[work_offset]]: G54–G59
+  std::optional<RZ> machineZero;      // [machine] zero: G53's zero (radius, Z); unset: the reference point
 };
 
 struct SetupResult {

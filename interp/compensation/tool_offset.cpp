@@ -6,20 +6,23 @@
 
 namespace lathesim::interp {
 
-RZ offsetShift(const ToolOffsets& offsets, int number) {
+ToolOffset offsetNumbered(const ToolOffsets& offsets, int number) {
   const auto found = offsets.find(number);
-  if (number == 0 || found == offsets.end()) return RZ(0, 0);
-  const ToolOffset& o = found->second;
+  if (number == 0 || found == offsets.end()) return ToolOffset{};
+  return found->second;
+}
+
+RZ offsetShift(const ToolOffset& o) {
   return RZ((o.xDiameterMm + o.wearXDiameterMm) / 2.0, o.zMm + o.wearZMm);
 }
 
-NoseComp noseCompWith(NoseSide side, const ToolOffsets& offsets, int number) {
-  const auto found = offsets.find(number);
-  if (number == 0 || found == offsets.end()) return NoseComp{side, 0.0, 0};
-  return NoseComp{side, found->second.radiusMm, found->second.tip};
+RZ offsetShift(const ToolOffsets& offsets, int number) { return offsetShift(offsetNumbered(offsets, number)); }
+
+NoseComp noseCompWith(NoseSide side, const ToolOffset& offset) {
+  return NoseComp{side, offset.radiusMm + offset.wearRadiusMm, offset.tip};
 }
 
-Status applyToolOffsets(std::vector<Move>& moves, const ToolOffsets& offsets) {
+Status applyToolOffsets(std::vector<Move>& moves) {
   RZ inForce(0, 0);  // the shift the tool stands under
   for (Move& move : moves) {
     if (move.kind == MoveKind::Dwell) {
@@ -27,7 +30,7 @@ Status applyToolOffsets(std::vector<Move>& moves, const ToolOffsets& offsets) {
       move.to += inForce;
       continue;
     }
-    const RZ own = offsetShift(offsets, move.toolOffset);
+    const RZ own = move.offsetShift;
     if (isArc(move.kind) && own != inForce) {
       return Error{move.line, move.column,
                    fmt::format("the tool offset changes to {} in an arc block: the new offset "

@@ -22,24 +22,28 @@ struct ToolOffset {
   int tip = 0;                 // imaginary tip number 0–9 (lathe-cycles.md §8)
   double wearXDiameterMm = 0;  // wear shift in X, a diameter
   double wearZMm = 0;          // wear shift in Z
+  double wearRadiusMm = 0;     // wear of the nose radius; G41/G42 use radius + wear (G10 P1–64 R)
 };
 
 using ToolOffsets = std::map<int, ToolOffset>;  // offset number (1–99) → offset
 
+/// Offset `number` of the table: all zero for 0 and for an undefined number.
+ToolOffset offsetNumbered(const ToolOffsets& offsets, int number);
+
 /// Where the tip lands relative to the programmed point: ((x + wear_x)/2, z + wear_z), a
-/// radius and a Z; zero for offset 0 and for an undefined number.
+/// radius and a Z.
+RZ offsetShift(const ToolOffset& offset);
 RZ offsetShift(const ToolOffsets& offsets, int number);
 
-/// The compensation `side` in force with offset `number`: its R and tip (0 and 0 when the
-/// offset is 0 or undefined).
-NoseComp noseCompWith(NoseSide side, const ToolOffsets& offsets, int number);
+/// The compensation `side` in force with `offset`: its R (+ wear) and tip.
+NoseComp noseCompWith(NoseSide side, const ToolOffset& offset);
 
-/// Moves every move of `moves` by the shift of the offset in force, as the machine does: a
-/// move ends at its programmed end plus its own offset's shift, and starts at its programmed
-/// start plus the shift the tool was under until then (the previous move's; none before the
-/// first). A changed offset therefore takes effect with the next move, which must be
-/// straight: an arc whose offset shift differs from the one in force is an error at its
-/// block. A dwell stays where the tool is.
-Status applyToolOffsets(std::vector<Move>& moves, const ToolOffsets& offsets);
+/// Moves every move of `moves` by its offsetShift, as the machine does: a move ends at its
+/// programmed end plus its own offset's shift, and starts at its programmed start plus the
+/// shift the tool was under until then (the previous move's; none before the first). A
+/// changed offset therefore takes effect with the next move, which must be straight: an arc
+/// whose offset shift differs from the one in force is an error at its block. A dwell stays
+/// where the tool is.
+Status applyToolOffsets(std::vector<Move>& moves);
 
 }  // namespace lathesim::interp

@@ -14,7 +14,9 @@ constexpr std::array kGCodes{
     GCodeInfo{2, GGroup::Motion, true, "clockwise arc"},
     GCodeInfo{3, GGroup::Motion, true, "counter-clockwise arc"},
     GCodeInfo{4, GGroup::NonModal, true, "dwell"},
-    GCodeInfo{10, GGroup::NonModal, false, "data setting"},
+    GCodeInfo{10, GGroup::NonModal, true, "data setting"},
+    GCodeInfo{14, GGroup::NonModal, false, "secondary spindle swap", "a second spindle"},
+    GCodeInfo{15, GGroup::NonModal, false, "secondary spindle swap cancel", "a second spindle"},
     GCodeInfo{17, GGroup::Plane, true, "XY plane"},
     GCodeInfo{18, GGroup::Plane, true, "ZX plane"},
     GCodeInfo{19, GGroup::Plane, true, "YZ plane"},
@@ -26,6 +28,13 @@ constexpr std::array kGCodes{
     GCodeInfo{41, GGroup::NoseRadius, true, "nose radius compensation left"},
     GCodeInfo{42, GGroup::NoseRadius, true, "nose radius compensation right"},
     GCodeInfo{50, GGroup::NonModal, true, "coordinate system setting"},
+    GCodeInfo{53, GGroup::NonModal, true, "move in machine coordinates"},
+    GCodeInfo{54, GGroup::WorkCoordinates, true, "work coordinate system 1"},
+    GCodeInfo{55, GGroup::WorkCoordinates, true, "work coordinate system 2"},
+    GCodeInfo{56, GGroup::WorkCoordinates, true, "work coordinate system 3"},
+    GCodeInfo{57, GGroup::WorkCoordinates, true, "work coordinate system 4"},
+    GCodeInfo{58, GGroup::WorkCoordinates, true, "work coordinate system 5"},
+    GCodeInfo{59, GGroup::WorkCoordinates, true, "work coordinate system 6"},
     GCodeInfo{65, GGroup::NonModal, false, "macro call"},
     GCodeInfo{70, GGroup::NonModal, true, "finishing cycle"},
     GCodeInfo{71, GGroup::NonModal, true, "OD/ID roughing cycle"},
@@ -34,6 +43,10 @@ constexpr std::array kGCodes{
     GCodeInfo{74, GGroup::NonModal, true, "face peck drilling cycle"},
     GCodeInfo{75, GGroup::NonModal, true, "grooving cycle"},
     GCodeInfo{76, GGroup::NonModal, true, "multiple threading cycle"},
+    GCodeInfo{80, GGroup::DrillingCycle, true, "drilling cycle cancel"},
+    GCodeInfo{87, GGroup::NonModal, false, "side drilling cycle", "live tooling (a driven tool drills radial holes)"},
+    GCodeInfo{88, GGroup::NonModal, false, "side tapping cycle", "live tooling (a driven tool taps radial holes)"},
+    GCodeInfo{89, GGroup::NonModal, false, "side boring cycle", "live tooling (a driven tool bores radial holes)"},
     GCodeInfo{90, GGroup::Motion, true, "axial cutting cycle"},
     GCodeInfo{92, GGroup::Motion, true, "threading cycle"},
     GCodeInfo{94, GGroup::Motion, true, "face cutting cycle"},
@@ -41,6 +54,10 @@ constexpr std::array kGCodes{
     GCodeInfo{97, GGroup::SpindleMode, true, "constant spindle speed"},
     GCodeInfo{98, GGroup::FeedMode, true, "feed per minute"},
     GCodeInfo{99, GGroup::FeedMode, true, "feed per revolution"},
+    GCodeInfo{112, GGroup::NonModal, false, "polar coordinate interpolation",
+              "a C axis and live tooling (polar interpolation mills the face with a driven tool)"},
+    GCodeInfo{113, GGroup::NonModal, false, "polar coordinate interpolation cancel",
+              "a C axis and live tooling (polar interpolation mills the face with a driven tool)"},
 };
 
 constexpr std::array kMCodes{
@@ -52,9 +69,21 @@ constexpr std::array kMCodes{
     MCodeInfo{5, MGroup::Spindle, true, "spindle stop"},
     MCodeInfo{8, MGroup::Coolant, true, "coolant on"},
     MCodeInfo{9, MGroup::Coolant, true, "coolant off"},
+    MCodeInfo{13, MGroup::Spindle, false, "live tool on (Doosan/Fanuc; spindle and coolant on some older controls: write M03 M08)",
+              "live tooling (a driven tool spindle)"},
+    MCodeInfo{14, MGroup::Spindle, false, "live tool reverse", "live tooling (a driven tool spindle)"},
+    MCodeInfo{15, MGroup::Spindle, false, "live tool stop", "live tooling (a driven tool spindle)"},
     MCodeInfo{30, MGroup::ProgramEnd, true, "end of program and rewind"},
     MCodeInfo{98, MGroup::Subprogram, true, "subprogram call"},
     MCodeInfo{99, MGroup::Subprogram, true, "subprogram return"},
+    MCodeInfo{133, MGroup::Spindle, false, "live tool forward (Haas)", "live tooling (a driven tool spindle)"},
+    MCodeInfo{134, MGroup::Spindle, false, "live tool reverse (Haas)", "live tooling (a driven tool spindle)"},
+    MCodeInfo{135, MGroup::Spindle, false, "live tool stop (Haas)", "live tooling (a driven tool spindle)"},
+    MCodeInfo{143, MGroup::Spindle, false, "secondary spindle forward (Haas)", "a second spindle"},
+    MCodeInfo{144, MGroup::Spindle, false, "secondary spindle reverse (Haas)", "a second spindle"},
+    MCodeInfo{145, MGroup::Spindle, false, "secondary spindle stop (Haas)", "a second spindle"},
+    MCodeInfo{154, MGroup::Spindle, false, "C axis engage (Haas)", "a C axis"},
+    MCodeInfo{155, MGroup::Spindle, false, "C axis disengage (Haas)", "a C axis"},
 };
 
 // Absolute / incremental distance modes: only dialects that write G90/G91 have them.
@@ -181,6 +210,8 @@ std::string_view groupName(GGroup group) {
     case GGroup::SpindleMode: return "spindle speed mode (G96/G97)";
     case GGroup::FeedMode: return "feed mode";
     case GGroup::Distance: return "distance mode (absolute/incremental)";
+    case GGroup::WorkCoordinates: return "work coordinate system (G54–G59)";
+    case GGroup::DrillingCycle: return "drilling cycle (group 10)";
   }
   return "unknown";
 }

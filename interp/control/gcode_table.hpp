@@ -21,6 +21,8 @@ enum class GGroup {
   FeedMode,     // 05: G98 (mm/min) G99 (mm/rev)
   Distance,     // 03: absolute / incremental (system B and HNC write G90 / G91; system A
                 //     has no such codes: X/Z are absolute, U/W incremental)
+  WorkCoordinates,  // 14: G54–G59, the work coordinate systems (work offsets)
+  DrillingCycle,    // 10: G80, cancel of the drilling canned cycles (Fanuc T: G83–G89)
 };
 
 /// The numbers of the Distance group's meanings (they have no system-A code).
@@ -40,6 +42,8 @@ struct GCodeInfo {
   GGroup group = GGroup::NonModal;
   bool supported = false;  // false: a real code lathesim does not simulate yet
   std::string_view meaning;
+  std::string_view lacks = {};  // not empty: what the code needs that this two-axis lathe does
+                                // not have (live tooling, a C axis …); it is refused saying so
 };
 
 struct MCodeInfo {
@@ -47,6 +51,7 @@ struct MCodeInfo {
   MGroup group = MGroup::ProgramEnd;
   bool supported = false;
   std::string_view meaning;
+  std::string_view lacks = {};  // as for GCodeInfo
 };
 
 /// What G`written` means in `dialect`, or nullptr when the dialect has no such code.

@@ -22,7 +22,9 @@ bool allowedInContour(GGroup group, int number) {
     case GGroup::NoseRadius:                    // G40 G41 G42
     case GGroup::Distance: return true;         // G90/G91 of the dialects that have them
     case GGroup::Plane:
-    case GGroup::Units: return false;
+    case GGroup::Units:
+    case GGroup::WorkCoordinates:
+    case GGroup::DrillingCycle: return false;
   }
   return false;
 }
@@ -81,6 +83,13 @@ Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
   return *found;
 }
 
+// A block that holds its N number and nothing else.
+bool isLabelOnly(const ProgramBlock& block) {
+  if (!block.parsed.ok()) return false;
+  const ParsedBlock& parsed = block.parsed.value();
+  return parsed.gCodes.empty() && parsed.mCodes.empty() && parsed.words.size() == 1 && parsed.has('N');
+}
+
 }  // namespace
 
 Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleIndex,
@@ -95,7 +104,7 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
   if (!first.ok()) return first.error();
   auto last = findSequence(program, cycleIndex, request, *request.q);
   if (!last.ok()) return last.error();
-  const ContourSpan span{first.value(), last.value()};
+  ContourSpan span{first.value(), last.value(), first.value()};
   if (span.last < span.first) {
     return Error{request.line, request.q->column,
                  fmt::format("{} {} {}: N{} comes before N{}; Q names the contour's last block",
@@ -104,6 +113,8 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
                              static_cast<int>(request.p->value))};
   }
   const std::string name = spanName(program, span);
+  while (span.start < span.last && (program.blocks[span.start].skipped || isLabelOnly(program.blocks[span.start])))
+    ++span.start;
   int count = 0;
   std::set<int> numbers;
   for (std::size_t i = span.first; i <= span.last; ++i) {
@@ -117,7 +128,7 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
                                "its own N number",
                                *block.sequenceNumber, request.cycle, name)};
     }
-    auto status = checkContourBlock(block.parsed.value(), i == span.first, request.cycle, name);
+    auto status = checkContourBlock(block.parsed.value(), i == span.start, request.cycle, name);
     if (!status.ok()) return status.error();
   }
   if (count > kMaxContourBlocks) {
@@ -149,7 +160,7 @@ Result<ExtractedContour> extractContour(const Program& program, ContourSpan span
                                         const InterpreterOptions& options) {
   auto run = runContourBlocks(program, span, state, options);
   if (!run.ok()) return run.error();
-  const ProgramBlock& first = program.blocks[span.first];
+  const ProgramBlock& first = program.blocks[span.start];
   const ParsedBlock& firstParsed = first.parsed.value();
   ExtractedContour extracted;
   extracted.firstBlockRapid = firstParsed.gCode(GGroup::Motion)->number == 0;

@@ -22,10 +22,13 @@ namespace lathesim::interp {
 
 constexpr int kMaxContourBlocks = 200;  // GSK980TDi: at most 200 blocks from ns to nf
 
-/// Indices into Program::blocks of the ns and nf blocks.
+/// Indices into Program::blocks of the ns and nf blocks. An ns block that holds nothing but
+/// its N number (`N01;`) is a label: the contour then starts at the block after it, which
+/// must hold G00 or G01 as an ns block does.
 struct ContourSpan {
   std::size_t first = 0;
   std::size_t last = 0;
+  std::size_t start = 0;  // the block that opens the contour: `first`, or the one after a label
 };
 
 /// The cycle block asking for a contour.

@@ -20,7 +20,9 @@
 #include "interp/cycles/thread_cut.hpp"
 #include "interp/cycles/thread_words.hpp"
 #include "interp/motion/spindle_speed.hpp"
+#include "interp/execution/data_setting.hpp"
 #include "interp/execution/subprogram_call.hpp"
+#include "interp/execution/work_coordinates.hpp"
 #include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
@@ -75,6 +77,13 @@ class Executor {
   Status applyDwell(const Code& code);
   Status applyCoordinateSetting(const Code& code);
   Status applyReferenceReturn(const Code& code);
+  Status applyMachineCoordinateMove(const Code& code);
+  void applyWorkSystem(const std::optional<Code>& oneShot);
+  void noteDrillingCycleCancel();
+  void warnIfCycleRepeatsAfterG80(const std::optional<Code>& code, std::string_view name);
+  const ToolOffsets& offsetTable() const {
+    return state_.offsetTable ? *state_.offsetTable : options_.offsets;
+  }
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applyArc(const std::optional<Code>& code);
@@ -87,6 +96,7 @@ class Executor {
   Status applyCompoundCycle(const Code& code);
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
+  std::optional<std::string> missingMachineryOf(const Word& word) const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0),
             const ThreadMotion& thread = {});
   void warnIfSurfaceSpeedUnclamped();
@@ -126,7 +136,11 @@ Result<BlockOutcome> Executor::run() {
 
   const auto oneShot = block_.gCode(GGroup::NonModal);
   const auto motion = block_.gCode(GGroup::Motion);
-  if (oneShot && motion) {
+  applyWorkSystem(oneShot);
+  noteDrillingCycleCancel();
+  // G53 moves at rapid: `G00 G53 X0` is the same move written with its G00.
+  const bool g53WithG00 = oneShot && motion && oneShot->number == 53 && motion->number == 0;
+  if (oneShot && motion && !g53WithG00) {
     return errorAt(motion->column,
                    fmt::format("{} and {} cannot share a block: the words X, Z, U and W would "
                                "belong to both; put them in separate blocks",
@@ -257,6 +271,22 @@ Status Executor::applyTool() {
   const int tool = toolAndOffset / 100;
   const int offset = toolAndOffset % 100;
   const auto& tools = options_.toolNumbers;
+  if (std::find(tools.begin(), tools.end(), tool) == tools.end() && options_.toolDefinitionHint && place_) {
+    std::vector<std::string> seen;  // the program's T words, each once, where first written
+    std::string used;
+    for (const ProgramBlock& b : place_->program.blocks) {
+      if (b.skipped || !b.parsed.ok() || !b.parsed.value().has('T')) continue;
+      const std::string text = b.parsed.value().words.at('T').text();
+      if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
+      seen.push_back(text);
+      used += fmt::format("{}{} (line {})", used.empty() ? "" : ", ", text, b.line);
+    }
+    return errorAt(t->column,
+                   fmt::format("tool {} ({}) is defined neither in the setup nor by a comment on its "
+                               "block naming an insert (CNMG 120408) or a kind (GROOVE 3MM, DRILL 12, "
+                               "THREAD 60 DEG); the program's tools: {}; add it to the setup:\n{}",
+                               tool, t->text(), used, options_.toolDefinitionHint(tool)));
+  }
   if (std::find(tools.begin(), tools.end(), tool) == tools.end()) {
     std::string defined;
     for (int number : tools) defined += (defined.empty() ? "" : ", ") + std::to_string(number);
@@ -267,6 +297,7 @@ Status Executor::applyTool() {
   }
   state_.tool = tool;
   state_.toolOffset = offset;
+  state_.offset = offsetNumbered(offsetTable(), offset);
   return success();
 }
 
@@ -277,6 +308,8 @@ Status Executor::applyOneShot(const Code& code) {
   state_.threadCycle = {};
   if (code.number == 50) return applyCoordinateSetting(code);
   if (code.number == 28) return applyReferenceReturn(code);
+  if (code.number == 53) return applyMachineCoordinateMove(code);
+  if (code.number == 10) return applyDataSetting(block_, code, state_, options_);
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
 }
 
@@ -340,11 +373,57 @@ Status Executor::applyReferenceReturn(const Code& code) {
   if (a.u) radiusMm = p.x() + lengthMm(*a.u, state_.inch) / 2.0;
   if (a.z) zMm = lengthMm(*a.z, state_.inch);
   if (a.w) zMm = p.y() + lengthMm(*a.w, state_.inch);
-  const RZ reference = options_.referencePosition.value_or(options_.startPosition);
+  const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.frame.shift();
   const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
   for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step);
   if (!legs.empty()) state_.position = legs.back().to;
   return success();
+}
+
+Status Executor::applyMachineCoordinateMove(const Code& code) {
+  auto target = machineCoordinateTarget(block_, code, state_, options_);
+  if (!target.ok()) return target.error();
+  state_.noseSide = NoseSide::None;  // G53 cancels G41/G42 (GSK980TDi 3.20): its move is the cancel
+  emit(MoveKind::Rapid, state_.position, target.value(), 0);
+  state_.position = target.value();
+  return success();
+}
+
+// G54–G59 before the block's motion, so the block's own move is in the new system. In a G50
+// block the selection is ignored and G50 acts (GSK980TDi 3.21 note 6).
+void Executor::applyWorkSystem(const std::optional<Code>& oneShot) {
+  const auto code = block_.gCode(GGroup::WorkCoordinates);
+  if (!code) return;
+  if (oneShot && oneShot->number == 50) {
+    warnings_.push_back({block_.line, code->column,
+                         fmt::format("{} in a G50 block is ignored: G50 sets the coordinates "
+                                     "(GSK980TDi 3.21); select the work system in a block of its own",
+                                     code->text)});
+    return;
+  }
+  selectWorkSystem(*code, state_);
+}
+
+// G80 cancels the drilling cycles (group 10 on Fanuc T and GSK: G83–G89); it does not end
+// G90/G92/G94, which only another group-01 code ends. Remember it, so that a block that then
+// repeats such a cycle says so.
+void Executor::noteDrillingCycleCancel() {
+  const auto code = block_.gCode(GGroup::DrillingCycle);
+  if (!code) return;
+  if (state_.motion == MotionMode::AxialCycle || state_.motion == MotionMode::FaceCycle ||
+      state_.motion == MotionMode::ThreadCycle)
+    state_.drillCancelWithCycle = std::pair{block_.line, code->column};
+}
+
+void Executor::warnIfCycleRepeatsAfterG80(const std::optional<Code>& code, std::string_view name) {
+  const auto g80 = state_.drillCancelWithCycle;
+  state_.drillCancelWithCycle.reset();
+  if (code || !g80) return;
+  warnings_.push_back({block_.line, block_.column,
+                       fmt::format("this block repeats {}: the G80 on line {} cancels drilling "
+                                   "cycles only, and {} stays modal until a G00, G01, G02 or G03 "
+                                   "(Fanuc and GSK group 01)",
+                                   name, g80->first, name)});
 }
 
 Status Executor::applyMotion() {
@@ -364,6 +443,7 @@ Status Executor::applyMotion() {
     if (mode != state_.motion) {
       state_.cycle = {};
       state_.threadCycle = {};
+      state_.drillCancelWithCycle.reset();
     }
     state_.motion = mode;
   }
@@ -449,6 +529,7 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   }
   const int anchor = code ? code->column : block_.column;
   const std::string name = writtenGCode(cycle.code, GGroup::Motion, options_.dialect);
+  warnIfCycleRepeatsAfterG80(code, name);
   if (state_.plane != Plane::ZX) {
     return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
                                        "needs the ZX plane; select it with G18",
@@ -491,9 +572,9 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
     return errorAt(column, *problem);
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
-  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, name});
+  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), name});
   const RZ end(*xDiameterMm / 2.0, *zMm);  // C
-  const NoseComp comp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
+  const NoseComp comp = noseCompWith(state_.noseSide, state_.offset);
   emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
   return success();  // the cycle ends at A: the position is unchanged
 }
@@ -549,6 +630,7 @@ Status Executor::applyThreadCycle(const std::optional<Code>& code) {
   }
   const int anchor = code ? code->column : block_.column;
   const std::string name = writtenGCode(92, GGroup::Motion, options_.dialect);
+  warnIfCycleRepeatsAfterG80(code, name);
   if (state_.plane != Plane::ZX) {
     return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
                                        "needs the ZX plane; select it with G18",
@@ -655,13 +737,36 @@ Status Executor::applyCompoundCycle(const Code& code) {
   const CompoundOutcome& done = outcome.value();
   // The parameter block of a two-block cycle (G71 U R; …) moves nothing and starts nothing.
   if (!done.legs.empty() || !done.contourMoves.empty())
-    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start, code.text});
+    cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
   warnings_.insert(warnings_.end(), done.warnings.begin(), done.warnings.end());
   if (code.number == 76) warnIfThreadTooFast(done.legs, code.column);
   emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
   return success();
+}
+
+// A word no code took that names machinery this two-axis, one-spindle lathe does not have.
+std::optional<std::string> Executor::missingMachineryOf(const Word& word) const {
+  if (word.letter == 'C') {
+    return fmt::format("{}: this lathe has no C axis (the spindle cannot be positioned or "
+                       "milled around); live tooling and C-axis work cannot be simulated",
+                       word.text());
+  }
+  if (word.letter == 'B') {
+    return fmt::format("{}: this lathe has no B axis (a sub-spindle's or a tilting tool "
+                       "spindle's travel)",
+                       word.text());
+  }
+  // Fanuc's multi-spindle control selects the spindle with P11, P12, P21, P22 beside S or M03.
+  const bool spindleBlock = block_.mCode(MGroup::Spindle) || block_.has('S');
+  const bool spindleSelect = word.number == "11" || word.number == "12" || word.number == "21" || word.number == "22";
+  if (word.letter == 'P' && spindleSelect && spindleBlock) {
+    return fmt::format("{} selects a spindle (multi-spindle control: P11 the main, P12 or P2x a "
+                       "sub-spindle); this lathe has one spindle",
+                       word.text());
+  }
+  return std::nullopt;
 }
 
 Status Executor::checkAllWordsUsed() const {
@@ -671,6 +776,7 @@ Status Executor::checkAllWordsUsed() const {
   for (const auto& [letter, word] : block_.words) {
     if (first == nullptr || word.column < first->column) first = &word;
   }
+  if (const auto lacking = missingMachineryOf(*first)) return errorAt(first->column, *lacking);
   return errorAt(first->column, fmt::format("{} is not used by any code in this block; remove "
                                             "it or add the code that takes {}",
                                             first->text(), first->letter));
@@ -695,7 +801,9 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   }
   move.tool = state_.tool;
   move.toolOffset = state_.toolOffset;
-  move.noseComp = noseCompWith(state_.noseSide, options_.offsets, state_.toolOffset);
+  move.offsetShift = offsetShift(state_.offset);
+  move.workShift = state_.frame.shift();
+  move.noseComp = noseCompWith(state_.noseSide, state_.offset);
   move.spindleOn = state_.spindleOn;
   move.spindleDirection = state_.spindleDirection;
   move.spindleMode = state_.spindleMode;

@@ -28,6 +28,11 @@ class CallStack {
   Result<std::size_t> giveBack(int column, std::size_t index);
   /// When the text ended inside a subprogram: the error, located at its M98.
   std::optional<Error> unfinished() const;
+  /// The main program's block whose M98 the running subprograms descend from, if any runs.
+  std::optional<std::size_t> outermostCall() const {
+    if (frames_.empty()) return std::nullopt;
+    return frames_.front().callFrom;
+  }
 
  private:
   struct Frame {

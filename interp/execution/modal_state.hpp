@@ -1,11 +1,14 @@
 #pragma once
 // What the control remembers between blocks. All lengths are mm; X positions are radii.
 
+#include <memory>
 #include <optional>
 #include <utility>
 
 #include "geometry/rz.hpp"
+#include "interp/compensation/tool_offset.hpp"
 #include "interp/cycles/compound_params.hpp"
+#include "interp/execution/work_frame.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -57,8 +60,15 @@ struct ModalState {
   bool coolantOn = false;
   int tool = 0;
   int toolOffset = 0;
+  ToolOffset offset;  // the values of offset `toolOffset` as its T word found them: G10 changes
+                      // the table, and a changed entry takes effect at the next T word
+  std::shared_ptr<const ToolOffsets> offsetTable;  // the table as G10 left it; null: the setup's
   NoseSide noseSide = NoseSide::None;  // group 07: G40 / G41 / G42
-  RZ position{0.0, 0.0};  // where the tool is, part coordinates (radius mm, Z mm)
+  WorkFrame frame;        // G54–G59 and their offsets (G10 L2 changes them)
+  RZ position{0.0, 0.0};  // where the tool is in the selected work coordinate system
+                          // (radius mm, Z mm); the setup's frame is position + frame.shift()
+  std::optional<std::pair<int, int>> drillCancelWithCycle;  // (line, column) of a G80 read while
+                                                            // G90/G92/G94 stayed modal
   CycleRetained cycle;
   ThreadCycleRetained threadCycle;  // G92's own retained words
   // G32 (lathe-cycles.md §2): a G32 block right after another does not wait for the spindle's

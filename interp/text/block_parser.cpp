@@ -28,6 +28,12 @@ Result<Code> checkedCode(const Word& word, std::optional<int> written, int line,
                              known)};
   }
   const std::string text = codeText(word.letter, *written);
+  if (!info->lacks.empty()) {
+    return Error{line, word.column,
+                 fmt::format("{} ({}) needs {}, which this lathe does not have: it turns with two "
+                             "axes, X and Z, one spindle and a turret",
+                             text, info->meaning, info->lacks)};
+  }
   if (!info->supported) {
     return Error{line, word.column,
                  fmt::format("{} ({}) is not supported by lathesim yet", text, info->meaning)};

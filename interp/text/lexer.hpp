@@ -5,6 +5,22 @@
 //                        ( ... ) comments and '%' lines, and notes a leading '/';
 //   tokenize()           turns a block's remaining characters into words like X20.0.
 // The lexer knows nothing of modal state.
+//
+// Text as shops and DNC links send it:
+//   - Before the program's first block or '%' line, tape and DNC leftovers are skipped: control
+//     characters (ESC, DC2, XON … any C0 code but tab and line ends, and DEL) and header lines
+//     that start with '&' (`&HE:…`). Inside the program a control character is an error.
+//   - `;` ends a block, as in the seeds (`G00 X42 Z0.5; G94 X25.5 Z-5 F100; Z-10;`). The rest
+//     of its line is a comment instead when it reads as prose (`T0505 ;parting tool 3mm`):
+//     when its first character cannot begin a block (anything but an ASCII letter and
+//     # / : % [ ( ), or when its first letter is followed — spaces aside — by another letter,
+//     as in words of prose but never in G-code (`X AXIS`, `turn od`). Macro statements are not
+//     prose: IF or WHILE followed by '[', GOTO, END or DO followed by a number, '#' or '['.
+//     A word followed by prose (`; M08 coolant on`) is not a comment: it is an error at the
+//     first letter that is not a word.
+//   - A line that opens with '[' is a school trainer's directive (`[BILLET X56.4 Z84`), not a
+//     block: skipped with a note (job/ reads the billet as the bar); a Macro B block never
+//     opens with '['.
 
 #include <optional>
 #include <string>
@@ -27,6 +43,15 @@ struct RawBlock {
   int column = 0;        // 1-based column of its first significant character
   bool deleted = false;  // it started with '/' (block delete)
   std::vector<SourceChar> chars;  // everything after the '/', spaces and comments removed
+  std::vector<std::string> comments;       // its ( … ) comments and a prose tail after its ';'
+  std::vector<std::string> commentsAbove;  // comment-only lines directly above it
+};
+
+/// Something the reader skipped that the user should know of, located like an error.
+struct ReadNote {
+  int line = 0;
+  int column = 0;
+  std::string message;
 };
 
 /// A letter and its number: "X20 .0" is the word X20.0.
@@ -47,14 +72,29 @@ class BlockReader {
   /// Fails on a comment that is not closed on its line.
   Result<std::optional<RawBlock>> next();
 
+  /// What was skipped so far: the tape leader and the prose comments after ';'.
+  std::vector<ReadNote> notes() const;
+
  private:
   bool skipPercentLine();  // at a line start: skips a '%' line, returns whether it did
+  bool skipLeaderLine();   // before the program: skips an '&' header line
+  bool skipDirectiveLine();  // a '[' line
+  void noteLeaderControl(char c, int column);
+  void advance(std::size_t bytes);  // within the line
+  void endLine();                   // past the newline at at_
+  void takeProseTail(RawBlock& block);
 
   std::string_view text_;
   std::size_t at_ = 0;  // byte offset of the next character
   int line_ = 1;
   int column_ = 1;
   bool atLineStart_ = true;
+  bool inProgram_ = false;  // a block or '%' line has been read: the leader is over
+  std::vector<std::string> pendingAbove_;  // comment-only lines since the last block
+  std::vector<std::string> leaderSkipped_;  // what the leader held, e.g. "ESC", "the line '&HE:1'"
+  std::optional<ReadNote> leaderAt_;
+  std::vector<ReadNote> prose_;  // each ';' tail read as a comment
+  std::vector<ReadNote> directives_;  // each '[' line skipped
 };
 
 /// The words of a block. Fails on an unexpected character, an unknown letter, a letter

@@ -33,14 +33,17 @@ std::optional<int> Program::programNumberOf(std::size_t index) const {
   return blocks[static_cast<std::size_t>(start)].programNumber;
 }
 
-Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
-  Program program;
-  BlockReader reader(text);
+namespace {
+
+// Appends the blocks of source `source` to `program`.
+void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialect) {
+  BlockReader reader(program.sources[static_cast<std::size_t>(source)].text);
   int currentProgram = -1;
   for (;;) {
     auto next = reader.next();
     ProgramBlock block;
     block.ordinal = static_cast<int>(program.blocks.size());
+    block.source = source;
     if (!next.ok()) {  // an unclosed comment: nothing after it can be split into blocks
       block.line = next.error().line;
       block.column = next.error().column;
@@ -54,6 +57,8 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
     block.line = raw.line;
     block.column = raw.column;
     block.deleted = raw.deleted;
+    block.comments = raw.comments;
+    block.commentsAbove = raw.commentsAbove;
     block.skipped = raw.deleted && blockDelete;
     if (!block.skipped) {
       auto words = tokenize(raw);
@@ -73,7 +78,28 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
     program.programOf.push_back(currentProgram);
     program.blocks.push_back(std::move(block));
   }
+  if (source == 0) program.notes = reader.notes();
+}
+
+}  // namespace
+
+Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
+  Program program;
+  program.sources.push_back({"", std::string(text)});
+  appendBlocks(program, 0, blockDelete, dialect);
   return program;
+}
+
+void appendProgramFile(Program& program, const std::string& name, std::string_view text, int number,
+                       bool blockDelete, Dialect dialect) {
+  const std::size_t first = program.blocks.size();
+  program.sources.push_back({name, std::string(text)});
+  appendBlocks(program, static_cast<int>(program.sources.size()) - 1, blockDelete, dialect);
+  if (program.programStart.count(number) != 0 || first == program.blocks.size()) return;
+  // No O line for it: the file is the program; its blocks before any O block belong to it.
+  program.programStart.emplace(number, first);
+  for (std::size_t i = first; i < program.blocks.size() && program.programOf[i] < 0; ++i)
+    program.programOf[i] = static_cast<int>(first);
 }
 
 }  // namespace lathesim::interp

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -17,20 +18,31 @@
 namespace lathesim::interp {
 
 struct ProgramBlock {
-  int ordinal = 0;        // 0-based position among the blocks of the text
+  int ordinal = 0;        // 0-based position among the blocks read
+  int source = 0;         // the file it is in: Program::sources (0: the program's own)
   int line = 0;           // 1-based line where the block starts
   int column = 0;         // 1-based column where the block starts
   bool deleted = false;   // it starts with '/'
   bool skipped = false;   // deleted while block delete is on: never runs, never checked
   std::optional<int> sequenceNumber;  // its N word
   std::optional<int> programNumber;   // its O word: a program starts here
+  std::vector<std::string> comments;       // its own comments (lexer.hpp: RawBlock)
+  std::vector<std::string> commentsAbove;  // comment-only lines directly above it
   Result<ParsedBlock> parsed = Error{};  // the sorted words, or why the block cannot run
 };
 
+/// A text the blocks were read from: the program's own (name empty) or a subprogram's file.
+struct SourceText {
+  std::string name;
+  std::string text;
+};
+
 struct Program {
+  std::vector<SourceText> sources;
   std::vector<ProgramBlock> blocks;
   std::map<int, std::size_t> programStart;  // O number → index of the first block with it
   std::vector<int> programOf;  // per block: the index of the O block it follows, −1 before any
+  std::vector<ReadNote> notes;  // what the reader skipped (a tape leader, prose after ';')
 
   /// The index of the first block numbered N`sequenceNumber` in the same program (between
   /// the same O blocks) as block `from`.
@@ -42,5 +54,11 @@ struct Program {
 /// Splits, tokenizes and sorts every block of `text`. Never fails: a block that cannot be read
 /// carries its error; a comment left open ends the text with a block carrying that error.
 Program readProgram(std::string_view text, bool blockDelete, Dialect dialect);
+
+/// Reads the file `name` holding subprogram O`number` into `program` after its blocks. The
+/// subprogram starts at the file's O`number` block, or at its first block when the file has
+/// none (a file named for its program often leaves the O line out).
+void appendProgramFile(Program& program, const std::string& name, std::string_view text, int number,
+                       bool blockDelete, Dialect dialect);
 
 }  // namespace lathesim::interp

@@ -449,3 +449,34 @@ TEST(Cli, AtLineThatDoesNotExistOrMakesNoMoveIsNamedAndWritesNothing) {
 
 }  // namespace
 }  // namespace lathesim::app
+
+namespace lathesim::app {
+namespace {
+
+// A shop program whose tools are named in its comments runs with no setup at all: the bar from
+// --stock, the turning tool and the parting blade from their T blocks' comments, a subprogram
+// from --programs. Face Φ40 to Φ36 over 20 mm: removed π(20² − 18²)·20 = 1520π mm³.
+TEST(Cli, ShopProgramRunsWithoutASetupFile) {
+  TempDir dir("shop");
+  const fs::path programs = dir.path() / "control";
+  fs::create_directories(programs);
+  writeFile(programs / "O7615.nc", "O7615 (TURN)\nG01 Z-20 F0.2\nG00 X42\nM99\n");
+  const fs::path program = dir.path() / "shaft.nc";
+  writeFile(program,
+            "\x12%\nO0100 (SHAFT)\nG21 G40 G80 G99\nG54\nT0101 (CNMG 120408)\nG97 S1000 M03\n"
+            "G00 X36 Z2\nM98 P7615\nG28 U0.\nG28 W0.\nM30\n%\n");
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", program.string(), "--stock", "D40xL60", "--programs", programs.string(),
+                                    "--out", out.string(), "--voxel", "0.5"},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  EXPECT_NE(outcome.err.find("warning: tool 1 is mounted from the comment '(CNMG 120408)'"), std::string::npos)
+      << outcome.err;
+  const nlohmann::json report = nlohmann::json::parse(readFile(out / "report.json"));
+  EXPECT_NEAR(report["removed_volume_mm3"].get<double>(), 1520.0 * M_PI, volumeToleranceMm3(40, 60, 0.5));
+  ASSERT_EQ(report["notes"].size(), 1u);  // the DC2 before the program
+  EXPECT_NE(report["notes"][0]["message"].get<std::string>().find("DC2"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lathesim::app

@@ -52,7 +52,9 @@ TEST(BadCorpus, EachProgramGivesItsExpectedDiagnostic) {
     const std::string part = match[3];
 
     const std::string name = path.filename().string();
-    const auto result = interpret(text, name, test::defaultOptions());
+    InterpreterOptions options = test::defaultOptions();
+    options.programDirectories = {path.parent_path()};  // subprograms kept beside the program
+    const auto result = interpret(text, name, options);
     test::expectError(result, line, column, part);
     if (result.diagnostics.empty()) continue;
     const std::string shown = format(result.diagnostics[0]);

@@ -185,8 +185,8 @@ TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
 TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
   const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
   EXPECT_EQ(d.message,
-            "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, dialect, initial_feed_mode or "
-            "thread_runout)");
+            "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, dialect, initial_feed_mode, "
+            "thread_runout or zero)");
 }
 
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
@@ -214,13 +214,13 @@ TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
 
 TEST(ParseSetupErrors, UnknownTopLevelTable) {
   const Diagnostic d = onlyError("[stock]\ndiameter = 50\n[spindle]\nrpm = 5\n");
-  EXPECT_EQ(d.message, "unknown table 'spindle' (expected stock, machine, sim, tool, chuck or offset)");
+  EXPECT_EQ(d.message, "unknown table 'spindle' (expected stock, machine, sim, tool, chuck, offset or work_offset)");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, UnknownTopLevelKey) {
   const Diagnostic d = onlyError("voxel = 0.2\n");
-  EXPECT_EQ(d.message, "unknown key 'voxel' (expected stock, machine, sim, tool, chuck or offset)");
+  EXPECT_EQ(d.message, "unknown key 'voxel' (expected stock, machine, sim, tool, chuck, offset or work_offset)");
   EXPECT_EQ(d.line, 1);
   EXPECT_EQ(d.column, 1);
 }
@@ -405,6 +405,30 @@ TEST(LoadSetup, EveryBundledPartHasAValidSetup) {
         << file << ": " << (result.diagnostics.empty() ? "" : result.diagnostics[0].message);
   }
   EXPECT_GT(parts, 0);
+}
+
+TEST(ParseSetup, WorkOffsetsAndMachineZero) {
+  const SetupResult result = parse(
+      "[machine]\nzero = [300.0, 450.0]\n"
+      "[[work_offset]]\ncode = \"G55\"\nz = -40.0\n"
+      "[[work_offset]]\ncode = \"G59\"\nx = 1.0\nz = 2\n");
+  ASSERT_TRUE(result.setup.has_value()) << result.diagnostics.at(0).message;
+  const job::Setup& setup = *result.setup;
+  ASSERT_TRUE(setup.machineZero.has_value());
+  EXPECT_EQ(*setup.machineZero, RZ(150.0, 450.0));  // X is a diameter
+  EXPECT_EQ(setup.workOffsets[1], RZ(0, 0));        // G54 untouched
+  EXPECT_EQ(setup.workOffsets[2], RZ(0, -40.0));
+  EXPECT_EQ(setup.workOffsets[6], RZ(0.5, 2.0));
+  EXPECT_FALSE(defaultSetup().machineZero.has_value());
+}
+
+TEST(ParseSetupErrors, WorkOffsetProblemsAreNamed) {
+  EXPECT_EQ(onlyError("[[work_offset]]\ncode = \"G60\"\n").message, "work_offset[1].code must be one of \"G54\" … \"G59\"");
+  EXPECT_EQ(onlyError("[[work_offset]]\nz = 1\n").message, "work_offset[1] has no code (add code = \"G54\" … \"G59\")");
+  EXPECT_EQ(onlyError("[[work_offset]]\ncode = \"G55\"\ny = 1\n").message,
+            "unknown key 'work_offset[1].y' (expected code, x, z)");
+  EXPECT_EQ(onlyError("[[work_offset]]\ncode = \"G55\"\n[[work_offset]]\ncode = \"G55\"\n").message,
+            "G55 is given twice (work_offset[1] and work_offset[2])");
 }
 
 }  // namespace

@@ -138,13 +138,15 @@ TEST(ToolSetup, InsertThickness) {
 // A laydown threading insert by its code alone: the thread kind, its pitch's fundamental
 // triangle (2 mm wide at the top), the 0.125·P root radius, tip 8; an internal one tip 6.
 TEST(ToolSetup, LaydownThreadingInsert) {
-  const ToolDefinition& tool = onlyTool(parse("[[tool]]\nnumber = 1\ninsert = \"16ER200ISO\"\n"));
+  const SetupResult external = parse("[[tool]]\nnumber = 1\ninsert = \"16ER200ISO\"\n");
+  const ToolDefinition& tool = onlyTool(external);
   EXPECT_EQ(tool.tipNumber, 8);
   EXPECT_DOUBLE_EQ(tool.noseRadiusMm, 0.25);
   EXPECT_NEAR(tool.outline.upperBound().y() - tool.outline.lowerBound().y(), 2.0, 1e-12);
   EXPECT_NEAR(tool.outline.lowerBound().x(), 0.0, 1e-12);
-  const ToolDefinition& internal =
-      onlyTool(parse("[[tool]]\nnumber = 1\nkind = \"thread\"\ninsert = \"16IR1.5ISO\"\nnose_radius = 0.1\n"));
+  const SetupResult internalResult =
+      parse("[[tool]]\nnumber = 1\nkind = \"thread\"\ninsert = \"16IR1.5ISO\"\nnose_radius = 0.1\n");
+  const ToolDefinition& internal = onlyTool(internalResult);
   EXPECT_EQ(internal.tipNumber, 6);
   EXPECT_DOUBLE_EQ(internal.noseRadiusMm, 0.1);
   EXPECT_NEAR(internal.outline.upperBound().x(), 0.0, 1e-12);

@@ -1,4 +1,4 @@
-(expect: 3:5: error: M98 calls O0020 but the program has no block O20)
+(expect: 3:5: error: M98 calls O0020, which is neither in this program nor in a file)
 O0010
 M98 P20
 M30

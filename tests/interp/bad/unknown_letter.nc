@@ -1,2 +1,2 @@
-(expect: 2:9: error: unknown letter 'B')
-G00 X20 B5;
+(expect: 2:9: error: unknown letter 'V')
+G00 X20 V5;

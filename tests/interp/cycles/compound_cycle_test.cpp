@@ -365,8 +365,11 @@ TEST(CompoundCycleErrors, ContourWithoutAMove) {
 TEST(CompoundCycleErrors, ContourCycleOnItsOwn) {
   // A block run without its program (as the contour blocks themselves are) cannot reach a
   // contour.
-  auto words = tokenize(RawBlock{1, 1, false, {{"G", 1}, {"7", 2}, {"0", 3}, {"P", 4},
-                                               {"1", 5}, {"Q", 6}, {"2", 7}}});
+  RawBlock raw;
+  raw.line = 1;
+  raw.column = 1;
+  raw.chars = {{"G", 1}, {"7", 2}, {"0", 3}, {"P", 4}, {"1", 5}, {"Q", 6}, {"2", 7}};
+  auto words = tokenize(raw);
   ASSERT_TRUE(words.ok());
   auto block = parseBlock(words.value(), 1, 1);
   ASSERT_TRUE(block.ok());
@@ -389,6 +392,38 @@ TEST(CompoundCycleErrors, GrooveShiftMissingWhenZMoves) {
   expectError(run("G00 X42 Z-10\nG75 X30 Z-14 P4000 F0.05\n"), 2, 1,
               "G75 needs Q(Δk) > 0, the Z shift between plunges, because the end point's Z "
               "differs from the start");
+}
+
+}  // namespace
+}  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// `N01;` holding nothing but its number is a label a P or Q may name: the contour then opens
+// with the block after it (which holds the G00/G01) or closes with the label.
+TEST(ContourLabels, EmptyNumberedBlocksAsPAndQGiveTheSameCycles) {
+  const std::string plain =
+      "G99 G00 X40 Z2 S500 M03\nG71 U2 R0.5\nG71 P10 Q30 U0 W0 F0.2\n"
+      "N10 G00 X30\nN20 G01 Z-10 F0.1\nN30 X40\nG70 P10 Q30\nM30\n";
+  const std::string labelled =
+      "G99 G00 X40 Z2 S500 M03\nG71 U2 R0.5\nG71 P01 Q02 U0 W0 F0.2\n"
+      "N01;\nG00 X30\nG01 Z-10 F0.1\nX40\nN02;\nG70 P01 Q02\nM30\n";
+  const auto a = test::run(plain);
+  const auto b = test::run(labelled);
+  ASSERT_TRUE(a.ok()) << a.diagnostics[0].message;
+  ASSERT_TRUE(b.ok()) << b.diagnostics[0].message;
+  ASSERT_EQ(a.toolpath.moves.size(), b.toolpath.moves.size());
+  for (std::size_t i = 0; i < a.toolpath.moves.size(); ++i) {
+    EXPECT_EQ(a.toolpath.moves[i].from, b.toolpath.moves[i].from) << i;
+    EXPECT_EQ(a.toolpath.moves[i].to, b.toolpath.moves[i].to) << i;
+    EXPECT_EQ(a.toolpath.moves[i].kind, b.toolpath.moves[i].kind) << i;
+  }
+}
+
+TEST(ContourLabels, TheBlockAfterALabelMustStillBeG00OrG01) {
+  test::expectError(test::run("G00 X40 Z2\nG71 U2 R0.5\nG71 P01 Q02 F0.2\nN01;\nG02 X30 Z-5 R5\nN02 X40;\n"), 5, 1,
+                    "must hold G00 or G01");
 }
 
 }  // namespace

@@ -5,6 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "../test_support.hpp"
 
 namespace lathesim::interp {
@@ -106,7 +109,7 @@ TEST(Subprogram, MainProgramCallingItselfIsRecursion) {
 }
 
 TEST(Subprogram, UnknownProgramIsAnError) {
-  expectError(run(withMain("M98 P1234")), 2, 5, "M98 calls O1234 but the program has no block O1234");
+  expectError(run(withMain("M98 P1234")), 2, 5, "M98 calls O1234, which is neither in this program nor in a file");
 }
 
 TEST(Subprogram, M99InTheMainProgramIsAnError) {
@@ -141,6 +144,119 @@ TEST(Subprogram, ProgramNumberWithADecimalPointIsAnError) {
 TEST(Subprogram, M99PIsNotSupported) {
   // M99 P(n) returns to N(n) on a Fanuc; lathesim does not take it, and says so.
   expectError(run("M98 P1000\nM30\nO1000\nM99 P10\n"), 4, 5, "P10 is not used by any code");
+}
+
+}  // namespace
+}  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+TEST(Subprogram, ColonProgramNumbersNameSubprogramsToo) {
+  // `:0100` is O0100: M98 P100 calls it (leading zeros do not matter), twice by L2.
+  const auto result = test::run(":0001 (MAIN)\nG00 X50 Z2\nM98 P100 L2\nM30\n:0100\nG01 U-2 F0.1\nM99\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  test::expectMoves(result.toolpath.moves, {{test::kRapid, 100, 200, 25, 2, 0, 0},
+                                            {test::kFeed, 25, 2, 24, 2, 0.1, 0},
+                                            {test::kFeed, 24, 2, 23, 2, 0.1, 0}});
+}
+
+}  // namespace
+}  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A directory of program files for one test, removed after it.
+class ProgramDirectory {
+ public:
+  explicit ProgramDirectory(const std::string& name) : path_(fs::temp_directory_path() / ("lathesim_" + name)) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ProgramDirectory() { fs::remove_all(path_); }
+  void write(const std::string& file, std::string_view text) const { std::ofstream(path_ / file) << text; }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+InterpreterOptions searching(std::vector<fs::path> directories) {
+  InterpreterOptions options = test::defaultOptions();
+  options.programDirectories = std::move(directories);
+  return options;
+}
+
+constexpr std::string_view kMain = "G00 X50 Z2\nM98 P17615\nG00 X60\nM30\n";  // line 2 calls O7615 once
+
+TEST(ExternalSubprogram, FoundBesideTheProgramUnderEachNameInOrder) {
+  // Each name alone is found; the moves carry the calling M98's line.
+  for (const std::string name : {"O7615", "o7615.NC", "7615.nc", "7615.tap", "O7615.txt"}) {
+    SCOPED_TRACE(name);
+    ProgramDirectory dir("external_" + std::to_string(std::hash<std::string>{}(name)));
+    dir.write(name, "%\nO7615 (SUB)\nG01 U-4 F0.1\nM99\n%\n");
+    const auto result = test::run(kMain, searching({dir.path()}));
+    ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+    test::expectMoves(result.toolpath.moves, {{test::kRapid, 100, 200, 25, 2, 0, 0},
+                                              {test::kFeed, 25, 2, 23, 2, 0.1, 0},
+                                              {test::kRapid, 23, 2, 30, 2, 0, 0}});
+    EXPECT_EQ(result.toolpath.moves[1].line, 2);
+  }
+}
+
+TEST(ExternalSubprogram, SearchOrderDirectoriesFirstThenNames) {
+  ProgramDirectory first("external_first");
+  ProgramDirectory second("external_second");
+  first.write("7615.nc", "G01 U-2 F0.1\nM99\n");   // a file without its O line is the program
+  second.write("O7615", "G01 U-8 F0.1\nM99\n");
+  // The first directory wins, though the second holds a name tried earlier.
+  auto result = test::run(kMain, searching({first.path(), second.path()}));
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  EXPECT_NEAR(result.toolpath.moves[1].to.x(), 24, 1e-12);
+  // Within one directory, O7615 comes before 7615.nc.
+  first.write("O7615", "G01 U-6 F0.1\nM99\n");
+  result = test::run(kMain, searching({first.path(), second.path()}));
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  EXPECT_NEAR(result.toolpath.moves[1].to.x(), 22, 1e-12);
+}
+
+TEST(ExternalSubprogram, CountInPAndInLAndNesting) {
+  ProgramDirectory dir("external_nesting");
+  dir.write("O7615.nc", "O7615\nG01 U-2 F0.1\nM98 P7616\nM99\n");
+  dir.write("O7616.nc", "O7616\nG01 W-1\nM99\n");
+  // P27615: twice; each run feeds U-2 then calls O7616 (W-1).
+  const auto result = test::run("G00 X50 Z2\nM98 P27615\nM30\n", searching({dir.path()}));
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  test::expectMoves(result.toolpath.moves, {{test::kRapid, 100, 200, 25, 2, 0, 0},
+                                            {test::kFeed, 25, 2, 24, 2, 0.1, 0},
+                                            {test::kFeed, 24, 2, 24, 1, 0.1, 0},
+                                            {test::kFeed, 24, 1, 23, 1, 0.1, 0},
+                                            {test::kFeed, 23, 1, 23, 0, 0.1, 0}});
+  const auto withL = test::run("G00 X50 Z2\nM98 P7615 L2\nM30\n", searching({dir.path()}));
+  ASSERT_TRUE(withL.ok());
+  EXPECT_EQ(withL.toolpath.moves.size(), result.toolpath.moves.size());
+}
+
+TEST(ExternalSubprogram, AnErrorInsideItNamesItsFileAndLine) {
+  ProgramDirectory dir("external_error");
+  dir.write("O7615.nc", "O7615\nG01 U-2 F0.1\nG01 X20.3.\nM99\n");
+  const auto result = test::run(kMain, searching({dir.path()}));
+  ASSERT_FALSE(result.ok());
+  const Diagnostic& d = result.diagnostics.at(0);
+  EXPECT_EQ(d.file, (dir.path() / "O7615.nc").string());
+  EXPECT_EQ(d.line, 3);
+  EXPECT_EQ(d.column, 5);
+  EXPECT_EQ(d.sourceLine, "G01 X20.3.");
+}
+
+TEST(ExternalSubprogram, MissingNamesWhatWasLookedForWhere) {
+  ProgramDirectory dir("external_missing");
+  const auto result = test::run(kMain, searching({dir.path()}));
+  test::expectError(result, 2, 5, "M98 calls O7615, which is neither in this program nor in a file");
+  EXPECT_NE(result.diagnostics[0].message.find(dir.path().string()), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,52 @@
+#include "interp/text/program_library.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <system_error>
+
+#include <fmt/format.h>
+
+namespace lathesim::interp {
+namespace {
+
+std::string lowerCase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> programFileNames(int number) {
+  std::vector<std::string> numbers{fmt::format("{:04}", number)};
+  if (numbers.front() != std::to_string(number)) numbers.push_back(std::to_string(number));
+  std::vector<std::string> names;
+  for (const std::string prefix : {"O", ""})
+    for (const std::string& digits : numbers)
+      for (const char* extension : {"", ".nc", ".tap", ".txt"}) names.push_back(prefix + digits + extension);
+  return names;
+}
+
+std::optional<ProgramFile> findProgramFile(int number, const std::vector<std::filesystem::path>& directories) {
+  const std::vector<std::string> names = programFileNames(number);
+  for (const auto& directory : directories) {
+    std::error_code ec;
+    std::map<std::string, std::filesystem::path> files;  // lower-case name → file
+    for (const auto& entry : std::filesystem::directory_iterator(directory, ec)) {
+      if (entry.is_regular_file(ec)) files.emplace(lowerCase(entry.path().filename().string()), entry.path());
+    }
+    for (const std::string& name : names) {
+      const auto found = files.find(lowerCase(name));
+      if (found == files.end()) continue;
+      std::ifstream in(found->second, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      if (in) return ProgramFile{found->second, text.str()};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace lathesim::interp

@@ -1,0 +1,119 @@
+#include "job/comment_tools.hpp"
+
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "geometry/iso_holder.hpp"
+#include "geometry/iso_insert.hpp"
+#include "geometry/tool_shape.hpp"
+
+namespace lathesim::job {
+namespace {
+
+using std::regex_constants::icase;
+
+const std::string kNumber = R"(([0-9]+(?:\.[0-9]+)?|\.[0-9]+))";
+
+// The holder style most shops put each insert shape in (iso-tools.md §2.3).
+std::optional<char> usualStyle(char shape) {
+  switch (shape) {
+    case 'C': case 'W': return 'L';
+    case 'D': case 'V': return 'J';
+    case 'T': return 'G';
+    case 'S': return 'B';
+    default: return std::nullopt;
+  }
+}
+
+std::optional<CommentTool> place(BuiltTool built, int number, std::string description) {
+  if (!built.tool) return std::nullopt;
+  ToolShape& shape = *built.tool;
+  return CommentTool{ToolDefinition{number, std::move(shape.cutter), std::move(shape.holderBody), shape.tipNumber,
+                                    shape.noseRadiusMm, std::nullopt},
+                     std::move(description), std::move(built.warnings)};
+}
+
+std::optional<CommentTool> isoInsertTool(const std::string& comment, int number) {
+  static const std::regex insertCode(R"(\b([A-Z]{4})\s?-?\s?([0-9]{2}|S[0-9])\s?([0-9]{2}|T[0-9])\s?([0-9]{2}|M0)\b)", icase);
+  std::smatch m;
+  if (!std::regex_search(comment, m, insertCode)) return std::nullopt;
+  std::string code = m[1].str() + m[2].str() + m[3].str() + m[4].str();
+  for (char& c : code) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const auto insert = parseIsoInsert(code);
+  if (!insert.value) return std::nullopt;
+  static const std::regex holderCode(R"(\b([CDMPSW][A-Z]{3}[RLN][0-9]{4}[A-Z][0-9]{2})\b)", icase);
+  std::smatch h;
+  std::string holderText;
+  std::string why;
+  if (std::regex_search(comment, h, holderCode)) {
+    holderText = h[1].str();
+    for (char& c : holderText) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  } else {
+    const auto style = usualStyle(insert.value->shape);
+    if (!style) return std::nullopt;
+    const char clamp = insert.value->clearance == 'N' ? 'P' : 'S';
+    holderText = fmt::format("{}{}{}{}R2525M{}", clamp, insert.value->shape, *style, insert.value->clearance,
+                             insert.value->sizeCode);
+    why = fmt::format(" (the holder assumed for a {} insert)", insert.value->shape);
+  }
+  const auto holder = parseIsoHolder(holderText);
+  if (!holder.value) return std::nullopt;
+  auto named = place(turningTool(*insert.value, *holder.value, std::nullopt), number,
+                     fmt::format("{} in {}{}", code, holderText, why));
+  if (named) named->warnings.insert(named->warnings.end(), insert.warnings.begin(), insert.warnings.end());
+  return named;
+}
+
+std::optional<double> numberAfter(const std::string& text, const std::string& pattern) {
+  std::smatch m;
+  if (!std::regex_search(text, m, std::regex(pattern, icase))) return std::nullopt;
+  return std::stod(m[1]);
+}
+
+std::optional<CommentTool> grooveBlade(const std::string& comment, int number, double barDiameterMm) {
+  if (!std::regex_search(comment, std::regex(R"(\b(GROOV\w*|PARTING|PART[- ]?OFF|CUT[- ]?OFF)\b)", icase))) return std::nullopt;
+  auto width = numberAfter(comment, kNumber + R"(\s*MM\b)");
+  if (!width) width = numberAfter(comment, R"(\bW\s*=?\s*)" + kNumber);
+  if (!width || *width <= 0) return std::nullopt;
+  const double depth = barDiameterMm / 2.0 + 5.0;
+  return place(grooveTool(*width, 0.0, 0.0, depth, 3), number,
+               fmt::format("a grooving/parting blade {:g} mm wide, {:g} mm deep, square corners, tip 3", *width, depth));
+}
+
+std::optional<CommentTool> drill(const std::string& comment, int number) {
+  if (!std::regex_search(comment, std::regex(R"(\bDRILL)", icase))) return std::nullopt;
+  auto diameter = numberAfter(comment, R"(DRILL\w*\s*(?:D|DIA|Ø|Φ)?\s*=?\s*)" + kNumber);
+  if (!diameter) diameter = numberAfter(comment, R"((?:Ø|Φ|\bD|\bDIA)?\s*)" + kNumber + R"(\s*(?:MM)?\s*DRILL)");
+  if (!diameter || *diameter <= 0) return std::nullopt;
+  return place(drillTool(*diameter, 118.0, 10.0 * *diameter), number,
+               fmt::format("a Φ{:g} drill, 118° point", *diameter));
+}
+
+std::optional<CommentTool> threadingTool(const std::string& comment, int number) {
+  if (!std::regex_search(comment, std::regex(R"(\bTHREAD)", icase))) return std::nullopt;
+  const double angle = numberAfter(comment, kNumber + R"(\s*(?:DEG|°))").value_or(60.0);
+  auto pitch = numberAfter(comment, R"(\b(?:P|PITCH)\s*=?\s*)" + kNumber);
+  if (!pitch) pitch = numberAfter(comment, R"(\bM[0-9]+(?:\.[0-9]+)?\s*X\s*)" + kNumber);
+  if (pitch && *pitch <= 0) return std::nullopt;
+  // Full profile: the ISO root radius 0.125·P; partial (AG, 0.5–3 mm): drawn for 3 mm with the
+  // nose of 0.5 mm.
+  constexpr double kPartialLargestPitchMm = 3.0;
+  constexpr double kPartialSmallestPitchMm = 0.5;
+  const double drawnPitch = pitch.value_or(kPartialLargestPitchMm);
+  const double nose = 0.125 * pitch.value_or(kPartialSmallestPitchMm);
+  return place(lathesim::threadTool(angle, drawnPitch, nose, 8), number,
+               pitch ? fmt::format("a {:g}° threading insert for pitch {:g}", angle, *pitch)
+                     : fmt::format("a {:g}° partial-profile threading insert (0.5–3 mm pitches, no pitch named)", angle));
+}
+
+}  // namespace
+
+std::optional<CommentTool> toolNamedIn(const std::string& comment, int number, double barDiameterMm) {
+  if (auto tool = isoInsertTool(comment, number)) return tool;
+  if (auto tool = grooveBlade(comment, number, barDiameterMm)) return tool;
+  if (auto tool = drill(comment, number)) return tool;
+  return threadingTool(comment, number);
+}
+
+}  // namespace lathesim::job

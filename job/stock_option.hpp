@@ -1,0 +1,19 @@
+#pragma once
+// --stock on the command line: the bar as a few letters, parts joined by 'x':
+//   D40xL80        Φ40, 80 long, its face at Z0
+//   D40xL80xZ1     the same with the face at Z1
+// D (diameter) and L (length) are required, Z optional; numbers are mm, positive (Z any).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "sim/stock_spec.hpp"
+
+namespace lathesim::job {
+
+/// The bar `text` describes, or the message saying what is wrong with it.
+std::variant<sim::StockSpec, std::string> parseStockOption(std::string_view text);
+
+}  // namespace lathesim::job

@@ -1,0 +1,3 @@
+(expect: 2:1: error: U+041E CYRILLIC CAPITAL LETTER O)
+О1234
+M30

@@ -1,0 +1,47 @@
+// Programs of other control families are recognised by their own syntax; Fanuc programs
+// that merely mention such words in comments are not.
+
+#include "interp/text/control_family.hpp"
+
+#include <gtest/gtest.h>
+
+namespace lathesim::interp {
+namespace {
+
+TEST(ControlFamily, EachFamilyIsRecognisedWhereItShows) {
+  struct Case {
+    std::string_view text;
+    std::string_view family;
+    int line, column;
+  };
+  const Case cases[] = {
+      {"(HEADER)\n  $SHAFT.MIN%\nG00 X10\n", "Okuma OSP", 2, 3},
+      {"%PM\nN9000\n", "Philips 432/532", 1, 1},
+      {"G21\n  o100 sub\n", "LinuxCNC (O-word subroutines)", 2, 3},
+      {"G21\nO<thread> call [1]\n", "LinuxCNC (O-word subroutines)", 2, 1},
+      {"#<depth> = 2\n", "LinuxCNC (named parameters)", 1, 1},
+      {"G18 G64 P0.01\n", "LinuxCNC (G64 path blending with a P tolerance)", 1, 5},
+      {"0 BEGIN PGM 12 MM\n", "Heidenhain", 1, 3},
+      {"G18 DIAMON\n", "Siemens Sinumerik", 1, 5},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string(c.text));
+    const auto found = recogniseForeignProgram(c.text);
+    ASSERT_TRUE(found.has_value());
+    EXPECT_EQ(found->family, c.family);
+    EXPECT_EQ(found->line, c.line);
+    EXPECT_EQ(found->column, c.column);
+  }
+}
+
+TEST(ControlFamily, FanucProgramsAreNotMistaken) {
+  for (std::string_view text : {"%\nO1000 (O100 SUB CALLED LATER)\nG00 X10\nM98 P100\nM30\n%\n",
+                                "G64\nG00 X10 (G64 P0.1 IS LINUXCNC)\n", "O0100\n#100=2\n#101=[#100+1]\nM99\n",
+                                "(SET $ PRICE)\nG00 X10\n$ IS NOT FIRST\n"}) {
+    SCOPED_TRACE(std::string(text));
+    EXPECT_FALSE(recogniseForeignProgram(text).has_value());
+  }
+}
+
+}  // namespace
+}  // namespace lathesim::interp
