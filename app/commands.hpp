@@ -8,12 +8,11 @@
 
 #include "interp/control/dialect.hpp"
 #include "job/job.hpp"
+#include "job/setup.hpp"
 
 namespace lathesim::app {
 
-/// The voxel size used when neither --voxel nor [sim] voxel says: the default part runs in
-/// about a second with it, and volumes come within a few hundredths of a percent.
-inline constexpr double kDefaultVoxelMm = 0.2;
+using job::kDefaultVoxelMm;  // when neither --voxel nor [sim] voxel says
 
 /// Mesh adaptivity of the exported part. Even this small value merges facets on flat and
 /// gently curved faces about 40-fold (seed 000 at 0.1 mm: 12.4 M triangles → 0.30 M, a

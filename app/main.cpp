@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 
+#include "app/batch_cli.hpp"
 #include "app/commands.hpp"
 #include "interp/control/dialect.hpp"
 
@@ -58,6 +59,8 @@ int main(int argc, char** argv) {
   expandCmd->add_option("--dialect", expandDialect, "G-code dialect (overrides [machine] dialect)")
       ->check(CLI::IsMember(dialects));
 
+  lathesim::app::BatchCli batch(cli);
+
   CLI11_PARSE(cli, argc, argv);
   const auto optionalDialect = [](const std::string& s) {
     return s.empty() ? std::nullopt : lathesim::interp::dialectNamed(s);
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
   };
   try {
+    if (batch.chosen()) return batch.run();
     if (*runCmd) {
       run.setup = optionalPath(runSetup);
       run.dialect = optionalDialect(runDialect);

@@ -3,7 +3,8 @@
 # CLI's wall time, peak memory and STL size, and simulate against its floor (building the
 # bar's level set once from its analytic distance) with their ratio. Then threads at 0.1 mm:
 # parts/g76-m30x2 (M30×2×30 by G76, ten passes) per thread pass against its bar's floor, and
-# a CAM-style thread of 3,600 chained G32 blocks of 0.1 mm: its time per pass.
+# a CAM-style thread of 3,600 chained G32 blocks of 0.1 mm: its time per pass. Then the parts/
+# batch against the same programs run one `lathesim run` (or `check`) after another.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh >/dev/null
@@ -54,3 +55,42 @@ awk -F, -v passes="$passes" '
     printf "%-34s %10.3f %12.3f %14.4f %11.2f (%.2f)\n", "g76-m30x2, " passes " passes", floor, sim, (sim - relief) / passes, (sim - relief) / passes / floor, (simCpu - reliefCpu) / passes / floorCpu
     printf "%-34s %10.3f %12.3f %14.5f %11.3f (%.3f)\n", "3,600 chained G32 of 0.1 mm", shortFloor, short, (short - shortFloor) / 3600, (short - shortFloor) / 3600 / shortFloor, (shortCpu - shortFloorCpu) / 3600 / shortFloorCpu
   }' "$tmp/threads.csv"
+
+# The cores the machine gives right now: a CPU-bound task alone, then two at once (2.00 on
+# a quiet 2-core machine; a shared one may give less, and no batch can beat that).
+capacity() {
+  local TIMEFORMAT=%R one two
+  one=$( { time sh -c 'head -c 300000000 /dev/zero | sha256sum >/dev/null'; } 2>&1 )
+  two=$( { time sh -c '(head -c 300000000 /dev/zero | sha256sum >/dev/null) & head -c 300000000 /dev/zero | sha256sum >/dev/null; wait'; } 2>&1 )
+  awk -v a="$one" -v b="$two" 'BEGIN { printf "%.2f", 2 * a / b }'
+}
+
+echo
+echo "== the parts/ batch against the same programs run one after another (no DISPLAY: each run starts its own Xvfb, the batch one)"
+echo "cores available before: $(capacity)"
+(
+  unset DISPLAY
+  start=$(date +%s.%N)
+  for dir in parts/*/; do
+    name=$(basename "$dir")
+    command=(run "$dir/program.nc")  # as the batch does: check a part against the drawing beside it
+    [ -f "$dir/drawing.toml" ] && command=(check "$dir/program.nc" --target "$dir/drawing.toml")
+    build/lathesim "${command[@]}" --setup "$dir/setup.toml" --out "$tmp/one-by-one/$name" >/dev/null 2>&1 || true
+  done
+  middle=$(date +%s.%N)
+  build/lathesim batch parts --out "$tmp/batch" >/dev/null 2>&1 || true  # exit 1: seed004-o0006 alarms
+  end=$(date +%s.%N)
+  # Per job that ran: its wall time in the batch (start to result written), and the overhead
+  # outside the command's own steps (report.json timing_s: parse … render): process start
+  # and exit, the report, the batch's thumbnail and stamp.
+  awk -v s="$start" -v m="$middle" -v e="$end" '
+    /"elapsed_s"/  { v = $2; sub(/,$/, "", v); elapsed = v }
+    /"pipeline_s"/ { v = $2; sub(/,$/, "", v); if (v != "null") { n++; wall[n] = elapsed; overhead += elapsed - v } }
+    END {
+      for (i = 2; i <= n; i++) for (j = i; j > 1 && wall[j] < wall[j - 1]; j--) { t = wall[j]; wall[j] = wall[j - 1]; wall[j - 1] = t }
+      median = n % 2 ? wall[(n + 1) / 2] : (wall[n / 2] + wall[n / 2 + 1]) / 2
+      printf "%-14s %9s %9s %6s %14s %12s %18s\n", "one_by_one_s", "batch_s", "speedup", "jobs", "median_job_s", "overhead_s", "overhead/median"
+      printf "%-14.1f %9.1f %9.2f %6d %14.2f %12.3f %17.1f%%\n", m - s, e - m, (m - s) / (e - m), n, median, overhead / n, 100 * overhead / n / median
+    }' "$tmp/batch/summary.json"
+)
+echo "cores available after: $(capacity)"

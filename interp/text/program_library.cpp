@@ -29,6 +29,16 @@ std::vector<std::string> programFileNames(int number) {
   return names;
 }
 
+bool isProgramFileName(std::string_view fileName) {
+  const std::string name = lowerCase(std::string(fileName));
+  std::string digits = name.substr(name.starts_with('o') ? 1 : 0);
+  digits = digits.substr(0, digits.find('.'));
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+  for (const std::string& candidate : programFileNames(std::stoi(digits)))
+    if (lowerCase(candidate) == name) return true;
+  return false;
+}
+
 std::optional<ProgramFile> findProgramFile(int number, const std::vector<std::filesystem::path>& directories) {
   const std::vector<std::string> names = programFileNames(number);
   for (const auto& directory : directories) {

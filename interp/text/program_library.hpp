@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lathesim::interp {
@@ -22,6 +23,10 @@ struct ProgramFile {
 
 /// The file names tried for program `number`, in order.
 std::vector<std::string> programFileNames(int number);
+
+/// Whether M98 could read a program from a file of this name (one of programFileNames(n)
+/// for some n, in any case): a batch counts such files beside a program among its inputs.
+bool isProgramFileName(std::string_view fileName);
 
 /// The first file holding program `number` in `directories`, or nullopt.
 std::optional<ProgramFile> findProgramFile(int number, const std::vector<std::filesystem::path>& directories);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/golden_rows.hpp"
+#include "tests/support/volume_tolerance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -100,18 +101,7 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   return tools;
 }
 
-/// How far a voxelised volume may stray from the exact one. The level set places the
-/// surface to a small fraction of a voxel, so its rounding is a thin skin over the surface;
-/// a real error (a cut misplaced by even one voxel, a pass missed) moves whole voxel layers
-/// over part of the surface. So the bound scales with voxel × surface area: 5 % of one voxel
-/// layer over the bar's whole surface (2πr² + 2πrL). The rounding measured on the bundled
-/// parts is 1e-5 to 4e-4 relative, at most a fifth of this bound; seed 001's
-/// difference is ~7 bounds at 0.5 mm.
-double volumeToleranceMm3(const sim::StockSpec& stock, double voxelMm) {
-  const double r = stock.diameterMm / 2.0;
-  const double area = 2.0 * M_PI * r * r + 2.0 * M_PI * r * stock.lengthMm;
-  return 0.05 * voxelMm * area;
-}
+using test::volumeToleranceMm3;
 
 struct Simulated {
   double stockVolumeMm3 = 0;

@@ -1,0 +1,51 @@
+#include "app/batch_cli.hpp"
+
+#include <iostream>
+
+#include "batch/merge.hpp"
+#include "batch/shard.hpp"
+#include "batch/summary.hpp"
+
+namespace lathesim::app {
+
+BatchCli::BatchCli(CLI::App& cli) {
+  command_ = cli.add_subcommand("batch", "simulate many programs, each in its own folder, and summarise them");
+  command_->add_option("source", source_, "a manifest (.toml or .csv) or a folder of programs");
+  command_->add_option("--out", options_.out, "output folder: a folder per job and the summary")->capture_default_str();
+  command_->add_option("--jobs", options_.jobs, "at most this many jobs at once (default: the CPUs)")->check(CLI::PositiveNumber);
+  command_->add_option("--shard", shard_, "run only slice I of N (I/N): every N-th job from the I-th");
+  command_->add_option("--time-limit", options_.defaults.timeLimitS, "seconds a job may run before it is stopped")
+      ->check(CLI::PositiveNumber);
+  command_->add_option("--memory-mb", memoryMb_, "memory the jobs may fill together (default: 80 % of what is free)")
+      ->check(CLI::PositiveNumber);
+  command_->add_option("--setup", options_.defaults.setup, "setup for jobs that have none");
+  command_->add_option("--target", options_.defaults.drawing, "drawing to check jobs against that have none");
+  command_->add_option("--tol", options_.defaults.toleranceMm, "check tolerance in mm (default: two voxels)")
+      ->check(CLI::NonNegativeNumber);
+  command_->add_option("--voxel", options_.defaults.voxelMm, "voxel size in mm for jobs that set none")
+      ->check(CLI::PositiveNumber);
+  merge_ = command_->add_subcommand("merge", "join the summaries of a batch's shards into one");
+  merge_->add_option("summaries", summaries_, "the shards' summary-I-of-N.json files")->required()->check(CLI::ExistingFile);
+  merge_->add_option("--out", mergeOut_, "where summary.* go (default: the first summary's folder)");
+}
+
+int BatchCli::run() {
+  if (merge_->parsed()) return batch::mergeSummaries(summaries_, mergeOut_);
+  if (source_.empty()) {
+    std::cerr << "lathesim batch: give a manifest (.toml, .csv) or a folder of programs\n";
+    return batch::kExitSomeFailed;
+  }
+  options_.source = source_;
+  if (!shard_.empty()) {
+    const auto shard = batch::parseShard(shard_);
+    if (!shard) {
+      std::cerr << "lathesim batch: --shard " << shard_ << ": expected I/N with 1 ≤ I ≤ N, e.g. 2/8\n";
+      return batch::kExitSomeFailed;
+    }
+    options_.shard = *shard;
+  }
+  if (memoryMb_) options_.memoryBytes = static_cast<std::uint64_t>(*memoryMb_ * 1024 * 1024);
+  return batch::runBatch(options_);
+}
+
+}  // namespace lathesim::app

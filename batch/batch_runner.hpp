@@ -1,0 +1,31 @@
+#pragma once
+// `lathesim batch`: runs every job of a manifest or folder (or of one shard of it), each as
+// its own lathesim process with its own output folder and time limit, as many at once as
+// the cores and memory allow, and writes the summary. One X display serves every job.
+// Jobs whose inputs have not changed since their result was stamped are not run again.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include "batch/batch_job.hpp"
+#include "batch/shard.hpp"
+
+namespace lathesim::batch {
+
+struct BatchOptions {
+  std::filesystem::path source;  // a .toml or .csv manifest, or a folder of programs
+  std::filesystem::path out = "out";
+  JobSettings defaults;                      // --setup, --target, --tol, --voxel, --time-limit
+  std::optional<int> jobs;                   // at most this many at once (default: the CPUs)
+  std::optional<std::uint64_t> memoryBytes;  // what the jobs may fill together (default: 80 % of what is free)
+  Shard shard;
+  std::filesystem::path binary;  // the lathesim that runs the jobs (default: this executable)
+};
+
+/// The batch's exit status: 0 every job passed, 1 some failed (or the manifest is bad: its
+/// diagnostics are printed, nothing is run), 3 some parts out of tolerance; 128 + the signal
+/// when SIGINT, SIGTERM or SIGHUP stopped it (the finished jobs' results are kept).
+int runBatch(const BatchOptions& options);
+
+}  // namespace lathesim::batch

@@ -1,0 +1,114 @@
+#include "batch/child_process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace lathesim::batch {
+namespace {
+
+std::runtime_error failure(const std::string& what) {
+  return std::runtime_error("cannot start a job: " + what + ": " + std::strerror(errno));
+}
+
+/// In the child, between fork and exec: everything here is async-signal-safe.
+[[noreturn]] void becomeJob(const char* binary, char* const* argv, int logFd, int nullFd, pid_t batch) {
+  ::setpgid(0, 0);
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != batch) ::_exit(126);  // the batch is already gone
+  sigset_t none;
+  sigemptyset(&none);
+  ::sigprocmask(SIG_SETMASK, &none, nullptr);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGCHLD}) ::signal(sig, SIG_DFL);
+  ::dup2(nullFd, STDIN_FILENO);
+  ::dup2(logFd, STDOUT_FILENO);
+  ::dup2(logFd, STDERR_FILENO);
+  // Nothing else of the batch's: a held descriptor (a pipe of the caller's) could keep a
+  // reader waiting long after the batch ended.
+  if (::syscall(SYS_close_range, 3U, ~0U, 0U) != 0)
+    for (int fd = 3; fd < 1024; ++fd) ::close(fd);
+  ::execv(binary, argv);
+  ::_exit(127);
+}
+
+}  // namespace
+
+ChildProcess ChildProcess::start(const std::filesystem::path& binary, const std::vector<std::string>& args,
+                                 const std::filesystem::path& logFile) {
+  // Prepared before fork: after it, only async-signal-safe calls.
+  const std::string program = binary.string();
+  std::vector<std::string> words{program};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+
+  const int logFd = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (logFd < 0) throw failure("cannot open " + logFile.string());
+  const int nullFd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (nullFd < 0) {
+    ::close(logFd);
+    throw failure("cannot open /dev/null");
+  }
+  const pid_t batch = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid == 0) becomeJob(program.c_str(), argv.data(), logFd, nullFd, batch);
+  const int forkErrno = errno;
+  ::close(logFd);
+  ::close(nullFd);
+  if (pid < 0) {
+    errno = forkErrno;
+    throw failure("fork");
+  }
+  ::setpgid(pid, pid);  // also here: a kill right after start must find the group
+  return ChildProcess(pid);
+}
+
+ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {
+  if (this != &other) {
+    if (pid_ > 0) {
+      killGroup();
+      wait();
+    }
+    pid_ = other.pid_;
+    other.pid_ = -1;
+  }
+  return *this;
+}
+
+ChildProcess::~ChildProcess() {
+  if (pid_ <= 0) return;
+  killGroup();
+  wait();
+}
+
+std::optional<int> ChildProcess::poll() {
+  if (pid_ <= 0) return std::nullopt;
+  int status = 0;
+  const pid_t r = ::waitpid(pid_, &status, WNOHANG);
+  if (r != pid_) return std::nullopt;
+  pid_ = -1;
+  return status;
+}
+
+int ChildProcess::wait() {
+  int status = 0;
+  while (pid_ > 0) {
+    const pid_t r = ::waitpid(pid_, &status, 0);
+    if (r == pid_ || (r < 0 && errno != EINTR)) pid_ = -1;
+  }
+  return status;
+}
+
+void ChildProcess::killGroup() {
+  if (pid_ > 0) ::kill(-pid_, SIGKILL);
+}
+
+}  // namespace lathesim::batch
