@@ -83,6 +83,8 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   report["final_volume_mm3"] = f.finalVolumeMm3;
   report["removed_volume_mm3"] = f.stockVolumeMm3 - f.finalVolumeMm3;
   report["mesh_volume_mm3"] = f.meshVolumeMm3;
+  report["volume_tolerance_mm3"] = f.volumeToleranceMm3;
+  report["mesh_crumbs"] = {{"count", f.meshCrumbs.count}, {"volume_mm3", f.meshCrumbs.volumeMm3}};
   report["mesh_triangles"] = f.meshTriangles;
   report["moves"] = f.moves;
   report["cycle_time_s"] = f.cycleTimeS;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/mesh_shells.hpp"
 #include "interp/diagnostic.hpp"
 #include "measure/thread_measure.hpp"
 #include "interp/move.hpp"
@@ -25,6 +26,8 @@ struct RunFigures {
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
   double finalVolumeMm3 = 0;  // measured on the level set after the program
   double meshVolumeMm3 = 0;   // the exported mesh's enclosed volume, as a cross-check
+  double volumeToleranceMm3 = 0;  // how far the part's volumes may stray (sim::volumeToleranceMm3)
+  DroppedCrumbs meshCrumbs;       // sub-voxel shells left out of the exported mesh
   std::size_t meshTriangles = 0;
   std::size_t moves = 0;
   double cycleTimeS = 0;  // the machine time of all moves (interp/motion/cycle_time.hpp)

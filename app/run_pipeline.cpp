@@ -8,6 +8,7 @@
 #include "app/at_line.hpp"
 #include "job/collision_checks.hpp"
 #include "app/tool_picture.hpp"
+#include "app/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "measure/thread_measure.hpp"
@@ -29,6 +30,17 @@ sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
     if (tool.thicknessMm) thicknesses.emplace(tool.number, *tool.thicknessMm);
   return thicknesses;
 }
+
+namespace {
+
+// A warning for the report, also printed on stderr; line 0 when it concerns the whole run.
+void warn(SimulatedRun& run, int line, int column, const std::string& message) {
+  run.figures.warnings.push_back(run.job.warningAt(line, column, message));
+  std::cerr << interp::format(run.figures.warnings.back()) << '\n';
+}
+void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, message); }
+
+}  // namespace
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
   std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
@@ -56,6 +68,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
+  if (auto problem = barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks,
@@ -64,23 +77,26 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   const sim::ToolOutlines outlines = outlinesOf(setup);
   figures.threads = measure::measureThreads(*run.stock, run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap();
-  std::vector<sim::SimulationWarning> warnings = figures.simulation.warnings;
+  for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
   for (const auto& thread : figures.threads)
     if (const auto tooWide = measure::threadToolTooWide(thread, outlines.at(thread.programmed.tool), voxel))
-      warnings.push_back({thread.programmed.line, thread.programmed.column, *tooWide});
-  for (const auto& w : warnings) {
-    figures.warnings.push_back(run.job.warningAt(w.line, w.column, w.message));
-    std::cerr << interp::format(figures.warnings.back()) << '\n';
-  }
+      warn(run, thread.programmed.line, thread.programmed.column, *tooWide);
   return run;
 }
 
 void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.progress->stage("meshing");
+  RunFigures& figures = run.figures;
   run.part = run.stock->mesh(kExportAdaptivity);
-  run.figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
-  run.figures.meshTriangles = run.part.triangles.size();
-  run.figures.timing.meshS = clock.lap();
+  // The level set's volume is checked against the whole mesh; crumbs thinner than a voxel
+  // are then left out of the STL, and what they held is reported.
+  if (auto problem = meshVolumeProblem(figures.finalVolumeMm3, run.part, figures.voxelMm)) warn(run, *problem);
+  figures.meshCrumbs = dropCrumbs(run.part, figures.voxelMm);
+  if (auto problem = meshClosureProblem(run.part)) warn(run, *problem);
+  figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
+  figures.volumeToleranceMm3 = sim::volumeToleranceMm3(surfaceAreaMm2(run.part), figures.voxelMm);
+  figures.meshTriangles = run.part.triangles.size();
+  figures.timing.meshS = clock.lap();
 }
 
 void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {

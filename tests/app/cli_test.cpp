@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "interp/toolpath_csv.hpp"
+#include "sim/stock.hpp"
 
 namespace lathesim::app {
 namespace {
@@ -53,7 +54,7 @@ Outcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) 
 /// The same bound as parts_test: 5 % of a voxel layer over the bar's whole surface.
 double volumeToleranceMm3(double diameterMm, double lengthMm, double voxelMm) {
   const double r = diameterMm / 2.0;
-  return 0.05 * voxelMm * (2.0 * M_PI * r * r + 2.0 * M_PI * r * lengthMm);
+  return sim::volumeToleranceMm3(2.0 * M_PI * r * r + 2.0 * M_PI * r * lengthMm, voxelMm);
 }
 
 double expectedFinalVolumeMm3(const std::string& part) {
