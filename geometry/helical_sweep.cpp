@@ -130,6 +130,10 @@ void HelicalSweep::candidatesInto(double rho, double phi, double z0, double dz, 
   // The two ends: the outline in the half-plane of its azimuth, at 3D distance. In that
   // half-plane the point stands at (ρ cos Δ, z), within ρ·(1 − cos Δ) ≤ 2ρ of (ρ, z) along r,
   // so an end farther than the outline's reach plus that along the travel cannot be within cap.
+  // An end is also part of the boundary seen from inside: the groove stops in that face, so a
+  // point inside lies no deeper than its distance to it. Without this, a voxel just short of
+  // the face would read as deep in the groove as the flanks allow, the face would sit up to
+  // half a voxel past where it is, and a cube straddling it could be taken as covered.
   const double uA = ((rho - from_.x()) * direction_.x() + (z0 - from_.y()) * direction_.y()) * inverseLengthSquared_;
   const double uB = uA + (count - 1) * dz * direction_.y() * inverseLengthSquared_;
   const double endSlack = (alongReach_ + cap) * inverseLength_ + 2.0 * rho * std::abs(direction_.x()) * inverseLengthSquared_;
@@ -143,7 +147,8 @@ void HelicalSweep::candidatesInto(double rho, double phi, double z0, double dz, 
     outline_.planarDistanceColumnMin(rho * std::cos(delta) - at.x(), z0 - at.y(), dz, cap, column);
     for (int k = 0; k < count; ++k) {
       const double inPlane = std::max(column[k], 0.0);
-      out[k] = std::min(out[k], std::sqrt(inPlane * inPlane + across * across));
+      const double toEnd = std::sqrt(inPlane * inPlane + across * across);
+      out[k] = out[k] < 0.0 ? std::max(out[k], -toEnd) : std::min(out[k], toEnd);
     }
   }
 }

@@ -12,7 +12,7 @@
 // region is taken as the 2D meridian distance from (ρ, z) to the outline placed at the one to
 // three P(u_k) near it — exact on the surface, and within the lead angle's cosine elsewhere —
 // or to the outline at either end of the pass, where the groove stops (measured in 3D: the
-// outline lies in the half-plane of its end's azimuth).
+// outline lies in the half-plane of its end's azimuth); inside, no deeper than either end.
 
 #include <utility>
 #include <vector>

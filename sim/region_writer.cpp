@@ -119,6 +119,12 @@ struct RevolvedShape {
 // A region that is not revolved (a thread pass, a cut with the spindle stopped): its revolved
 // hull bounds it and decides what is out of reach; its own distance, with its slope, decides
 // the rest. Its Local is the whole sweep (a tool outline is small: nothing to subset).
+// A cube is taken as covered (filled as one tile, with no voxel's distance taken) only when
+// its centre lies deeper inside than the distance can rise over its half-diagonal: so the
+// distance must never read deeper than the region is, its ends included (a groove stops in
+// the face where the pass ended: helical_sweep.cpp bounds the depth by it). Near the axis the
+// helix's slope has no bound and nothing is covered. Only the bar itself is written with Add,
+// and it is revolved; these shapes only remove.
 template <class Sweep>
 struct SweptShape {
   const Sweep& sweep;

@@ -82,6 +82,46 @@ TEST(ThreadSweep, SharpVeeRemovesTheHelicalPappusVolume) {
   }
 }
 
+// A pass that stops inside the bar: the groove ends in a face, the V where the tool stood
+// when the pass ended. A point of the V at axial offset δ from its apex is in the bar while the
+// apex runs from −δ to −4, over 4 + δ of travel; the V is symmetric in δ, so the groove
+// removes the helical Pappus volume of 4 mm exactly. The end lands at several azimuths against
+// the grid (start angles). Half a voxel past the end face the bar is untouched material, half
+// a voxel short of it the groove is air. A writer that read the groove's points near its end
+// as deep as the flanks allow put the face too far (material half a voxel past it read as
+// air), and could take a cube straddling the face for covered.
+TEST(ThreadSweep, GrooveEndingInsideTheBarEndsInItsFace) {
+  constexpr double kRadius = 10, kLength = 8, kTravel = 4;
+  for (const Groove g : {Groove{1.0, 2.0, 0.1}, Groove{1.3, 1.5, 0.05}, Groove{0.8, 3.0, 0.07}})
+    for (const double startDeg : {0.0, 37.0, 201.5}) {
+      SCOPED_TRACE(testing::Message() << "h " << g.depth << " L " << g.lead << " voxel " << g.voxel << " Q "
+                                      << startDeg);
+      Stock stock({2 * kRadius, kLength, 0.0}, g.voxel);
+      const double before = stock.volumeMm3();
+      interp::Toolpath path;
+      path.blockCount = 1;
+      path.moves.push_back(threadMove({kRadius - g.depth, kTravel}, {kRadius - g.depth, -kTravel}, g.lead, startDeg,
+                                      interp::SpindleDirection::Clockwise));
+      simulate(path, {{1, sharpVee()}}, stock);
+      const double removed = before - stock.volumeMm3();
+      const double exact = veeGrooveVolume(kRadius, g.depth, g.lead, kTravel);
+      const double flanks = kTravel / g.lead * 2 * kPi * kRadius * 2 * g.depth / std::cos(kPi / 6);
+      const double endFace = g.depth * g.depth * kTan30;
+      EXPECT_NEAR(removed, exact, 0.01 * g.voxel * flanks + 0.1 * g.voxel * endFace);
+      // M03: the tool ends at the part's azimuth −Q − 360°·n and came from larger azimuths,
+      // where the groove stood higher by a lead a turn. Points on the V's centre line, from
+      // four voxels above its apex (two voxels from the flanks) to a voxel under the bar's face.
+      const double endAzimuth = -startDeg * kPi / 180 - 2 * kPi * (2 * kTravel / g.lead);
+      const double offset = 0.5 * g.voxel;
+      for (double r = kRadius - g.depth + 4 * g.voxel; r < kRadius - g.voxel; r += g.voxel / 3) {
+        const double past = endAzimuth - offset / r, short_ = endAzimuth + offset / r;
+        const double zShort = -kTravel + g.lead * (offset / r) / (2 * kPi);
+        EXPECT_LT(stock.signedDistanceAt(r * std::cos(past), r * std::sin(past), -kTravel), -0.25 * g.voxel) << "r " << r;
+        EXPECT_GT(stock.signedDistanceAt(r * std::cos(short_), r * std::sin(short_), zShort), 0.25 * g.voxel) << "r " << r;
+      }
+    }
+}
+
 // The groove's centre along z at azimuth φ (radians), on the circle of radius r: where the
 // level set is highest over one lead searched from z0.
 double grooveCentreZ(const Stock& stock, double r, double phi, double z0, double lead) {
