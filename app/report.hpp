@@ -7,6 +7,8 @@
 #include <string>
 
 #include "geometry/mesh_shells.hpp"
+#include "interp/control/control_preset.hpp"
+#include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
 #include "measure/thread_measure.hpp"
 #include "interp/move.hpp"
@@ -21,6 +23,8 @@ struct RunTimings {
 struct RunFigures {
   std::string program;
   std::string setup;
+  interp::Control control;  // the preset and every parameter in force
+  interp::TravelLimits travel;  // the machine's travel the moves were checked against
   double voxelMm = 0;
   std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
@@ -34,6 +38,7 @@ struct RunFigures {
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
   sim::SimulationResult simulation;
   std::vector<measure::MeasuredThread> threads;  // every thread cut, as programmed and as measured
+  std::vector<interp::ProgramStop> stops;  // M00/M01 reached: listed, not timed
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;
   RunTimings timing;

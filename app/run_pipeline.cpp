@@ -8,7 +8,7 @@
 #include "app/at_line.hpp"
 #include "job/collision_checks.hpp"
 #include "app/tool_picture.hpp"
-#include "app/volume_checks.hpp"
+#include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "measure/thread_measure.hpp"
@@ -59,16 +59,19 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   }
   figures.program = options.program.string();
   figures.setup = setup.sourceName;
+  figures.control = setup.control;
+  figures.travel = job::travelOf(setup);
   figures.voxelMm = voxel;
   figures.moves = run.job.toolpath.moves.size();
   figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
   figures.warnings = run.job.warnings;
   figures.notes = run.job.notes;
+  figures.stops = run.job.toolpath.stops;
 
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
-  if (auto problem = barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
+  if (auto problem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks,
@@ -90,9 +93,9 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.part = run.stock->mesh(kExportAdaptivity);
   // The level set's volume is checked against the whole mesh; crumbs thinner than a voxel
   // are then left out of the STL, and what they held is reported.
-  if (auto problem = meshVolumeProblem(figures.finalVolumeMm3, run.part, figures.voxelMm)) warn(run, *problem);
+  if (auto problem = measure::meshVolumeProblem(figures.finalVolumeMm3, run.part, figures.voxelMm)) warn(run, *problem);
   figures.meshCrumbs = dropCrumbs(run.part, figures.voxelMm);
-  if (auto problem = meshClosureProblem(run.part)) warn(run, *problem);
+  if (auto problem = measure::meshClosureProblem(run.part)) warn(run, *problem);
   figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
   figures.volumeToleranceMm3 = sim::volumeToleranceMm3(surfaceAreaMm2(run.part), figures.voxelMm);
   figures.meshTriangles = run.part.triangles.size();

@@ -34,6 +34,11 @@ Result<double> takeLeadMm(ParsedBlock& block, ModalState& state, const Threading
                  fmt::format("the lead is not set: {} needs F (the lead, mm per revolution){}", name,
                              words.threadsPerInchI ? " or I (threads per inch)" : "")};
   }
+  if (!(*state.feed > 0)) {  // F0 is legal on its own (a feed of 0), never as a lead
+    return Error{block.line, anchor,
+                 fmt::format("the lead is 0: {} needs F > 0 (the lead, mm per revolution){}", name,
+                             words.threadsPerInchI ? " or I (threads per inch)" : "")};
+  }
   return *state.feed;
 }
 
@@ -55,13 +60,14 @@ Result<double> takeStartAngleDeg(ParsedBlock& block, std::string_view name, std:
   return std::fmod(q->value / kThousandthsPerDegree, 360.0);
 }
 
-Result<RunoutWords> takeRunoutWords(ParsedBlock& block, bool inch, const ThreadingWords& words, RunoutWords kept,
+Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& reading, const ThreadingWords& words,
+                                    RunoutWords kept,
                                     bool signedAcross, std::string_view name) {
   if (!words.runoutJK && !words.hncRunoutRE) return kept;
   const char acrossLetter = words.runoutJK ? 'J' : 'E';
   const char alongLetter = words.runoutJK ? 'K' : 'R';
   if (const auto across = block.take(acrossLetter)) {
-    const double mm = lengthMm(*across, inch);
+    const double mm = lengthMm(*across, reading);
     kept.acrossMm = signedAcross ? mm : std::abs(mm);
   }
   if (const auto along = block.take(alongLetter)) {
@@ -69,7 +75,7 @@ Result<RunoutWords> takeRunoutWords(ParsedBlock& block, bool inch, const Threadi
       return Error{block.line, along->column,
                    fmt::format("{} {} is not a run-out length: expected a number ≥ 0", name, along->text())};
     }
-    kept.alongMm = std::abs(lengthMm(*along, inch));
+    kept.alongMm = std::abs(lengthMm(*along, reading));
   }
   return kept;
 }

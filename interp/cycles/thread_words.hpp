@@ -13,6 +13,7 @@
 #include "interp/execution/modal_state.hpp"
 #include "interp/result.hpp"
 #include "interp/text/block_parser.hpp"
+#include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
 
@@ -27,12 +28,13 @@ Result<double> takeLeadMm(ParsedBlock& block, ModalState& state, const Threading
 /// warning. In degrees.
 Result<double> takeStartAngleDeg(ParsedBlock& block, std::string_view name, std::vector<Error>& warnings);
 
-/// The run-out words of this block (GSK J/K or HNC E/R, when the dialect has them), over
+/// The run-out words of this block (GSK J/K or HNC E/R, when the dialect has them; lengths read
+/// as `reading` says), over
 /// `kept` (the values retained from the blocks before): a word given replaces the kept one.
 /// GSK's J and K of G92/G76 are unsigned (negative values count by their size); G32's J is
 /// signed. HNC's E is signed, a radius ⚠; R a length along Z.
-Result<RunoutWords> takeRunoutWords(ParsedBlock& block, bool inch, const ThreadingWords& words, RunoutWords kept,
-                                    bool signedAcross, std::string_view name);
+Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& reading, const ThreadingWords& words,
+                                    RunoutWords kept, bool signedAcross, std::string_view name);
 
 /// G92's and G76's run-out from its words (GSK 3.24.9 notes 2–7, 3.24.12 notes 1–4):
 /// neither J nor K: `defaultMm` both ways (No.19, or G76's r); no J: K along and

@@ -39,6 +39,18 @@ TEST(ThreadCycle, GskExampleO0012) {
   EXPECT_EQ(result.toolpath.cycleStarts[0].code, "G92");
 }
 
+// As G90: G92 alone (on a safety line) makes it the modal motion and moves nothing; the X/Z
+// block after it runs the cycle from where the tool is. A = (20, 2), B = (14, 2), C = (14, -20).
+TEST(ThreadCycle, TheCodeAloneMovesNothing) {
+  const auto result = run("G00 X40 Z2\nG92\nX28 Z-20 F1.5\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectThreadMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 2, 0, 0},
+                                            {kRapid, 20, 2, 14, 2, 0, 1},
+                                            {kThread, 14, 2, 14, -20, 1.5, 2, 0},
+                                            {kRapid, 14, -20, 20, -20, 0, 3},
+                                            {kRapid, 20, -20, 20, 2, 0, 4}});
+}
+
 // A taper: A = X40 Z2 (radius 20), G92 X30 Z-20 R-2: B = (15 - 2, 2) = (13, 2). No J/K and the
 // machine's run-out parameter 0: no run-out.
 TEST(ThreadCycle, TaperWithoutRunout) {

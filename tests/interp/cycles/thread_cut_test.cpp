@@ -105,7 +105,8 @@ TEST(ThreadCut, StartAngleIsInThousandthsOfADegree) {
 
 TEST(ThreadCut, Alarms) {
   expectError(run("G00 X30 Z5\nG32 Z-20\n"), 2, 1, "the lead is not set: G32 needs F");
-  expectError(run("G00 X30 Z5\nG32 Z-20 F0\n"), 2, 10, "F0 is not a feed rate");
+  expectError(run("G00 X30 Z5\nG32 Z-20 F0\n"), 2, 1, "the lead is 0: G32 needs F > 0");
+  expectError(run("F0\nG00 X30 Z5\nG92 X29 Z-20\n"), 3, 1, "the lead is 0: G92 needs F > 0");
   expectError(run("G00 X30 Z5\nG32 Z-20 F2 Q400000\n"), 2, 13, "G32 Q400000 is not a start angle");
   expectError(run("G00 X30 Z5\nG32 Z-20 F2 I8\n"), 2, 13, "not both");
   expectError(run("G00 X30 Z5\nG32 Z-20 I0\n"), 2, 10, "I0 is not a number of threads per inch");

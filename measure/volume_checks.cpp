@@ -1,4 +1,4 @@
-#include "app/volume_checks.hpp"
+#include "measure/volume_checks.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +7,7 @@
 
 #include "sim/stock.hpp"
 
-namespace lathesim::app {
+namespace lathesim::measure {
 
 std::optional<std::string> barVolumeProblem(const sim::StockSpec& bar, double levelSetMm3, double voxelMm) {
   const double r = bar.diameterMm / 2.0;
@@ -36,4 +36,4 @@ std::optional<std::string> meshClosureProblem(const TriangleMesh& mesh) {
                      "triangles, and its volume is not to be trusted");
 }
 
-}  // namespace lathesim::app
+}  // namespace lathesim::measure

@@ -8,7 +8,7 @@
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock_spec.hpp"
 
-namespace lathesim::app {
+namespace lathesim::measure {
 
 /// Why the untouched bar's level-set volume is not the cylinder's exact πr²L within the
 /// tolerance over the bar's surface, or nullopt.
@@ -22,4 +22,4 @@ std::optional<std::string> meshVolumeProblem(double levelSetMm3, const TriangleM
 /// triangles), or nullopt.
 std::optional<std::string> meshClosureProblem(const TriangleMesh& mesh);
 
-}  // namespace lathesim::app
+}  // namespace lathesim::measure
