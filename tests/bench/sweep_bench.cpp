@@ -99,7 +99,11 @@ void BM_G76Relief(benchmark::State& state) {
   interp::Toolpath relief = g76Part().toolpath;
   const auto firstThread = std::find_if(relief.moves.begin(), relief.moves.end(),
                                         [](const auto& m) { return m.kind == interp::MoveKind::Thread; });
-  relief.moves.erase(firstThread - 1, relief.moves.end());  // up to the first pass's approach
+  // Up to the G76 block: its first pass's approach may be a dog-leg of two rapids.
+  const int g76Line = firstThread->line;
+  const auto g76 = std::find_if(relief.moves.begin(), relief.moves.end(),
+                                [g76Line](const auto& m) { return m.line == g76Line; });
+  relief.moves.erase(g76, relief.moves.end());
   for (auto _ : state) {
     sim::Stock stock(g76Part().setup.stock, state.range(0) / 1000.0);
     sim::simulate(relief, g76Part().tools, stock);
