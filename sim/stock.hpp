@@ -63,9 +63,10 @@ class Stock {
   double remove(const StraightSlot& slot);
 
   /// Volume (mm³) of material lying deeper than `marginMm` inside the revolved `region`,
-  /// measured without changing anything. The stock is a solid of revolution (every cut is),
-  /// so it is integrated over the meridian half-plane: each voxel (ρ, 0, z) stands for its
-  /// ring. See stock_probe.cpp.
+  /// measured without changing anything. It is integrated over the meridian half-plane: each
+  /// voxel (ρ, 0, z) stands for its ring. Exact while the stock is a solid of revolution; a
+  /// thread's grooves or a slot (cuts that are not) count as they lie at azimuth 0, an
+  /// estimate of the holder's collision volume, which is all it serves. See stock_probe.cpp.
   double materialInside(const RevolvedRegion& region, double marginMm) const;
 
   /// Volume enclosed by the zero level set (mm³): each voxel counts the fraction
