@@ -11,6 +11,7 @@
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
+#include "measure/thread_measure.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
 #include "sim/simulate.hpp"
@@ -21,6 +22,13 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   sim::ToolOutlines tools;
   for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
   return tools;
+}
+
+sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
+  sim::ToolThicknesses thicknesses;
+  for (const auto& tool : setup.tools)
+    if (tool.thicknessMm) thicknesses.emplace(tool.number, *tool.thicknessMm);
+  return thicknesses;
 }
 
 namespace {
@@ -66,14 +74,21 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   if (auto problem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
-                                     [&](int done, int total) { run.progress->update(done, total); }, &checks);
+                                     [&](int done, int total) { run.progress->update(done, total); }, &checks,
+                                     thicknessesOf(setup));
   figures.finalVolumeMm3 = run.stock->volumeMm3();
   if (run.partedOff()) {  // what is left is the stub and the pieces that fell
     figures.stubVolumeMm3 = figures.finalVolumeMm3;
     for (const auto& off : figures.simulation.partOffs) figures.finalVolumeMm3 += off.volumeMm3;
   }
+  const sim::ToolOutlines outlines = outlinesOf(setup);
+  // A thread is measured on the part: after a part-off, on the piece that fell.
+  figures.threads = measure::measureThreads(run.partStock(), run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap();
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
+  for (const auto& thread : figures.threads)
+    if (const auto tooWide = measure::threadToolTooWide(thread, outlines.at(thread.programmed.tool), voxel))
+      warn(run, thread.programmed.line, thread.programmed.column, *tooWide);
   return run;
 }
 
@@ -115,6 +130,20 @@ void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   image.title = run.figures.program;
   image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);
   render::writePartImagePng(run.part, run.job.toolpath, image, out.stage("part.png"));
+  // A close-up of the first thread measured: six pitches around the middle of its grooves,
+  // from a pitch inside its root to half a pitch outside its crest.
+  for (const auto& thread : run.figures.threads) {
+    if (thread.measured.problem) continue;
+    const measure::ThreadMeasurement& m = thread.measured;
+    const double middle = 0.5 * (m.zLowMm + m.zHighMm), pitch = m.pitchMm.mean;
+    const double inner = 0.5 * std::min(m.minorDiameterMm.min, m.majorDiameterMm.min);
+    const double outer = 0.5 * std::max(m.majorDiameterMm.max, m.minorDiameterMm.max);
+    render::PartImageOptions closeUp;
+    closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
+    closeUp.closeUp = render::CloseUp{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
+    render::writePartImagePng(run.part, run.job.toolpath, closeUp, out.stage("thread.png"));
+    break;
+  }
   run.figures.timing.renderS = clock.lap();
 }
 

@@ -43,6 +43,7 @@ struct SimulatedRun {
 };
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
+sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
 
 /// Reads the setup and program, checks the grid and simulates (progress on a terminal).
 /// Bad input: the diagnostics are printed and nullopt returned.

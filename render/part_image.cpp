@@ -33,6 +33,7 @@ namespace {
 // Colours (RGB 0–1). The test relies on feeds being clearly blue and rapids clearly red.
 constexpr std::array<double, 3> kFeedColour{0.05, 0.25, 0.95};
 constexpr std::array<double, 3> kRapidColour{0.90, 0.08, 0.08};
+constexpr std::array<double, 3> kThreadColour{0.05, 0.55, 0.15};
 constexpr std::array<double, 3> kMetalColour{0.74, 0.76, 0.79};
 constexpr double kLineWidthPx = 2.0;
 // The tool's slabs are this thick, as a fraction of the picture's diagonal (mm): enough to
@@ -58,7 +59,8 @@ vtkSmartPointer<vtkPolyData> toolpathLines(const interp::Toolpath& toolpath, dou
   for (const interp::Move& move : toolpath.moves) {
     if (interp::isCutting(move.kind)) {
       const std::vector<RZ> drawn = movePoints(move);
-      for (std::size_t i = 1; i < drawn.size(); ++i) addSegment(drawn[i - 1], drawn[i], kFeedColour);
+      const auto& colour = move.kind == interp::MoveKind::Thread ? kThreadColour : kFeedColour;
+      for (std::size_t i = 1; i < drawn.size(); ++i) addSegment(drawn[i - 1], drawn[i], colour);
       continue;
     }
     const Eigen::Vector2d delta = move.to - move.from;
@@ -92,13 +94,27 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   // Before any VTK window exists: without a reachable X server VTK aborts the process.
   ensureDisplay();
 
-  const View view = partView();
+  // A close-up looks straight at the side, so that a thread's profile shows true on the
+  // silhouette; the whole part is seen turned a little, its end face showing.
+  const View view = options.closeUp ? partView(0.0) : partView();
   Extent extent;
-  for (const Eigen::Vector3f& v : part.vertices) extent.include(view, v.cast<double>());
-  for (const interp::Move& m : toolpath.moves)
-    for (const RZ& p : movePoints(m)) extent.include(view, Eigen::Vector3d(p.x(), 0.0, p.y()));
+  if (options.closeUp) {
+    const CloseUp& box = *options.closeUp;
+    for (const double z : {box.zLowMm, box.zHighMm})
+      for (const double r : {box.radiusLowMm, box.radiusHighMm}) extent.include(view, Eigen::Vector3d(r, 0.0, z));
+    // The whole part in depth, so that the camera does not clip it open.
+    for (const Eigen::Vector3f& v : part.vertices) {
+      const double depth = v.cast<double>().dot(view.towardsViewer);
+      extent.minDepth = std::min(extent.minDepth, depth);
+      extent.maxDepth = std::max(extent.maxDepth, depth);
+    }
+  } else {
+    for (const Eigen::Vector3f& v : part.vertices) extent.include(view, v.cast<double>());
+    for (const interp::Move& m : toolpath.moves)
+      for (const RZ& p : movePoints(m)) extent.include(view, Eigen::Vector3d(p.x(), 0.0, p.y()));
+  }
   // The insert is framed; a long holder shank may run out of the picture.
-  if (options.tool) {
+  if (options.tool && !options.closeUp) {
     for (const RZ& p : options.tool->insert) {
       const RZ at = options.tool->position + p;
       extent.include(view, Eigen::Vector3d(at.x(), 0.0, at.y()));
@@ -131,7 +147,7 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
     scene->AddActor(actor);
   }
 
-  if (options.tool) {
+  if (options.tool && !options.closeUp) {
     for (const auto& actor : toolActors(*options.tool, std::max(sizeMm * kToolThicknessPerSize, 0.2)))
       scene->AddActor(actor);
   }
@@ -142,7 +158,7 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   overlay->SetLayer(1);
   overlay->InteractiveOff();
   overlay->SetActiveCamera(scene->GetActiveCamera());
-  if (!toolpath.moves.empty()) {
+  if (!toolpath.moves.empty() && !options.closeUp) {
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(toolpathLines(toolpath, std::max(sizeMm / 120.0, 1e-3)));
     mapper->SetScalarModeToUseCellData();
@@ -160,12 +176,18 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   title->SetPosition(titlePx, options.heightPx - 2 * titlePx);
   overlay->AddActor2D(title);
   const int legendPx = std::max(10, titlePx * 3 / 4);
-  auto feedLegend = cornerText("— feed", legendPx, kFeedColour);
-  feedLegend->SetPosition(titlePx, titlePx / 2 + legendPx + legendPx / 2);
-  auto rapidLegend = cornerText("- - rapid", legendPx, kRapidColour);
-  rapidLegend->SetPosition(titlePx, titlePx / 2);
-  overlay->AddActor2D(feedLegend);
-  overlay->AddActor2D(rapidLegend);
+  if (!options.closeUp) {
+    // Bottom up: rapid, feed, and thread when the program has thread moves.
+    std::vector<std::pair<std::string, std::array<double, 3>>> legend{{"- - rapid", kRapidColour}, {"— feed", kFeedColour}};
+    if (std::any_of(toolpath.moves.begin(), toolpath.moves.end(),
+                    [](const interp::Move& m) { return m.kind == interp::MoveKind::Thread; }))
+      legend.push_back({"— thread", kThreadColour});
+    for (std::size_t n = 0; n < legend.size(); ++n) {
+      auto text = cornerText(legend[n].first, legendPx, legend[n].second);
+      text->SetPosition(titlePx, titlePx / 2 + static_cast<int>(n) * (legendPx + legendPx / 2));
+      overlay->AddActor2D(text);
+    }
+  }
 
   frame(scene->GetActiveCamera(), view, extent,
         static_cast<double>(options.widthPx) / static_cast<double>(options.heightPx));

@@ -19,15 +19,25 @@ struct ToolPicture {
   RZ position{0, 0};
 };
 
+/// A part of the picture to frame instead of the whole: the box Z `zLowMm`…`zHighMm` ×
+/// radius `radiusLowMm`…`radiusHighMm` of the meridian plane facing the viewer's up (a
+/// thread's close-up: its profile on the silhouette, its grooves on the face below).
+struct CloseUp {
+  double zLowMm = 0, zHighMm = 0;
+  double radiusLowMm = 0, radiusHighMm = 0;
+};
+
 struct PartImageOptions {
   int widthPx = 1600;
   int heightPx = 1200;
   std::string title;  // drawn in a corner: the program's name
-  std::optional<ToolPicture> tool;  // drawn where it stands, if given
+  std::optional<ToolPicture> tool{};  // drawn where it stands, if given
+  std::optional<CloseUp> closeUp{};   // frame this box only, without the toolpath and the tool
 };
 
-/// Renders off-screen to a PNG (rapids dashed red, feeds solid blue over the shaded part,
-/// and the tool, if given, as gold insert and grey holder slabs in the meridian plane).
+/// Renders off-screen to a PNG (rapids dashed red, feeds solid blue, thread moves solid green
+/// over the shaded part, and the tool, if given, as gold insert and grey holder slabs in the
+/// meridian plane).
 /// Works with no display: an Xvfb server is started for the process if none is reachable.
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,

@@ -80,8 +80,10 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh) {
   return polyData;
 }
 
-View partView() {
-  const double a = kAzimuthDeg * M_PI / 180.0;
+View partView() { return partView(kAzimuthDeg); }
+
+View partView(double azimuthDeg) {
+  const double a = azimuthDeg * M_PI / 180.0;
   View v;
   v.towardsViewer = Eigen::Vector3d(0.0, std::cos(a), std::sin(a));
   v.up = Eigen::Vector3d(1.0, 0.0, 0.0);

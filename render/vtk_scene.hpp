@@ -32,7 +32,10 @@ vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data);
 struct View {
   Eigen::Vector3d towardsViewer, up, right;
 };
+/// `azimuthDeg` 0 looks straight at the side (the profile true on the silhouette); the
+/// default shows the end face too.
 View partView();
+View partView(double azimuthDeg);
 
 /// Extent of everything drawn, along the view's axes (mm).
 struct Extent {

@@ -100,16 +100,15 @@ Pieces connectedPieces(const Samples& samples) {
   return pieces;
 }
 
-/// The window of samples around a cut (its bounds, two samples more each way, within the
+/// The window of samples around a cut (its area, two samples more each way, within the
 /// section's extent `all`, whose samples are not read), read from the grid.
-Samples samplesAround(const StockGrid& s, const RevolvedRegion& cut, const Samples& all) {
+Samples samplesAround(const StockGrid& s, const ChangedArea& cut, const Samples& all) {
   const double h = s.voxel;
-  const double rhoMin = cut.lowerBound().x() > 0.0 ? cut.lowerBound().x() : 0.0;
   Samples w;
-  w.i0 = std::max(0, static_cast<int>(std::floor(rhoMin / h)) - 2);
-  const int i1 = std::min(all.rCount - 1, static_cast<int>(std::ceil(cut.maxRadius() / h)) + 2);
-  w.k0 = std::max(all.k0, static_cast<int>(std::floor(cut.lowerBound().y() / h)) - 2);
-  const int k1 = std::min(all.k0 + all.zCount - 1, static_cast<int>(std::ceil(cut.upperBound().y() / h)) + 2);
+  w.i0 = std::max(0, static_cast<int>(std::floor(cut.rhoMin / h)) - 2);
+  const int i1 = std::min(all.rCount - 1, static_cast<int>(std::ceil(cut.rhoMax / h)) + 2);
+  w.k0 = std::max(all.k0, static_cast<int>(std::floor(cut.zMin / h)) - 2);
+  const int k1 = std::min(all.k0 + all.zCount - 1, static_cast<int>(std::ceil(cut.zMax / h)) + 2);
   w.rCount = std::max(0, i1 - w.i0 + 1);
   w.zCount = std::max(0, k1 - w.k0 + 1);
   readSamples(s, w);
@@ -256,10 +255,9 @@ void keepOnly(Grid& grid, const SideOf& sideOf, std::uint8_t keep, float backgro
 
 }  // namespace
 
-std::unique_ptr<Stock> Stock::takeLoosePieces(const RevolvedRegion* lastCut) {
+std::unique_ptr<Stock> Stock::takeLoosePieces(const std::optional<ChangedArea>& lastCut) {
   Samples section = wholeSection(*impl_);  // its extent; read only when the cut's window cannot tell
-  if (lastCut && !lastCut->empty() && hangsTogetherAround(samplesAround(*impl_, *lastCut, section), section))
-    return nullptr;
+  if (lastCut && hangsTogetherAround(samplesAround(*impl_, *lastCut, section), section)) return nullptr;
   readSamples(*impl_, section);
   const Pieces pieces = connectedPieces(section);
   const std::vector<bool> loose = loosePieces(section, pieces, impl_->voxel);

@@ -25,13 +25,14 @@ std::optional<interp::PartsCatcherCommand> catcherInForce(const interp::Toolpath
 }  // namespace
 
 void PartOffWatch::afterCut(const interp::Toolpath& toolpath, std::size_t first, std::size_t end,
-                            const RevolvedRegion& region, double removedMm3, Stock& stock, SimulationResult& result) {
+                            const RevolvedRegion& revolved, const std::optional<ChangedArea>& changed,
+                            double removedMm3, Stock& stock, SimulationResult& result) {
   const interp::Move& head = toolpath.moves[first];
   const double h = stock.voxelMm();
-  if (result.part && interp::isCutting(head.kind) && !region.empty() && warnedBlock_ != head.block) {
+  if (result.part && interp::isCutting(head.kind) && !revolved.empty() && warnedBlock_ != head.block) {
     // As holder_check measures a holder: material more than a voxel inside, so that a blade
     // withdrawn along the face it parted is not taken for a cut.
-    const double inside = result.part->materialInside(region, h);
+    const double inside = result.part->materialInside(revolved, h);
     if (inside > kCollisionVoxels * h * h * h) {
       const PartOff& off = result.partOffs.front();
       result.warnings.push_back(
@@ -45,7 +46,7 @@ void PartOffWatch::afterCut(const interp::Toolpath& toolpath, std::size_t first,
   if (removedMm3 <= 0.0) return;  // nothing cut, nothing can have come loose
   // Every cut is checked, and what came loose taken out: the material hung together before
   // this one, so its neighbourhood is enough to see that it parted nothing.
-  std::unique_ptr<Stock> piece = stock.takeLoosePieces(region.empty() ? nullptr : &region);
+  std::unique_ptr<Stock> piece = stock.takeLoosePieces(changed);
   if (!piece) return;
   PartOff off{head.line, head.column, deepestZ(toolpath.moves, first, end), piece->volumeMm3(),
               catcherInForce(toolpath, first)};

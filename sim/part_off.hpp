@@ -5,6 +5,7 @@
 // of: the part is not there to cut (it fell, or the parts catcher has it).
 
 #include <cstddef>
+#include <optional>
 
 #include "geometry/revolved_region.hpp"
 #include "interp/move.hpp"
@@ -16,10 +17,10 @@ namespace lathesim::sim {
 class PartOffWatch {
  public:
   /// After moves[first, end) of `toolpath`, one written group of moves, removed `removedMm3`
-  /// from `stock`. `region` is what they swept, revolved (empty when they were not revolved:
-  /// then the fallen part is not looked for in it).
-  void afterCut(const interp::Toolpath& toolpath, std::size_t first, std::size_t end, const RevolvedRegion& region,
-                double removedMm3, Stock& stock, SimulationResult& result);
+  /// from `stock` within `changed`. `revolved` is what they swept when they turned (empty for a
+  /// thread or a slot: then the part that fell is not looked for in it).
+  void afterCut(const interp::Toolpath& toolpath, std::size_t first, std::size_t end, const RevolvedRegion& revolved,
+                const std::optional<ChangedArea>& changed, double removedMm3, Stock& stock, SimulationResult& result);
 
  private:
   int warnedBlock_ = -1;  // one warning per block for cutting where the part was

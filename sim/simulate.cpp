@@ -17,7 +17,43 @@ const ConvexPolygon& toolOf(const interp::Move& move, const ToolOutlines& tools)
   return tool->second;
 }
 
+double thicknessOf(const interp::Move& move, const ToolThicknesses& thicknesses) {
+  const auto found = thicknesses.find(move.tool);
+  return found == thicknesses.end() ? kDefaultInsertThicknessMm : found->second;
+}
+
+// Adds `area` to where a write changed the stock.
+void widen(std::optional<ChangedArea>& changed, const ChangedArea& area) {
+  if (changed) changed->add(area);
+  else changed = area;
+}
+
+// What a move made with the spindle stopped removes: a straight slot along each segment.
+double removeSlots(const interp::Move& move, const ConvexPolygon& tool, double thicknessMm, Stock& stock,
+                   std::optional<ChangedArea>& changed) {
+  double removed = 0.0;
+  for (const auto& [from, to] : sweptSegments(move, stock.voxelMm())) {
+    const StraightSlot slot(tool, from, to, thicknessMm, move.spindleAngleDeg);
+    removed += stock.remove(slot);
+    widen(changed, ChangedArea::of(slot.hull()));
+  }
+  return removed;
+}
+
+// What a thread move removes: the outline along its helix, from its start angle (measured in
+// the direction the spindle turns) one turn per lead.
+double removeThread(const interp::Move& move, const ConvexPolygon& tool, Stock& stock,
+                    std::optional<ChangedArea>& changed) {
+  const int sense = move.spindleDirection == interp::SpindleDirection::Clockwise ? 1 : -1;
+  const HelicalSweep sweep(tool, move.from, move.to, move.thread.revolutions(move.from, move.to),
+                           sense * move.thread.startAngleDeg, sense);
+  widen(changed, ChangedArea::of(sweep.hull()));
+  return stock.remove(sweep);
+}
+
 }  // namespace
+
+bool spindleTurns(const interp::Move& move) { return move.spindleOn && move.spindleS > 0.0; }
 
 void recordCollision(std::vector<Collision>& collisions, const interp::Move& move, const char* kind, double volumeMm3) {
   // The block's collisions are the last ones, of one or more kinds.
@@ -31,12 +67,19 @@ void recordCollision(std::vector<Collision>& collisions, const interp::Move& mov
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks) {
+  return simulate(toolpath, tools, stock, progress, checks, {});
+}
+
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress, const CollisionChecks* checks,
+                          const ToolThicknesses& thicknesses) {
   SimulationResult result;
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
   const int totalBlocks = toolpath.blockCount;
   auto cycleStart = toolpath.cycleStarts.begin();
   int spindleWarnedBlock = -1;  // one spindle warning per block
+  int threadWarnedBlock = -1;   // one thread-start warning per block
   RZ frame(0, 0);               // the G50 frame of the moves so far
   PartOffWatch partOffs;
   bool checkShift = false;      // after G50 moved it: until the first cut, or a warning
@@ -59,20 +102,41 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
       checkShift = !warning && !interp::isCutting(head.kind);
     }
 
+    // Turning: the feeds and arcs that follow in this block with the spindle turning too.
+    const auto turning = [](const interp::Move& m) {
+      return (m.kind == interp::MoveKind::Feed || interp::isArc(m.kind)) && spindleTurns(m);
+    };
     std::size_t end = first + 1;
-    if (interp::isCutting(head.kind))
-      while (end < moves.size() && moves[end].block == head.block && interp::isCutting(moves[end].kind)) ++end;
+    if (turning(head))
+      while (end < moves.size() && moves[end].block == head.block && turning(moves[end])) ++end;
 
-    std::vector<ConvexPolygon> pieces;
-    for (std::size_t m = first; m < end; ++m) {
-      const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
-      pieces.insert(pieces.end(), swept.begin(), swept.end());
-      block.timeS += moves[m].timeS;
+    double removed = 0.0;
+    RevolvedRegion revolved;             // what a turning write swept (none for a thread or a slot)
+    std::optional<ChangedArea> changed;  // where the write can have changed the stock
+    const ConvexPolygon& tool = toolOf(head, tools);
+    if (interp::isCutting(head.kind) && !spindleTurns(head)) {
+      removed = removeSlots(head, tool, thicknessOf(head, thicknesses), stock, changed);
+    } else if (head.kind == interp::MoveKind::Thread) {
+      if (auto warning = threadPassStartsInStock(head, moves, first, stock); warning && threadWarnedBlock != head.block) {
+        result.warnings.push_back(*warning);
+        threadWarnedBlock = head.block;
+      }
+      removed = removeThread(head, tool, stock, changed);
+    } else {
+      std::vector<ConvexPolygon> pieces;
+      for (std::size_t m = first; m < end; ++m) {
+        const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
+        pieces.insert(pieces.end(), swept.begin(), swept.end());
+      }
+      revolved = RevolvedRegion(pieces);
+      if (!pieces.empty()) {
+        removed = stock.remove(revolved);
+        changed = ChangedArea::of(revolved);
+      }
     }
-    const RevolvedRegion region(pieces);
-    const double removed = pieces.empty() ? 0.0 : stock.remove(region);
+    for (std::size_t m = first; m < end; ++m) block.timeS += moves[m].timeS;
     block.removedMm3 += removed;
-    partOffs.afterCut(toolpath, first, end, region, removed, stock, result);
+    partOffs.afterCut(toolpath, first, end, revolved, changed, removed, stock, result);
     if (auto warning = cutWithSpindleStopped(head, removed, stock.voxelMm()); warning && spindleWarnedBlock != head.block) {
       result.warnings.push_back(*warning);
       spindleWarnedBlock = head.block;
@@ -89,7 +153,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress) {
-  return simulate(toolpath, tools, stock, progress, nullptr);
+  return simulate(toolpath, tools, stock, progress, nullptr, {});
 }
 
 }  // namespace lathesim::sim

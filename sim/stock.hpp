@@ -2,14 +2,20 @@
 // The stock as a narrow-band level set. OpenVDB stays behind this interface (compiling a
 // FloatGrid costs seconds and gigabytes per translation unit), so callers see plain types.
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
+
+#include <Eigen/Core>
 #include <string>
 
+#include "geometry/helical_sweep.hpp"
 #include "geometry/meridian_profile.hpp"
 #include "geometry/revolved_region.hpp"
+#include "geometry/straight_slot.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock_spec.hpp"
 
@@ -37,6 +43,23 @@ std::uint64_t estimatedStockBytes(const StockSpec& spec, double voxelMm);
 /// Why a grid cannot be simulated here (too large for memory, bad voxel), or nullopt.
 std::optional<std::string> gridProblem(const StockSpec& spec, double voxelMm);
 
+/// Where a write can have changed the stock, in the meridian half-plane (mm): radii and Z that
+/// hold what was written (a thread's or a slot's revolved hull, for those).
+struct ChangedArea {
+  double rhoMin = 0, rhoMax = 0, zMin = 0, zMax = 0;
+
+  static ChangedArea of(const RevolvedRegion& region) {
+    return {std::max(region.lowerBound().x(), 0.0), region.maxRadius(), region.lowerBound().y(),
+            region.upperBound().y()};
+  }
+  void add(const ChangedArea& other) {
+    rhoMin = std::min(rhoMin, other.rhoMin);
+    rhoMax = std::max(rhoMax, other.rhoMax);
+    zMin = std::min(zMin, other.zMin);
+    zMax = std::max(zMax, other.zMax);
+  }
+};
+
 class Stock {
  public:
   /// Builds the bar's level set leaf by leaf from its analytic distance.
@@ -51,11 +74,17 @@ class Stock {
   /// region's boundary and the material are visited. Returns the volume removed (mm³),
   /// measured on the level set before and after.
   double remove(const RevolvedRegion& region);
+  /// The same for a thread pass (helical_sweep.hpp) and for a cut made with the spindle
+  /// stopped (straight_slot.hpp): written voxel by voxel with their own 3D distance, over the
+  /// leaves near their revolved hull's boundary and the material.
+  double remove(const HelicalSweep& sweep);
+  double remove(const StraightSlot& slot);
 
   /// Volume (mm³) of material lying deeper than `marginMm` inside the revolved `region`,
-  /// measured without changing anything. The stock is a solid of revolution (every cut is),
-  /// so it is integrated over the meridian half-plane: each voxel (ρ, 0, z) stands for its
-  /// ring. See stock_probe.cpp.
+  /// measured without changing anything. It is integrated over the meridian half-plane: each
+  /// voxel (ρ, 0, z) stands for its ring. Exact while the stock is a solid of revolution; a
+  /// thread's grooves or a slot (cuts that are not) count as they lie at azimuth 0, an
+  /// estimate of the holder's collision volume, which is all it serves. See stock_probe.cpp.
   double materialInside(const RevolvedRegion& region, double marginMm) const;
 
   /// Volume enclosed by the zero level set (mm³): each voxel counts the fraction
@@ -65,6 +94,11 @@ class Stock {
   /// φ at the point at radius ρ = point.x(), Z = point.y() (mm), trilinearly sampled:
   /// negative inside the material, positive outside; beyond the narrow band it is ±3 voxels.
   double signedDistanceAt(const RZ& point) const;
+  /// φ at the point (x, y, z) of the part's frame (mm), trilinearly sampled: for what is not
+  /// a solid of revolution (threads, slots cut with the spindle stopped).
+  double signedDistanceAt(double xMm, double yMm, double zMm) const;
+  /// The same at many points at once (one accessor for all): out[i] for points[i].
+  void signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const;
 
   /// Closed surface just inside φ = 0 (0.16 % of a voxel: see stock.cpp), outward normals,
   /// vertices merged by position as an STL reader merges them. adaptivity 0 keeps every
@@ -78,9 +112,9 @@ class Stock {
   /// Takes the material that no longer hangs together with the chuck's end out of this stock
   /// and returns it as a stock of its own, or nullptr when all material still does (see
   /// loose_pieces.cpp). The chuck's end is the material nearest the chuck: the lowest Z.
-  /// `lastCut`, the region removed since the material last hung together (crumbs aside), lets
-  /// it look only around that region when the cut plainly parted nothing.
-  std::unique_ptr<Stock> takeLoosePieces(const RevolvedRegion* lastCut = nullptr);
+  /// `lastCut`, where the stock was written since the material last hung together (crumbs
+  /// aside), lets it look only around there when the cut plainly parted nothing.
+  std::unique_ptr<Stock> takeLoosePieces(const std::optional<ChangedArea>& lastCut = std::nullopt);
 
   /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock", and `part`'s
   /// (a piece taken out by takeLoosePieces) beside it under the name "part".
