@@ -207,7 +207,8 @@ int checkCommand(const CheckOptions& options) {
   if (options.drawing && !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing)))
     return 1;  // before the long part
   Stopwatch clock;
-  std::optional<SimulatedRun> run = simulateProgram(options.run, clock);
+  StagedOutput out(options.run.out);
+  std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
   if (!run) return 1;
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
@@ -223,8 +224,7 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
-  StagedOutput out(options.run.out);
-  stageRunFiles(*run, out, clock);
+  stageRunFiles(*run, options.run.pictures, out, clock);
   stageDeviationImages(options, run->part, section, part, *drawing, deviation, out);
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();

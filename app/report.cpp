@@ -34,6 +34,7 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
                         {"simulate", f.timing.simulateS},
                         {"mesh", f.timing.meshS},
                         {"render", f.timing.renderS}};
+  if (f.timing.animateS > 0) report["timing_s"]["animate"] = f.timing.animateS;
   return report;
 }
 

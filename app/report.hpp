@@ -14,6 +14,7 @@ namespace lathesim::app {
 
 struct RunTimings {
   double parseS = 0, simulateS = 0, meshS = 0, renderS = 0;
+  double animateS = 0;  // --animate: drawing and encoding the frames (not counted in simulateS)
 };
 
 struct RunFigures {

@@ -8,11 +8,11 @@ namespace lathesim::app {
 
 int runCommand(const RunOptions& options) {
   Stopwatch clock;
-  std::optional<SimulatedRun> run = simulateProgram(options, clock);
+  StagedOutput out(options.out);
+  std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return 1;
   meshPart(*run, clock);
-  StagedOutput out(options.out);
-  stageRunFiles(*run, out, clock);
+  stageRunFiles(*run, options.pictures, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
   writeReportJson(figures, out.stage("report.json"));

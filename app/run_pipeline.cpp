@@ -6,8 +6,9 @@
 #include <iostream>
 
 #include "app/at_line.hpp"
+#include "app/cut_recording.hpp"
+#include "app/part_pictures.hpp"
 #include "job/collision_checks.hpp"
-#include "app/tool_picture.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
@@ -22,7 +23,7 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   return tools;
 }
 
-std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out) {
   std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
@@ -49,10 +50,19 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
+  std::unique_ptr<CutRecording> recording;
+  if (options.animation.mp4 && out)
+    recording = std::make_unique<CutRecording>(run.job, options.animation, figures.program, *out);
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
-                                     [&](int done, int total) { run.progress->update(done, total); }, &checks);
+                                     [&](int done, int total) { run.progress->update(done, total); }, &checks,
+                                     recording ? recording->observer() : sim::CutObserver{});
+  if (recording) {
+    run.progress->stage("finishing the video");
+    recording->finish(*run.stock);
+    figures.timing.animateS = recording->secondsSpent();
+  }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
-  figures.timing.simulateS = clock.lap();
+  figures.timing.simulateS = clock.lap() - figures.timing.animateS;
   for (const auto& w : figures.simulation.warnings) {
     figures.warnings.push_back(run.job.warningAt(w.line, w.column, w.message));
     std::cerr << interp::format(figures.warnings.back()) << '\n';
@@ -68,7 +78,7 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.figures.timing.meshS = clock.lap();
 }
 
-void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
+void stageRunFiles(SimulatedRun& run, const PictureRequest& pictures, StagedOutput& out, Stopwatch& clock) {
   run.progress->stage("writing STL, VDB and the render");
   render::writeBinaryStl(run.part, out.stage("part.stl"));
   {
@@ -77,10 +87,15 @@ void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   }
   render::writeToolpathVtp(run.job.toolpath, out.stage("toolpath.vtp"));
   run.stock->writeVdb(out.stage("stock.vdb"));
-  render::PartImageOptions image;
-  image.title = run.figures.program;
-  image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);
-  render::writePartImagePng(run.part, run.job.toolpath, image, out.stage("part.png"));
+  render::PartImageOptions image =
+      partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
+  addPartSection(image, run.stock->meridianSection(), run.figures.voxelMm);
+  render::writePartImagePng(run.part, run.job.toolpath, image, out.stage(pictureFileName(render::PartView::Iso)));
+  for (const render::PartView view : pictures.views) {
+    if (view == render::PartView::Iso) continue;
+    image.view = view;
+    render::writePartImagePng(run.part, run.job.toolpath, image, out.stage(pictureFileName(view)));
+  }
   run.figures.timing.renderS = clock.lap();
 }
 

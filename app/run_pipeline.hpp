@@ -39,15 +39,16 @@ struct SimulatedRun {
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
 
-/// Reads the setup and program, checks the grid and simulates (progress on a terminal).
+/// Reads the setup and program, checks the grid and simulates (progress on a terminal);
+/// records the cut into `out` when options.animation asks and `out` is given.
 /// Bad input: the diagnostics are printed and nullopt returned.
-std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock);
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out = nullptr);
 
 /// Meshes the final stock into run.part (figures: mesh volume, triangles, time).
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
-/// Stages the run's files into `out`, and times them as rendering.
-void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock);
+/// Stages the run's files into `out` (the pictures as `pictures` asks), and times them as rendering.
+void stageRunFiles(SimulatedRun& run, const PictureRequest& pictures, StagedOutput& out, Stopwatch& clock);
 
 /// This process's peak resident memory so far (MB; an Xvfb it started is not counted).
 double peakMemoryMb();

@@ -4,9 +4,7 @@
 
 namespace lathesim::app {
 
-StagedOutput::StagedOutput(std::filesystem::path folder) : folder_(std::move(folder)) {
-  std::filesystem::create_directories(folder_);
-}
+StagedOutput::StagedOutput(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
 StagedOutput::~StagedOutput() {
   std::error_code ignored;
@@ -14,6 +12,7 @@ StagedOutput::~StagedOutput() {
 }
 
 std::filesystem::path StagedOutput::stage(const std::string& name) {
+  std::filesystem::create_directories(folder_);  // at the first file: a run that fails before writes nothing
   // The temporary keeps the real extension: some writers choose their format by it.
   const auto temp = folder_ / (".tmp-" + std::to_string(getpid()) + "-" + name);
   staged_.emplace_back(temp, folder_ / name);

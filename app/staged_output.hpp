@@ -14,7 +14,7 @@ class StagedOutput {
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
 
-  /// Where to write the file that will become `folder/name`.
+  /// Where to write the file that will become `folder/name` (the folder is made at the first).
   std::filesystem::path stage(const std::string& name);
   /// Renames every staged file into place.
   void commit();

@@ -19,7 +19,7 @@ const ConvexPolygon& toolOf(const interp::Move& move, const ToolOutlines& tools)
 }  // namespace
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress, const CollisionChecks* checks) {
+                          const BlockProgress& progress, const CollisionChecks* checks, const CutObserver& observer) {
   SimulationResult result;
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
@@ -40,6 +40,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     if (interp::isCutting(head.kind))
       while (end < moves.size() && moves[end].block == head.block && interp::isCutting(moves[end].kind)) ++end;
 
+    if (observer) observer(first, end, stock);
     std::vector<ConvexPolygon> pieces;
     for (std::size_t m = first; m < end; ++m) {
       const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
@@ -63,8 +64,13 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 }
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress, const CollisionChecks* checks) {
+  return simulate(toolpath, tools, stock, progress, checks, {});
+}
+
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress) {
-  return simulate(toolpath, tools, stock, progress, nullptr);
+  return simulate(toolpath, tools, stock, progress, nullptr, {});
 }
 
 }  // namespace lathesim::sim

@@ -54,6 +54,10 @@ inline constexpr double kInsideStockVoxels = 1.0;
 using ToolOutlines = std::map<int, ConvexPolygon>;  // tool number → outline (radial, axial) mm
 using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 
+/// Called before the moves [firstMove, endMove) are cut, with the stock as it stands then:
+/// what a picture taken while those moves run shows (the animation's frames).
+using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMove, const Stock& stock)>;
+
 /// Removes every move's swept region from `stock` in program order. Consecutive cutting
 /// moves (feeds and arcs) of one block are united and written once (a cycle's cut and
 /// retract overlap heavily); each rapid is written on its own so that a rapid into material
@@ -65,5 +69,9 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 /// when `checks` is given.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks);
+
+/// The same, telling `observer` (if set) of each group of moves before it is cut.
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress, const CollisionChecks* checks, const CutObserver& observer);
 
 }  // namespace lathesim::sim
