@@ -183,7 +183,7 @@ render::SectionImage sectionImage(const std::string& title, const SampledSection
 
 void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
                           const MeridianProfile& part, const MeridianProfile& drawing, const measure::DeviationReport& d,
-                          StagedOutput& out) {
+                          StagedOutput& out, std::vector<HtmlPicture>& pictures) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   render::DeviationImageOptions image;
   image.title = options.run.program.string() + " against " + target;
@@ -191,9 +191,11 @@ void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh,
   image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
                   " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
   render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing), image, out.stage("deviation.png"));
+  pictures.push_back({"deviation.png: the part coloured by its deviation from the drawing", out.staged("deviation.png")});
   render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d);
   half.caption = image.caption;
   render::writeSectionImagePng(half, out.stage("section.png"));
+  pictures.push_back({"section.png: the half-section against the drawing", out.staged("section.png")});
 }
 
 }  // namespace
@@ -224,13 +226,13 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
-  stageRunFiles(*run, options.run.pictures, out, clock);
-  stageDeviationImages(options, run->part, section, part, *drawing, deviation, out);
+  stageRunFiles(*run, options.run, out, clock);
+  stageDeviationImages(options, run->part, section, part, *drawing, deviation, out, run->pictures);
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);
   report["check"] = checkJson(options, deviation, process, checkS);
-  writeJson(report, out.stage("report.json"));
+  stageReports(*run, report, out);
   out.commit();
   run->progress->stage("done");
   run->progress->finish();

@@ -49,6 +49,7 @@ struct RunOptions {
   std::optional<std::string> stock;  // --stock D40xL80 (job/stock_option.hpp)
   PictureRequest pictures;
   AnimationRequest animation;
+  std::vector<std::string> exports;  // --export: gltf, glb, ply, obj (part.gltf, …)
 };
 
 int runCommand(const RunOptions& options);

@@ -40,6 +40,9 @@ void addPictureOptions(CLI::App& command, RunOptions& options) {
               throw CLI::ValidationError("--size", problem);
           },
           "the pictures' size in pixels (default 1600x1200)");
+  command.add_option("--export", options.exports, "more files of the part: gltf, glb, ply, obj (part.gltf, …)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"gltf", "glb", "ply", "obj"}));
   auto* animate = command.add_flag("--animate", options.animation.mp4, "write the cut as a video, cut.mp4 (needs ffmpeg)");
   command.add_flag("--gif", options.animation.gif, "with --animate: cut.gif too")->needs(animate);
   command

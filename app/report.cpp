@@ -38,7 +38,6 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   return report;
 }
 
-void writeReportJson(const RunFigures& f, const std::filesystem::path& file) { writeJson(reportJson(f), file); }
 
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file) {
   std::ofstream out(file);

@@ -38,7 +38,6 @@ struct RunFigures {
 /// The report as JSON, for commands that add their own section (check adds "check").
 nlohmann::ordered_json reportJson(const RunFigures& figures);
 
-void writeReportJson(const RunFigures& figures, const std::filesystem::path& file);
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file);
 
 }  // namespace lathesim::app

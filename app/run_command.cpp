@@ -12,10 +12,10 @@ int runCommand(const RunOptions& options) {
   std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return 1;
   meshPart(*run, clock);
-  stageRunFiles(*run, options.pictures, out, clock);
+  stageRunFiles(*run, options, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
-  writeReportJson(figures, out.stage("report.json"));
+  stageReports(*run, reportJson(figures), out);
   out.commit();
   run->progress->stage("done");
   run->progress->finish();

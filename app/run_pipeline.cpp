@@ -2,7 +2,9 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <fstream>
+#include <stdexcept>
 #include <iostream>
 
 #include "app/at_line.hpp"
@@ -13,9 +15,21 @@
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
+#include "render/scene_export.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::app {
+
+namespace {
+
+void writeBytes(const std::string& bytes, const std::filesystem::path& file) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+}  // namespace
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   sim::ToolOutlines tools;
@@ -78,8 +92,9 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.figures.timing.meshS = clock.lap();
 }
 
-void stageRunFiles(SimulatedRun& run, const PictureRequest& pictures, StagedOutput& out, Stopwatch& clock) {
-  run.progress->stage("writing STL, VDB and the render");
+void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock) {
+  const PictureRequest& pictures = options.pictures;
+  run.progress->stage("writing STL, VDB, the pictures and the report");
   render::writeBinaryStl(run.part, out.stage("part.stl"));
   {
     std::ofstream csv(out.stage("toolpath.csv"));
@@ -90,13 +105,29 @@ void stageRunFiles(SimulatedRun& run, const PictureRequest& pictures, StagedOutp
   render::PartImageOptions image =
       partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
   addPartSection(image, run.stock->meridianSection(), run.figures.voxelMm);
-  render::writePartImagePng(run.part, run.job.toolpath, image, out.stage(pictureFileName(render::PartView::Iso)));
-  for (const render::PartView view : pictures.views) {
-    if (view == render::PartView::Iso) continue;
+  std::vector<render::PartView> views{render::PartView::Iso};
+  for (const render::PartView view : pictures.views)
+    if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);
+  for (const render::PartView view : views) {
     image.view = view;
-    render::writePartImagePng(run.part, run.job.toolpath, image, out.stage(pictureFileName(view)));
+    const auto png = out.stage(pictureFileName(view));
+    render::writePartImagePng(run.part, run.job.toolpath, image, png);
+    run.pictures.push_back({pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view", png});
+  }
+  run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
+  for (const std::string& format : options.exports) {
+    const auto file = out.stage("part." + format);
+    if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
+    if (format == "glb") writeBytes(run.modelGlb, file);
+    if (format == "ply") render::writePartPly(run.part, file);
+    if (format == "obj") render::writePartObj(run.part, file);
   }
   run.figures.timing.renderS = clock.lap();
+}
+
+void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
+  writeJson(report, out.stage("report.json"));
+  writeReportHtml(report, run.job.programText, run.pictures, run.modelGlb, out.stage("report.html"));
 }
 
 double peakMemoryMb() {

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <stdexcept>
+
 namespace lathesim::app {
 
 StagedOutput::StagedOutput(std::filesystem::path folder) : folder_(std::move(folder)) {}
@@ -17,6 +19,12 @@ std::filesystem::path StagedOutput::stage(const std::string& name) {
   const auto temp = folder_ / (".tmp-" + std::to_string(getpid()) + "-" + name);
   staged_.emplace_back(temp, folder_ / name);
   return temp;
+}
+
+std::filesystem::path StagedOutput::staged(const std::string& name) const {
+  for (const auto& [temp, final] : staged_)
+    if (final.filename() == name) return temp;
+  throw std::out_of_range(name + " was not staged");
 }
 
 void StagedOutput::commit() {

@@ -16,6 +16,8 @@ class StagedOutput {
 
   /// Where to write the file that will become `folder/name` (the folder is made at the first).
   std::filesystem::path stage(const std::string& name);
+  /// Where the file that will become `folder/name` was staged (std::out_of_range if it was not).
+  std::filesystem::path staged(const std::string& name) const;
   /// Renames every staged file into place.
   void commit();
 
