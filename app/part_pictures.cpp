@@ -37,14 +37,14 @@ render::PartImageOptions partPictureOptions(const job::Setup& setup, const inter
 
 void addPartSection(render::PartImageOptions& options, const SampledSection& section, double voxelMm) {
   const double barLengthMm = options.bar ? options.bar->zHighMm - options.bar->zLowMm : 0.0;
-  // Faces flat within half a voxel are flat (marching squares finds a flat face's crossings
-  // within a small fraction of one); faces shorter than 4 % of the bar are not dimensioned.
+  // The surface points of a face cut flat agree to far below a voxel (φ is an exact distance
+  // there); faces shorter than 4 % of the bar are not dimensioned.
   const MeridianProfile profile = MeridianProfile::fromSection(section);
   DimensionRules rules;
-  rules.flatToleranceMm = 0.5 * voxelMm;
+  rules.flatToleranceMm = 0.02 * voxelMm;
   rules.minFaceMm = std::max(4 * voxelMm, 0.04 * barLengthMm);
   rules.maxLengths = 3;
-  options.dimensions = mainDimensions(profile, profilePolylines(profile, 0.25 * voxelMm), rules);
+  options.dimensions = mainDimensions(profile, chainSegments(profile.surface(), 1e-6), rules);
   options.dimensionDecimals = voxelMm < 0.1 ? 2 : 1;
   options.section = section;
 }

@@ -13,17 +13,23 @@ struct Face {
   double size() const { return high - low; }
 };
 
-/// Faces along one axis (`along` 1: cylindrical, varying z; 0: square, varying r): the
-/// polyline edges whose other coordinate changes by at most `tolerance`.
+/// Faces along one axis (`along` 1: cylindrical, varying z; 0: square, varying r): the longest
+/// runs of consecutive polyline points whose other coordinate stays within `tolerance` of the
+/// run's first, at least `minSize` long; placed at that coordinate's mean over the run.
 std::vector<Face> facesAlong(const std::vector<std::vector<RZ>>& polylines, int along, double tolerance, double minSize) {
   const int across = 1 - along;
   std::vector<Face> faces;
   for (const auto& line : polylines)
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-      const RZ& a = line[i];
-      const RZ& b = line[i + 1];
-      if (std::abs(a[across] - b[across]) > tolerance || std::abs(a[along] - b[along]) < minSize) continue;
-      faces.push_back({0.5 * (a[across] + b[across]), std::min(a[along], b[along]), std::max(a[along], b[along])});
+    for (std::size_t i = 0; i + 1 < line.size();) {
+      std::size_t j = i;
+      double sum = line[i][across], low = line[i][along], high = low;
+      while (j + 1 < line.size() && std::abs(line[j + 1][across] - line[i][across]) <= tolerance) {
+        ++j;
+        sum += line[j][across];
+        low = std::min(low, line[j][along]), high = std::max(high, line[j][along]);
+      }
+      if (j > i && high - low >= minSize) faces.push_back({sum / static_cast<double>(j - i + 1), low, high});
+      i = std::max(j, i + 1);
     }
   std::sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) { return x.size() > y.size(); });
   return faces;

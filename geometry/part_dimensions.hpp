@@ -26,14 +26,15 @@ struct PartDimensions {
 };
 
 struct DimensionRules {
-  double flatToleranceMm = 0.05;  // a face is cylindrical (flat) if its ends differ by no more
+  double flatToleranceMm = 0.01;  // a run of surface points this close to its first point's r (or z) is a face
   double minFaceMm = 1.0;         // faces shorter than this are not dimensioned
   int maxDiameters = 4;
   int maxLengths = 4;             // the overall length included
 };
 
 /// The main dimensions of the part whose section `profile` is, read on `polylines` (its
-/// surface joined and thinned: profilePolylines). Diameters: the longest cylindrical faces,
+/// surface joined, not thinned: chainSegments; a section's surface points lie on the true
+/// surface, so those of a flat face agree to far below a voxel). Diameters: the longest cylindrical faces,
 /// one per distinct diameter; lengths: from the right-hand end face to the largest shoulders
 /// (faces square to the axis), and the overall length from the leftmost to the rightmost
 /// point. Nothing for an empty profile.

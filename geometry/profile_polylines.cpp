@@ -62,11 +62,17 @@ std::vector<std::vector<RZ>> chainSegments(const std::vector<Segment>& segments,
   auto key = [&](const RZ& p) { return EndKey{std::llround(p.x() * scale), std::llround(p.y() * scale)}; };
   std::unordered_map<EndKey, std::vector<std::size_t>, EndKeyHash> ends;  // key → 2·segment + end
   ends.reserve(2 * segments.size());
+  // A segment whose ends weld together is no segment (marching squares makes one where a
+  // sample lies exactly on the surface): it is left out, and its ends are one point.
+  std::vector<bool> used(segments.size(), false);
   for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (key(segments[s].a) == key(segments[s].b)) {
+      used[s] = true;
+      continue;
+    }
     ends[key(segments[s].a)].push_back(2 * s);
     ends[key(segments[s].b)].push_back(2 * s + 1);
   }
-  std::vector<bool> used(segments.size(), false);
   auto endPoint = [&](std::size_t end) { return end % 2 ? segments[end / 2].b : segments[end / 2].a; };
   // From `end`'s point, walk on through the other end of each unused segment met there.
   auto walk = [&](std::size_t end, std::vector<RZ>& line) {
@@ -89,6 +95,8 @@ std::vector<std::vector<RZ>> chainSegments(const std::vector<Segment>& segments,
     walk(end, back);  // the other way, when `end` was not a chain's end
     std::reverse(back.begin(), back.end());
     back.insert(back.end(), line.begin(), line.end());
+    // A loop ends where it began: exactly, so that it reads as closed.
+    if (back.size() > 2 && key(back.front()) == key(back.back())) back.back() = back.front();
     lines.push_back(std::move(back));
   };
   // Open chains first, from their ends, so that none is cut in two; then the loops.

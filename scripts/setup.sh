@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lathesim needs (scripts/packages.txt) and builds it in
 # build/ (Release). Safe to run again: installs only what is missing, rebuilds only what
-# changed.
+# changed. The build runs `npm ci` (viewer/package-lock.json, into build/viewer/) for the
+# three.js viewer report.html carries: Node.js and npm come with the machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,6 +18,7 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+command -v npm >/dev/null || { echo "setup: npm (Node.js) is needed to build report.html's 3D viewer" >&2; exit 1; }
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --parallel "$(nproc)"
 echo "setup: built build/lathesim"

@@ -67,8 +67,8 @@ TEST(CheckSeed001, CorrectTaperPassesAtTwoVoxels) {
   // The same output files as `run`, and the two deviation pictures.
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(dir.path() / "out")) names.insert(entry.path().filename().string());
-  const std::set<std::string> expected{"part.stl",  "part.png",    "toolpath.csv",  "toolpath.vtp",
-                                       "stock.vdb", "report.json", "deviation.png", "section.png"};
+  const std::set<std::string> expected{"part.stl",  "part.png",    "toolpath.csv",  "toolpath.vtp", "stock.vdb",
+                                       "report.json", "report.html", "deviation.png", "section.png"};
   EXPECT_EQ(names, expected);
 }
 

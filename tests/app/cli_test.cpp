@@ -105,11 +105,11 @@ TempDir* RunSeed001::dir_ = nullptr;
 fs::path RunSeed001::out_;
 Outcome* RunSeed001::outcome_ = nullptr;
 
-TEST_F(RunSeed001, WritesExactlyTheSixOutputs) {
+TEST_F(RunSeed001, WritesExactlyTheSevenOutputs) {
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(out_)) names.insert(entry.path().filename().string());
   const std::set<std::string> expected{"part.stl", "part.png", "toolpath.csv", "toolpath.vtp", "stock.vdb",
-                                       "report.json"};
+                                       "report.json", "report.html"};
   EXPECT_EQ(names, expected);  // no staged .tmp-* file left behind
   for (const auto& name : expected) EXPECT_GT(fs::file_size(out_ / name), 0u) << name;
 }
