@@ -43,7 +43,7 @@ struct RunOptions {
   std::optional<std::filesystem::path> setup;
   std::filesystem::path out = "out";
   std::optional<double> voxelMm;
-  std::optional<interp::Dialect> dialect;  // overrides [machine] dialect
+  job::SetupOverrides overrides;  // --dialect, --control, --block-skip
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
   std::vector<std::filesystem::path> programDirectories;  // --programs
   std::optional<std::string> stock;  // --stock D40xL80 (job/stock_option.hpp)

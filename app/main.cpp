@@ -7,6 +7,7 @@
 #include "app/batch_cli.hpp"
 #include "app/commands.hpp"
 #include "app/picture_cli.hpp"
+#include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 
 int main(int argc, char** argv) {
@@ -55,18 +56,33 @@ int main(int argc, char** argv) {
   lathesim::app::addPictureOptions(*runCmd, run);
   lathesim::app::addPictureOptions(*checkCmd, check.run);
 
-  std::string runDialect, expandDialect;
+  // --dialect, --control and --block-skip on every command that reads a program.
+  struct OverrideArguments {
+    std::string dialect, control, blockSkip;
+  };
+  OverrideArguments runArgs, checkArgs, expandArgs;
   std::vector<std::string> dialects;
   for (auto dialect : lathesim::interp::kDialects) dialects.emplace_back(lathesim::interp::dialectName(dialect));
-  runCmd->add_option("--dialect", runDialect, "G-code dialect (overrides [machine] dialect)")->check(CLI::IsMember(dialects));
-  expandCmd->add_option("--dialect", expandDialect, "G-code dialect (overrides [machine] dialect)")
-      ->check(CLI::IsMember(dialects));
+  std::vector<std::string> presets;
+  for (auto preset : lathesim::interp::controlPresets()) presets.emplace_back(preset);
+  for (auto [command, args] : {std::pair{runCmd, &runArgs}, {checkCmd, &checkArgs}, {expandCmd, &expandArgs}}) {
+    command->add_option("--dialect", args->dialect, "how the program writes its codes (overrides [machine] dialect)")
+        ->check(CLI::IsMember(dialects));
+    command->add_option("--control", args->control, "the control preset (overrides [control] name)")
+        ->check(CLI::IsMember(presets));
+    command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
+        ->check(CLI::IsMember({"on", "off"}));
+  }
 
   lathesim::app::BatchCli batch(cli);
 
   CLI11_PARSE(cli, argc, argv);
-  const auto optionalDialect = [](const std::string& s) {
-    return s.empty() ? std::nullopt : lathesim::interp::dialectNamed(s);
+  const auto overridesOf = [](const OverrideArguments& args) {
+    lathesim::job::SetupOverrides overrides;
+    if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
+    if (!args.control.empty()) overrides.controlPreset = args.control;
+    if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
+    return overrides;
   };
   const auto optionalPath = [](const std::string& s) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
@@ -75,7 +91,7 @@ int main(int argc, char** argv) {
     if (batch.chosen()) return batch.run();
     if (*runCmd) {
       run.setup = optionalPath(runSetup);
-      run.dialect = optionalDialect(runDialect);
+      run.overrides = overridesOf(runArgs);
       return lathesim::app::runCommand(run);
     }
     if (*checkCmd) {
@@ -84,10 +100,11 @@ int main(int argc, char** argv) {
         return 1;
       }
       check.run.setup = optionalPath(checkSetup);
+      check.run.overrides = overridesOf(checkArgs);
       return lathesim::app::checkCommand(check);
     }
     expand.setup = optionalPath(expandSetup);
-    expand.dialect = optionalDialect(expandDialect);
+    expand.overrides = overridesOf(expandArgs);
     return lathesim::app::expandCommand(lathesim::app::jobRequestOf(expand));
   } catch (const std::exception& e) {  // I/O failures and broken invariants
     std::cerr << "lathesim: error: " << e.what() << '\n';

@@ -6,16 +6,43 @@
 
 namespace lathesim::app {
 
+namespace {
+
+nlohmann::ordered_json valueJson(const interp::ParameterValue& value) {
+  if (const auto* name = std::get_if<std::string>(&value)) return *name;
+  if (const auto* number = std::get_if<double>(&value)) return *number;
+  return std::get<std::vector<std::string>>(value);
+}
+
+nlohmann::ordered_json controlJson(const interp::Control& control) {
+  nlohmann::ordered_json parameters;
+  for (const auto& s : control.settings)
+    parameters[s.key] = {{"value", valueJson(s.value)}, {"manual", s.manual}, {"verified", s.verified}, {"set_by", s.source}};
+  return {{"preset", control.preset}, {"parameters", parameters}};
+}
+
+}  // namespace
+
 nlohmann::ordered_json reportJson(const RunFigures& f) {
   nlohmann::ordered_json report;
   report["program"] = f.program;
   report["setup"] = f.setup;
+  report["control"] = controlJson(f.control);
+  const auto source = [](bool derived, const char* key) {
+    return derived ? std::string("derived from [machine] reference and start and the bar") : "[machine] " + std::string(key);
+  };
+  report["travel"] = {{"x_diameter_mm", {f.travel.xMinDiameterMm, f.travel.xMaxDiameterMm}},
+                      {"z_mm", {f.travel.zMinMm, f.travel.zMaxMm}},
+                      {"x_from", source(f.travel.xDerived, "travel_x")},
+                      {"z_from", source(f.travel.zDerived, "travel_z")}};
   report["voxel_mm"] = f.voxelMm;
   if (f.atLine) report["at_line"] = *f.atLine;
   report["stock_volume_mm3"] = f.stockVolumeMm3;
   report["final_volume_mm3"] = f.finalVolumeMm3;
   report["removed_volume_mm3"] = f.stockVolumeMm3 - f.finalVolumeMm3;
   report["mesh_volume_mm3"] = f.meshVolumeMm3;
+  report["volume_tolerance_mm3"] = f.volumeToleranceMm3;
+  report["mesh_crumbs"] = {{"count", f.meshCrumbs.count}, {"volume_mm3", f.meshCrumbs.volumeMm3}};
   report["mesh_triangles"] = f.meshTriangles;
   report["moves"] = f.moves;
   report["cycle_time_s"] = f.cycleTimeS;
@@ -25,6 +52,8 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   auto& blocks = report["blocks"] = nlohmann::ordered_json::array();
   for (const auto& b : f.simulation.blocks)
     blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}});
+  auto& stops = report["stops"] = nlohmann::ordered_json::array();
+  for (const auto& s : f.stops) stops.push_back({{"line", s.line}, {"column", s.column}, {"code", s.code}});
   auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
   for (const auto& w : f.warnings) warnings.push_back({{"line", w.line}, {"column", w.column}, {"message", w.message}});
   auto& notes = report["notes"] = nlohmann::ordered_json::array();

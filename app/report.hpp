@@ -6,6 +6,9 @@
 #include <optional>
 #include <string>
 
+#include "geometry/mesh_shells.hpp"
+#include "interp/control/control_preset.hpp"
+#include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
 #include "interp/move.hpp"
 #include "sim/simulate.hpp"
@@ -20,16 +23,21 @@ struct RunTimings {
 struct RunFigures {
   std::string program;
   std::string setup;
+  interp::Control control;  // the preset and every parameter in force
+  interp::TravelLimits travel;  // the machine's travel the moves were checked against
   double voxelMm = 0;
   std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
   double finalVolumeMm3 = 0;  // measured on the level set after the program
   double meshVolumeMm3 = 0;   // the exported mesh's enclosed volume, as a cross-check
+  double volumeToleranceMm3 = 0;  // how far the part's volumes may stray (sim::volumeToleranceMm3)
+  DroppedCrumbs meshCrumbs;       // sub-voxel shells left out of the exported mesh
   std::size_t meshTriangles = 0;
   std::size_t moves = 0;
   double cycleTimeS = 0;  // the machine time of all moves (interp/motion/cycle_time.hpp)
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
   sim::SimulationResult simulation;
+  std::vector<interp::ProgramStop> stops;  // M00/M01 reached: listed, not timed
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;
   RunTimings timing;

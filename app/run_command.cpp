@@ -20,7 +20,7 @@ int runCommand(const RunOptions& options) {
   run->progress->stage("done");
   run->progress->finish();
 
-  std::cout << figures.program << ": " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
+  std::cout << figures.program << " (control " << figures.control.preset << "): " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
             << options.out.string() << "/\n";
@@ -30,7 +30,7 @@ int runCommand(const RunOptions& options) {
 }
 
 job::JobRequest jobRequestOf(const RunOptions& options) {
-  return {options.program, options.setup, options.dialect, options.programDirectories, options.stock};
+  return {options.program, options.setup, options.overrides, options.programDirectories, options.stock};
 }
 
 int expandCommand(const job::JobRequest& request) {

@@ -11,6 +11,7 @@
 #include "app/cut_recording.hpp"
 #include "app/part_pictures.hpp"
 #include "job/collision_checks.hpp"
+#include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "render/mesh_files.hpp"
@@ -28,6 +29,13 @@ void writeBytes(const std::string& bytes, const std::filesystem::path& file) {
   out.close();
   if (!out) throw std::runtime_error("cannot write " + file.string());
 }
+
+// A warning for the report, also printed on stderr; line 0 when it concerns the whole run.
+void warn(SimulatedRun& run, int line, int column, const std::string& message) {
+  run.figures.warnings.push_back(run.job.warningAt(line, column, message));
+  std::cerr << interp::format(run.figures.warnings.back()) << '\n';
+}
+void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, message); }
 
 }  // namespace
 
@@ -54,15 +62,19 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   }
   figures.program = options.program.string();
   figures.setup = setup.sourceName;
+  figures.control = setup.control;
+  figures.travel = job::travelOf(setup);
   figures.voxelMm = voxel;
   figures.moves = run.job.toolpath.moves.size();
   figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
   figures.warnings = run.job.warnings;
   figures.notes = run.job.notes;
+  figures.stops = run.job.toolpath.stops;
 
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
+  if (auto problem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
   std::unique_ptr<CutRecording> recording;
   if (options.animation.mp4 && out)
@@ -77,19 +89,23 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
   figures.timing.simulateS = clock.lap() - figures.timing.animateS;
-  for (const auto& w : figures.simulation.warnings) {
-    figures.warnings.push_back(run.job.warningAt(w.line, w.column, w.message));
-    std::cerr << interp::format(figures.warnings.back()) << '\n';
-  }
+  for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
   return run;
 }
 
 void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.progress->stage("meshing");
+  RunFigures& figures = run.figures;
   run.part = run.stock->mesh(kExportAdaptivity);
-  run.figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
-  run.figures.meshTriangles = run.part.triangles.size();
-  run.figures.timing.meshS = clock.lap();
+  // The level set's volume is checked against the whole mesh; crumbs thinner than a voxel
+  // are then left out of the STL, and what they held is reported.
+  if (auto problem = measure::meshVolumeProblem(figures.finalVolumeMm3, run.part, figures.voxelMm)) warn(run, *problem);
+  figures.meshCrumbs = dropCrumbs(run.part, figures.voxelMm);
+  if (auto problem = measure::meshClosureProblem(run.part)) warn(run, *problem);
+  figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
+  figures.volumeToleranceMm3 = sim::volumeToleranceMm3(surfaceAreaMm2(run.part), figures.voxelMm);
+  figures.meshTriangles = run.part.triangles.size();
+  figures.timing.meshS = clock.lap();
 }
 
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock) {

@@ -3,6 +3,7 @@
 // VTK), so neither library leaks into the other.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,8 +21,20 @@ struct TriangleMesh {
 /// oriented mesh, and positive when the normals point outwards.
 double enclosedVolumeMm3(const TriangleMesh& mesh);
 
+/// Surface area (mm²).
+double surfaceAreaMm2(const TriangleMesh& mesh);
+
 /// True when every edge is shared by exactly two triangles that traverse it in opposite
-/// directions: the mesh is closed and consistently oriented.
+/// directions: the mesh is closed, manifold along its edges and consistently oriented.
 bool isClosedAndOriented(const TriangleMesh& mesh);
+
+/// Makes vertices at the same position one vertex, as a reader of an STL file (which
+/// stores each triangle's corners, not shared vertices) does. After it, isClosedAndOriented
+/// tells whether the STL written from the mesh is closed and manifold (a triangle with two
+/// corners at one point is not).
+void weldCoincidentVertices(TriangleMesh& mesh);
+
+/// Drops the triangles with two corners at one vertex (no area); returns how many.
+std::size_t dropCollapsedTriangles(TriangleMesh& mesh);
 
 }  // namespace lathesim

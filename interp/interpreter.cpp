@@ -8,12 +8,15 @@
 
 #include "interp/execution/block_executor.hpp"
 #include "interp/execution/call_stack.hpp"
-#include "interp/motion/feed_warnings.hpp"
 #include "interp/execution/modal_state.hpp"
 #include "interp/compensation/nose_compensation.hpp"
+#include "interp/motion/corners.hpp"
+#include "interp/motion/rapid_path.hpp"
+#include "interp/motion/travel_limits.hpp"
 #include "interp/text/control_family.hpp"
 #include "interp/text/program.hpp"
 #include "interp/text/program_library.hpp"
+#include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -30,7 +33,7 @@ Status loadSubprogram(Program& program, const SubprogramCall& call, const Progra
                       const InterpreterOptions& options) {
   if (program.programStart.count(call.programNumber) != 0) return success();
   if (const auto file = findProgramFile(call.programNumber, options.programDirectories)) {
-    appendProgramFile(program, file->path.string(), file->text, call.programNumber, options.blockDelete,
+    appendProgramFile(program, file->path.string(), file->text, call.programNumber, options.control.blockSkip,
                       options.dialect);
     return success();
   }
@@ -56,9 +59,11 @@ Status runProgram(Program& program, const InterpreterOptions& options, Toolpath&
   ModalState state;
   state.frame.offsets = options.workOffsets;
   state.position = options.startPosition - state.frame.shift();
-  state.feedMode = options.initialFeedMode;
+  state.feedMode = options.control.powerOnFeedMode;
+  state.compound = CompoundCycleParams::of(options.control);
   if (!options.toolNumbers.empty()) state.tool = options.toolNumbers.front();
 
+  if (program.textAfterEnd) warnings.push_back(*program.textAfterEnd);
   CallStack calls(program);
   std::size_t next = 0;
   while (!state.ended && next < program.blocks.size()) {
@@ -84,8 +89,15 @@ Status runProgram(Program& program, const InterpreterOptions& options, Toolpath&
       auto target = calls.call(*flow.call, index);
       if (!target.ok()) return inFile(target.error(), program, block);
       next = target.value();
-    } else if (flow.returnColumn) {
-      auto target = calls.giveBack(*flow.returnColumn, index);
+    } else if (flow.giveBack && !calls.inSubprogram()) {
+      // M99 in the main program: the control starts it over, forever; it is simulated once.
+      warnings.push_back(inFile({block.line, flow.giveBack->column,
+                                 "M99 ends the main program: the control runs it again from the start, "
+                                 "forever; lathesim simulates it once"},
+                                program, block));
+      done.state.ended = true;
+    } else if (flow.giveBack) {
+      auto target = calls.giveBack(*flow.giveBack, index);
       if (!target.ok()) return inFile(target.error(), program, block);
       next = target.value();
     } else if (flow.continueAfter) {
@@ -94,11 +106,18 @@ Status runProgram(Program& program, const InterpreterOptions& options, Toolpath&
     state = std::move(done.state);
     toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
     toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
+    if (const auto stop = block.parsed.value().mCode(MGroup::Stop)) {
+      const bool own = block.source == 0 || !calls.outermostCall();
+      const ProgramBlock& at = own ? block : program.blocks[*calls.outermostCall()];
+      toolpath.stops.push_back({at.line, own ? stop->column : at.column, stop->text});
+    }
     for (const Error& warning : done.warnings) warnings.push_back(inFile(warning, program, block));
   }
   if (!state.ended) {
     if (auto error = calls.unfinished()) return *error;
   }
+  if (auto mixed = state.lengthWriting.mixedWarning(NumberReading::of(options.control, state.inch)))
+    warnings.push_back(*mixed);
   return success();
 }
 
@@ -137,15 +156,20 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
   std::vector<Error> notes;
-  Program program = readProgram(programText, options.blockDelete, options.dialect);
+  Program program = readProgram(programText, options.control.blockSkip, options.dialect);
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
   if (status.ok()) status = runProgram(program, options, result.toolpath, warnings);
-  // The moves are made as programmed, in the work coordinate systems; placed in the setup's
-  // frame, then G41/G42 and the tool offsets' shifts are applied.
-  if (status.ok()) placeInSetupFrame(result.toolpath.moves);
-  if (status.ok()) status = compensateNoseRadius(result.toolpath.moves);
-  if (status.ok()) status = applyToolOffsets(result.toolpath.moves);
+  // The moves are made as programmed, in the work coordinate systems (G54–G59, G50); placed in
+  // the setup's frame, then G41/G42 and the tool offsets' shifts are applied, each rapid is
+  // given the path the machine makes, and the whole checked against the machine's travel.
+  std::vector<Move>& moves = result.toolpath.moves;
+  if (status.ok()) status = insertCorners(moves, warnings);
+  if (status.ok()) placeInSetupFrame(moves);
+  if (status.ok()) status = compensateNoseRadius(moves);
+  if (status.ok()) status = applyToolOffsets(moves);
+  if (status.ok() && options.control.rapidPath == RapidPath::NonLinear) splitRapidsIntoAxisLegs(moves, options.machine);
+  if (status.ok() && options.machine.travel) status = checkTravel(moves, *options.machine.travel);
   // A diagnostic in the file it names: the program's own, or a subprogram's.
   const auto diagnostic = [&](Severity severity, const Error& e) {
     std::string_view text = programText;
@@ -158,7 +182,6 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
     result.diagnostics.push_back(diagnostic(Severity::Error, status.error()));
     return result;
   }
-  for (Error& warning : implausibleFeedWarnings(result.toolpath)) warnings.push_back(std::move(warning));
   std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
     return a.line != b.line ? a.line < b.line : a.column < b.column;
   });

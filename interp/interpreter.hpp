@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "interp/diagnostic.hpp"
+#include "interp/control/control_parameters.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
@@ -23,9 +24,9 @@ struct InterpreterOptions {
                                    // T word. A T word naming another number is an error.
   std::function<std::string(int tool)> toolDefinitionHint;  // how to define a missing tool (the
                                                             // setup's TOML), for that error
-  bool blockDelete = true;         // '/' blocks are skipped when true
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes
-  FeedMode initialFeedMode = FeedMode::PerRevolution;  // G98/G99 before the program sets one
+  ControlParameters control;          // how the control reads and runs it (control_preset.hpp);
+                                      // gsk980tdi's parameters by default
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)

@@ -27,6 +27,16 @@ struct NoseComp {
   bool operator==(const NoseComp&) const = default;
 };
 
+/// A chamfer or corner radius a move asks for at its end, before the next move (GSK L / D,
+/// Fanuc ,C / ,R; interp/motion/corners.hpp inserts it).
+struct CornerRequest {
+  bool round = false;          // a corner radius; else a chamfer
+  double sizeMm = 0;           // the radius, or the chamfer's size
+  bool chamferLength = false;  // the chamfer's own length (GSK L, No.181#0 = 0), else from the corner
+  std::string word;            // as written, for messages
+  int column = 0;
+};
+
 struct Move {
   MoveKind kind = MoveKind::Rapid;
   RZ from{0, 0};  // (radius mm, Z mm) — halved from the programmed diameter
@@ -38,13 +48,15 @@ struct Move {
   int tool = 0;        // the tool number mounted (T0101 → 1)
   int toolOffset = 0;  // the offset number in force (T0101 → 1)
   RZ offsetShift{0, 0};  // where that offset moves the tip from the programmed point (radius, Z)
-  RZ workShift{0, 0};    // where program zero lies in the setup's frame (G54–G59, G10 L2)
+  RZ workShift{0, 0};    // where program zero lies in the setup's frame (G54–G59, G10 L2, G50):
+                         // the program's own coordinates are the move's minus this
   NoseComp noseComp;   // G41/G42 in force as programmed; the toolpath's moves are already
                        // compensated (from/to/center are the imaginary tip's path)
   bool spindleOn = false;
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
   std::optional<double> spindleLimitRpm;  // G50 S, in force under G96
+  std::optional<CornerRequest> cornerAfter;  // a chamfer or corner radius to the next move
   double timeS = 0;   // how long the move takes on the machine (see interp/motion/cycle_time.hpp)
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
   int line = 0;       // 1-based source line of that block
@@ -63,12 +75,21 @@ struct CycleStart {
   std::string code;  // "G90", "G94", …
 };
 
+/// Where the program reached M00 (program stop) or M01 (optional stop): the machine waits for
+/// the operator there, so a stop is listed, not timed.
+struct ProgramStop {
+  int line = 0;
+  int column = 0;    // of the M code
+  std::string code;  // "M00" or "M01"
+};
+
 struct Toolpath {
   std::string programName;  // the file name as given
   RZ startPosition{0, 0};   // where the tool stood before the first move
   std::vector<Move> moves;
   int blockCount = 0;       // blocks read, including those that made no move
   std::vector<CycleStart> cycleStarts;  // every cycle block run, in program order
+  std::vector<ProgramStop> stops;       // every M00/M01 reached, in program order
 };
 
 inline bool isArc(MoveKind kind) { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }

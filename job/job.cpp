@@ -7,12 +7,14 @@
 
 #include <fmt/format.h>
 
+#include "interp/control/tool_word.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/text/stated_stock.hpp"
 #include "interp/text/program.hpp"
 #include "job/comment_tools.hpp"
 #include "job/stock_option.hpp"
 #include "interp/interpreter.hpp"
+#include "job/control_setup.hpp"
 
 namespace lathesim::job {
 namespace {
@@ -37,13 +39,16 @@ std::string toolDefinitionHint(int number) {
 
 // T words no setup defines, mounted from what their blocks' comments name (comment_tools.hpp).
 void mountToolsNamedInComments(Job& job, const std::string& programName) {
-  const interp::Program program = interp::readProgram(job.programText, true, job.setup.dialect);
+  const interp::Program program = interp::readProgram(job.programText, job.setup.control.parameters.blockSkip,
+                                                      job.setup.dialect);
   Setup& setup = job.setup;
   std::vector<int> mounted;
   for (const interp::ProgramBlock& block : program.blocks) {
     if (block.skipped || !block.parsed.ok() || !block.parsed.value().has('T')) continue;
     const interp::Word t = block.parsed.value().words.at('T');
-    const int number = static_cast<int>(t.value) / 100;
+    const auto read = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line);
+    if (!read.ok() || read.value().tool == 0) continue;  // the interpreter reports a bad T word
+    const int number = read.value().tool;
     const bool defined = std::any_of(setup.tools.begin(), setup.tools.end(), [&](const ToolDefinition& tool) {
       return tool.number == number && (setup.toolsGiven || number != 1);
     });
@@ -74,8 +79,9 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.startPosition = setup.startPosition;
   options.referencePosition = setup.referencePosition;
   options.machine = setup.machine;
+  options.machine.travel = travelOf(setup);
   options.dialect = setup.dialect;
-  options.initialFeedMode = setup.initialFeedMode;
+  options.control = setup.control.parameters;
   options.offsets = setup.offsets;
   options.workOffsets = setup.workOffsets;
   options.machineZero = setup.machineZero;
@@ -88,10 +94,27 @@ interp::Diagnostic Job::warningAt(int line, int column, std::string message) con
           interp::lineOf(programText, line)};
 }
 
+std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
+  if (overrides.dialect) setup.dialect = *overrides.dialect;
+  if (overrides.controlPreset) {
+    std::optional<interp::Control> chosen = withPreset(setup.control, *overrides.controlPreset);
+    if (!chosen) {
+      std::string names;
+      for (std::string_view n : interp::controlPresets()) names += (names.empty() ? "" : ", ") + std::string(n);
+      std::cerr << "lathesim: error: --control " << *overrides.controlPreset << ": no such control preset (expected "
+                << names << ")\n";
+      return std::nullopt;
+    }
+    setup.control = std::move(*chosen);
+  }
+  if (overrides.blockSkip)
+    (void)setup.control.set("block_skip", std::string(*overrides.blockSkip ? "on" : "off"), "command line");
+  return setup;
+}
+
 std::optional<Job> loadJob(const JobRequest& request) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
-  const std::optional<interp::Dialect>& dialect = request.dialect;
   Job job{defaultSetup(), {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
@@ -101,7 +124,9 @@ std::optional<Job> loadJob(const JobRequest& request) {
     job.warnings = std::move(loaded.diagnostics);  // what is left are warnings (e.g. an insert that
                                                    // does not match its holder's seat)
   }
-  if (dialect) job.setup.dialect = *dialect;
+  std::optional<Setup> setup = overridden(std::move(job.setup), request.overrides);
+  if (!setup) return std::nullopt;
+  job.setup = std::move(*setup);
 
   std::ifstream in(program, std::ios::binary);
   if (!in) {

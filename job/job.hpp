@@ -28,11 +28,22 @@ struct Job {
 /// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.
 interp::InterpreterOptions interpreterOptionsOf(const Setup& setup);
 
+/// What the command line overrides in the setup.
+struct SetupOverrides {
+  std::optional<interp::Dialect> dialect;    // --dialect: [machine] dialect
+  std::optional<std::string> controlPreset;  // --control: the preset; the setup's [control] keys still apply
+  std::optional<bool> blockSkip;             // --block-skip on|off: control.block_skip
+};
+
+/// The setup with the command line's overrides; nullopt (the problem printed) for an unknown
+/// preset.
+std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides);
+
 /// What a command names: the program, and what the command line says of the setup.
 struct JobRequest {
   std::filesystem::path program;
   std::optional<std::filesystem::path> setup;
-  std::optional<interp::Dialect> dialect;  // --dialect: overrides [machine] dialect
+  SetupOverrides overrides;  // --dialect, --control, --block-skip
   std::vector<std::filesystem::path> programDirectories;  // --programs: subprograms the program
                                                           // lacks, looked for before its own directory
   std::optional<std::string> stock;  // --stock D40xL80: the bar, over the setup's and the program's

@@ -9,6 +9,7 @@
 
 #include "job/tool_setup.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -21,6 +22,7 @@
 
 #include <toml++/toml.h>
 
+#include "job/control_setup.hpp"
 #include "job/offset_setup.hpp"
 
 namespace lathesim::job {
@@ -245,18 +247,44 @@ std::optional<std::size_t> choiceOf(const toml::node& node, const std::string& n
   return std::nullopt;
 }
 
+/// A travel range [min, max] in mm, min < max.
+std::optional<std::pair<double, double>> rangeOf(const toml::node& node, const std::string& name, Reporter& report) {
+  const auto* array = node.as_array();
+  std::optional<double> low, high;
+  if (array && array->size() == 2) {
+    low = numberOf(*array->get(0));
+    high = numberOf(*array->get(1));
+  }
+  if (!low || !high || !std::isfinite(*low) || !std::isfinite(*high) || !(*low < *high)) {
+    report.at(node.source(), name + " must be [min, max] in mm with min < max, got " + describe(node));
+    return std::nullopt;
+  }
+  return std::pair{*low, *high};
+}
+
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   rejectUnknownKeys(table, "machine.",
-                    {"start", "rapid", "max_rpm", "reference", "dialect", "initial_feed_mode", "zero"}, report);
+                    {"start", "rapid", "max_rpm", "reference", "travel_x", "travel_z", "dialect", "initial_feed_mode",
+                     "zero"},
+                    report);
+  if (const auto* node = table.get("travel_x")) setup.travelXDiameterMm = rangeOf(*node, "machine.travel_x", report);
+  if (const auto* node = table.get("travel_z")) setup.travelZMm = rangeOf(*node, "machine.travel_z", report);
   if (const auto* node = table.get("dialect")) {
     using interp::kDialects, interp::dialectName;
     if (auto i = choiceOf(*node, "machine.dialect",
                           {dialectName(kDialects[0]), dialectName(kDialects[1]), dialectName(kDialects[2])}, report))
       setup.dialect = kDialects[*i];
   }
-  if (const auto* node = table.get("initial_feed_mode"))
-    if (auto i = choiceOf(*node, "machine.initial_feed_mode", {"per_revolution", "per_minute"}, report))
-      setup.initialFeedMode = *i == 0 ? interp::FeedMode::PerRevolution : interp::FeedMode::PerMinute;
+  // The older spelling of control.power_on_feed_mode.
+  if (const auto* node = table.get("initial_feed_mode")) {
+    const auto given = std::find_if(setup.control.settings.begin(), setup.control.settings.end(),
+                                    [](const interp::ControlSetting& s) { return s.key == "power_on_feed_mode"; });
+    if (given != setup.control.settings.end() && given->source != "preset")
+      report.at(node->source(), "machine.initial_feed_mode and control.power_on_feed_mode both set the feed mode at "
+                                "power-on; give control.power_on_feed_mode alone");
+    else if (auto i = choiceOf(*node, "machine.initial_feed_mode", {"per_revolution", "per_minute"}, report))
+      (void)setup.control.set("power_on_feed_mode", std::string(*i == 0 ? "G99" : "G98"), "setup");
+  }
   if (const auto* node = table.get("start"))
     if (auto p = positionOf(*node, "machine.start", report)) setup.startPosition = *p;
   setup.referencePosition = setup.startPosition;
@@ -386,8 +414,25 @@ Setup defaultSetup() {
   setup.startPosition = RZ(100.0, 200.0);  // X200 (diameter) Z200
   setup.referencePosition = setup.startPosition;
   setup.voxelMm = std::nullopt;
+  setup.control = *interp::controlPreset(interp::kDefaultControlPreset);
   setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0});
   return setup;
+}
+
+interp::TravelLimits travelOf(const Setup& setup) {
+  interp::TravelLimits travel;
+  const double barLeftZ = setup.stock.faceZMm - setup.stock.lengthMm;
+  const auto [xMin, xMax] = setup.travelXDiameterMm.value_or(std::pair{
+      -setup.stock.diameterMm, 2.0 * std::max(setup.referencePosition.x(), setup.startPosition.x())});
+  const auto [zMin, zMax] = setup.travelZMm.value_or(std::pair{
+      barLeftZ - setup.stock.lengthMm, std::max(setup.referencePosition.y(), setup.startPosition.y())});
+  travel.xMinDiameterMm = xMin;
+  travel.xMaxDiameterMm = xMax;
+  travel.zMinMm = zMin;
+  travel.zMaxMm = zMax;
+  travel.xDerived = !setup.travelXDiameterMm;
+  travel.zDerived = !setup.travelZMm;
+  return travel;
 }
 
 SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
@@ -402,7 +447,15 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "sim", "tool", "chuck", "offset", "work_offset"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "control", "sim", "tool", "chuck", "offset", "work_offset"}, report);
+  // [control] before [machine]: its preset is what machine.initial_feed_mode modifies.
+  if (const auto* node = root.get("control")) {
+    if (const auto* table = tableAt(*node, "control", report)) {
+      readControl(*table, setup.control, [&report](const toml::source_region& where, std::string message) {
+        report.at(where, std::move(message));
+      });
+    }
+  }
   if (const auto* node = root.get("stock")) {
     setup.stockGiven = true;
     if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);

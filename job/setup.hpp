@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/diagnostic.hpp"
+#include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
 #include "interp/move.hpp"
@@ -33,11 +35,12 @@ struct Setup {
   bool stockGiven = false;  // the file has [stock]: a bar the program states is not used
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
   RZ referencePosition{100.0, 200.0};  // G28's reference point (radius, Z); the start if not given
-  interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm
-  interp::Dialect dialect = interp::Dialect::FanucA;  // [machine] dialect
-  // [machine] initial_feed_mode: the G98/G99 state before the program sets one. Fanuc lathes
-  // power on in G99 (mm/rev); a GSK980TDi in G98 (mm/min).
-  interp::FeedMode initialFeedMode = interp::FeedMode::PerRevolution;
+  interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm (travel: travelOf)
+  std::optional<std::pair<double, double>> travelXDiameterMm;  // [machine] travel_x = [min, max], diameters
+  std::optional<std::pair<double, double>> travelZMm;          // [machine] travel_z = [min, max]
+  interp::Dialect dialect = interp::Dialect::FanucA;  // [machine] dialect: how codes are written
+  interp::Control control;  // [control]: the preset and its parameters, how the machine behaves
+                            // ([machine] initial_feed_mode is control.power_on_feed_mode)
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
@@ -59,6 +62,13 @@ struct SetupResult {
 /// The default: the seed's Φ125×112 bar with its face at Z2, the tool starting clear of it
 /// at X200 Z200, and one 80° rhombic-like sharp turning tool numbered 1.
 Setup defaultSetup();
+
+/// The machine's travel: what [machine] travel_x / travel_z state, and for an axis they leave
+/// out, derived: X from minus the bar's diameter (the tool may pass the axis) to the reference
+/// point's or the start's X, whichever is larger; Z from one bar length behind the bar's left
+/// end to the reference point's or the start's Z. The reference point is where a lathe's axes
+/// end; a setup whose machine travels further says so.
+interp::TravelLimits travelOf(const Setup& setup);
 
 SetupResult parseSetup(std::string_view tomlText, const std::string& fileName);
 SetupResult loadSetup(const std::filesystem::path& file);

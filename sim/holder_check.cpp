@@ -9,18 +9,6 @@
 namespace lathesim::sim {
 namespace {
 
-/// Adds a collision, or grows the last one when it is the same line and kind.
-void record(std::vector<Collision>& collisions, const interp::Move& move, const char* kind, double volumeMm3) {
-  if (!collisions.empty()) {
-    Collision& last = collisions.back();
-    if (last.line == move.line && last.column == move.column && last.kind == kind) {
-      last.volumeMm3 += volumeMm3;
-      return;
-    }
-  }
-  collisions.push_back({move.line, move.column, kind, volumeMm3});
-}
-
 /// The largest revolved volume one piece of a sweep has inside the chuck.
 double chuckVolume(const std::vector<ConvexPolygon>& chuck, const std::vector<ConvexPolygon>& swept) {
   double largest = 0.0;
@@ -54,14 +42,14 @@ void checkMoves(const CollisionChecks& checks, std::span<const interp::Move> mov
     if (holder != checks.holders.end()) holderSwept = sweptPieces(move, holder->second, h);
     if (!holderSwept.empty()) {
       const double inside = stock.materialInside(RevolvedRegion(holderSwept), h);
-      if (inside > kCollisionVoxels * h * h * h) record(collisions, move, "holder_into_stock", inside);
+      if (inside > kCollisionVoxels * h * h * h) recordCollision(collisions, move, "holder_into_stock", inside);
     }
     if (checks.chuck.empty()) continue;
     double chuck = 0.0;
     if (const auto cutter = checks.cutters.find(move.tool); cutter != checks.cutters.end())
       chuck = chuckVolume(checks.chuck, sweptPieces(move, cutter->second, h));
     chuck = std::max(chuck, chuckVolume(checks.chuck, holderSwept));
-    if (chuck > 0.0) record(collisions, move, "into_chuck", chuck);
+    if (chuck > 0.0) recordCollision(collisions, move, "into_chuck", chuck);
   }
 }
 

@@ -83,8 +83,8 @@ enum class Action {
   Update,   // an existing leaf the region's boundary passes through
   Densify,  // a tile the region's boundary passes through: becomes a leaf first
   Fill,     // a leaf or tile the region covers entirely: becomes one tile
-  FillSub,  // a 32³ sub-block the region covers entirely, when removing: each of its leaves
-            // and tiles that holds material becomes an air tile
+  FillSub,  // a 32³ sub-block the region covers entirely: each of its leaves and tiles
+            // not yet in the region's state becomes a tile in it
 };
 
 struct Task {
@@ -179,8 +179,8 @@ class RegionWriter {
         const float tile = accessor.getValue(block);
         if (!node && u(tile) <= -bg_) continue;  // already entirely in the region's state
         if (psi < -blockReach_) {
-          if (removing_) tasks.push_back({block, 2, Action::Fill, nullptr, 0.0f, node1InsideVoxels(node, tile)});
-          continue;  // when adding, interiors are flood-filled afterwards
+          tasks.push_back({block, 2, Action::Fill, nullptr, 0.0f, node1InsideVoxels(node, tile)});
+          continue;
         }
         classifyLeaves(block, box, accessor, tasks);
       }
@@ -201,12 +201,11 @@ class RegionWriter {
         for (int sz = block.z(); sz < block.z() + kNode1Dim; sz += kSub) {
           const Coord sub(sx, sy, sz);
           if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
-          // Wholly outside the region: nothing to do. Wholly inside: when adding, the flood
-          // fill sets its interior afterwards; when removing, one task fills its leaves,
-          // with no distance to take.
+          // Wholly outside the region: nothing to do. Wholly inside: one task fills its
+          // leaves, with no distance to take.
           const double psi = distanceAtCentre(sub, kSub, subReach + h_);
-          if (psi > subReach || (psi < -subReach && !removing_)) continue;
-          if (psi < -subReach) {  // removing: its 64 leaf slots are filled in restructure()
+          if (psi > subReach) continue;
+          if (psi < -subReach) {  // its 64 leaf slots are filled in restructure()
             tasks.push_back({sub, 1, Action::FillSub, nullptr, 0.0f, 0.0});
             continue;
           }
@@ -240,9 +239,8 @@ class RegionWriter {
           const Reach reach = std::abs(psi) < leafReach_ ? reachOfQuarters(local, origin) : psi > 0 ? Reach::None : Reach::Covers;
           if (reach == Reach::None) continue;
           if (reach == Reach::Covers) {
-            if (removing_)
-              tasks.push_back({origin, 1, Action::Fill, nullptr, 0.0f,
-                               leaf ? stock_.leafInsideVoxels(*leaf) : insideFraction(tile, h_) * Leaf::NUM_VOXELS});
+            tasks.push_back({origin, 1, Action::Fill, nullptr, 0.0f,
+                             leaf ? stock_.leafInsideVoxels(*leaf) : insideFraction(tile, h_) * Leaf::NUM_VOXELS});
             continue;
           }
           tasks.push_back({origin, 1, leaf ? Action::Update : Action::Densify, leaf, tile, 0.0});
@@ -357,9 +355,10 @@ class RegionWriter {
     return leaves;
   }
 
-  // The leaves and tiles of a covered 32³ sub-block that hold material become air tiles
-  // (within the candidate box, as classifyLeavesOf would have taken them); the leaves go
-  // to `spares`. Returns the material voxels lost.
+  // The leaves and tiles of a covered 32³ sub-block not yet in the region's state (material
+  // when removing, air when adding) become tiles in it (within the candidate box, as
+  // classifyLeavesOf would have taken them); the leaves go to `spares`. Returns the
+  // material voxels lost.
   double fillSubBlock(Node1& node, const Coord& sub, const openvdb::CoordBBox& box, std::vector<Leaf*>& spares) const {
     constexpr int kSub = 4 * kLeafDim;
     const double filledVoxels = insideFraction(filledValue(), h_) * Leaf::NUM_VOXELS;
@@ -375,7 +374,7 @@ class RegionWriter {
             continue;
           }
           const float tile = node.getTable()[Node1::coordToOffset(origin)].getValue();  // no leaf here: a tile
-          if (u(tile) <= -bg_) continue;  // already air
+          if (u(tile) <= -bg_) continue;  // already in the region's state
           lost += insideFraction(tile, h_) * Leaf::NUM_VOXELS - filledVoxels;
           node.addTile(1, origin, filledValue(), false);
         }
@@ -422,8 +421,12 @@ class RegionWriter {
   //    both sides and no sign change. They would count as partly full voxels (about half
   //    a voxel layer over the face) and, where rounding makes them negative, mesh as
   //    paper-thin walls. A ghost is a voxel that could count (−ε < φ < h/2) while none of
-  //    its 26 neighbours lies deeper (φ smaller by more than rounding): on a real surface
-  //    the neighbour towards the material always does. A ghost lies on the face the cut
+  //    its 26 neighbours is material (φ ≤ −ε): on a real surface one always is, since φ
+  //    drops by at least h·(|n_x| + |n_y| + |n_z|) ≥ h from a voxel to its neighbour
+  //    towards the material along the normal n. (Asking for a neighbour merely lower
+  //    would keep a sheet voxel whose neighbour is a lower ghost — along a bar's rim φ
+  //    grows outwards — so it would stay after that neighbour is cleared, counted as
+  //    material until some later cut passed.) A ghost lies on the face the cut
   //    shares with an earlier one, so within a voxel of this region's boundary: step 3
   //    marks those voxels as it evaluates them — including a sheet voxel on a face through
   //    voxel centres, which keeps its own value (max(0, 0)) while only its neighbour goes.
@@ -448,10 +451,9 @@ class RegionWriter {
   static constexpr openvdb::Index kStride[3] = {64, 8, 1};  // offset steps along x, y, z in a leaf
 
   float ghostCeiling() const { return static_cast<float>(0.5 * h_); }  // at and above: counts nothing
-  float notMaterial() const { return static_cast<float>(-1e-3 * h_); }
-  float rounding() const { return static_cast<float>(1e-3 * h_); }
+  float notMaterial() const { return static_cast<float>(-1e-3 * h_); }  // above: rounding, not material
 
-  // Voxel n of a leaf. Usually a face neighbour inside the leaf is deeper and settles it
+  // Voxel n of a leaf. Usually a face neighbour inside the leaf is material and settles it
   // at once; otherwise all 26 neighbours are asked, since where a surface passes exactly
   // through a voxel centre on an edge (a bar's rim meets grid points at Pythagorean
   // radii) the material lies only diagonally. A sheet has air on both sides, diagonals
@@ -459,28 +461,35 @@ class RegionWriter {
   template <typename Accessor>
   bool isGhost(Accessor& accessor, const Leaf& leaf, openvdb::Index n) const {
     const float* values = leaf.buffer().data();
-    const float deeper = values[n] - rounding();
+    const float material = notMaterial();  // at or below
     const int local[3] = {int(n >> 6), int((n >> 3) & 7), int(n & 7)};
     bool onLeafFace = false;
     for (int axis = 0; axis < 3; ++axis) {
-      if (local[axis] > 0 && values[n - kStride[axis]] < deeper) return false;
-      if (local[axis] < kLeafDim - 1 && values[n + kStride[axis]] < deeper) return false;
+      if (local[axis] > 0 && values[n - kStride[axis]] <= material) return false;
+      if (local[axis] < kLeafDim - 1 && values[n + kStride[axis]] <= material) return false;
       onLeafFace |= local[axis] == 0 || local[axis] == kLeafDim - 1;
     }
+    if (!onLeafFace) {  // all 26 neighbours lie in this leaf
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz)
+            if (values[static_cast<int>(n) + dx * 64 + dy * 8 + dz] <= material) return false;
+      return true;
+    }
     const Coord p = leaf.offsetToGlobalCoord(n);
-    if (onLeafFace)  // the face neighbours across the leaf's faces settle most of the rest
-      for (int axis = 0; axis < 3; ++axis)
-        for (int step : {-1, 1}) {
-          const int moved = local[axis] + step;
-          if (moved >= 0 && moved < kLeafDim) continue;
-          Coord q = p;
-          q[axis] += step;
-          if (accessor.getValue(q) < deeper) return false;
-        }
+    // The face neighbours across the leaf's faces settle most of the rest.
+    for (int axis = 0; axis < 3; ++axis)
+      for (int step : {-1, 1}) {
+        const int moved = local[axis] + step;
+        if (moved >= 0 && moved < kLeafDim) continue;
+        Coord q = p;
+        q[axis] += step;
+        if (accessor.getValue(q) <= material) return false;
+      }
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz)
-          if ((dx || dy || dz) && accessor.getValue(p.offsetBy(dx, dy, dz)) < deeper) return false;
+          if ((dx || dy || dz) && accessor.getValue(p.offsetBy(dx, dy, dz)) <= material) return false;
     return true;
   }
 

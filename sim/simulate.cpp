@@ -18,6 +18,16 @@ const ConvexPolygon& toolOf(const interp::Move& move, const ToolOutlines& tools)
 
 }  // namespace
 
+void recordCollision(std::vector<Collision>& collisions, const interp::Move& move, const char* kind, double volumeMm3) {
+  // The block's collisions are the last ones, of one or more kinds.
+  for (auto c = collisions.rbegin(); c != collisions.rend() && c->line == move.line && c->column == move.column; ++c) {
+    if (c->kind != kind) continue;
+    c->volumeMm3 += volumeMm3;
+    return;
+  }
+  collisions.push_back({move.line, move.column, kind, volumeMm3});
+}
+
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks, const CutObserver& observer) {
   SimulationResult result;
@@ -26,6 +36,8 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
   const int totalBlocks = toolpath.blockCount;
   auto cycleStart = toolpath.cycleStarts.begin();
   int spindleWarnedBlock = -1;  // one spindle warning per block
+  RZ frame(0, 0);               // the G50 frame of the moves so far
+  bool checkShift = false;      // after G50 moved it: until the first cut, or a warning
 
   for (std::size_t first = 0; first < moves.size();) {
     const interp::Move& head = moves[first];
@@ -35,6 +47,15 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
         if (auto warning = cycleStartInStock(*cycleStart, stock)) result.warnings.push_back(*warning);
     }
     BlockRemoval& block = result.blocks.back();
+    if (head.kind != interp::MoveKind::Dwell && head.workShift != frame) {
+      frame = head.workShift;
+      checkShift = true;
+    }
+    if (checkShift && head.kind != interp::MoveKind::Dwell) {
+      const auto warning = shiftedMoveInStock(head, stock);
+      if (warning) result.warnings.push_back(*warning);
+      checkShift = !warning && !interp::isCutting(head.kind);
+    }
 
     std::size_t end = first + 1;
     if (interp::isCutting(head.kind))
@@ -54,7 +75,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
       spindleWarnedBlock = head.block;
     }
     if (head.kind == interp::MoveKind::Rapid && removed > kCollisionVoxels * voxelVolume)
-      result.collisions.push_back({head.line, head.column, "rapid_into_stock", removed});
+      recordCollision(result.collisions, head, "rapid_into_stock", removed);
     if (checks) checkMoves(*checks, std::span(moves).subspan(first, end - first), stock, result.collisions);
 
     first = end;

@@ -43,6 +43,11 @@ struct SimulationResult {
   std::vector<SimulationWarning> warnings;
 };
 
+/// Adds a collision, or grows the block's own (same line and column) of the same kind when the
+/// block's are the last ones: one collision for the two legs of a dog-leg rapid, or for the
+/// moves of one cycle.
+void recordCollision(std::vector<Collision>& collisions, const interp::Move& move, const char* kind, double volumeMm3);
+
 /// A rapid that removes more than this many voxels' worth of material is a collision;
 /// below it, the removal is rounding at a surface the rapid merely grazes.
 inline constexpr double kCollisionVoxels = 10.0;

@@ -23,6 +23,20 @@ std::optional<SimulationWarning> cycleStartInStock(const interp::CycleStart& sta
                                "rapid legs start in material; start the cycle clear of the blank"};
 }
 
+std::optional<SimulationWarning> shiftedMoveInStock(const interp::Move& move, const Stock& stock) {
+  const bool cut = interp::isCutting(move.kind);
+  const RZ& point = cut ? move.from : move.to;
+  if (stock.signedDistanceAt(point) >= -kInsideStockVoxels * stock.voxelMm()) return std::nullopt;
+  const RZ& shift = move.workShift;
+  return SimulationWarning{
+      move.line, move.column,
+      std::string(cut ? "the first cut after G50 starts" : "this rapid after G50 ends") + " inside the bar, at X" +
+          number("%g", diameterOf(point)) + " Z" + number("%g", point.y()) +
+          " of the setup: G50 declared a position the tool is not at, which moved the program's zero to X" +
+          number("%g", diameterOf(shift)) + " Z" + number("%g", shift.y()) +
+          " of the setup; check the G50 against [machine] start"};
+}
+
 std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head, double removedMm3,
                                                        double voxelMm) {
   if (!interp::isCutting(head.kind) || head.spindleOn) return std::nullopt;

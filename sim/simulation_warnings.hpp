@@ -10,6 +10,12 @@ namespace lathesim::sim {
 /// A warning when `start` lies inside `stock` as it is now (deeper than kInsideStockVoxels).
 std::optional<SimulationWarning> cycleStartInStock(const interp::CycleStart& start, const Stock& stock);
 
+/// After G50 moved the program's frame (a move's workShift differs from the moves' before it),
+/// a warning when `move`, one of the moves up to the first cut, takes the tool into `stock` as
+/// it is now: a rapid that ends inside it, or a cut that starts inside it. The position G50
+/// declared is not where the setup has the tool.
+std::optional<SimulationWarning> shiftedMoveInStock(const interp::Move& move, const Stock& stock);
+
 /// A warning when a cutting move (feed or arc) group with the spindle stopped removed more
 /// than kCollisionVoxels voxels' worth of material.
 std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head, double removedMm3,

@@ -3,7 +3,6 @@
 #include "sim/stock.hpp"
 
 #include <openvdb/tools/Interpolation.h>
-#include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <tbb/parallel_reduce.h>
 #include <unistd.h>
@@ -12,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <numbers>
 
 #include "sim/stock_grid.hpp"
 
@@ -114,9 +114,10 @@ Stock::Stock(const StockSpec& spec, double voxelMm) : impl_(std::make_unique<Sto
   // The bar's cross-section, mirrored across the axis so that it revolves into a cylinder.
   const std::vector<RZ> rectangle{{-r, spec.faceZMm - spec.lengthMm}, {r, spec.faceZMm - spec.lengthMm},
                                   {r, spec.faceZMm}, {-r, spec.faceZMm}};
+  // Every voxel takes its value from the bar's own distance: the band voxel by voxel, the
+  // interior as tiles the bar covers entirely. Nothing is left for a flood fill to guess
+  // (OpenVDB's signed flood fill reads a 128³ block with no leaves left in it as air).
   writeRegion(*impl_, RevolvedRegion({ConvexPolygon::hullOf(rectangle)}), RegionWrite::Add);
-  // Only the band was written; the interior tiles take their sign from it.
-  openvdb::tools::signedFloodFill(impl_->grid->tree());
 }
 
 Stock::~Stock() = default;
@@ -155,7 +156,16 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*impl_->grid, points, triangles, quads, 0.0, adaptivity);
+  // Where the surface passes exactly through voxel centres (round dimensions on round
+  // voxels: a Φ10 drill at 0.2 mm, a cone's tip on the axis), φ is exactly 0 there, and
+  // volumeToMesh puts the vertices of several cells around such a voxel on its centre: one
+  // point, many vertices. An STL stores positions, so a reader glues them into one, and
+  // edges come out shared by 4–10 triangles. The surface is taken a small irrational
+  // fraction of a voxel inside instead: no round dimension lands on it, and it moves those
+  // vertices apart by several float steps of a coordinate (0.16 % of a voxel: 8e-5 mm at
+  // 0.05 mm voxels) while the volume moves by 0.16 % of a voxel layer.
+  const double isoMm = -impl_->voxel * (std::numbers::sqrt2 - 1.0) / 256.0;
+  openvdb::tools::volumeToMesh(*impl_->grid, points, triangles, quads, isoMm, adaptivity);
   TriangleMesh mesh;
   mesh.vertices.reserve(points.size());
   for (const auto& p : points) mesh.vertices.emplace_back(p.x(), p.y(), p.z());
@@ -167,6 +177,10 @@ TriangleMesh Stock::mesh(double adaptivity) const {
     mesh.triangles.push_back({q[0], q[2], q[1]});
     mesh.triangles.push_back({q[0], q[3], q[2]});
   }
+  // The mesh as an STL reader will see it; a triangle that then has two corners at one
+  // point has no area and goes.
+  weldCoincidentVertices(mesh);
+  dropCollapsedTriangles(mesh);
   return mesh;
 }
 

@@ -20,6 +20,16 @@ struct StockGrid;  // the OpenVDB side, in stock_grid.hpp
 /// Narrow band half-width, in voxels, on each side of the surface.
 inline constexpr int kHalfBandVoxels = 3;
 
+/// How far a volume measured on the level set, or on its mesh, may stray from the exact
+/// volume of the solid it stands for: 5 % of one voxel layer over the solid's surface. The
+/// level set places the surface to a small fraction of a voxel, so its rounding is a thin
+/// skin; a real error (a cut misplaced by a voxel, a block of material lost) moves whole
+/// voxel layers over part of the surface.
+inline constexpr double kVolumeToleranceVoxelLayers = 0.05;
+inline double volumeToleranceMm3(double surfaceAreaMm2, double voxelMm) {
+  return kVolumeToleranceVoxelLayers * voxelMm * surfaceAreaMm2;
+}
+
 /// Memory the stock's level set is expected to take at this voxel size (bytes), from its
 /// surface area and a per-surface-voxel cost measured on this machine.
 std::uint64_t estimatedStockBytes(const StockSpec& spec, double voxelMm);
@@ -56,8 +66,9 @@ class Stock {
   /// negative inside the material, positive outside; beyond the narrow band it is ±3 voxels.
   double signedDistanceAt(const RZ& point) const;
 
-  /// Closed surface at φ = 0, outward normals. adaptivity 0 keeps every voxel's facets;
-  /// larger values (up to 1) merge facets on flat and gently curved areas.
+  /// Closed surface just inside φ = 0 (0.16 % of a voxel: see stock.cpp), outward normals,
+  /// vertices merged by position as an STL reader merges them. adaptivity 0 keeps every
+  /// voxel's facets; larger values (up to 1) merge facets on flat and gently curved areas.
   TriangleMesh mesh(double adaptivity) const;
 
   /// φ in the meridian plane y = 0, x ≥ 0, at every voxel centre over the bar's extent and

@@ -61,8 +61,8 @@ constexpr std::array kGCodes{
 };
 
 constexpr std::array kMCodes{
-    MCodeInfo{0, MGroup::Stop, false, "program stop"},
-    MCodeInfo{1, MGroup::Stop, false, "optional stop"},
+    MCodeInfo{0, MGroup::Stop, true, "program stop"},
+    MCodeInfo{1, MGroup::Stop, true, "optional stop"},
     MCodeInfo{2, MGroup::ProgramEnd, true, "end of program"},
     MCodeInfo{3, MGroup::Spindle, true, "spindle clockwise"},
     MCodeInfo{4, MGroup::Spindle, true, "spindle counter-clockwise"},

@@ -29,7 +29,11 @@ class CompoundCycle {
   Error errorAt(int column, std::string message) const {
     return Error{block_.line, column, std::move(message)};
   }
-  double length(const Word& word) const { return lengthMm(word, state_.inch); }
+  // A length word in mm, noted for the mixed decimal point warning.
+  double length(const Word& word) {
+    state_.lengthWriting.note(word, block_.line, place_ ? place_->program.blocks[place_->index].ordinal : -1);
+    return lengthMm(word, NumberReading::of(options_.control, state_.inch));
+  }
   Status positive(const std::optional<Word>& word, std::string_view meaning) const;
   Status notNegative(const std::optional<Word>& word, std::string_view meaning) const;
   Status oneOf(const std::optional<Word>& absolute, const std::optional<Word>& incremental,
@@ -106,6 +110,7 @@ Status CompoundCycle::oneOf(const std::optional<Word>& absolute,
 }
 
 Status CompoundCycle::needFeed() const {
+  if (auto problem = zeroFeedProblem(state_.feed, code_.text)) return errorAt(code_.column, *problem);
   if (state_.feed) return success();
   return errorAt(code_.column, fmt::format("feed rate F is not set: {} cuts at feed; give F "
                                            "(e.g. F0.2 mm/rev) in this block or before it",
@@ -157,6 +162,13 @@ void CompoundCycle::continueAfter(ContourSpan span) {
 Status CompoundCycle::finishing() {
   auto span = contourSpan();
   if (!span.ok()) return span.error();
+  if (span.value().first > place_->index) {
+    const ProgramBlock& ns = place_->program.blocks[span.value().first];
+    return errorAt(code_.column, fmt::format("{}'s contour N{} starts on line {}, after it: G70 finishes a contour "
+                                             "roughed before it and must follow its blocks (GSK980TDi §3.23.4 "
+                                             "note 1)",
+                                             code_.text, *ns.sequenceNumber, ns.line));
+  }
   const RZ start = state_.position;
   auto run = runContourBlocks(place_->program, span.value(), contourStartState(), options_);
   if (!run.ok()) return run.error();
@@ -164,6 +176,7 @@ Status CompoundCycle::finishing() {
   state_ = std::move(run.value().state);
   state_.noseSide = before;
   outcome_.contourMoves = std::move(run.value().moves);
+  outcome_.warnings = std::move(run.value().warnings);
   outcome_.legs.push_back({MoveKind::Rapid, state_.position, start, 0, RZ(0, 0)});
   if (state_.position == start) outcome_.legs.clear();
   state_.position = start;
@@ -180,10 +193,29 @@ Status CompoundCycle::roughing() {
     if (auto s = notNegative(retract, "a retract distance e"); !s.ok()) return s;
     if (depth) state_.compound.roughingDepthMm = length(*depth);
     if (retract) state_.compound.roughingRetractMm = length(*retract);
+    state_.compound.roughingGiven = true;
     return success();
+  }
+  // GSK's K and J (§3.23.1): K1 asks for the full monotonic check, which lathesim always makes
+  // (how the GSK roughs a contour it did not check is not documented); J1 asks type II for one
+  // more pass along the rough contour, by a path the manual does not give.
+  block_.take('K');
+  if (const auto j = block_.take('J'); j && j->value == 1) {
+    return errorAt(j->column, fmt::format("{} {}: the GSK's extra pass along the rough contour is not simulated (the "
+                                          "manual does not say how the tool gets back to its start); leave J out",
+                                          code_.text, j->text()));
   }
   auto read = contourBlock();
   if (!read.ok()) return read.error();
+  if (!state_.compound.roughingGiven) {
+    state_.compound.roughingGiven = true;
+    outcome_.warnings.push_back(
+        {block_.line, code_.column,
+         fmt::format("{0} P… Q… runs without a first block {0} {1}(Δd) R(e): Δd {2:g} mm and e {3:g} mm come from the "
+                     "control's parameters (g71_depth, g71_retract), not from the program",
+                     code_.text, turning ? 'U' : 'W', state_.compound.roughingDepthMm,
+                     state_.compound.roughingRetractMm)});
+  }
   const ContourBlock& b = read.value();
   const ExtractedContour& c = b.contour;
   RoughingParams params;
@@ -192,6 +224,7 @@ Status CompoundCycle::roughing() {
   params.allowanceXMm = b.allowanceXMm;
   params.allowanceZMm = b.allowanceZMm;
   params.typeII = c.firstBlockHasX && c.firstBlockHasZ;
+  params.retractAtFeed = options_.control.roughingRetractAtFeed;
   const RZ start = state_.position;
   auto legs = turning ? turningRoughingLegs(start, c.contour, params)
                       : facingRoughingLegs(start, c.contour, params);
@@ -227,16 +260,27 @@ Status CompoundCycle::patternRepeat() {
     if (u) state_.compound.patternReliefXMm = length(*u);
     if (w) state_.compound.patternReliefZMm = length(*w);
     if (r) state_.compound.patternPasses = static_cast<int>(r->value);
+    state_.compound.patternGiven = true;
     return success();
   }
   auto read = contourBlock();
   if (!read.ok()) return read.error();
+  if (!state_.compound.patternGiven) {
+    state_.compound.patternGiven = true;
+    outcome_.warnings.push_back(
+        {block_.line, code_.column,
+         fmt::format("G73 P… Q… runs without a first block G73 U(Δi) W(Δk) R(d): Δi {:g} mm, Δk {:g} mm and d {} come "
+                     "from the control's parameters (g73_relief_x, g73_relief_z, g73_passes), not from the program",
+                     state_.compound.patternReliefXMm, state_.compound.patternReliefZMm,
+                     state_.compound.patternPasses)});
+  }
   const ContourBlock& b = read.value();
   const ExtractedContour& c = b.contour;
   PatternRepeatParams params;
   params.reliefXMm = state_.compound.patternReliefXMm;
   params.reliefZMm = state_.compound.patternReliefZMm;
   params.passes = state_.compound.patternPasses;
+  params.singlePassRunsTwice = options_.control.patternSinglePass == PatternSinglePass::RunsTwice;
   params.allowanceXMm = b.allowanceXMm;
   params.allowanceZMm = b.allowanceZMm;
   outcome_.legs = patternRepeatLegs(state_.position, c.contour, c.firstBlockSegments,
@@ -264,7 +308,7 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   const auto r = block_.take('R');
   if (auto s = oneOf(x, u, "X"); !s.ok()) return s;
   if (auto s = oneOf(z, w, "Z"); !s.ok()) return s;
-  for (const auto* word : {&p, &q, &r}) {
+  for (const auto* word : {&p, &q}) {
     if (auto s = notNegative(*word, "a distance"); !s.ok()) return s;
   }
   if (auto s = needFeed(); !s.ok()) return s;
@@ -275,9 +319,11 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   if (z) end.y() = length(*z);
   if (w) end.y() += length(*w);
 
-  const double xScale = kPeckXWordsAreDiameters ? 0.5 : 1.0;
+  // GSK documents G74/G75's X-axis P and G74's R(Δd) as diameters, Fanuc figures as radii
+  // (control parameter g74_x_words). G75's back-off e is a radius like every other retract.
+  const double xScale = options_.control.peckXWordsAreDiameters ? 0.5 : 1.0;
   const auto increment = [this](const std::optional<Word>& word, double scale) {
-    return word ? leastIncrementLengthMm(*word, state_.inch) * scale : 0.0;
+    return word ? incrementLengthMm(*word, NumberReading::of(options_.control, state_.inch)) * scale : 0.0;
   };
   // G74: Q pecks in Z, P steps in X; G75: P pecks in X, Q steps in Z.
   const std::optional<Word>& peckWord = g74 ? q : p;
@@ -286,7 +332,12 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   params.peckMm = increment(peckWord, g74 ? 1.0 : xScale);
   params.shiftMm = increment(shiftWord, g74 ? xScale : 1.0);
   params.retractMm = state_.compound.peckRetractMm;
-  params.reliefMm = increment(r, g74 ? xScale : 1.0);
+  // R(Δd) may be negative: its size is the relief; its sign the direction when the block moves
+  // only the peck axis, on a control that reads it so (g74_relief_without_shift).
+  const double relief = increment(r, g74 ? xScale : 1.0);
+  params.reliefMm = std::abs(relief);
+  params.reliefDirectionWithoutShift =
+      options_.control.peckReliefWithoutShift == PeckReliefWithoutShift::BySign && relief < 0 ? -1.0 : 1.0;
 
   const double peckTravel = g74 ? end.y() - start.y() : end.x() - start.x();
   const double shiftTravel = g74 ? end.x() - start.x() : end.y() - start.y();

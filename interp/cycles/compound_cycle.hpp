@@ -16,16 +16,11 @@
 
 namespace lathesim::interp {
 
-/// GSK documents G74/G75's X-axis P and G74's R(Δd) as diameters: the step between plunges
-/// is Δi/2 in radius (lathe-cycles.md §5; ADTECH reads them as radii).
-/// G75's back-off e after each peck is an X distance taken as a radius, like every other
-/// retract.
-constexpr bool kPeckXWordsAreDiameters = true;
-
 struct CompoundOutcome {
   std::vector<Move> contourMoves;  // G70: the contour blocks' own moves, before the legs
   std::vector<CycleLeg> legs;      // the cycle block's moves
   std::optional<std::size_t> continueAfter;  // G71–G73: the nf block, when it follows
+  std::vector<Error> warnings;               // G70's contour blocks', and the cycle's own
 };
 
 /// G70 to G75.

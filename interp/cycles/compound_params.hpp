@@ -1,25 +1,27 @@
 #pragma once
 // The first-block values of the compound cycles (G71 U R, G72 W R, G73 U W R, G74/G75 R):
 // modal, kept until a first block changes them. Before any is given the control uses its
-// parameters; these stand for those GSK980TDi parameters. Lengths in mm.
+// parameters (control_parameters.hpp: GSK No.51–56, Fanuc 5132–5139). Lengths in mm.
+
+#include "interp/control/control_parameters.hpp"
 
 namespace lathesim::interp {
 
-constexpr double kDefaultRoughingDepthMm = 1.0;    // GSK No.51: G71/G72 Δd (G71: a radius)
-constexpr double kDefaultRoughingRetractMm = 0.5;  // GSK No.52: G71/G72 e
-// G73 and G74/G75 defaults are our assumption (the parameter values were not at hand):
-constexpr double kDefaultPatternReliefXMm = 0.0;   // GSK No.53: G73 Δi, a radius
-constexpr double kDefaultPatternReliefZMm = 0.0;   // GSK No.54: G73 Δk
-constexpr int kDefaultPatternPasses = 1;           // GSK No.55: G73 d (1 runs as 2)
-constexpr double kDefaultPeckRetractMm = 0.5;      // GSK No.56: G74/G75 e
-
 struct CompoundCycleParams {
-  double roughingDepthMm = kDefaultRoughingDepthMm;      // G71 U / G72 W, first block
-  double roughingRetractMm = kDefaultRoughingRetractMm;  // G71/G72 R, first block
-  double patternReliefXMm = kDefaultPatternReliefXMm;    // G73 U (Δi), radius, signed
-  double patternReliefZMm = kDefaultPatternReliefZMm;    // G73 W (Δk), signed
-  int patternPasses = kDefaultPatternPasses;             // G73 R (d)
-  double peckRetractMm = kDefaultPeckRetractMm;          // G74/G75 R (e)
+  double roughingDepthMm = 0;    // G71 U / G72 W, first block
+  double roughingRetractMm = 0;  // G71/G72 R, first block
+  double patternReliefXMm = 0;   // G73 U (Δi), radius, signed
+  double patternReliefZMm = 0;   // G73 W (Δk), signed
+  int patternPasses = 1;         // G73 R (d)
+  double peckRetractMm = 0;      // G74/G75 R (e)
+  bool roughingGiven = false;    // a G71/G72 first block was read (or its absence warned)
+  bool patternGiven = false;     // a G73 first block was read (or its absence warned)
+
+  /// The values the control's parameters give before a program sets them.
+  static CompoundCycleParams of(const ControlParameters& control) {
+    return {control.roughingDepthMm, control.roughingRetractMm, control.patternReliefXMm,
+            control.patternReliefZMm, control.patternPasses,    control.peckRetractMm, false, false};
+  }
 };
 
 }  // namespace lathesim::interp

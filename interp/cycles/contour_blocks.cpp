@@ -6,12 +6,12 @@
 
 #include <fmt/format.h>
 
+#include "interp/motion/corners.hpp"
+
+#include "interp/text/label_number.hpp"
+
 namespace lathesim::interp {
 namespace {
-
-bool isPlainInteger(const Word& word) {
-  return !word.number.empty() && word.number.find_first_not_of("0123456789") == std::string::npos;
-}
 
 bool allowedInContour(GGroup group, int number) {
   switch (group) {
@@ -67,20 +67,24 @@ Status checkContourBlock(const ParsedBlock& block, bool first, std::string_view 
 
 Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
                                  const ContourRequest& request, const Word& word) {
-  if (!isPlainInteger(word)) {
-    return Error{request.line, word.column,
-                 fmt::format("{} is not a sequence number: expected the digits of an N number, "
-                             "e.g. P10 for N10",
-                             word.text())};
-  }
-  const int number = static_cast<int>(word.value);
-  const auto found = program.findSequence(number, cycleIndex);
-  if (!found) {
+  auto read = labelNumberOf(word, request.line, kMaxSequenceDigits, "a sequence number (e.g. P10 for N10)");
+  if (!read.ok()) return read.error();
+  const int number = read.value();
+  const std::vector<std::size_t> found = program.findSequence(number, cycleIndex);
+  if (found.empty()) {
     return Error{request.line, word.column,
                  fmt::format("{} {}: there is no block N{} in this program", request.cycle,
                              word.text(), number)};
   }
-  return *found;
+  // GSK980TDi §3.23.1 note 14: cycles in one program give their contours their own numbers.
+  if (found.size() > 1) {
+    return Error{request.line, word.column,
+                 fmt::format("{} {}: N{} numbers two blocks, on lines {} and {}; the contours of the compound "
+                             "cycles in one program need N numbers of their own",
+                             request.cycle, word.text(), number, program.blocks[found[0]].line,
+                             program.blocks[found[1]].line)};
+  }
+  return found.front();
 }
 
 // A block that holds its N number and nothing else.
@@ -109,8 +113,8 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
     return Error{request.line, request.q->column,
                  fmt::format("{} {} {}: N{} comes before N{}; Q names the contour's last block",
                              request.cycle, request.p->text(), request.q->text(),
-                             static_cast<int>(request.q->value),
-                             static_cast<int>(request.p->value))};
+                             *program.blocks[span.last].sequenceNumber,
+                             *program.blocks[span.first].sequenceNumber)};
   }
   const std::string name = spanName(program, span);
   while (span.start < span.last && (program.blocks[span.start].skipped || isLabelOnly(program.blocks[span.start])))
@@ -150,6 +154,8 @@ Result<BlockOutcome> runContourBlocks(const Program& program, ContourSpan span,
     state = std::move(done.value().state);
     const auto& moves = done.value().moves;
     outcome.moves.insert(outcome.moves.end(), moves.begin(), moves.end());
+    const auto& warnings = done.value().warnings;
+    outcome.warnings.insert(outcome.warnings.end(), warnings.begin(), warnings.end());
   }
   outcome.state = std::move(state);
   return outcome;
@@ -160,6 +166,8 @@ Result<ExtractedContour> extractContour(const Program& program, ContourSpan span
                                         const InterpreterOptions& options) {
   auto run = runContourBlocks(program, span, state, options);
   if (!run.ok()) return run.error();
+  std::vector<Error> cornerWarnings;  // G70 gives them, when it runs the same blocks
+  if (auto corners = insertCorners(run.value().moves, cornerWarnings); !corners.ok()) return corners.error();
   const ProgramBlock& first = program.blocks[span.start];
   const ParsedBlock& firstParsed = first.parsed.value();
   ExtractedContour extracted;

@@ -6,7 +6,9 @@
 //   step 2  A_k → B_k, the ns block's move: rapid if it is G00, feed if G01
 //   step 3  feed   B_k → C_k along the rest of the shifted contour (arcs stay arcs)
 //   step 4  rapid  C_d → A after the last pass
-// d = 1 runs as d = 2, as on the GSK. Zero-length legs are left out.
+// d = 1 runs as d = 2 on the GSK; a control that runs it once (control parameter
+// g73_single_pass) cuts the one pass at the allowance alone (the last pass's shift). Zero-length
+// legs are left out.
 
 #include "interp/cycles/g73_cycle.hpp"
 
@@ -17,14 +19,14 @@ namespace lathesim::interp {
 std::vector<CycleLeg> patternRepeatLegs(const RZ& start, const Contour& contour,
                                         std::size_t firstBlockSegments, bool firstBlockRapid,
                                         const PatternRepeatParams& params) {
-  const int passes = std::max(params.passes, 2);
+  const int passes = params.passes == 1 && params.singlePassRunsTwice ? 2 : std::max(params.passes, 1);
   std::vector<CycleLeg> legs;
   const auto add = [&legs](CycleLeg leg) {
     if (leg.from != leg.to) legs.push_back(leg);
   };
   RZ at = start;
   for (int k = 1; k <= passes; ++k) {
-    const double share = static_cast<double>(passes - k) / (passes - 1);
+    const double share = passes == 1 ? 0.0 : static_cast<double>(passes - k) / (passes - 1);
     const RZ shift(params.allowanceXMm + params.reliefXMm * share,
                    params.allowanceZMm + params.reliefZMm * share);
     add({MoveKind::Rapid, at, start + shift, 1, RZ(0, 0)});

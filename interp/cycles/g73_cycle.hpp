@@ -13,7 +13,8 @@ namespace lathesim::interp {
 struct PatternRepeatParams {
   double reliefXMm = 0;     // Δi: total X relief, a RADIUS, signed
   double reliefZMm = 0;     // Δk: total Z relief, signed
-  int passes = 2;           // d ≥ 1; 1 runs as 2 (GSK)
+  int passes = 2;           // d ≥ 1
+  bool singlePassRunsTwice = true;  // d = 1 runs as 2 (GSK), or once at the allowance alone
   double allowanceXMm = 0;  // Δu/2: finishing allowance in X as a RADIUS, signed
   double allowanceZMm = 0;  // Δw, signed
 };

@@ -5,7 +5,8 @@
 //   step 1  feed   one peck toward p_E (the first from p_A, each later one peck + e from
 //                  where the tool backed off), the last clamped onto p_E
 //   step 2  rapid  back e along p after every peck but the last
-//   step 3  rapid  relief Δd along s, away from s_E (none when A and E share s)
+//   step 3  rapid  relief Δd along s, away from s_E; when A and E share s, toward + (GSK §3.23.5:
+//                  X(U) and P omitted) or the way Δd's sign says (Fanuc ⚠), as the control reads it
 //   step 4  rapid  back along p to p_A
 //   step 5  rapid  along s to the next plunge s_(j+1)
 //   step 6  rapid  to A after the last plunge
@@ -57,7 +58,8 @@ std::vector<CycleLeg> peckCycleLegs(const PeckCycle& cycle, const RZ& start, con
       add(MoveKind::Rapid, here, at(p - pDir * params.retractMm, s), 2);
       here = at(p - pDir * params.retractMm, s);
     }
-    const double relieved = s - sDir * params.reliefMm;
+    const double reliefDir = sDir != 0 ? -sDir : params.reliefDirectionWithoutShift;
+    const double relieved = s + reliefDir * params.reliefMm;
     add(MoveKind::Rapid, here, at(pE, relieved), 3);
     add(MoveKind::Rapid, at(pE, relieved), at(pA, relieved), 4);
     here = at(pA, relieved);

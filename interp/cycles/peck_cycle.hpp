@@ -25,6 +25,7 @@ struct PeckParams {
   double shiftMm = 0;    // between plunges along the other axis (G74 Δi/2, G75 Δk)
   double retractMm = 0;  // e: backing off after each peck
   double reliefMm = 0;   // Δd: at the bottom, away from the end point along the other axis
+  double reliefDirectionWithoutShift = 1;  // ±1: Δd's way when A and the end share the other axis
 };
 
 /// The legs from the cycle start `start` (A) to the end point `end`; the cycle ends at A.

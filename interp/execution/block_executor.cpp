@@ -4,12 +4,15 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "interp/motion/arc_move.hpp"
+#include "interp/motion/feed_warnings.hpp"
+#include "interp/motion/drawing_angle.hpp"
 #include "interp/cycles/compound_cycle.hpp"
 #include "interp/motion/g28_return.hpp"
 #include "interp/compensation/cycle_nose_compensation.hpp"
@@ -18,7 +21,9 @@
 #include "interp/motion/spindle_speed.hpp"
 #include "interp/execution/data_setting.hpp"
 #include "interp/execution/subprogram_call.hpp"
+#include "interp/control/tool_word.hpp"
 #include "interp/execution/work_coordinates.hpp"
+#include "interp/text/label_number.hpp"
 #include "interp/text/word_units.hpp"
 
 namespace lathesim::interp {
@@ -65,6 +70,12 @@ class Executor {
   // incremental, like U and W); coordinates a block declares (G50) are always absolute.
   enum class Coordinates { Target, Declared };
   Result<AxisWords> takeAxisWords(Coordinates meaning = Coordinates::Target);
+  NumberReading reading() const { return NumberReading::of(options_.control, state_.inch); }
+  // A length word in mm, noted for the mixed decimal point warning.
+  double length(const Word& word) {
+    state_.lengthWriting.note(word, block_.line, ordinal_);
+    return lengthMm(word, reading());
+  }
   Status applyFeed();
   void applySpindleMode();
   Status applySpindleSpeed();
@@ -73,6 +84,7 @@ class Executor {
   Status applyDwell(const Code& code);
   Status applyCoordinateSetting(const Code& code);
   Status applyReferenceReturn(const Code& code);
+  void selectMotion(const Code& code);
   Status applyMachineCoordinateMove(const Code& code);
   void applyWorkSystem(const std::optional<Code>& oneShot);
   void noteDrillingCycleCancel();
@@ -83,7 +95,10 @@ class Executor {
   Status applyMotion();
   Status applyStraightMove(const std::optional<Code>& code);
   Status applyArc(const std::optional<Code>& code);
-  RZ endPoint(const AxisWords& axes) const;
+  RZ endPoint(const AxisWords& axes);
+  std::optional<Word> takeAngleWord();
+  Result<std::optional<CornerRequest>> takeCornerWord();
+  double angleDegrees(const Word& angle) const;
   std::optional<ArcWord> arcWord(char letter);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
   Status applyCompoundCycle(const Code& code);
@@ -92,6 +107,7 @@ class Executor {
   std::optional<std::string> missingMachineryOf(const Word& word) const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
   void warnIfSurfaceSpeedUnclamped();
+  void warnIfFeedImplausible();
   void emitLegs(const std::vector<CycleLeg>& legs);
 
   ParsedBlock block_;
@@ -106,6 +122,7 @@ class Executor {
 };
 
 Result<BlockOutcome> Executor::run() {
+  warnings_ = block_.warnings;
   block_.take('N');  // sequence number: a label only
   block_.take('O');  // program number
   if (auto status = applySubprogramCode(); !status.ok()) return status.error();
@@ -124,18 +141,12 @@ Result<BlockOutcome> Executor::run() {
                                            : NoseSide::None;
   }
 
+  // A one-shot code takes the block's axis words; a motion code beside it (G28 G00 U0 W0) only
+  // becomes the modal motion, as on the controls.
   const auto oneShot = block_.gCode(GGroup::NonModal);
-  const auto motion = block_.gCode(GGroup::Motion);
   applyWorkSystem(oneShot);
   noteDrillingCycleCancel();
-  // G53 moves at rapid: `G00 G53 X0` is the same move written with its G00.
-  const bool g53WithG00 = oneShot && motion && oneShot->number == 53 && motion->number == 0;
-  if (oneShot && motion && !g53WithG00) {
-    return errorAt(motion->column,
-                   fmt::format("{} and {} cannot share a block: the words X, Z, U and W would "
-                               "belong to both; put them in separate blocks",
-                               oneShot->text, motion->text));
-  }
+  if (const auto motion = block_.gCode(GGroup::Motion); oneShot && motion) selectMotion(*motion);
   const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
   if (oneShot && !compound) {
     if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
@@ -150,9 +161,8 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number != 5) state_.spindleOn = true;
   if (coolant && coolant->number == 8) state_.coolantOn = true;
 
-  if (auto status = compound ? applyCompoundCycle(*oneShot) : applyMotion(); !status.ok()) {
-    return status.error();
-  }
+  const Status moved = compound ? applyCompoundCycle(*oneShot) : oneShot ? success() : applyMotion();
+  if (!moved.ok()) return moved.error();
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
 
   if (spindle && spindle->number == 5) state_.spindleOn = false;
@@ -165,7 +175,14 @@ Status Executor::applySubprogramCode() {
   const auto code = block_.mCode(MGroup::Subprogram);
   if (!code) return success();
   if (code->number == 99) {
-    flow_.returnColumn = code->column;
+    SubprogramReturn giveBack{code->column, std::nullopt, 0};
+    if (const auto p = block_.take('P')) {
+      auto sequence = labelNumberOf(*p, block_.line, kMaxSequenceDigits, "a sequence number to return to");
+      if (!sequence.ok()) return sequence.error();
+      giveBack.sequence = sequence.value();
+      giveBack.sequenceColumn = p->column;
+    }
+    flow_.giveBack = giveBack;
     return success();
   }
   auto call = takeSubprogramCall(block_, *code);
@@ -182,17 +199,22 @@ Result<AxisWords> Executor::takeAxisWords(Coordinates meaning) {
     if (axes.x && !axes.u) std::swap(axes.x, axes.u);
     if (axes.z && !axes.w) std::swap(axes.z, axes.w);
   }
-  if (axes.x && axes.u) {
-    return errorAt(std::max(axes.x->column, axes.u->column),
-                   fmt::format("{} and {} both give the X axis (X absolute, U incremental); "
-                               "give one of them",
-                               axes.x->text(), axes.u->text()));
-  }
-  if (axes.z && axes.w) {
-    return errorAt(std::max(axes.z->column, axes.w->column),
-                   fmt::format("{} and {} both give the Z axis (Z absolute, W incremental); "
-                               "give one of them",
-                               axes.z->text(), axes.w->text()));
+  // X with U (Z with W): the GSK takes the absolute word (§3.2), other controls alarm. Under
+  // G91 both are distances: always an error.
+  const bool absoluteWins = options_.control.absoluteWithIncremental == AbsoluteWithIncremental::AbsoluteWins &&
+                            !state_.incremental;
+  for (auto [absolute, incremental, axis] : {std::tuple{&axes.x, &axes.u, 'X'}, std::tuple{&axes.z, &axes.w, 'Z'}}) {
+    if (!*absolute || !*incremental) continue;
+    if (!absoluteWins) {
+      return errorAt(std::max((*absolute)->column, (*incremental)->column),
+                     fmt::format("{} and {} both give the {} axis ({} absolute, {} incremental); give one of them",
+                                 (*absolute)->text(), (*incremental)->text(), axis, axis, axis == 'X' ? 'U' : 'W'));
+    }
+    warnings_.push_back({block_.line, (*incremental)->column,
+                         fmt::format("{} is ignored: {} in the same block gives the {} axis (the absolute word "
+                                     "wins, GSK980TDi §3.2)",
+                                     (*incremental)->text(), (*absolute)->text(), axis)});
+    incremental->reset();
   }
   return axes;
 }
@@ -200,12 +222,13 @@ Result<AxisWords> Executor::takeAxisWords(Coordinates meaning) {
 Status Executor::applyFeed() {
   const auto f = block_.take('F');
   if (!f) return success();
-  if (f->value <= 0) {
-    return errorAt(f->column, fmt::format("{} is not a feed rate: expected a positive number "
+  if (f->value < 0) {
+    return errorAt(f->column, fmt::format("{} is not a feed rate: expected a number ≥ 0 "
                                           "(mm/rev under G99, mm/min under G98)",
                                           f->text()));
   }
-  state_.feed = lengthMm(*f, state_.inch);
+  state_.feed = reading().mm(f->value);  // mm (inch) per minute or revolution
+  state_.feedWord = f->text();
   return success();
 }
 
@@ -243,15 +266,13 @@ Status Executor::applySpindleSpeed() {
 Status Executor::applyTool() {
   const auto t = block_.take('T');
   if (!t) return success();
-  const bool integral = t->number.find_first_not_of("0123456789") == std::string::npos;
-  if (!integral || t->value > 9999) {
-    return errorAt(t->column, fmt::format("{} is not a tool word: expected T and four digits, "
-                                          "tool number then offset number, e.g. T0101",
-                                          t->text()));
-  }
-  const int toolAndOffset = static_cast<int>(t->value);
-  const int tool = toolAndOffset / 100;
-  const int offset = toolAndOffset % 100;
+  auto read = readToolWord(*t, options_.control.toolWordForms, block_.line);
+  if (!read.ok()) return read.error();
+  const auto [tool, offset, note] = read.value();
+  if (note) warnings_.push_back({block_.line, t->column, *note});
+  state_.toolOffset = offset;
+  state_.offset = offsetNumbered(offsetTable(), offset);
+  if (tool == 0) return success();  // no tool change
   const auto& tools = options_.toolNumbers;
   if (std::find(tools.begin(), tools.end(), tool) == tools.end() && options_.toolDefinitionHint && place_) {
     std::vector<std::string> seen;  // the program's T words, each once, where first written
@@ -278,8 +299,6 @@ Status Executor::applyTool() {
                                tool, t->text(), defined.empty() ? "none" : defined));
   }
   state_.tool = tool;
-  state_.toolOffset = offset;
-  state_.offset = offsetNumbered(offsetTable(), offset);
   return success();
 }
 
@@ -294,48 +313,44 @@ Status Executor::applyOneShot(const Code& code) {
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
 }
 
-Status Executor::applyDwell(const Code& code) {
-  // X and U are seconds, P milliseconds: times, not lengths, so no unit conversion.
+// G04 (GSK980TDi §3.14): X or U in seconds, P in milliseconds; with several, P wins over X and
+// X over U (the others are warned as ignored); none is an exact stop between blocks (no time);
+// a negative time dwells 0 s.
+Status Executor::applyDwell(const Code&) {
   std::optional<Word> time;
-  for (char letter : {'X', 'U', 'P'}) {
+  for (char letter : {'P', 'X', 'U'}) {
     auto word = block_.take(letter);
     if (!word) continue;
     if (time) {
-      return errorAt(word->column, fmt::format("G04 takes one dwell time, but {} and {} are "
-                                               "both given",
-                                               time->text(), word->text()));
-    }
-    if (word->value < 0) {
-      return errorAt(word->column,
-                     fmt::format("{} is not a dwell time: expected a number ≥ 0", word->text()));
+      warnings_.push_back({block_.line, word->column,
+                           fmt::format("{} is ignored: {} gives G04's time (P before X before U, GSK980TDi §3.14)",
+                                       word->text(), time->text())});
+      continue;
     }
     time = word;
   }
-  if (!time) {
-    return errorAt(code.column,
-                   "G04 needs a dwell time: X or U (seconds) or P (milliseconds)");
-  }
-  const double seconds = time->letter == 'P' ? time->value / kMsPerS : time->value;
+  if (!time) return success();
+  const double seconds = time->letter == 'P' ? time->value / kMsPerS : dwellSeconds(*time, reading());
   emit(MoveKind::Dwell, state_.position, state_.position, 0);
-  moves_.back().dwellS = seconds;
+  moves_.back().dwellS = std::max(seconds, 0.0);
   return success();
 }
 
-Status Executor::applyCoordinateSetting(const Code& code) {
-  // G50 X(U) Z(W): the tool is declared to stand at these part coordinates; no move.
+Status Executor::applyCoordinateSetting(const Code&) {
+  // G50 X(U) Z(W) (GSK980TDi §3.18): the tool is declared to stand at these coordinates; it
+  // does not move, the program's frame does. An axis not given keeps its coordinate, so a
+  // bare G50 changes nothing.
   auto axes = takeAxisWords(Coordinates::Declared);
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
   const auto s = block_.take('S');
-  if (!a.any() && !s) {
-    return errorAt(code.column, "G50 needs X(U) and/or Z(W) to set coordinates, or S to "
-                                "limit the spindle speed");
-  }
-  RZ& p = state_.position;
-  if (a.x) p.x() = lengthMm(*a.x, state_.inch) / 2.0;
-  if (a.u) p.x() += lengthMm(*a.u, state_.inch) / 2.0;
-  if (a.z) p.y() = lengthMm(*a.z, state_.inch);
-  if (a.w) p.y() += lengthMm(*a.w, state_.inch);
+  RZ declared = state_.position;
+  if (a.x) declared.x() = length(*a.x) / 2.0;
+  if (a.u) declared.x() += length(*a.u) / 2.0;
+  if (a.z) declared.y() = length(*a.z);
+  if (a.w) declared.y() += length(*a.w);
+  state_.frame.coordinateSetting += state_.position - declared;
+  state_.position = declared;
   if (s) state_.spindleLimitRpm = s->value;
   return success();
 }
@@ -350,15 +365,41 @@ Status Executor::applyReferenceReturn(const Code& code) {
   }
   const RZ& p = state_.position;
   std::optional<double> radiusMm, zMm;
-  if (a.x) radiusMm = lengthMm(*a.x, state_.inch) / 2.0;
-  if (a.u) radiusMm = p.x() + lengthMm(*a.u, state_.inch) / 2.0;
-  if (a.z) zMm = lengthMm(*a.z, state_.inch);
-  if (a.w) zMm = p.y() + lengthMm(*a.w, state_.inch);
+  if (a.x) radiusMm = length(*a.x) / 2.0;
+  if (a.u) radiusMm = p.x() + length(*a.u) / 2.0;
+  if (a.z) zMm = length(*a.z);
+  if (a.w) zMm = p.y() + length(*a.w);
+  // The reference point is the machine's: in the program's frame it moves with G54–G59 and G50.
   const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.frame.shift();
   const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
-  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step);
+  // Under G41/G42 the compensation is suspended at the intermediate point (lathe-cycles.md §10):
+  // the legs are no part of the chain, which ends with the move before them and resumes with a
+  // start-up after them.
+  emitLegs(legs);
   if (!legs.empty()) state_.position = legs.back().to;
+  // GSK No.182#2: arrived at the reference, the control forgets the tool offset until a T word.
+  if (options_.control.offsetAfterReturn == OffsetAfterReturn::Cancelled) {
+    state_.toolOffset = 0;
+    state_.offset = offsetNumbered(offsetTable(), 0);
+  }
   return success();
+}
+
+void Executor::selectMotion(const Code& code) {
+  const MotionMode mode = code.number == 0    ? MotionMode::Rapid
+                          : code.number == 1  ? MotionMode::Linear
+                          : code.number == 2  ? MotionMode::ArcCW
+                          : code.number == 3  ? MotionMode::ArcCCW
+                          : code.number == 90 ? MotionMode::AxialCycle
+                                              : MotionMode::FaceCycle;
+  // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
+  // G94 are two such codes, so switching between them clears them too. Only a cycle
+  // retains values, so naming the current mode again keeps them.
+  if (mode != state_.motion) {
+    state_.cycle = {};
+    state_.drillCancelWithCycle.reset();
+  }
+  state_.motion = mode;
 }
 
 Status Executor::applyMachineCoordinateMove(const Code& code) {
@@ -408,22 +449,7 @@ void Executor::warnIfCycleRepeatsAfterG80(const std::optional<Code>& code, std::
 
 Status Executor::applyMotion() {
   const auto code = block_.gCode(GGroup::Motion);
-  if (code) {
-    const MotionMode mode = code->number == 0    ? MotionMode::Rapid
-                            : code->number == 1  ? MotionMode::Linear
-                            : code->number == 2  ? MotionMode::ArcCW
-                            : code->number == 3  ? MotionMode::ArcCCW
-                            : code->number == 90 ? MotionMode::AxialCycle
-                                                 : MotionMode::FaceCycle;
-    // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
-    // G94 are two such codes, so switching between them clears them too. Only a cycle
-    // retains values, so naming the current mode again keeps them.
-    if (mode != state_.motion) {
-      state_.cycle = {};
-      state_.drillCancelWithCycle.reset();
-    }
-    state_.motion = mode;
-  }
+  if (code) selectMotion(*code);
   switch (state_.motion) {
     case MotionMode::AxialCycle: return applySingleCycle(kAxialCycle, code);
     case MotionMode::FaceCycle: return applySingleCycle(kFaceCycle, code);
@@ -439,32 +465,96 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   auto axes = takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
+  const std::optional<Word> angle = takeAngleWord();
+  if (angle && !a.any()) {
+    return errorAt(angle->column, fmt::format("{} alone starts a drawing dimension of two lines (their "
+                                              "intersection found by the control), which lathesim does not read "
+                                              "yet; give this line's end X or Z with the angle",
+                                              angle->text()));
+  }
   if (!a.any()) return success();
   const RZ from = state_.position;
-  const RZ to = endPoint(a);
+  RZ to = endPoint(a);
+  const bool givesX = a.x || a.u;
+  const bool givesZ = a.z || a.w;
+  if (angle && givesX && givesZ) {
+    warnings_.push_back({block_.line, angle->column,
+                         fmt::format("{} is ignored: X and Z give the end point (GSK980TDi §3.13)", angle->text())});
+  } else if (angle) {
+    auto end = lineEndByAngle(from, givesX ? std::optional(to.x()) : std::nullopt,
+                              givesZ ? std::optional(to.y()) : std::nullopt, angleDegrees(*angle), *angle,
+                              block_.line);
+    if (!end.ok()) return end.error();
+    to = end.value();
+  }
   const bool feed = state_.motion == MotionMode::Linear;
+  auto corner = feed ? takeCornerWord() : Result<std::optional<CornerRequest>>(std::nullopt);
+  if (!corner.ok()) return corner.error();
   if (feed && !state_.feed) {
     return errorAt(code ? code->column : block_.column,
                    "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G01 move");
   }
+  if (auto problem = feed ? zeroFeedProblem(state_.feed, "G01") : std::nullopt)
+    return errorAt(code ? code->column : block_.column, *problem);
+  const std::size_t before = moves_.size();
   emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
+  if (corner.value() && moves_.size() > before) moves_.back().cornerAfter = corner.value();
   state_.position = to;
   return success();
 }
 
-RZ Executor::endPoint(const AxisWords& a) const {
+// L / D (GSK §3.11) or ,C / ,R (Fanuc): a chamfer or a corner radius after this block's move.
+Result<std::optional<CornerRequest>> Executor::takeCornerWord() {
+  const bool gsk = options_.control.cornerWords == CornerWords::LD;
+  const auto chamfer = block_.take(gsk ? 'L' : 'c');
+  const auto round = block_.take(gsk ? 'D' : 'r');
+  if (chamfer && round) {
+    return errorAt(round->column, fmt::format("{} and {} both ask for a corner; give one of them", chamfer->text(),
+                                              round->text()));
+  }
+  const std::optional<Word>& word = chamfer ? chamfer : round;
+  if (!word) return std::optional<CornerRequest>();
+  if (word->value <= 0) {
+    return errorAt(word->column, fmt::format("{} is not a {}: expected a size > 0", word->text(),
+                                             chamfer ? "chamfer" : "corner radius"));
+  }
+  const bool chamferLength = chamfer && gsk && options_.control.chamferSize == ChamferSize::Length;
+  return std::optional(CornerRequest{!chamfer, length(*word), chamferLength, word->text(), word->column});
+}
+
+std::optional<Word> Executor::takeAngleWord() {
+  switch (options_.control.drawingAngleWord) {
+    case DrawingAngleWord::Q: return block_.take('Q');
+    case DrawingAngleWord::A: return block_.take('A');
+    case DrawingAngleWord::CommaA: return block_.take('a');
+  }
+  return std::nullopt;
+}
+
+// An angle in degrees: GSK's Q counts 0.001° without a point (an [LII] word, No.182#7), Fanuc's
+// A follows the decimal point input like a length.
+double Executor::angleDegrees(const Word& angle) const {
+  const bool incrementWord = options_.control.drawingAngleWord == DrawingAngleWord::Q;
+  const NumberReading r = reading();
+  const bool counted = !hasDecimalPoint(angle) &&
+                       (incrementWord ? r.incrementWordInput == IncrementWordInput::LeastIncrements
+                                      : r.decimalPointInput == DecimalPointInput::LeastIncrements);
+  return counted ? angle.value * r.leastIncrementMm : angle.value;  // 0.001° at IS-B
+}
+
+RZ Executor::endPoint(const AxisWords& a) {
   RZ to = state_.position;
-  if (a.x) to.x() = lengthMm(*a.x, state_.inch) / 2.0;
-  if (a.u) to.x() += lengthMm(*a.u, state_.inch) / 2.0;
-  if (a.z) to.y() = lengthMm(*a.z, state_.inch);
-  if (a.w) to.y() += lengthMm(*a.w, state_.inch);
+  if (a.x) to.x() = length(*a.x) / 2.0;
+  if (a.u) to.x() += length(*a.u) / 2.0;
+  if (a.z) to.y() = length(*a.z);
+  if (a.w) to.y() += length(*a.w);
   return to;
 }
 
 std::optional<ArcWord> Executor::arcWord(char letter) {
   const auto word = block_.take(letter);
   if (!word) return std::nullopt;
-  return ArcWord{word->text(), word->column, lengthMm(*word, state_.inch)};  // I: a radius
+  return ArcWord{word->text(), word->column, length(*word)};  // I: a radius
 }
 
 // G02/G03 (interp/motion/arc_move.hpp): one arc move to the end point; nothing without axis or
@@ -478,6 +568,13 @@ Status Executor::applyArc(const std::optional<Code>& code) {
   ArcRequest arc{name, clockwise, state_.position, endPoint(axes.value()),
                  arcWord('R'), arcWord('I'), arcWord('K'), block_.line, anchor};
   if (!axes.value().any() && !arc.r && !arc.i && !arc.k) return success();
+  auto corner = takeCornerWord();
+  if (!corner.ok()) return corner.error();
+  if (corner.value()) {
+    return errorAt(corner.value()->column, fmt::format("{} after an arc: chamfers and corners next to arcs are not "
+                                                       "simulated yet; give the corner as its own G01 or G02/G03",
+                                                       corner.value()->word));
+  }
   if (state_.plane != Plane::ZX) {
     return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so an arc "
                                        "needs the ZX plane; select it with G18",
@@ -488,18 +585,23 @@ Status Executor::applyArc(const std::optional<Code>& code) {
                                        "before the first {} move",
                                        name));
   }
+  if (auto problem = zeroFeedProblem(state_.feed, name)) return errorAt(anchor, *problem);
+  arc.radiusToleranceMm = options_.control.arcRadiusToleranceMm;
+  arc.endOffCircle = options_.control.arcEndOffCircle;
   const auto centre = arcCentre(arc);
   if (!centre.ok()) return centre.error();
-  emit(clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, arc.start, arc.end, 0, centre.value());
+  warnings_.insert(warnings_.end(), centre.value().warnings.begin(), centre.value().warnings.end());
+  if (!centre.value().centre) return success();  // R to the start point: no move
+  emit(clockwise ? MoveKind::ArcCW : MoveKind::ArcCCW, arc.start, arc.end, 0, *centre.value().centre);
   state_.position = arc.end;
   return success();
 }
 
 Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code) {
   const char taperLetter = cycleTaperLetter(cycle.code, options_.dialect);
-  // A block repeats the cycle when it names the cycle's code or gives any of X U Z W R.
-  if (!code && !block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') &&
-      !block_.has(taperLetter)) {
+  // A block runs the cycle when it gives any of X U Z W R; the code alone (a G90 on a safety
+  // line) makes it the modal motion and moves nothing.
+  if (!block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') && !block_.has(taperLetter)) {
     return success();
   }
   const int anchor = code ? code->column : block_.column;
@@ -518,22 +620,23 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   CycleRetained& kept = state_.cycle;
 
   std::optional<double> xDiameterMm = kept.xDiameterMm;
-  if (a.x) xDiameterMm = lengthMm(*a.x, state_.inch);
-  if (a.u) xDiameterMm = diameterOf(start) + lengthMm(*a.u, state_.inch);
+  if (a.x) xDiameterMm = length(*a.x);
+  if (a.u) xDiameterMm = diameterOf(start) + length(*a.u);
   std::optional<double> zMm = kept.zMm;
-  if (a.z) zMm = lengthMm(*a.z, state_.inch);
-  if (a.w) zMm = start.y() + lengthMm(*a.w, state_.inch);
+  if (a.z) zMm = length(*a.z);
+  if (a.w) zMm = start.y() + length(*a.w);
   if (!xDiameterMm || !zMm) {
     return errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
                                        "in this block nor kept from an earlier {0} block",
                                        name, !xDiameterMm ? "X(U)" : "Z(W)"));
   }
-  const double rMm = r ? lengthMm(*r, state_.inch) : kept.rMm.value_or(0.0);
+  const double rMm = r ? length(*r) : kept.rMm.value_or(0.0);
   if (!state_.feed) {
     return errorAt(anchor, fmt::format("feed rate F is not set: {} cuts at feed; give F (e.g. "
                                        "F0.2 mm/rev) in this block or before it",
                                        name));
   }
+  if (auto problem = zeroFeedProblem(state_.feed, name)) return errorAt(anchor, *problem);
   // The alarm compares R with the travel U (G90, a diameter) or W (G94); without R in this
   // block it points at that travel's word.
   const double travelMm = cycle.taperAgainstX ? *xDiameterMm - diameterOf(start) : *zMm - start.y();
@@ -565,6 +668,7 @@ Status Executor::applyCompoundCycle(const Code& code) {
   if (!done.legs.empty() || !done.contourMoves.empty())
     cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
+  warnings_.insert(warnings_.end(), done.warnings.begin(), done.warnings.end());
   emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
   return success();
@@ -610,6 +714,7 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   // An arc back to its start is a full circle, a dwell stands still: both are kept.
   if (from == to && !isArc(kind) && kind != MoveKind::Dwell) return;
   warnIfSurfaceSpeedUnclamped();
+  if (isCutting(kind)) warnIfFeedImplausible();
   Move move;
   move.kind = kind;
   move.from = from;
@@ -632,6 +737,15 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   move.column = block_.column;
   move.cycleStep = cycleStep;
   moves_.push_back(move);
+}
+
+// Where a cut first runs at a feed (or feed mode) other than the cut before it's.
+void Executor::warnIfFeedImplausible() {
+  const std::pair current{*state_.feed, state_.feedMode};
+  if (state_.checkedFeed == current) return;
+  state_.checkedFeed = current;
+  if (auto problem = implausibleFeed(state_.feedWord, current.first, current.second, state_.inch))
+    warnings_.push_back({block_.line, block_.column, *problem});
 }
 
 // The first move after G96 tells whether G50 S was given in time to limit it.

@@ -49,19 +49,22 @@ Result<std::size_t> CallStack::call(const SubprogramCall& call, std::size_t inde
   return start->second;
 }
 
-Result<std::size_t> CallStack::giveBack(int column, std::size_t index) {
-  if (frames_.empty()) {
-    return Error{program_.blocks[index].line, column,
-                 "M99 in the main program: it ends a subprogram called by M98 (a control would "
-                 "repeat the main program forever; end the main program with M30 or M02 before "
-                 "its subprograms)"};
-  }
+Result<std::size_t> CallStack::giveBack(const SubprogramReturn& giveBack, std::size_t index) {
   Frame& frame = frames_.back();
   if (frame.repeatsLeft > 0) {
     --frame.repeatsLeft;
     return frame.start;
   }
-  const std::size_t next = frame.callFrom + 1;
+  std::size_t next = frame.callFrom + 1;
+  if (giveBack.sequence) {
+    const std::vector<std::size_t> found = program_.findSequence(*giveBack.sequence, frame.callFrom);
+    if (found.empty()) {
+      return Error{program_.blocks[index].line, giveBack.sequenceColumn,
+                   fmt::format("M99 P{0} returns to N{0} of the calling program, which has no block N{0}",
+                               *giveBack.sequence)};
+    }
+    next = found.front();
+  }
   frames_.pop_back();
   return next;
 }

@@ -2,7 +2,8 @@
 // M98/M99 in one file: the subprograms that are running, innermost last.
 //   M98 P… in block i      → go to O<program>'s block; M99 comes back to block i + 1
 //                            after the last repeat, or to O<program> again before it
-//   M99 in the main program → an error (a control would repeat the program forever)
+//   M99 P… in a subprogram → after the last repeat, to N… of the calling program
+//   M99 in the main program → the interpreter's: the control would run it again, forever
 
 #include <cstddef>
 #include <optional>
@@ -24,8 +25,10 @@ class CallStack {
 
   /// The block to run next for the M98 in block `index`.
   Result<std::size_t> call(const SubprogramCall& call, std::size_t index);
-  /// The block to run next for the M99 at `column` of block `index`.
-  Result<std::size_t> giveBack(int column, std::size_t index);
+  /// The block to run next for the M99 of block `index`, which must be in a subprogram.
+  Result<std::size_t> giveBack(const SubprogramReturn& giveBack, std::size_t index);
+  /// Whether a subprogram is running (else M99 ends the main program).
+  bool inSubprogram() const { return !frames_.empty(); }
   /// When the text ended inside a subprogram: the error, located at its M98.
   std::optional<Error> unfinished() const;
   /// The main program's block whose M98 the running subprograms descend from, if any runs.

@@ -38,9 +38,9 @@ Result<ValueWords> takeValue(ParsedBlock& block, char absolute, char incremental
 }
 
 // `value` after the words: `scale` converts a length as read into the stored unit.
-void apply(const ValueWords& words, bool inch, double scale, double& value) {
-  if (words.absolute) value = lengthMm(*words.absolute, inch) * scale;
-  if (words.incremental) value += lengthMm(*words.incremental, inch) * scale;
+void apply(const ValueWords& words, const NumberReading& reading, double scale, double& value) {
+  if (words.absolute) value = lengthMm(*words.absolute, reading) * scale;
+  if (words.incremental) value += lengthMm(*words.incremental, reading) * scale;
 }
 
 Status setToolOffset(ParsedBlock& block, const Word& p, ModalState& state, const InterpreterOptions& options) {
@@ -71,10 +71,10 @@ Status setToolOffset(ParsedBlock& block, const Word& p, ModalState& state, const
   }
   auto table = std::make_shared<ToolOffsets>(state.offsetTable ? *state.offsetTable : options.offsets);
   ToolOffset& o = (*table)[entry];
-  const bool inch = state.inch;
-  apply(x.value(), inch, 1.0, geometry ? o.xDiameterMm : o.wearXDiameterMm);
-  apply(z.value(), inch, 1.0, geometry ? o.zMm : o.wearZMm);
-  apply(r.value(), inch, 1.0, geometry ? o.radiusMm : o.wearRadiusMm);
+  const NumberReading reading = NumberReading::of(options.control, state.inch);
+  apply(x.value(), reading, 1.0, geometry ? o.xDiameterMm : o.wearXDiameterMm);
+  apply(z.value(), reading, 1.0, geometry ? o.zMm : o.wearZMm);
+  apply(r.value(), reading, 1.0, geometry ? o.radiusMm : o.wearRadiusMm);
   if (q) o.tip = static_cast<int>(q->value);
   if (o.radiusMm + o.wearRadiusMm < 0) {
     const Word& word = r.value().absolute ? *r.value().absolute : *r.value().incremental;
@@ -86,7 +86,7 @@ Status setToolOffset(ParsedBlock& block, const Word& p, ModalState& state, const
   return success();
 }
 
-Status setWorkOffset(ParsedBlock& block, const Word& p, ModalState& state) {
+Status setWorkOffset(ParsedBlock& block, const Word& p, ModalState& state, const InterpreterOptions& options) {
   if (!isPlainInteger(p) || p.value > kWorkOffsetSystems) {
     return Error{block.line, p.column,
                  fmt::format("{} is not a work offset: G10 L2 P0 sets the external offset, P1…P6 "
@@ -99,8 +99,9 @@ Status setWorkOffset(ParsedBlock& block, const Word& p, ModalState& state) {
   if (!z.ok()) return z.error();
   WorkOffsets offsets = state.frame.offsets;
   RZ& offset = offsets[static_cast<std::size_t>(p.value)];
-  apply(x.value(), state.inch, 0.5, offset.x());  // X is a diameter; the frame keeps radii
-  apply(z.value(), state.inch, 1.0, offset.y());
+  const NumberReading reading = NumberReading::of(options.control, state.inch);
+  apply(x.value(), reading, 0.5, offset.x());  // X is a diameter; the frame keeps radii
+  apply(z.value(), reading, 1.0, offset.y());
   changeWorkOffsets(offsets, state);
   return success();
 }
@@ -127,7 +128,7 @@ Status applyDataSetting(ParsedBlock& block, const Code& g10, ModalState& state,
                              "(tool offsets), the forms of Fanuc lathes",
                              l->text())};
   }
-  return setWorkOffset(block, *p, state);
+  return setWorkOffset(block, *p, state, options);
 }
 
 }  // namespace lathesim::interp

@@ -3,11 +3,14 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <utility>
 
 #include "geometry/rz.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/cycles/compound_params.hpp"
+#include "interp/execution/length_writing.hpp"
 #include "interp/execution/work_frame.hpp"
 #include "interp/move.hpp"
 
@@ -27,6 +30,13 @@ struct CycleRetained {
                                       // G94 Z at the cut's start minus Z at its end
 };
 
+/// F0 (GSK §3.26: the feed becomes 0) is legal, but a cut at it never ends on a machine: the
+/// error for `what` ("G01", "G90") cutting at F0, or nullopt when the feed in force is not 0.
+inline std::optional<std::string> zeroFeedProblem(std::optional<double> feed, std::string_view what) {
+  if (!feed || *feed != 0) return std::nullopt;
+  return std::string(what) + " cuts at F0, a feed of 0: the machine would wait there forever; give F > 0";
+}
+
 struct ModalState {
   MotionMode motion = MotionMode::Rapid;
   Plane plane = Plane::ZX;
@@ -34,6 +44,8 @@ struct ModalState {
   bool incremental = false;  // G91 in dialects that have it: X and Z words are distances
   FeedMode feedMode = FeedMode::PerRevolution;
   std::optional<double> feed;  // mm/min (G98) or mm/rev (G99); unset until the first F
+  std::string feedWord;        // that F as the program wrote it, for messages
+  std::optional<std::pair<double, FeedMode>> checkedFeed;  // the feed the last cut was checked at
   SpindleMode spindleMode = SpindleMode::Rpm;  // G97 is the power-on state
   double spindleSpeed = 0.0;                   // rpm under G97 (S, or kept from G96)
   double surfaceSpeedMPerMin = 0.0;            // G96 S, remembered across G97 periods
@@ -48,13 +60,14 @@ struct ModalState {
                       // the table, and a changed entry takes effect at the next T word
   std::shared_ptr<const ToolOffsets> offsetTable;  // the table as G10 left it; null: the setup's
   NoseSide noseSide = NoseSide::None;  // group 07: G40 / G41 / G42
-  WorkFrame frame;        // G54–G59 and their offsets (G10 L2 changes them)
+  WorkFrame frame;        // G54–G59 and their offsets (G10 L2 changes them), and G50's shift
   RZ position{0.0, 0.0};  // where the tool is in the selected work coordinate system
                           // (radius mm, Z mm); the setup's frame is position + frame.shift()
   std::optional<std::pair<int, int>> drillCancelWithCycle;  // (line, column) of a G80 read while
                                                             // G90/G92/G94 stayed modal
   CycleRetained cycle;
   CompoundCycleParams compound;  // G71–G75 first-block values
+  LengthWriting lengthWriting;   // lengths read with and without a decimal point
   bool ended = false;  // M02/M30 read: nothing after it runs
 };
 

@@ -14,9 +14,17 @@ struct SubprogramCall {
   int column = 0;  // of the P word, for diagnostics
 };
 
+/// M99 [P…]: return from a subprogram, to the block after the call, or to N`sequence` of the
+/// calling program (Fanuc, GSK). In the main program it starts the program over.
+struct SubprogramReturn {
+  int column = 0;                 // of the M99
+  std::optional<int> sequence;    // P
+  int sequenceColumn = 0;         // of the P word
+};
+
 struct ProgramFlow {
   std::optional<SubprogramCall> call;        // M98
-  std::optional<int> returnColumn;           // M99: the column of the code
+  std::optional<SubprogramReturn> giveBack;  // M99
   std::optional<std::size_t> continueAfter;  // index of a block: go on with the one after it
 };
 

@@ -46,8 +46,9 @@ Result<RZ> machineCoordinateTarget(ParsedBlock& block, const Code& g53, const Mo
   const RZ zero = options.machineZero.value_or(options.referencePosition.value_or(options.startPosition));
   const RZ shift = state.frame.shift();
   RZ world = state.position + shift;  // the setup's frame
-  if (x) world.x() = zero.x() + lengthMm(*x, state.inch) / 2.0;
-  if (z) world.y() = zero.y() + lengthMm(*z, state.inch);
+  const NumberReading reading = NumberReading::of(options.control, state.inch);
+  if (x) world.x() = zero.x() + lengthMm(*x, reading) / 2.0;
+  if (z) world.y() = zero.y() + lengthMm(*z, reading);
   return RZ(world - shift);
 }
 

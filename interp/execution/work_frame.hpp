@@ -27,9 +27,13 @@ inline WorkOffsets zeroWorkOffsets() {
 struct WorkFrame {
   WorkOffsets offsets = zeroWorkOffsets();
   int system = 1;  // 1…6 for G54…G59; G54 at power-on
+  // G50 X(U) Z(W) (GSK980TDi §3.18) declares the tool's coordinates: the frame moves by the
+  // difference, whatever system is selected (all six move together, as on a Fanuc's G92).
+  RZ coordinateSetting{0, 0};
 
-  /// Where program zero lies in the setup's frame: external + the selected system's offset.
-  RZ shift() const { return offsets[0] + offsets[static_cast<std::size_t>(system)]; }
+  /// Where program zero lies in the setup's frame: external + the selected system's offset +
+  /// G50's shift.
+  RZ shift() const { return offsets[0] + offsets[static_cast<std::size_t>(system)] + coordinateSetting; }
 };
 
 }  // namespace lathesim::interp

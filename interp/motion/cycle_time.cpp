@@ -109,7 +109,13 @@ std::optional<double> perRevolutionTimeS(const Move& move, const MachineLimits& 
   constexpr double kMmPerM = 1000.0;
   const double clampRpm = surfaceSpeedClampRpm(move.spindleLimitRpm, machine);
   const InverseRpm f{kTwoPi / (kMmPerM * move.spindleS), 1.0 / clampRpm};
-  const double minutesTimesFeed = isArc(move.kind) ? arcIntegral(f, move) : lineIntegral(f, move);
+  // The control turns the spindle for the X of its own coordinates, which G50 may have moved
+  // away from the setup's.
+  Move programmed = move;
+  programmed.from -= move.workShift;
+  programmed.to -= move.workShift;
+  programmed.center -= move.workShift;
+  const double minutesTimesFeed = isArc(move.kind) ? arcIntegral(f, programmed) : lineIntegral(f, programmed);
   return minutesTimesFeed / move.feed * kSecondsPerMinute;
 }
 

@@ -4,27 +4,25 @@
 
 namespace lathesim::interp {
 
-std::vector<Error> implausibleFeedWarnings(const Toolpath& toolpath) {
-  std::vector<Error> warnings;
-  const Move* previous = nullptr;
-  for (const Move& move : toolpath.moves) {
-    if (!isCutting(move.kind)) continue;
-    const bool same = previous && previous->feed == move.feed && previous->feedMode == move.feedMode;
-    previous = &move;
-    if (same) continue;
-    if (move.feedMode == FeedMode::PerRevolution && move.feed > kMaxPlausibleFeedMmPerRev) {
-      warnings.push_back({move.line, move.column,
-                          fmt::format("F{0:g} under G99 is {0:g} mm per revolution; did you mean G98 "
-                                      "(mm per minute)?",
-                                      move.feed)});
-    } else if (move.feedMode == FeedMode::PerMinute && move.feed < kMinPlausibleFeedMmPerMin) {
-      warnings.push_back({move.line, move.column,
-                          fmt::format("F{0:g} under G98 is {0:g} mm per minute; did you mean G99 "
-                                      "(mm per revolution)?",
-                                      move.feed)});
-    }
+std::optional<std::string> implausibleFeed(const std::string& written, double feedMm, FeedMode mode, bool inch) {
+  const bool perRevolution = mode == FeedMode::PerRevolution;
+  const char* per = perRevolution ? "revolution" : "minute";
+  // "0.2 mm", or "0.012 inch (0.3048 mm)": the program's own unit first.
+  const double asWritten = inch ? feedMm / 25.4 : feedMm;
+  const std::string amount = inch ? fmt::format("{:g} inch ({:g} mm)", asWritten, feedMm) : fmt::format("{:g} mm", feedMm);
+  const char* code = perRevolution ? "G99" : "G98";
+  const char* unit = inch ? "inch" : "mm";
+  if (perRevolution && feedMm > kMaxPlausibleFeedMmPerRev)
+    return fmt::format("{} under {} is {} per {}; did you mean G98 ({} per minute)?", written, code, amount, per, unit);
+  if (perRevolution && feedMm < kMinPlausibleFeedMmPerRev) {
+    return fmt::format("{} under {} is {} per {}, finer than a cutting edge takes (below {:g} mm); check the "
+                       "decimal point and the unit",
+                       written, code, amount, per, kMinPlausibleFeedMmPerRev);
   }
-  return warnings;
+  if (!perRevolution && feedMm < kMinPlausibleFeedMmPerMin)
+    return fmt::format("{} under {} is {} per {}; did you mean G99 ({} per revolution)?", written, code, amount, per,
+                       unit);
+  return std::nullopt;
 }
 
 }  // namespace lathesim::interp

@@ -41,10 +41,16 @@ Result<Code> checkedCode(const Word& word, std::optional<int> written, int line,
   return Code{info->number, text, word.column};
 }
 
-Error sameGroupError(int line, const Code& first, const Code& second, std::string_view group) {
-  return Error{line, second.column,
-               fmt::format("{} and {} are both {} codes; a block may hold only one", first.text,
-                           second.text, group)};
+// A second code of one group replaces the first (Fanuc: the last one wins), with a warning.
+template <class Group>
+void keepLast(std::map<Group, Code>& codes, Group group, const Code& code, ParsedBlock& block) {
+  const auto [where, inserted] = codes.emplace(group, code);
+  if (inserted) return;
+  block.warnings.push_back({block.line, code.column,
+                            fmt::format("{} and {} are both {} codes: the last, {}, is in force (as on a Fanuc); "
+                                        "give one of them",
+                                        where->second.text, code.text, groupName(group), code.text)});
+  where->second = code;
 }
 
 }  // namespace
@@ -80,15 +86,13 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
       auto code = checkedCode(word, number, line, info,
                               fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect)));
       if (!code.ok()) return code.error();
-      const auto [where, inserted] = block.gCodes.emplace(info->group, code.value());
-      if (!inserted) return sameGroupError(line, where->second, code.value(), groupName(info->group));
+      keepLast(block.gCodes, info->group, code.value(), block);
     } else if (word.letter == 'M') {
       const auto number = codeNumber(word);
       const MCodeInfo* info = number ? findMCode(*number) : nullptr;
       auto code = checkedCode(word, number, line, info, supportedMCodes());
       if (!code.ok()) return code.error();
-      const auto [where, inserted] = block.mCodes.emplace(info->group, code.value());
-      if (!inserted) return sameGroupError(line, where->second, code.value(), groupName(info->group));
+      keepLast(block.mCodes, info->group, code.value(), block);
     } else {
       const auto [where, inserted] = block.words.emplace(word.letter, word);
       if (!inserted) {

@@ -1,7 +1,8 @@
 #pragma once
 // Words → ParsedBlock: G and M codes sorted into their modal groups, every other word
-// kept by letter. Checks what needs no modal state: unknown or unsupported codes, two
-// codes of one group, a letter given twice. Values stay in the program's units.
+// kept by letter. Checks what needs no modal state: unknown or unsupported codes, a letter
+// given twice. Two codes of one group: the last is in force, as on a Fanuc, with a warning.
+// Values stay in the program's units.
 
 #include <map>
 #include <optional>
@@ -27,6 +28,7 @@ struct ParsedBlock {
   std::map<GGroup, Code> gCodes;
   std::map<MGroup, Code> mCodes;
   std::map<char, Word> words;  // every other word, at most one per letter
+  std::vector<Error> warnings;  // what the block was read with but may not mean
 
   /// Removes and returns the word for `letter`. Execution takes each word it uses;
   /// whatever is left at the end was not used, and is an error.

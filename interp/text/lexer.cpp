@@ -58,8 +58,11 @@ bool readsAsProse(std::string_view tail) {
 
 // The address letters of lathe G-code (system A). Others are unknown letters.
 // B and C are read as words so that a code taking them (G10's C) can; left over, they are
-// refused as the axes this lathe lacks (block_executor.cpp).
-constexpr std::string_view kKnownLetters = "BCFGIJKLMNOPQRSTUWXZ";
+// refused as the axes this lathe lacks (block_executor.cpp). A is a direct drawing
+// dimension's angle, D the GSK's corner radius.
+constexpr std::string_view kKnownLetters = "ABCDFGIJKLMNOPQRSTUWXZ";
+// The letters Fanuc writes after a comma (",A" angle, ",C" chamfer, ",R" corner radius).
+constexpr std::string_view kCommaLetters = "ACR";
 
 bool isNumberChar(const std::string& text) {
   return text.size() == 1 && (std::isdigit(static_cast<unsigned char>(text[0])) ||
@@ -96,12 +99,37 @@ bool BlockReader::skipPercentLine() {
   std::size_t probe = at_;
   while (probe < text_.size() && (isBlank(text_[probe]) || (!inProgram_ && isControl(text_[probe])))) ++probe;
   if (probe >= text_.size() || text_[probe] != '%') return false;
+  if (readBlock_) {
+    closeAt(probe);
+    return true;
+  }
   for (std::size_t i = at_; i < probe; ++i)
     if (isControl(text_[i])) noteLeaderControl(text_[i], column_ + static_cast<int>(i - at_));
   at_ = probe;
   inProgram_ = true;
   endLine();
   return true;
+}
+
+void BlockReader::closeAt(std::size_t percent) {
+  closingPercent_ = std::pair{line_, column_ + static_cast<int>(percent - at_)};
+  // The first character after the '%' that is not blank or a line end.
+  int line = line_;
+  int column = closingPercent_->second + 1;
+  for (std::size_t i = percent + 1; i < text_.size(); i += codePointLength(text_, i)) {
+    const char c = text_[i];
+    if (c == '\n') {
+      ++line;
+      column = 1;
+      continue;
+    }
+    if (!isBlank(c)) {
+      textAfterClosing_ = std::pair{line, column};
+      break;
+    }
+    ++column;
+  }
+  at_ = text_.size();
 }
 
 void BlockReader::noteLeaderControl(char c, int column) {
@@ -211,6 +239,8 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       const std::size_t length = codePointLength(text_, at_);
       if (!started && c == '/') {
         block.deleted = true;
+      } else if (c == '/' && !block.skipFrom) {
+        block.skipFrom = block.chars.size();
       } else {
         block.chars.push_back({std::string(text_.substr(at_, length)), column_});
       }
@@ -230,6 +260,7 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       endLine();
     }
     if (started) {
+      readBlock_ = true;
       block.commentsAbove = std::move(pendingAbove_);
       pendingAbove_.clear();
       return std::optional<RawBlock>(std::move(block));
@@ -327,6 +358,20 @@ Result<std::vector<Word>> tokenize(const RawBlock& block) {
   const auto& chars = block.chars;
   std::size_t i = 0;
   while (i < chars.size()) {
+    // ",A" and its kin: the comma and the letter make one address.
+    const bool comma = chars[i].text == "," && i + 1 < chars.size() && chars[i + 1].text.size() == 1 &&
+                       std::isalpha(static_cast<unsigned char>(chars[i + 1].text[0]));
+    const int commaColumn = chars[i].column;
+    if (comma) {
+      const char after = static_cast<char>(std::toupper(static_cast<unsigned char>(chars[i + 1].text[0])));
+      if (kCommaLetters.find(after) == std::string_view::npos) {
+        return Error{block.line, commaColumn,
+                     fmt::format("unknown address ',{}': a comma is followed by A (angle), C (chamfer) or R "
+                                 "(corner radius)",
+                                 after)};
+      }
+      ++i;
+    }
     const SourceChar& head = chars[i];
     const unsigned char byte = static_cast<unsigned char>(head.text[0]);
     // ':' is the ISO tape's program number address, the same as O (`:0100` is O0100).
@@ -364,7 +409,9 @@ Result<std::vector<Word>> tokenize(const RawBlock& block) {
                                "with at most one decimal point",
                                letter, number)};
     }
-    words.push_back({letter, number, readNumber(number), head.column});
+    if (comma) words.push_back({static_cast<char>(std::tolower(static_cast<unsigned char>(letter))), number,
+                                readNumber(number), commaColumn});
+    else words.push_back({letter, number, readNumber(number), head.column});
     i = end;
   }
   return words;

@@ -21,8 +21,12 @@
 //   - A line that opens with '[' is a school trainer's directive (`[BILLET X56.4 Z84`), not a
 //     block: skipped with a note (job/ reads the billet as the bar); a Macro B block never
 //     opens with '['.
+//   - A '%' line before the first block opens the program; one after it closes it: the text
+//     ends there (what follows is not run, and the interpreter says so).
+//   - A '/' inside a block marks where the optional block skip drops the rest of it (Fanuc ⚠).
 
 #include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,6 +49,8 @@ struct RawBlock {
   std::vector<SourceChar> chars;  // everything after the '/', spaces and comments removed
   std::vector<std::string> comments;       // its ( … ) comments and a prose tail after its ';'
   std::vector<std::string> commentsAbove;  // comment-only lines directly above it
+  std::optional<std::size_t> skipFrom;     // a '/' inside the block: the index into chars where
+                                           // the words it skips start
 };
 
 /// Something the reader skipped that the user should know of, located like an error.
@@ -54,13 +60,17 @@ struct ReadNote {
   std::string message;
 };
 
-/// A letter and its number: "X20 .0" is the word X20.0.
+/// A letter and its number: "X20 .0" is the word X20.0. Fanuc's comma words (",A-45.", ",C1.")
+/// have the letter in lower case ('a'), so that they never meet the plain letter's word.
 struct Word {
-  char letter = 0;     // upper case
+  char letter = 0;     // upper case; lower case for a comma word
   std::string number;  // as written without spaces, e.g. "-5.5", ".5", "0101"
   double value = 0.0;  // the number as read, in the program's units
-  int column = 0;      // column of the letter
-  std::string text() const { return std::string(1, letter) + number; }
+  int column = 0;      // column of the letter (of the comma for a comma word)
+  std::string text() const {
+    const bool comma = letter >= 'a' && letter <= 'z';
+    return (comma ? std::string(",") + static_cast<char>(letter - 'a' + 'A') : std::string(1, letter)) + number;
+  }
 };
 
 /// Splits program text into blocks, one at a time, so nothing after M30 is ever read.
@@ -75,6 +85,11 @@ class BlockReader {
   /// What was skipped so far: the tape leader and the prose comments after ';'.
   std::vector<ReadNote> notes() const;
 
+  /// Where the closing '%' is (line, column), and where the first text after it starts, if
+  /// there is any (known once next() returned the end).
+  std::optional<std::pair<int, int>> closingPercent() const { return closingPercent_; }
+  std::optional<std::pair<int, int>> textAfterClosing() const { return textAfterClosing_; }
+
  private:
   bool skipPercentLine();  // at a line start: skips a '%' line, returns whether it did
   bool skipLeaderLine();   // before the program: skips an '&' header line
@@ -83,6 +98,7 @@ class BlockReader {
   void advance(std::size_t bytes);  // within the line
   void endLine();                   // past the newline at at_
   void takeProseTail(RawBlock& block);
+  void closeAt(std::size_t percent);  // the '%' at `percent` ends the program
 
   std::string_view text_;
   std::size_t at_ = 0;  // byte offset of the next character
@@ -90,6 +106,9 @@ class BlockReader {
   int column_ = 1;
   bool atLineStart_ = true;
   bool inProgram_ = false;  // a block or '%' line has been read: the leader is over
+  bool readBlock_ = false;  // a block was returned: the next '%' closes the program
+  std::optional<std::pair<int, int>> closingPercent_;
+  std::optional<std::pair<int, int>> textAfterClosing_;
   std::vector<std::string> pendingAbove_;  // comment-only lines since the last block
   std::vector<std::string> leaderSkipped_;  // what the leader held, e.g. "ESC", "the line '&HE:1'"
   std::optional<ReadNote> leaderAt_;

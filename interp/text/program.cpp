@@ -2,29 +2,42 @@
 
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "interp/text/label_number.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-std::optional<int> numberOf(const std::vector<Word>& words, char letter) {
-  for (const Word& word : words) {
-    if (word.letter == letter) return static_cast<int>(word.value);
-  }
-  return std::nullopt;
+const Word* wordOf(const std::vector<Word>& words, char letter) {
+  for (const Word& word : words)
+    if (word.letter == letter) return &word;
+  return nullptr;
+}
+
+// The block's N or O number; an error for one too long or not a number (the block then
+// carries it, reported if the block runs).
+Status readLabel(const std::vector<Word>& words, char letter, int line, std::optional<int>& number) {
+  const Word* word = wordOf(words, letter);
+  if (word == nullptr) return success();
+  auto read = letter == 'N' ? labelNumberOf(*word, line, kMaxSequenceDigits, "a sequence number")
+                            : labelNumberOf(*word, line, kMaxProgramDigits, "a program number");
+  if (!read.ok()) return read.error();
+  number = read.value();
+  return success();
 }
 
 }  // namespace
 
-std::optional<std::size_t> Program::findSequence(int sequenceNumber, std::size_t from) const {
+std::vector<std::size_t> Program::findSequence(int sequenceNumber, std::size_t from) const {
   const int program = programOf[from];
+  std::vector<std::size_t> found;
   for (std::size_t i = 0; i < blocks.size(); ++i) {
-    if (programOf[i] == program && !blocks[i].skipped &&
-        blocks[i].sequenceNumber == sequenceNumber) {
-      return i;
-    }
+    if (programOf[i] == program && !blocks[i].skipped && blocks[i].sequenceNumber == sequenceNumber)
+      found.push_back(i);
   }
-  return std::nullopt;
+  return found;
 }
 
 std::optional<int> Program::programNumberOf(std::size_t index) const {
@@ -53,7 +66,8 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
       break;
     }
     if (!next.value()) break;
-    const RawBlock& raw = *next.value();
+    RawBlock& raw = *next.value();
+    if (raw.skipFrom && blockDelete) raw.chars.resize(*raw.skipFrom);
     block.line = raw.line;
     block.column = raw.column;
     block.deleted = raw.deleted;
@@ -63,9 +77,11 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
     if (!block.skipped) {
       auto words = tokenize(raw);
       if (words.ok()) {
-        block.sequenceNumber = numberOf(words.value(), 'N');
-        block.programNumber = numberOf(words.value(), 'O');
-        block.parsed = parseBlock(words.value(), raw.line, raw.column, dialect);
+        const Status sequence = readLabel(words.value(), 'N', raw.line, block.sequenceNumber);
+        const Status number = readLabel(words.value(), 'O', raw.line, block.programNumber);
+        block.parsed = !sequence.ok() ? Result<ParsedBlock>(sequence.error())
+                       : !number.ok() ? Result<ParsedBlock>(number.error())
+                                      : parseBlock(words.value(), raw.line, raw.column, dialect);
       } else {
         block.parsed = words.error();
       }
@@ -78,7 +94,13 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
     program.programOf.push_back(currentProgram);
     program.blocks.push_back(std::move(block));
   }
-  if (source == 0) program.notes = reader.notes();
+  if (source != 0) return;
+  program.notes = reader.notes();
+  if (const auto after = reader.textAfterClosing()) {
+    program.textAfterEnd = Error{after->first, after->second,
+                                 fmt::format("the program ends at the % on line {}: this text after it is not run",
+                                             reader.closingPercent()->first)};
+  }
 }
 
 }  // namespace

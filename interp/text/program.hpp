@@ -43,10 +43,11 @@ struct Program {
   std::map<int, std::size_t> programStart;  // O number → index of the first block with it
   std::vector<int> programOf;  // per block: the index of the O block it follows, −1 before any
   std::vector<ReadNote> notes;  // what the reader skipped (a tape leader, prose after ';')
+  std::optional<Error> textAfterEnd;  // a warning at text after the closing '%', which never runs
 
-  /// The index of the first block numbered N`sequenceNumber` in the same program (between
-  /// the same O blocks) as block `from`.
-  std::optional<std::size_t> findSequence(int sequenceNumber, std::size_t from) const;
+  /// The indices of the blocks numbered N`sequenceNumber` in the same program (between the
+  /// same O blocks) as block `from`, in order.
+  std::vector<std::size_t> findSequence(int sequenceNumber, std::size_t from) const;
   /// The O number of the program that block `index` belongs to, if it has one.
   std::optional<int> programNumberOf(std::size_t index) const;
 };

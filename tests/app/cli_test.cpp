@@ -23,7 +23,9 @@
 #include <utility>
 #include <vector>
 
+#include "interp/control/control_preset.hpp"
 #include "interp/toolpath_csv.hpp"
+#include "sim/stock.hpp"
 
 namespace lathesim::app {
 namespace {
@@ -53,7 +55,7 @@ Outcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) 
 /// The same bound as parts_test: 5 % of a voxel layer over the bar's whole surface.
 double volumeToleranceMm3(double diameterMm, double lengthMm, double voxelMm) {
   const double r = diameterMm / 2.0;
-  return 0.05 * voxelMm * (2.0 * M_PI * r * r + 2.0 * M_PI * r * lengthMm);
+  return sim::volumeToleranceMm3(2.0 * M_PI * r * r + 2.0 * M_PI * r * lengthMm, voxelMm);
 }
 
 double expectedFinalVolumeMm3(const std::string& part) {
@@ -75,6 +77,7 @@ bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_em
 
 constexpr const char* kPart = "seed001-taper-r24";
 constexpr double kVoxelMm = 0.25;
+constexpr double kCsvRoundingMm = 5e-5;  // toolpath.csv writes 4 decimals (a dog-leg's corner has more)
 // Seed 001's bar: Φ50 × 60 (parts/seed001-taper-r24/setup.toml).
 const double kTolerance = volumeToleranceMm3(50.0, 60.0, kVoxelMm);
 
@@ -130,7 +133,7 @@ TEST_F(RunSeed001, ReportHasTheRunsFigures) {
   std::ifstream csv(out_ / "toolpath.csv");
   const auto csvRows = interp::readToolpathCsv(csv);
   EXPECT_EQ(r.at("moves").get<std::size_t>(), csvRows.size());
-  EXPECT_EQ(r.at("moves").get<std::size_t>(), 5u);
+  EXPECT_EQ(r.at("moves").get<std::size_t>(), 6u);  // line 1's rapid is a dog-leg: two moves
   EXPECT_EQ(r.at("collisions"), nlohmann::json::array());
 
   const auto& blocks = r.at("blocks");
@@ -170,9 +173,33 @@ TEST_F(RunSeed001, ReportHasTheCycleTimePerBlockAndTheWarnings) {
       << outcome_->err;
 }
 
+// The control in force, every parameter with its manual's reference, and the travel the moves
+// were checked against: seed 001's setup keeps the default preset but sets G99 at power-on; its
+// travel is derived from the start X100 Z100 (also the reference) and the Φ50 × 60 bar, face Z0.
+TEST_F(RunSeed001, ReportNamesTheControlAndTheTravel) {
+  const nlohmann::json r = report();
+  const auto& control = r.at("control");
+  EXPECT_EQ(control.at("preset"), "gsk980tdi");
+  const auto& parameters = control.at("parameters");
+  EXPECT_EQ(parameters.size(), interp::controlParameterKeys().size());  // every one
+  EXPECT_EQ(parameters.at("power_on_feed_mode").at("value"), "G99");
+  EXPECT_EQ(parameters.at("power_on_feed_mode").at("set_by"), "setup");
+  EXPECT_EQ(parameters.at("rapid_positioning").at("value"), "nonlinear");
+  EXPECT_EQ(parameters.at("rapid_positioning").at("set_by"), "preset");
+  EXPECT_EQ(parameters.at("rapid_positioning").at("manual"), "GSK No.1#7 = 0 (§3.2; G28 legs §3.15 note 3)");
+  EXPECT_EQ(parameters.at("rapid_positioning").at("verified"), true);
+  EXPECT_EQ(parameters.at("least_increment").at("value"), 0.001);
+  EXPECT_EQ(parameters.at("tool_word").at("value"), nlohmann::json::array({"2+2"}));
+  const auto& travel = r.at("travel");
+  EXPECT_EQ(travel.at("x_diameter_mm"), nlohmann::json::array({-50.0, 100.0}));
+  EXPECT_EQ(travel.at("z_mm"), nlohmann::json::array({-120.0, 100.0}));
+  EXPECT_EQ(travel.at("x_from"), "derived from [machine] reference and start and the bar");
+  EXPECT_NE(outcome_->out.find("program.nc (control gsk980tdi): 6 moves"), std::string::npos) << outcome_->out;
+}
+
 TEST_F(RunSeed001, ToolpathCsvIsTheGoldenToolpath) {
   std::ifstream in(out_ / "toolpath.csv");
-  test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv");
+  test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv", kCsvRoundingMm);
 }
 
 /// A binary STL's triangles, as read from the file.
@@ -295,8 +322,47 @@ TEST(Cli, ExpandPrintsExactlyTheGoldenToolpath) {
   ASSERT_FALSE(lines.empty());
   EXPECT_EQ(lines[0], "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s");
   std::istringstream in(outcome.out);
-  test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv");
+  test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv", kCsvRoundingMm);
   EXPECT_EQ(lines.size(), 1 + goldenToolpath(kPart).size());  // nothing else on stdout
+}
+
+TEST(Cli, ControlAndBlockSkipOnTheCommandLineOverrideTheSetup) {
+  TempDir dir("control");
+  const fs::path program = dir.path() / "p.nc";
+  writeFile(program, "/G00 X20. Z10.\nG00 X40\n");
+  const auto expand = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args{"expand", program.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return lathesim(args, dir.path());
+  };
+  // gsk980tdi, block skip on: line 1 skipped, so X40 (40 mm) is reached from the start X200.
+  Outcome outcome = expand({});
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  EXPECT_EQ(linesOf(outcome.out).back(), "2,rapid,200,200,40,200,0,,,0.8");  // 80 of radius at 6000 mm/min
+  // fanuc-0i-t (DPI 0): X40 is 0.04 mm; --block-skip off runs line 1.
+  outcome = expand({"--control", "fanuc-0i-t", "--block-skip", "off"});
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const auto lines = linesOf(outcome.out);
+  EXPECT_EQ(lines[1].rfind("1,rapid,200,200,", 0), 0u) << outcome.out;
+  EXPECT_EQ(lines.back().rfind("2,rapid,20,10,0.04,10,0", 0), 0u) << outcome.out;
+  // An unknown preset is refused by name.
+  outcome = expand({"--control", "fanuc-10t"});
+  EXPECT_NE(outcome.status, 0);
+  EXPECT_NE(outcome.err.find("fanuc-10t"), std::string::npos) << outcome.err;
+}
+
+// parts/g50-shift-twice stops at M01 on line 7: report.json lists it (not timed).
+TEST(Cli, ReportListsTheProgramStops) {
+  TempDir dir("stops");
+  const fs::path part = kPartsDir / "g50-shift-twice";
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(),
+                                    "--out", out.string(), "--voxel", "0.5"},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
+  EXPECT_EQ(r.at("stops"), nlohmann::json::parse(R"([{"line": 7, "column": 1, "code": "M01"}])"));
+  EXPECT_NEAR(r.at("cycle_time_s").get<double>(), 13.205, 1e-9);  // the stop adds nothing
 }
 
 TEST(Cli, UnknownSetupKeyIsNamedAndWritesNothing) {
@@ -361,16 +427,16 @@ Outcome runSeed000AtLine(const TempDir& dir, const std::string& line, const fs::
                   dir.path());
 }
 
-// Line 1 rapids to X130 Z5; line 2 (G94 X0 Z0) rapids to Z0, faces in to the axis, feeds back
-// to Z5 and rapids out: 5 moves. The face pass takes the 2 mm allowance off the whole face,
+// Line 1 rapids to X130 Z5 (a dog-leg: two moves); line 2 (G94 X0 Z0) rapids to Z0, faces in
+// to the axis, feeds back to Z5 and rapids out: 6 moves. The face pass takes the 2 mm allowance off the whole face,
 // leaving the bar Φ125 from Z-110 to Z0: π·62.5²·110 = 1 349 897 mm³.
 // Line 3 (G94 X120 Z-110) faces the left end at Z-110 down to r 60 and turns r 60 from Z-110
-// back to Z5: the bar Φ120 from Z-110 to Z0, π·60²·110 = 1 244 071 mm³, after 9 moves.
+// back to Z5: the bar Φ120 from Z-110 to Z0, π·60²·110 = 1 244 071 mm³, after 10 moves.
 TEST(Cli, AtLineSimulatesOnlyUpToThatLine) {
   TempDir dir("at-line");
   const double tolerance = volumeToleranceMm3(125.0, 112.0, 0.5);
   for (const auto& [line, moves, volumeMm3] :
-       {std::tuple{2, 5, M_PI * 62.5 * 62.5 * 110.0}, std::tuple{3, 9, M_PI * 60.0 * 60.0 * 110.0}}) {
+       {std::tuple{2, 6, M_PI * 62.5 * 62.5 * 110.0}, std::tuple{3, 10, M_PI * 60.0 * 60.0 * 110.0}}) {
     const fs::path out = dir.path() / ("out" + std::to_string(line));
     const Outcome outcome = runSeed000AtLine(dir, std::to_string(line), out);
     ASSERT_EQ(outcome.status, 0) << outcome.err;
@@ -384,7 +450,8 @@ TEST(Cli, AtLineSimulatesOnlyUpToThatLine) {
 }
 
 // parts/m98-grooves calls O0200 (lines 9–11) three times. Line 10 (the retract) first runs
-// after the rapid on line 4 and the first plunge on line 9, so --at-line 10 keeps 3 moves and
+// after the rapid on line 4 (a dog-leg, two moves) and the first plunge on line 9, so --at-line
+// 10 keeps 4 moves and
 // one groove: the Φ40 × 50 bar less the annulus r 16..20, 3 wide:
 // π·20²·50 − 3·π·(20² − 16²) = 20000π − 432π = 19568π mm³. The tool stands at X44 Z-10.
 TEST(Cli, AtLineOfASubprogramStopsAfterItsFirstRun) {
@@ -396,7 +463,7 @@ TEST(Cli, AtLineOfASubprogramStopsAfterItsFirstRun) {
                                    dir.path());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
-  EXPECT_EQ(r.at("moves"), 3);
+  EXPECT_EQ(r.at("moves"), 4);
   EXPECT_NEAR(r.at("final_volume_mm3").get<double>(), 19568.0 * M_PI, volumeToleranceMm3(40.0, 50.0, 0.25));
 }
 

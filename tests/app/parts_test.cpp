@@ -52,12 +52,20 @@ std::string readFile(const fs::path& path) {
   return text.str();
 }
 
-/// What expected.toml says: either the diagnostic, or both volumes.
+/// A collision a part is meant to have (a crash worked out by hand), `[[collision]]`.
+struct ExpectedCollision {
+  int line = 0;
+  std::string kind;
+  double volumeMm3 = 0;
+};
+
+/// What expected.toml says: either the diagnostic, or both volumes (and the collisions, if any).
 struct Expected {
   std::optional<std::string> diagnostic;
   double finalVolumeMm3 = 0;
   double removedVolumeMm3 = 0;
   std::optional<double> cycleTimeS;
+  std::vector<ExpectedCollision> collisions;
 };
 
 Expected readExpected(const std::string& part) {
@@ -74,6 +82,13 @@ Expected readExpected(const std::string& part) {
   expected.finalVolumeMm3 = *finalVolume;
   expected.removedVolumeMm3 = *removedVolume;
   expected.cycleTimeS = table["cycle_time_s"].value<double>();
+  if (const auto* collisions = table["collision"].as_array()) {
+    for (const toml::node& node : *collisions) {
+      const toml::table& c = *node.as_table();
+      expected.collisions.push_back({c["line"].value<int>().value(), c["kind"].value<std::string>().value(),
+                                     c["volume_mm3"].value<double>().value()});
+    }
+  }
   return expected;
 }
 
@@ -159,9 +174,17 @@ TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
     const double tolerance = volumeToleranceMm3(setup.stock, voxel);
     EXPECT_NEAR(simulated.finalVolumeMm3, expected.finalVolumeMm3, tolerance);
     EXPECT_NEAR(simulated.stockVolumeMm3 - simulated.finalVolumeMm3, expected.removedVolumeMm3, tolerance);
-    EXPECT_TRUE(simulated.result.collisions.empty())
-        << simulated.result.collisions.size() << " collision(s), the first on line "
-        << simulated.result.collisions[0].line;
+    // The collisions the part means to have, each within 5 % of its hand-worked volume (a crash's
+    // sliver is small against the bar, so the bar's bound above would say little), and no other.
+    const auto& collisions = simulated.result.collisions;
+    ASSERT_EQ(collisions.size(), expected.collisions.size())
+        << collisions.size() << " collision(s)" << (collisions.empty() ? "" : ", the first on line ")
+        << (collisions.empty() ? "" : std::to_string(collisions[0].line));
+    for (std::size_t i = 0; i < collisions.size(); ++i) {
+      EXPECT_EQ(collisions[i].line, expected.collisions[i].line);
+      EXPECT_EQ(collisions[i].kind, expected.collisions[i].kind);
+      EXPECT_NEAR(collisions[i].volumeMm3, expected.collisions[i].volumeMm3, 0.05 * expected.collisions[i].volumeMm3);
+    }
   }
 }
 

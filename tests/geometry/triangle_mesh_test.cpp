@@ -33,5 +33,46 @@ TEST(TriangleMesh, FlippedTriangleIsDetected) {
   EXPECT_FALSE(isClosedAndOriented(cube));
 }
 
+TEST(TriangleMesh, AreaOfACube) { EXPECT_NEAR(surfaceAreaMm2(unitCube(2.0)), 24.0, 1e-9); }
+
+// Two cubes sharing an edge (0,0,0)–(0,0,1) but with vertices of their own, as volumeToMesh
+// makes them where the surface passes through voxel centres: closed as indexed, but the
+// STL, read by position, has that edge shared by four triangles.
+TEST(TriangleMesh, WeldingShowsAnEdgeSharedByFourTriangles) {
+  TriangleMesh two = unitCube(1.0);
+  const TriangleMesh second = unitCube(1.0);
+  const auto offset = static_cast<std::uint32_t>(two.vertices.size());
+  for (const auto& v : second.vertices) two.vertices.push_back(v - Eigen::Vector3f(1, 1, 0));
+  for (const auto& t : second.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  ASSERT_TRUE(isClosedAndOriented(two));
+  weldCoincidentVertices(two);
+  EXPECT_EQ(two.vertices.size(), 14u);  // 16 corners, two of them shared
+  EXPECT_FALSE(isClosedAndOriented(two));
+  EXPECT_NEAR(enclosedVolumeMm3(two), 2.0, 1e-9);
+}
+
+// A quad split into a real triangle and a sliver whose corners weld into one point: the
+// sliver shows as degenerate until it is dropped.
+TEST(TriangleMesh, CollapsedTrianglesAreSeenAndDropped) {
+  TriangleMesh cube = unitCube(1.0);
+  // Vertex 0 again, as a separate vertex, and a sliver from it along the edge 0–1.
+  cube.vertices.push_back(cube.vertices[0]);
+  cube.triangles.push_back({0, 8, 1});
+  weldCoincidentVertices(cube);
+  EXPECT_EQ(cube.vertices.size(), 8u);
+  EXPECT_FALSE(isClosedAndOriented(cube));
+  EXPECT_EQ(dropCollapsedTriangles(cube), 1u);
+  EXPECT_TRUE(isClosedAndOriented(cube));
+}
+
+TEST(TriangleMesh, MinusZeroIsTheSamePositionAsZero) {
+  TriangleMesh cube = unitCube(1.0);
+  cube.vertices.push_back(Eigen::Vector3f(-0.0f, 0.0f, -0.0f));
+  cube.triangles[0][0] = 8;  // was vertex 0 at (0, 0, 0)
+  weldCoincidentVertices(cube);
+  EXPECT_EQ(cube.vertices.size(), 8u);
+  EXPECT_TRUE(isClosedAndOriented(cube));
+}
+
 }  // namespace
 }  // namespace lathesim

@@ -1,7 +1,9 @@
 // The bad-program corpus: each tests/interp/bad/*.nc opens with the diagnostic it must give,
 //   (expect: LINE:COL: error: part of the message)
 // and interpreting it must give exactly that error, located in that file. The line is a
-// comment to the interpreter too, so the expected text cannot contain a parenthesis.
+// comment to the interpreter too, so the expected text cannot contain a parenthesis. A
+// second line "(control: PRESET; …)" names the control preset the program is bad on (else the
+// default preset's).
 
 #include <gtest/gtest.h>
 
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "interp/control/control_preset.hpp"
 #include "interp/interpreter.hpp"
 #include "test_support.hpp"
 
@@ -53,6 +56,12 @@ TEST(BadCorpus, EachProgramGivesItsExpectedDiagnostic) {
 
     const std::string name = path.filename().string();
     InterpreterOptions options = test::defaultOptions();
+    const std::regex controlLine(R"(\n\(control: ([a-z0-9-]+);)");
+    if (std::smatch control; std::regex_search(text, control, controlLine)) {
+      const auto preset = controlPreset(control[1].str());
+      ASSERT_TRUE(preset) << control[1];
+      options.control = preset->parameters;
+    }
     options.programDirectories = {path.parent_path()};  // subprograms kept beside the program
     const auto result = interpret(text, name, options);
     test::expectError(result, line, column, part);

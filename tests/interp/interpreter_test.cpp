@@ -190,12 +190,39 @@ TEST(Interpreter, ZeroLengthMoveIsNotEmitted) {
   EXPECT_EQ(result.toolpath.blockCount, 3);
 }
 
-TEST(Interpreter, G50DeclaresWhereTheToolIs) {
-  // The tool stands at (100, 200); G50 calls that X150 Z100, then U/W shift it again.
+TEST(Interpreter, G50DeclaresWhereTheToolIsAndMovesTheFrameNotTheTool) {
+  // The tool stands at (r 100, Z200) of the setup. G50 X150 Z100 calls that (75, 100): the
+  // program's zero lies at (100 − 75, 200 − 100) = (25, 100) of the setup. G00 X50 Z10 =
+  // program (25, 10) = setup (50, 110). G50 U10 W-5 calls the tool's (25, 10) (30, 5): the
+  // zero moves by (−5, +5) to (20, 105). G00 X40 = program (20, 5) = setup (40, 110). The
+  // tool never jumps: each move starts where the last ended.
   const auto result = run("G50 X150 Z100\nG00 X50 Z10\nG50 U10 W-5\nG00 X40\n");
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
   expectMoves(result.toolpath.moves,
-              {{kRapid, 75, 100, 25, 10, 0, 0}, {kRapid, 30, 5, 20, 5, 0, 0}});
+              {{kRapid, 100, 200, 50, 110, 0, 0}, {kRapid, 50, 110, 40, 110, 0, 0}});
+  EXPECT_EQ(result.toolpath.moves[1].workShift, RZ(20, 105));
+}
+
+TEST(Interpreter, ASubprogramCalledBeforeAndAfterG50CutsInTwoPlaces) {
+  // O100 is G01 W-2 from wherever the tool is, then back: called at program Z0, then after
+  // G50 W30 (the tool's Z0 is now called Z30, so the zero moves 30 mm toward the chuck) the
+  // same program Z0 is setup Z-30.
+  const auto result =
+      run("G00 X40 Z0\nM98 P100\nG50 W30\nG00 Z0\nM98 P100\nM30\nO100\nG01 W-2 F0.1\nG00 W2\nM99\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 0, 0, 0},
+                                      {kFeed, 20, 0, 20, -2, 0.1, 0},
+                                      {kRapid, 20, -2, 20, 0, 0, 0},
+                                      {kRapid, 20, 0, 20, -30, 0, 0},
+                                      {kFeed, 20, -30, 20, -32, 0.1, 0},
+                                      {kRapid, 20, -32, 20, -30, 0, 0}});
+}
+
+TEST(Interpreter, BareG50ChangesNothing) {
+  // GSK980TDi §3.18: an axis G50 does not name keeps its coordinate.
+  const auto result = run("G50\nG00 X40 Z0\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 0, 0, 0}});
 }
 
 TEST(Interpreter, InchValuesBecomeMillimetres) {
@@ -217,6 +244,46 @@ TEST(Interpreter, InchFaceCycle) {
                                       {kRapid, 50.8, 0, 63.5, 0, 0, 4}});
 }
 
+TEST(Interpreter, ProgramStopsAreListedNotTimed) {
+  // M00 and M01 wait for the operator: listed in order, with no move of their own; each run of a
+  // subprogram that holds one lists it again.
+  const auto result = run("G00 X50 Z2\nM01\nM98 P21000\nM30\nO1000\nM00\nM99\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  EXPECT_EQ(result.toolpath.moves.size(), 1u);
+  ASSERT_EQ(result.toolpath.stops.size(), 3u);
+  EXPECT_EQ(result.toolpath.stops[0].line, 2);
+  EXPECT_EQ(result.toolpath.stops[0].code, "M01");
+  EXPECT_EQ(result.toolpath.stops[1].line, 6);
+  EXPECT_EQ(result.toolpath.stops[1].code, "M00");
+  EXPECT_EQ(result.toolpath.stops[2].line, 6);
+}
+
+TEST(Interpreter, ASlashInsideABlockSkipsTheRestOfItWhenBlockSkipIsOn) {
+  // Fanuc's optional block skip in mid-block (⚠): "/Z5" is dropped with the switch on, and the
+  // slash alone is dropped with it off.
+  const auto on = run("G00 X20 /Z5 M08\n");
+  ASSERT_TRUE(on.ok()) << on.diagnostics[0].message;
+  expectMoves(on.toolpath.moves, {{kRapid, 100, 200, 10, 200, 0, 0}});
+  auto options = test::defaultOptions();
+  options.control.blockSkip = false;
+  const auto off = run("G00 X20 /Z5 M08\n", options);
+  ASSERT_TRUE(off.ok()) << off.diagnostics[0].message;
+  expectMoves(off.toolpath.moves, {{kRapid, 100, 200, 10, 5, 0, 0}});
+}
+
+TEST(Interpreter, TheClosingPercentEndsTheProgram) {
+  // Text after the closing % is not run, and a warning says so where it starts.
+  const auto result = run("%\nG00 X20 Z2\n%\n  G00 X999\n");
+  ASSERT_TRUE(result.ok());
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 10, 2, 0, 0}});
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].line, 4);
+  EXPECT_EQ(result.diagnostics[0].column, 3);
+  EXPECT_EQ(result.diagnostics[0].message, "the program ends at the % on line 3: this text after it is not run");
+  // A closing % with nothing after it: no warning.
+  EXPECT_TRUE(run("%\nG00 X20 Z2\n%\n\n").diagnostics.empty());
+}
+
 TEST(Interpreter, BlockDeleteSkipsSlashBlocksWhenOn) {
   const std::string_view program = "/G00 X20 Z20\nG00 X40 Z40\n";
   const auto on = run(program);
@@ -226,7 +293,7 @@ TEST(Interpreter, BlockDeleteSkipsSlashBlocksWhenOn) {
   EXPECT_EQ(on.toolpath.moves[0].block, 1);
 
   auto options = test::defaultOptions();
-  options.blockDelete = false;
+  options.control.blockSkip = false;
   const auto off = run(program, options);
   ASSERT_TRUE(off.ok());
   expectMoves(off.toolpath.moves,
@@ -299,7 +366,12 @@ TEST(InterpreterErrors, FirstErrorStopsAndKeepsEarlierMoves) {
 TEST(InterpreterErrors, FeedMoveWithoutF) {
   expectError(run("G00 X100\nG01 X50 Z-5\n"), 2, 1, "feed rate F is not set");
   expectError(run("G00 X100 Z5\nG94 X50 Z-5\n"), 2, 1, "feed rate F is not set");
-  expectError(run("G01 F0.1\nN5 X50\nG01 F0 X40\n"), 3, 5, "F0 is not a feed rate");
+  // F0 is a feed of 0 (GSK §3.26); a move cut at it would wait forever on the machine.
+  expectError(run("G01 F0.1\nN5 X50\nG01 F0 X40\n"), 3, 1,
+              "G01 cuts at F0, a feed of 0: the machine would wait there forever; give F > 0");
+  expectError(run("G00 X100 Z5 F0\nG94 X50 Z-5\n"), 2, 1, "G94 cuts at F0");
+  expectError(run("G01 F-1 X40\n"), 1, 5, "F-1 is not a feed rate: expected a number ≥ 0");
+  EXPECT_TRUE(run("G01 F0\nG00 X40\n").ok());  // F0 with no cut at it is harmless
 }
 
 TEST(InterpreterErrors, G94UnderG17OrG19SaysThereIsNoYAxis) {
@@ -309,20 +381,41 @@ TEST(InterpreterErrors, G94UnderG17OrG19SaysThereIsNoYAxis) {
   EXPECT_TRUE(run("G17 G00 X100 Z5\nG18 G94 X50 Z-5 F0.1\n").ok());
 }
 
-TEST(InterpreterErrors, CodesOfOneGroupInOneBlock) {
-  expectError(run("G00 G01 X20 F0.1\n"), 1, 5,
-              "G00 and G01 are both motion (group 01) codes; a block may hold only one");
-  expectError(run("G98 G99\n"), 1, 5, "G98 and G99 are both feed mode codes");
-  expectError(run("M03 M05\n"), 1, 5, "M03 and M05 are both spindle codes");
+TEST(Interpreter, OfTwoCodesOfOneGroupTheLastIsInForceWithAWarning) {
+  // G00 G01 X20: a feed (Fanuc: the last code of a group wins); M03 M05: the spindle stopped.
+  const auto result = run("G00 G01 X20 F0.1\nM03 M05 S500\nG01 Z-10\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kFeed, 100, 200, 10, 200, 0.1, 0}, {kFeed, 10, 200, 10, -10, 0.1, 0}});
+  EXPECT_FALSE(result.toolpath.moves[1].spindleOn);
+  ASSERT_EQ(result.diagnostics.size(), 2u);
+  EXPECT_EQ(result.diagnostics[0].line, 1);
+  EXPECT_EQ(result.diagnostics[0].column, 5);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "G00 and G01 are both motion (group 01) codes: the last, G01, is in force (as on a Fanuc); give one of "
+            "them");
+  EXPECT_EQ(result.diagnostics[1].message,
+            "M03 and M05 are both spindle codes: the last, M05, is in force (as on a Fanuc); give one of them");
 }
 
 TEST(InterpreterErrors, RepeatedWord) {
   expectError(run("G00 X20 X30\n"), 1, 9, "X is given twice in this block (X20 and X30)");
 }
 
-TEST(InterpreterErrors, AbsoluteAndIncrementalForOneAxis) {
-  expectError(run("G00 X20 U10\n"), 1, 9, "X20 and U10 both give the X axis");
-  expectError(run("G01 W-3 Z5 F1\n"), 1, 9, "Z5 and W-3 both give the Z axis");
+TEST(Interpreter, AbsoluteAndIncrementalForOneAxisAsTheControlReadsThem) {
+  // GSK980TDi §3.2: X wins over U, Z over W, the other ignored (warned).
+  const auto gsk = run("G00 X20 U10\nG01 W-3 Z5 F1\n");
+  ASSERT_TRUE(gsk.ok()) << gsk.diagnostics[0].message;
+  expectMoves(gsk.toolpath.moves, {{kRapid, 100, 200, 10, 200, 0, 0}, {kFeed, 10, 200, 10, 5, 1, 0}});
+  ASSERT_EQ(gsk.diagnostics.size(), 2u);
+  EXPECT_EQ(gsk.diagnostics[0].column, 9);
+  EXPECT_EQ(gsk.diagnostics[0].message,
+            "U10 is ignored: X20 in the same block gives the X axis (the absolute word wins, GSK980TDi §3.2)");
+  EXPECT_EQ(gsk.diagnostics[1].column, 5);
+  // fanuc-0i-t (⚠): an alarm.
+  InterpreterOptions fanuc = test::defaultOptions();
+  fanuc.control.absoluteWithIncremental = AbsoluteWithIncremental::Alarm;
+  expectError(run("G00 X20 U10\n", fanuc), 1, 9, "X20 and U10 both give the X axis");
+  expectError(run("G01 W-3 Z5 F1\n", fanuc), 1, 9, "Z5 and W-3 both give the Z axis");
 }
 
 TEST(InterpreterErrors, UnknownAndUnsupportedCodes) {
@@ -337,21 +430,46 @@ TEST(InterpreterErrors, LeftoverWord) {
   expectError(run("G01 X20 F1 P3 I2\n"), 1, 12, "P3 is not used");
 }
 
-TEST(InterpreterErrors, OneShotAndMotionInOneBlock) {
-  expectError(run("G50 G00 X20\n"), 1, 5, "G50 and G00 cannot share a block");
+TEST(Interpreter, AOneShotCodeTakesTheAxisWordsAndAMotionCodeBesideItOnlyBecomesModal) {
+  // G28 G00 U0 W0 (a common safety line): G28 returns straight to the reference (the start
+  // here, (100, 200)); G00 is the motion the next block's X20 Z0 makes.
+  const auto result = run("G01 X40 Z10 F0.2\nG28 G00 U0 W0\nX20 Z0\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kFeed, 100, 200, 20, 10, 0.2, 0},
+                                      {kRapid, 20, 10, 100, 200, 0, 2},
+                                      {kRapid, 100, 200, 10, 0, 0, 0}});
 }
 
-TEST(InterpreterErrors, DwellNeedsOneTime) {
-  expectError(run("G04\n"), 1, 1, "G04 needs a dwell time");
-  expectError(run("G04 X1 P1000\n"), 1, 8, "G04 takes one dwell time");
-  EXPECT_TRUE(run("G04 P1500\nG04 U2\n").ok());
+TEST(Interpreter, ACycleCodeAloneSetsTheMotionAndMovesNothing) {
+  // G90 on a safety line: no move; the X/Z block after it runs the cycle from where the tool is.
+  const auto result = run("G00 X50 Z2\nG90\nX40 Z-10 F0.2\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 25, 2, 0, 0},
+                                      {kRapid, 25, 2, 20, 2, 0, 1},
+                                      {kFeed, 20, 2, 20, -10, 0.2, 2},
+                                      {kFeed, 20, -10, 25, -10, 0.2, 3},
+                                      {kRapid, 25, -10, 25, 2, 0, 4}});
+  EXPECT_TRUE(run("G94\nG71\nG74\n").toolpath.moves.empty());
+}
+
+TEST(Interpreter, DwellWordsAsTheGskReadsThem) {
+  // GSK980TDi §3.14: G04 alone is an exact stop (no time, no move); P wins over X, X over U; a
+  // negative time dwells 0 s.
+  const auto result = run("G04\nG04 X1 P1500\nG04 U3 X2\nG04 X-2\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  ASSERT_EQ(result.toolpath.moves.size(), 3u);
+  EXPECT_DOUBLE_EQ(result.toolpath.moves[0].dwellS, 1.5);
+  EXPECT_EQ(result.toolpath.moves[0].line, 2);
+  EXPECT_DOUBLE_EQ(result.toolpath.moves[1].dwellS, 2);
+  EXPECT_DOUBLE_EQ(result.toolpath.moves[2].dwellS, 0);
+  ASSERT_EQ(result.diagnostics.size(), 2u);
+  EXPECT_EQ(result.diagnostics[0].message, "X1 is ignored: P1500 gives G04's time (P before X before U, GSK980TDi §3.14)");
+  EXPECT_EQ(result.diagnostics[0].column, 5);
+  EXPECT_EQ(result.diagnostics[1].message, "U3 is ignored: X2 gives G04's time (P before X before U, GSK980TDi §3.14)");
 }
 
 TEST(InterpreterErrors, BadToolSpeedAndCoordinateWords) {
-  expectError(run("T01.01\n"), 1, 1, "T01.01 is not a tool word");
-  expectError(run("T1\n"), 1, 1, "tool 0 (T1) is not defined");
   expectError(run("M03 S-5\n"), 1, 5, "S-5 is not a spindle speed");
-  expectError(run("G50\n"), 1, 1, "G50 needs X(U) and/or Z(W)");
   EXPECT_TRUE(run("G50 S2000\n").ok());
 }
 

@@ -40,6 +40,21 @@ TEST(FeedWarnings, SmallFeedUnderG98) {
                    "F0.2 under G98 is 0.2 mm per minute; did you mean G99");
 }
 
+TEST(FeedWarnings, TinyFeedUnderG99) {
+  // 0.005 mm/rev: a decimal point or an inch feed gone wrong more likely than a real feed.
+  expectOneWarning(run("M03 S500\nG00 X60 Z2\nG01 X40 F0.005\n"), 3, 1,
+                   "F0.005 under G99 is 0.005 mm per revolution, finer than a cutting edge takes (below 0.01 mm); "
+                   "check the decimal point and the unit");
+  EXPECT_TRUE(warningsOf(run("M03 S500\nG01 X60 F0.01\n")).empty());
+  EXPECT_EQ(kMinPlausibleFeedMmPerRev, 0.01);
+}
+
+TEST(FeedWarnings, QuoteTheFeedAsWrittenInItsUnit) {
+  // G20: F.2 is 0.2 inch = 5.08 mm per revolution, over 5.
+  expectOneWarning(run("G20 M03 S500\nG00 X2. Z.1\nG01 X1. F.2\n"), 3, 1,
+                   "F.2 under G99 is 0.2 inch (5.08 mm) per revolution; did you mean G98 (inch per minute)?");
+}
+
 TEST(FeedWarnings, OnceUntilTheFeedOrModeChanges) {
   // Lines 3 and 4 repeat the cycle with F200 (one warning); F300 on line 5 warns again.
   const auto result = run("M03 S500\nG00 X130 Z5\nG94 X0 Z0 F200\nZ-1\nZ-2 F300\n");
@@ -93,7 +108,7 @@ TEST(Warnings, AreShownWithTheirLineAndCaret) {
 
 TEST(Warnings, AProgramThatStopsReportsItsErrorAlone) {
   // F200 under G99 on line 2 would warn; the error on line 3 is all that is reported.
-  test::expectError(run("M03 S500\nG94 X0 Z0 F200\nG04\n"), 3, 1, "G04 needs a dwell time");
+  test::expectError(run("M03 S500\nG94 X0 Z0 F200\nG05\n"), 3, 1, "unknown G code G05");
 }
 
 TEST(CycleStarts, EachCycleBlockRecordsItsStartPoint) {

@@ -11,11 +11,16 @@
 
 namespace lathesim::interp::test {
 
-/// Tools 1 and 2 defined; the tool starts at X200 (radius 100) Z200.
+/// Tools 1 and 2 defined; the tool starts at X200 (radius 100) Z200. The control is the
+/// default preset's except for two parameters most move lists here were worked out under:
+/// rapids in a straight line (one move per G00; the dog-leg has its own tests,
+/// motion/rapid_path_test.cpp and the golden files) and G99 at power-on (F in mm/rev).
 inline InterpreterOptions defaultOptions() {
   InterpreterOptions options;
   options.startPosition = RZ(100.0, 200.0);
   options.toolNumbers = {1, 2};
+  options.control.rapidPath = RapidPath::Linear;
+  options.control.powerOnFeedMode = FeedMode::PerRevolution;
   return options;
 }
 

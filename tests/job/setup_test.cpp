@@ -148,11 +148,80 @@ TEST(ParseSetup, DialectAndInitialFeedMode) {
   const SetupResult defaults = parse("");
   ASSERT_TRUE(defaults.setup.has_value());
   EXPECT_EQ(defaults.setup->dialect, interp::Dialect::FanucA);
-  EXPECT_EQ(defaults.setup->initialFeedMode, interp::FeedMode::PerRevolution);  // Fanuc's G99
-  const SetupResult result = parse("[machine]\ndialect = \"hnc\"\ninitial_feed_mode = \"per_minute\"\n");
+  EXPECT_EQ(defaults.setup->control.parameters.powerOnFeedMode, interp::FeedMode::PerMinute);  // GSK's G98
+  // initial_feed_mode is the older spelling of control.power_on_feed_mode.
+  const SetupResult result = parse("[machine]\ndialect = \"hnc\"\ninitial_feed_mode = \"per_revolution\"\n");
   ASSERT_TRUE(result.setup.has_value()) << result.diagnostics[0].message;
   EXPECT_EQ(result.setup->dialect, interp::Dialect::Hnc);
-  EXPECT_EQ(result.setup->initialFeedMode, interp::FeedMode::PerMinute);
+  EXPECT_EQ(result.setup->control.parameters.powerOnFeedMode, interp::FeedMode::PerRevolution);
+}
+
+TEST(ParseSetup, ControlIsTheDefaultPresetUnlessNamed) {
+  const SetupResult defaults = parse("");
+  ASSERT_TRUE(defaults.setup.has_value());
+  EXPECT_EQ(defaults.setup->control.preset, "gsk980tdi");
+  const SetupResult fanuc = parse("[control]\nname = \"fanuc-0i-t\"\n");
+  ASSERT_TRUE(fanuc.setup.has_value()) << fanuc.diagnostics[0].message;
+  EXPECT_EQ(fanuc.setup->control.preset, "fanuc-0i-t");
+  EXPECT_EQ(fanuc.setup->control.parameters.decimalPointInput, interp::DecimalPointInput::LeastIncrements);
+}
+
+TEST(ParseSetup, ControlKeysOverrideThePresetWhateverTheirOrder) {
+  // The key before name still overrides the preset name chooses.
+  const SetupResult result = parse(
+      "[control]\ndecimal_point_input = \"calculator\"\nname = \"fanuc-0i-t\"\nleast_increment = 0.0001\n"
+      "block_skip = false\ntool_word = [\"3+3\"]\n");
+  ASSERT_TRUE(result.setup.has_value()) << result.diagnostics[0].message;
+  const interp::Control& control = result.setup->control;
+  EXPECT_EQ(control.preset, "fanuc-0i-t");
+  EXPECT_EQ(control.parameters.decimalPointInput, interp::DecimalPointInput::Calculator);
+  EXPECT_EQ(control.parameters.leastIncrementMm, 0.0001);
+  EXPECT_FALSE(control.parameters.blockSkip);
+  EXPECT_EQ(control.parameters.toolWordForms, std::vector<std::string>{"3+3"});
+  EXPECT_EQ(control.parameters.powerOnFeedMode, interp::FeedMode::PerRevolution);  // fanuc-0i-t's own
+}
+
+TEST(ParseSetupErrors, ControlNamesAndValuesAreChecked) {
+  Diagnostic d = onlyError("[control]\nname = \"fanuc-0i-m\"\n");
+  EXPECT_EQ(d.message, "control.name must be one of \"gsk980tdi\", \"fanuc-0i-t\" (a control preset)");
+  EXPECT_EQ(d.line, 2);
+  d = onlyError("[control]\n\nrapid_positioning = \"straight\"\n");
+  EXPECT_EQ(d.message, "control.rapid_positioning must be one of \"nonlinear\", \"linear\", got \"straight\"");
+  EXPECT_EQ(d.line, 3);
+  d = onlyError("[control]\nrapid = \"linear\"\n");
+  EXPECT_EQ(d.message.rfind("unknown key 'control.rapid' (expected name or one of rapid_positioning, ", 0), 0u)
+      << d.message;
+  d = onlyError("[control]\ng71_depth = [1, 2]\n");
+  EXPECT_EQ(d.message, "control.g71_depth must be a string, a number or a list of strings");
+}
+
+TEST(ParseSetupErrors, InitialFeedModeAndPowerOnFeedModeAreOneSetting) {
+  const Diagnostic d = onlyError("[control]\npower_on_feed_mode = \"G99\"\n[machine]\ninitial_feed_mode = \"per_minute\"\n");
+  EXPECT_EQ(d.message, "machine.initial_feed_mode and control.power_on_feed_mode both set the feed mode at "
+                       "power-on; give control.power_on_feed_mode alone");
+  EXPECT_EQ(d.line, 4);
+}
+
+TEST(ParseSetup, TravelIsStatedOrDerivedFromTheReferenceTheStartAndTheBar) {
+  // The default setup: Φ125 × 112 bar, face Z2; start = reference = X200 Z200.
+  const interp::TravelLimits derived = travelOf(*parse("").setup);
+  EXPECT_EQ(derived.xMinDiameterMm, -125);  // minus the bar's diameter
+  EXPECT_EQ(derived.xMaxDiameterMm, 200);   // the reference's (and start's) X
+  EXPECT_EQ(derived.zMinMm, 2 - 112 - 112);  // the bar's left end, less a bar's length
+  EXPECT_EQ(derived.zMaxMm, 200);
+  EXPECT_TRUE(derived.xDerived && derived.zDerived);
+  // A start beyond the reference widens it; a stated axis is taken as stated.
+  const SetupResult result =
+      parse("[machine]\nstart = [250, 100]\nreference = [200, 150]\ntravel_z = [-300, 400]\n");
+  ASSERT_TRUE(result.setup.has_value()) << result.diagnostics[0].message;
+  const interp::TravelLimits travel = travelOf(*result.setup);
+  EXPECT_EQ(travel.xMaxDiameterMm, 250);
+  EXPECT_TRUE(travel.xDerived);
+  EXPECT_EQ(travel.zMinMm, -300);
+  EXPECT_EQ(travel.zMaxMm, 400);
+  EXPECT_FALSE(travel.zDerived);
+  EXPECT_EQ(onlyError("[machine]\ntravel_x = [100, -10]\n").message,
+            "machine.travel_x must be [min, max] in mm with min < max, got [100, -10]");
 }
 
 TEST(ParseSetupErrors, DialectAndFeedModeAreNamedChoices) {
@@ -173,7 +242,8 @@ TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
 TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
   const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
   EXPECT_EQ(d.message,
-            "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, dialect, initial_feed_mode or zero)");
+            "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, travel_x, travel_z, dialect, "
+            "initial_feed_mode or zero)");
 }
 
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
@@ -201,13 +271,14 @@ TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
 
 TEST(ParseSetupErrors, UnknownTopLevelTable) {
   const Diagnostic d = onlyError("[stock]\ndiameter = 50\n[spindle]\nrpm = 5\n");
-  EXPECT_EQ(d.message, "unknown table 'spindle' (expected stock, machine, sim, tool, chuck, offset or work_offset)");
+  EXPECT_EQ(d.message,
+            "unknown table 'spindle' (expected stock, machine, control, sim, tool, chuck, offset or work_offset)");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, UnknownTopLevelKey) {
   const Diagnostic d = onlyError("voxel = 0.2\n");
-  EXPECT_EQ(d.message, "unknown key 'voxel' (expected stock, machine, sim, tool, chuck, offset or work_offset)");
+  EXPECT_EQ(d.message, "unknown key 'voxel' (expected stock, machine, control, sim, tool, chuck, offset or work_offset)");
   EXPECT_EQ(d.line, 1);
   EXPECT_EQ(d.column, 1);
 }

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "sim/stock_spec.hpp"
+#include "sim/stock.hpp"
 
 namespace lathesim::test {
 
@@ -15,8 +15,7 @@ namespace lathesim::test {
 /// this bound; seed 001's difference is ~7 bounds at 0.5 mm.
 inline double volumeToleranceMm3(const sim::StockSpec& stock, double voxelMm) {
   const double r = stock.diameterMm / 2.0;
-  const double area = 2.0 * M_PI * r * r + 2.0 * M_PI * r * stock.lengthMm;
-  return 0.05 * voxelMm * area;
+  return sim::volumeToleranceMm3(2.0 * M_PI * r * r + 2.0 * M_PI * r * stock.lengthMm, voxelMm);
 }
 
 }  // namespace lathesim::test

@@ -385,34 +385,41 @@ TEST(NoseCompensationInCycles, G70CompensatesItsContourAndTheReturnCancels) {
 }
 
 TEST(NoseCompensationInCycles, G42BeforeTheCycleIsSuspendedInsideIt) {
-  // G42 in force before G70, none in the contour: the contour runs as drawn (GSK: the cycle
-  // suspends comp) and G42 is back after it. Tip 9 R0.8 (offset 3): the toolpath is the
+  // G42 in force before G73 and G70, none in the contour: the cycles run as drawn (GSK: a cycle
+  // suspends comp) and G42 is back after them. Tip 9 R0.8 (offset 3): the toolpath is the
   // centre path.
   //   line 3 start-up (10, 5) → (10.8, 2): perpendicular to line 4 (t (0,-1), normal (1,0))
   //   line 4 r 10.8 to Z-5
-  //   G70 from A = (10, -5): its ns block N10 (line 9) G00 to (10, 2) is uncompensated, so
-  //   it cancels the chain: from (10.8, -5); N20 (line 10) back to (10, -5) as drawn; the
-  //   rapid back to A has no length.
-  //   line 6 G01 X30 under the restored G42 starts a new chain; no compensated move follows,
+  //   G73 U0 W0 R1 from A = (10, -5): d = 1 runs as two passes, both at no shift: the ns
+  //   block's G00 to (10, 2) then N20 back to (10, -5), twice. Its first leg is uncompensated,
+  //   so it cancels the chain: from (10.8, -5).
+  //   G70 runs N10 and N20 once more as drawn; the rapid back to A has no length.
+  //   line 10 G01 X30 under the restored G42 starts a new chain; no compensated move follows,
   //   so the centre ends perpendicular to its own end: (15, -5) + 0.8·(0, 1) = (15, -4.2)
-  //   line 7 G40 G00 X40: the cancel, from (15, -4.2) to (20, -5)
+  //   line 11 G40 G00 X40: the cancel, from (15, -4.2) to (20, -5)
   const auto result = test::run(
       "T0103 G99 M03 S800\n"
       "G00 X20 Z5\n"
       "G42 G01 Z2 F0.1\n"
       "Z-5\n"
+      "G73 U0 W0 R1\n"
+      "G73 P10 Q20\n"
+      "N10 G00 X20 Z2\n"
+      "N20 G01 Z-5\n"
       "G70 P10 Q20\n"
       "G01 X30\n"
       "G40 G00 X40\n"
-      "M30\n"
-      "N10 G00 X20 Z2\n"
-      "N20 G01 Z-5\n",
+      "M30\n",
       compOptions());
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
   expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 5},
                                      {kFeed, 10, 5, 10.8, 2},
                                      {kFeed, 10.8, 2, 10.8, -5},
                                      {kRapid, 10.8, -5, 10, 2},
+                                     {kFeed, 10, 2, 10, -5},
+                                     {kRapid, 10, -5, 10, 2},
+                                     {kFeed, 10, 2, 10, -5},
+                                     {kRapid, 10, -5, 10, 2},
                                      {kFeed, 10, 2, 10, -5},
                                      {kFeed, 10, -5, 15, -4.2},
                                      {kRapid, 15, -4.2, 20, -5}});
@@ -461,6 +468,41 @@ TEST(NoseCompensationInCycles, G94TaperIsOffsetByTheTipNumberAndStraightCyclesAr
                                      {kFeed, 5, -4, 5, 2},
                                      {kRapid, 5, 2, 15, 2},
                                      {kRapid, 15, 2, 20, 2}});
+}
+
+// G28 under G42: the compensation is suspended at the intermediate point, as on the control
+// (lathe-cycles.md §10), not the corner into G28's first leg trimmed as if it were a cut. R0.8 tip
+// 3. Start-up N3 (0,5)→(0,0): the centre ends perpendicular to the face, (0, 0.8). N4 faces to
+// r 8: the last compensated move, its centre ending at (8, 0.8), the tip at (7.2, 0). G28 U10
+// W5 is the cancel move: from there to the intermediate point (8 + 5, 0 + 5) = (13, 5), then
+// to the reference (100, 200), uncompensated. Nothing past the face's end is cut.
+TEST(NoseCompensation, G28EndsTheChainAtItsIntermediatePoint) {
+  const auto result = test::run("N1 G99 M03 S800 T0101\nN2 G00 X0 Z5\nN3 G42 G01 Z0 F0.1\nN4 X16\nN5 G28 U10 W5\n",
+                                compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 0, 5},
+                                     {kFeed, 0, 5, -0.8, 0},
+                                     {kFeed, -0.8, 0, 7.2, 0},
+                                     {kRapid, 7.2, 0, 13, 5},
+                                     {kRapid, 13, 5, 100, 200}});
+  EXPECT_EQ(result.toolpath.moves[3].noseComp.side, NoseSide::None);
+}
+
+// After G28 the GSK980TDi forgets the tool offset (No.182#2 = 0, §3.15 note 4); fanuc-0i-t keeps
+// it (⚠). Offset 5 shifts the tip by x 0.4 (diameter): +0.2 of radius. The G28 legs run under
+// the offset; the move after them is unshifted on the GSK, shifted on the Fanuc.
+TEST(ToolOffsets, G28CancelsTheOffsetWhereThePresetSays) {
+  for (const auto& [after, shiftMm] : {std::pair{OffsetAfterReturn::Cancelled, 0.0}, {OffsetAfterReturn::Kept, 0.2}}) {
+    InterpreterOptions options = compOptions();
+    options.offsets[5] = ToolOffset{0.4, 0, 0, 0, 0, 0};
+    options.control.offsetAfterReturn = after;
+    const auto result = test::run("T0105 G99\nG00 X20 Z2\nG28 U0 W0\nG00 X20 Z2\n", options);
+    ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+    expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10.2, 2},
+                                       {kRapid, 10.2, 2, 100.2, 200},
+                                       {kRapid, 100.2, 200, 10 + shiftMm, 2}});
+    EXPECT_EQ(result.toolpath.moves[2].toolOffset, after == OffsetAfterReturn::Kept ? 5 : 0);
+  }
 }
 
 }  // namespace

@@ -109,11 +109,11 @@ TEST(Dialect, G91MakesXAndZIncrementalUntilG90) {
 }
 
 TEST(Dialect, CoordinateSettingStaysAbsoluteUnderG91) {
-  // G92 X50 Z10 declares where the tool is, even in incremental mode; the move after it
-  // is then 10 mm back in Z from there.
+  // G92 X50 Z10 declares where the tool is (setup r100 Z200), even in incremental mode; the
+  // move after it is then 10 mm back in Z from there: setup (100, 190).
   const auto result = runIn(Dialect::FanucB, "G91 G92 X50 Z10\nG00 Z-10\n");
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
-  test::expectMoves(result.toolpath.moves, {{test::kRapid, 25, 10, 25, 0, 0, 0}});
+  test::expectMoves(result.toolpath.moves, {{test::kRapid, 100, 200, 100, 190, 0, 0}});
 }
 
 TEST(Dialect, G91WithBothXAndUIsTwoWordsForOneAxis) {

@@ -21,24 +21,60 @@ using test::kRapid;
 using test::run;
 
 TEST(G70, RunsTheContourAsWrittenThenRapidsBackAndGoesOnAfterIt) {
+  // The contour is roughed by G73 first (its moves are left out below); G70 then runs it as
+  // written from A, with the contour's own F.
   const auto result = run(
       "G00 X60 Z2 F0.3\n"        // 1: A = (30, 2)
-      "G70 P10 Q30\n"            // 2
-      "G00 X100\n"               // 3: after G70
-      "M30\n"                    // 4
-      "N10 G00 X20 F0.1\n"       // 5
-      "N20 G01 Z-10\n"           // 6: at N10's F0.1
-      "N30 X40 Z-20 F0.2\n");    // 7
+      "G73 U2 W0 R2\n"           // 2
+      "G73 P10 Q30\n"            // 3
+      "N10 G00 X20 F0.1\n"       // 4
+      "N20 G01 Z-10\n"           // 5: at N10's F0.1
+      "N30 X40 Z-20 F0.2\n"      // 6
+      "G70 P10 Q30\n"            // 7
+      "G00 X100\n");             // 8: after G70
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
-  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 30, 2, 0, 0},
-                                      {kRapid, 30, 2, 10, 2, 0, 0},
-                                      {kFeed, 10, 2, 10, -10, 0.1, 0},
-                                      {kFeed, 10, -10, 20, -20, 0.2, 0},
-                                      {kRapid, 20, -20, 30, 2, 0, 0},   // G70: back to A
-                                      {kRapid, 30, 2, 50, 2, 0, 0}});   // line 3
+  const auto& moves = result.toolpath.moves;
+  ASSERT_GE(moves.size(), 5u);
+  const std::vector<Move> finishing(moves.end() - 5, moves.end());
+  expectMoves(finishing, {{kRapid, 30, 2, 10, 2, 0, 0},
+                          {kFeed, 10, 2, 10, -10, 0.1, 0},
+                          {kFeed, 10, -10, 20, -20, 0.2, 0},
+                          {kRapid, 20, -20, 30, 2, 0, 0},   // G70: back to A
+                          {kRapid, 30, 2, 50, 2, 0, 0}});   // line 8
   // The contour's moves carry their own blocks' lines; the return to A carries G70's.
-  const int lines[] = {1, 5, 6, 7, 2, 3};
-  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(result.toolpath.moves[i].line, lines[i]) << i;
+  const int lines[] = {4, 5, 6, 7, 8};
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(finishing[i].line, lines[i]) << i;
+}
+
+TEST(G70, AContourAfterItIsAnError) {
+  // GSK980TDi §3.23.4 note 1: G70 finishes a contour roughed before it.
+  expectError(run("G00 X60 Z2 F0.3\nG70 P10 Q20\nM30\nN10 G00 X20\nN20 G01 Z-10\n"), 2, 1,
+              "G70's contour N10 starts on line 4, after it: G70 finishes a contour roughed before it and must "
+              "follow its blocks (GSK980TDi §3.23.4 note 1)");
+}
+
+TEST(CompoundCycleErrors, ANumberTwoContoursShareIsAnErrorNamingBoth) {
+  // GSK980TDi §3.23.1 note 14: N10 and N20 number both G71's contour and G73's.
+  const std::string_view program =
+      "G00 X60 Z2 F0.3\n"
+      "G71 U2 R0.5\n"
+      "G71 P10 Q20\n"
+      "N10 G00 X20\n"
+      "N20 G01 Z-10\n"
+      "G73 U2 W0 R2\n"
+      "G73 P10 Q20\n"
+      "N10 G00 X30\n"
+      "N20 G01 Z-20\n";
+  expectError(run(program), 3, 5,
+              "G71 P10: N10 numbers two blocks, on lines 4 and 8; the contours of the compound cycles in one "
+              "program need N numbers of their own");
+}
+
+TEST(CompoundCycleErrors, ALabelOfMoreThanFiveDigitsIsNamedAsWritten) {
+  expectError(run("N123456 G00 X20\n"), 1, 1, "N123456 is not a sequence number: it has 6 digits, at most 5");
+  expectError(run("G00 X60 Z2 F0.3\nG70 P4294967306 Q20\nN10 G00 X20\nN20 G01 Z-10\n"), 2, 5,
+              "P4294967306 is not a sequence number (e.g. P10 for N10): it has 10 digits, at most 5");
+  EXPECT_TRUE(run("N00010 G00 X20\n").ok());  // leading zeros are not digits of the number
 }
 
 TEST(G73, TwoPassesShiftedByReliefAndAllowance) {
@@ -188,6 +224,29 @@ TEST(G75, GrooveWiderThanTheToolInTwoPlunges) {
                                       {kRapid, 21, -14, 21, -10, 0, 6}});
 }
 
+// R(Δd) when the block moves only the peck axis (no Z for G75): A = (22, -10) to X30 (r 15),
+// P20000 a peck longer than the 7 mm to go, so one plunge; Δd = R500 = 0.5 mm along Z. The
+// GSK relieves toward + (§3.23.5: the shift axis omitted), whatever Δd's sign; the Fanuc
+// (⚠) the way Δd's sign says.
+TEST(G75, ReliefWithoutAShiftAxisGoesWhereTheControlSays) {
+  for (const auto& [rule, word, reliefZ] :
+       {std::tuple{PeckReliefWithoutShift::TowardPlus, "R500", -9.5},
+        std::tuple{PeckReliefWithoutShift::TowardPlus, "R-500", -9.5},
+        std::tuple{PeckReliefWithoutShift::BySign, "R500", -9.5},
+        std::tuple{PeckReliefWithoutShift::BySign, "R-500", -10.5}}) {
+    SCOPED_TRACE(word);
+    InterpreterOptions options = test::defaultOptions();
+    options.control.peckReliefWithoutShift = rule;
+    const auto result = run("G00 X44 Z-10\nG75 X30 P20000 " + std::string(word) + " F0.05\n", options);
+    ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+    expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 22, -10, 0, 0},
+                                        {kFeed, 22, -10, 15, -10, 0.05, 1},
+                                        {kRapid, 15, -10, 15, reliefZ, 0, 3},
+                                        {kRapid, 15, reliefZ, 22, reliefZ, 0, 4},
+                                        {kRapid, 22, reliefZ, 22, -10, 0, 6}});
+  }
+}
+
 TEST(G71, RoughsThenG70Finishes) {
   // A = (20, 2), Δd = 2, e = 0.5, no allowance; contour A → (15, 2) rapid, → (15, -10),
   // → (20, -10). Levels at X 18 and 16 (3·2 would reach past B′ at 15): each cut along Z to
@@ -236,6 +295,34 @@ TEST(G71, FirstBlockValuesDefaultToTheParameters) {
   ASSERT_GE(moves.size(), 3u);
   expectMoves({moves[1], moves[2]},
               {{kRapid, 20, 2, 19, 2, 0, 2}, {kFeed, 19, 2, 19, -5, 0.2, 3}});
+  // Said, not silent: the values are the machine's, not the program's.
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].line, 2);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "G71 P… Q… runs without a first block G71 U(Δd) R(e): Δd 1 mm and e 0.5 mm come from the control's "
+            "parameters (g71_depth, g71_retract), not from the program");
+  // A control whose parameters differ roughs differently: g71_depth 1.5 gives levels 18.5 only.
+  InterpreterOptions options = test::defaultOptions();
+  options.control.roughingDepthMm = 1.5;
+  const auto deeper = run("G00 X40 Z2\nG71 P10 Q20 F0.2\nN10 G00 X34\nN20 G01 Z-5\n", options);
+  ASSERT_TRUE(deeper.ok());
+  expectMoves({deeper.toolpath.moves[1], deeper.toolpath.moves[2]},
+              {{kRapid, 20, 2, 18.5, 2, 0, 2}, {kFeed, 18.5, 2, 18.5, -5, 0.2, 3}});
+  // With a first block, no warning.
+  EXPECT_TRUE(run("G00 X40 Z2\nG71 U1 R1\nG71 P10 Q20 F0.2\nN10 G00 X34\nN20 G01 Z-5\n").diagnostics.empty());
+}
+
+TEST(G71, GsksKAndJWordsAreRead) {
+  // K0/K1 (the monotonic check, always made) and J0 change nothing; J1's extra pass is refused.
+  const std::string_view base = "G00 X40 Z2\nG71 U1 R1\nG71 P10 Q20 F0.2 ";
+  const auto plain = run(std::string(base) + "\nN10 G00 X34\nN20 G01 Z-5\n");
+  for (const char* words : {"K0", "K1", "K1 J0"}) {
+    const auto result = run(std::string(base) + words + "\nN10 G00 X34\nN20 G01 Z-5\n");
+    ASSERT_TRUE(result.ok()) << words << ": " << result.diagnostics[0].message;
+    EXPECT_EQ(result.toolpath.moves.size(), plain.toolpath.moves.size()) << words;
+  }
+  expectError(run(std::string(base) + "J1\nN10 G00 X34\nN20 G01 Z-5\n"), 3, 18,
+              "G71 J1: the GSK's extra pass along the rough contour is not simulated");
 }
 
 TEST(G72, FirstBlockWIsTheDepthAndPassesRunAlongX) {
@@ -326,9 +413,9 @@ TEST(CompoundCycleErrors, MoreThan200ContourBlocks) {
 }
 
 TEST(CompoundCycleErrors, ErrorInsideTheContourIsLocatedThere) {
-  // No F anywhere: N20's G01 fails where it is written.
-  expectError(run("G00 X60 Z2\nG70 P10 Q20\nM30\nN10 G00 X20\nN20 G01 Z-10\n"), 5, 5,
-              "feed rate F is not set");
+  // N20's arc is too short for its chord: G71 fails where it is written.
+  expectError(run("G00 X60 Z2\nG71 U1 R0.5\nG71 P10 Q20 F0.2\nN10 G00 X20\nN20 G02 X30 Z-10 R1\n"), 5, 18,
+              "R1 is too small");
 }
 
 TEST(CompoundCycleErrors, RoughingDepthMustBePositive) {

@@ -112,8 +112,15 @@ TEST(Subprogram, UnknownProgramIsAnError) {
   expectError(run(withMain("M98 P1234")), 2, 5, "M98 calls O1234, which is neither in this program nor in a file");
 }
 
-TEST(Subprogram, M99InTheMainProgramIsAnError) {
-  expectError(run("G00 X50\nM99\n"), 2, 1, "M99 in the main program");
+TEST(Subprogram, M99EndingTheMainProgramRunsItOnceWithAWarning) {
+  // The control would start the program over, forever: simulated once, and said.
+  const auto result = run("G00 X50\nM99\nG00 X60\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 25, 200, 0, 0}});
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].line, 2);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "M99 ends the main program: the control runs it again from the start, forever; lathesim simulates it once");
 }
 
 TEST(Subprogram, TextEndingInsideASubprogramIsAnError) {
@@ -141,9 +148,19 @@ TEST(Subprogram, ProgramNumberWithADecimalPointIsAnError) {
   expectError(run(withMain("M98 P1000.")), 2, 5, "P1000. is not a program number");
 }
 
-TEST(Subprogram, M99PIsNotSupported) {
-  // M99 P(n) returns to N(n) on a Fanuc; lathesim does not take it, and says so.
-  expectError(run("M98 P1000\nM30\nO1000\nM99 P10\n"), 4, 5, "P10 is not used by any code");
+TEST(Subprogram, M99PReturnsToThatSequenceOfTheCaller) {
+  // O1000 feeds U-2 and returns to N20, skipping N10's G00 X80: then N20's G00 Z10.
+  const auto result = run("G00 X50 Z2\nM98 P1000\nN10 G00 X80\nN20 G00 Z10\nM30\nO1000\nG01 U-2 F0.1\nM99 P20\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 25, 2, 0, 0},
+                                      {kFeed, 25, 2, 24, 2, 0.1, 0},
+                                      {kRapid, 24, 2, 24, 10, 0, 0}});
+  // After the last of several runs only; a number the caller lacks is an error at P.
+  const auto twice = run("G00 X50 Z2\nM98 P21000\nN10 G00 X80\nN20 G00 Z10\nM30\nO1000\nG01 U-2 F0.1\nM99 P20\n");
+  ASSERT_TRUE(twice.ok());
+  EXPECT_EQ(twice.toolpath.moves.back().to, RZ(23, 10));
+  expectError(run("M98 P1000\nM30\nO1000\nM99 P10\n"), 4, 5,
+              "M99 P10 returns to N10 of the calling program, which has no block N10");
 }
 
 }  // namespace

@@ -115,7 +115,16 @@ TEST(MachineCoordinates, TheSetupPlacesMachineZero) {
 TEST(MachineCoordinates, Errors) {
   expectError(run("G00 X40 Z10\nG53 U0\n"), 2, 5, "G53 goes to machine coordinates");
   expectError(run("G00 X40 Z10\nG53\n"), 2, 1, "G53 needs X and/or Z");
-  expectError(run("G00 X40 Z10\nG01 G53 X0 F0.2\n"), 2, 1, "cannot share a block");
+}
+
+TEST(MachineCoordinates, AMotionCodeBesideG53OnlyBecomesModal) {
+  // G53 takes the axis words and moves at rapid (machine zero X200 = r 100 here); G01 is the
+  // motion of the blocks after it (issue 11: a one-shot code beside a motion code).
+  const auto result = run("G00 X40 Z10\nG01 G53 X0 F0.2\nZ5\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 10, 0, 0},
+                                      {kRapid, 20, 10, 100, 10, 0, 0},
+                                      {test::kFeed, 100, 10, 100, 5, 0.2, 0}});
 }
 
 TEST(DataSetting, G10GeometryOffsetTakesEffectAtTheNextTWord) {

@@ -139,11 +139,54 @@ TEST(ArcMove, RadiusWithinTheToleranceOfHalfTheChordIsAHalfCircle) {
   expectArc(result.toolpath.moves.at(1), {kCw, 10, 0, 10, -12, 10, -6, 0.1});
 }
 
-TEST(ArcMove, EndWithinTheToleranceOfTheCircleIsKept) {
+// An I/K end point off the circle: the control keeps the radius |IK| and moves the centre onto
+// the chord's bisector, on the side of the centre I/K gave, so that both ends lie on the circle.
+void expectCentreMovedOntoBothEnds(const Move& arc, const RZ& givenCentre, double radiusMm) {
+  EXPECT_NEAR((arc.from - arc.center).norm(), radiusMm, 1e-9);
+  EXPECT_NEAR((arc.to - arc.center).norm(), radiusMm, 1e-9);
+  // Of the two centres at that radius (each the other's mirror image in the chord), the one
+  // nearer the given centre.
+  const RZ along = (arc.to - arc.from).normalized();
+  const RZ foot = arc.from + (arc.center - arc.from).dot(along) * along;
+  const RZ other = 2.0 * foot - arc.center;
+  EXPECT_LE((arc.center - givenCentre).norm(), (other - givenCentre).norm());
+}
+
+TEST(ArcMove, EndWithinTheToleranceOfTheCircleMovesTheCentreQuietly) {
   // Centre (15, 0) from I5 K0; end (15, -5.008) is 5.008 from it: 0.008 ≤ 0.01.
-  const auto result = run("G00 X20 Z0\nG03 X30 Z-5.008 I5 K0 F0.1\n");
+  const auto result = run("G00 X20. Z0.\nG03 X30. Z-5.008 I5. K0. F0.1\n");
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
-  expectArc(result.toolpath.moves.at(1), {kCcw, 10, 0, 15, -5.008, 15, 0, 0.1});
+  EXPECT_TRUE(result.diagnostics.empty());
+  const Move& arc = result.toolpath.moves.at(1);
+  EXPECT_EQ(arc.to, RZ(15, -5.008));
+  expectCentreMovedOntoBothEnds(arc, RZ(15, 0), 5);
+  EXPECT_LT((arc.center - RZ(15, 0)).norm(), 0.01);
+}
+
+TEST(ArcMove, BeyondTheToleranceTheGskMovesTheCentreAndTheFanucAlarms) {
+  // I given as a diameter by mistake: I10 puts the centre at (20, 0), 10 from the start (10, 0);
+  // the end (15, -5) is √50 = 7.0711 from it. The chord, √50, is shorter than 2·10: the GSK moves
+  // the centre to the one 10 from both ends on I10's side and warns (GSK980TDi §3.4 note 6).
+  const auto result = run("G00 X20 Z0\nG03 X30 Z-5 I10 K0 F0.1\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectCentreMovedOntoBothEnds(result.toolpath.moves.at(1), RZ(20, 0), 10);
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].message.rfind("the end point X30 Z-5 is 2.9289 mm off the circle I and K give: the "
+                                                "control keeps the radius 10 and moves the centre to X",
+                                                0),
+            0u)
+      << result.diagnostics[0].message;
+  // A chord longer than 2|IK| the GSK cannot reach either: I1 from (10, 0) to (15, -5).
+  expectError(run("G00 X20 Z0\nG03 X30 Z-5 I1 K0 F0.1\n"), 2, 1,
+              "the end lies 7.0711 mm from the start, farther than the arc's diameter 2");
+  // fanuc-0i-t (⚠ PS0020): beyond 0.01 mm an alarm.
+  InterpreterOptions fanuc = test::defaultOptions();
+  fanuc.control.arcEndOffCircle = ArcEndOffCircle::Alarm;
+  expectError(run("G00 X20 Z0\nG03 X30 Z-5.02 I5 K0 F0.1\n", fanuc), 2, 1,
+              "the end point X30 Z-5.02 is not on the arc: it is 5.02 mm from the centre X30 Z0, "
+              "the start point 5 mm; they may differ by at most 0.01 mm");
+  expectError(run("G00 X20 Z0\nG03 X30 Z-5 I10 K0 F0.1\n", fanuc), 2, 1,
+              "it is 7.0711 mm from the centre X40 Z0, the start point 10 mm");
 }
 
 TEST(ArcMove, NoAxisOrCentreWordsMakeNoMove) {
@@ -159,9 +202,16 @@ TEST(ArcMoveErrors, MissingFeed) {
               "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G02 move");
 }
 
-TEST(ArcMoveErrors, BothRadiusAndOffset) {
-  expectError(run("G00 X20 Z0\nG02 X30 Z-5 R5 I5 F0.1\n"), 2, 16,
-              "G02 takes the centre as R or as I/K, not both: R5 and I5 are both given");
+TEST(ArcMove, RWinsOverIAndK) {
+  // GSK980TDi §3.4 note 2. R5 from (10, 0) to (15, -5), clockwise: chord √50, centre 3.5355 to
+  // the right of the travel from the chord's middle (12.5, -2.5): (15, 0). I3 would say (13, 0).
+  const auto result = run("G00 X20 Z0\nG02 X30 Z-5 R5 I3 F0.1\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectArc(result.toolpath.moves.at(1), {kCw, 10, 0, 15, -5, 15, 0, 0.1});
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].column, 16);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "I3 is ignored: R5 gives the arc's radius (R wins over I and K, GSK980TDi §3.4 note 2)");
 }
 
 TEST(ArcMoveErrors, NeitherRadiusNorOffset) {
@@ -178,22 +228,17 @@ TEST(ArcMoveErrors, RadiusShorterThanHalfTheChord) {
   expectError(run("G00 X20 Z0\nG03 Z-12 R-5.98 F0.1\n"), 2, 10, "R-5.98 is too small");
 }
 
-TEST(ArcMoveErrors, FullCircleWithRadius) {
-  expectError(run("G00 X20 Z0\nG02 X20 Z0 R5 F0.1\n"), 2, 12,
-              "G02 with R5 cannot cut a full circle (the end point is the start point): give the "
-              "centre with I and K instead");
-  expectError(run("G00 X20 Z0\nG03 R5 F0.1\n"), 2, 5, "G03 with R5 cannot cut a full circle");
-}
-
-TEST(ArcMoveErrors, EndPointOffTheCircle) {
-  // Centre (15, 0), start radius 5; the end (15, -5.02) is 5.02 from the centre.
-  expectError(run("G00 X20 Z0\nG03 X30 Z-5.02 I5 K0 F0.1\n"), 2, 1,
-              "the end point X30 Z-5.02 is not on the arc: it is 5.02 mm from the centre X30 Z0, "
-              "the start point 5 mm; they may differ by at most 0.01 mm");
-  // I given as a diameter by mistake: I10 puts the centre at (20, 0), 10 from the start; the
-  // end (15, -5) is √50 = 7.0711 from it.
-  expectError(run("G00 X20 Z0\nG03 X30 Z-5 I10 K0 F0.1\n"), 2, 1,
-              "it is 7.0711 mm from the centre X40 Z0, the start point 10 mm");
+TEST(ArcMove, RToItsOwnStartMakesNoMove) {
+  // GSK980TDi §3.4 note 4: with R, end = start is a 0° arc. Warned: a full circle needs I/K.
+  const auto result = run("G00 X20 Z0\nG02 X20 Z0 R5 F0.1\nG03 R5\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  EXPECT_EQ(result.toolpath.moves.size(), 1u);
+  ASSERT_EQ(result.diagnostics.size(), 2u);
+  EXPECT_EQ(result.diagnostics[0].column, 12);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "G02 R5 ends where it starts: the control makes a 0° arc, no move (a full circle needs I and K, "
+            "GSK980TDi §3.4 note 4)");
+  EXPECT_EQ(result.diagnostics[1].line, 3);
 }
 
 TEST(ArcMoveErrors, CentreOnTheStartPoint) {

@@ -1,0 +1,55 @@
+#include "interp/motion/travel_limits.hpp"
+
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "interp/cycles/contour_geometry.hpp"
+#include "interp/toolpath_csv.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+constexpr double kTolMm = 1e-9;
+
+// The points of the move where it reaches furthest along each axis: its ends, and the
+// arc's extremes between them.
+std::vector<RZ> reachedPoints(const Move& move) {
+  std::vector<RZ> points{move.from, move.to};
+  if (!isArc(move.kind)) return points;
+  const ContourSegment arc{move.kind, move.from, move.to, move.center, move.line, move.column};
+  for (const double angle : {0.0, std::numbers::pi / 2, std::numbers::pi, -std::numbers::pi / 2})
+    if (arcPassesAngleInside(arc, angle)) points.push_back(arcPointAt(arc, angle));
+  return points;
+}
+
+std::string limitsText(const TravelLimits& t, bool xAxis) {
+  const bool derived = xAxis ? t.xDerived : t.zDerived;
+  const std::string range = xAxis ? fmt::format("X{} to X{}", csvNumber(t.xMinDiameterMm), csvNumber(t.xMaxDiameterMm))
+                                  : fmt::format("Z{} to Z{}", csvNumber(t.zMinMm), csvNumber(t.zMaxMm));
+  if (!derived) return fmt::format("{} ([machine] travel_{})", range, xAxis ? 'x' : 'z');
+  return fmt::format("{}, derived from [machine] reference and start and the bar; give [machine] travel_{} "
+                     "if the machine reaches further",
+                     range, xAxis ? 'x' : 'z');
+}
+
+}  // namespace
+
+Status checkTravel(const std::vector<Move>& moves, const TravelLimits& travel) {
+  for (const Move& move : moves) {
+    for (const RZ& point : reachedPoints(move)) {
+      const double x = diameterOf(point);
+      const bool xOut = x < travel.xMinDiameterMm - kTolMm || x > travel.xMaxDiameterMm + kTolMm;
+      const bool zOut = point.y() < travel.zMinMm - kTolMm || point.y() > travel.zMaxMm + kTolMm;
+      if (!xOut && !zOut) continue;
+      return Error{move.line, move.column,
+                   fmt::format("overtravel: this block moves the tool to X{} Z{} (in the setup's frame), beyond "
+                               "the machine's {} travel, {}",
+                               csvNumber(x), csvNumber(point.y()), xOut ? 'X' : 'Z', limitsText(travel, xOut))};
+    }
+  }
+  return success();
+}
+
+}  // namespace lathesim::interp

@@ -1,0 +1,25 @@
+#pragma once
+// Whether the volumes a run reports can be trusted: each is checked against a figure found
+// another way, within sim::volumeToleranceMm3 (5 % of a voxel layer over the surface).
+
+#include <optional>
+#include <string>
+
+#include "geometry/triangle_mesh.hpp"
+#include "sim/stock_spec.hpp"
+
+namespace lathesim::measure {
+
+/// Why the untouched bar's level-set volume is not the cylinder's exact πr²L within the
+/// tolerance over the bar's surface, or nullopt.
+std::optional<std::string> barVolumeProblem(const sim::StockSpec& bar, double levelSetMm3, double voxelMm);
+
+/// Why the part's level-set volume and the volume enclosed by its mesh (all of it, crumbs
+/// included) disagree by more than the tolerance over the mesh's surface, or nullopt.
+std::optional<std::string> meshVolumeProblem(double levelSetMm3, const TriangleMesh& mesh, double voxelMm);
+
+/// Why the mesh would not make a closed, manifold STL (some edge not shared by exactly two
+/// triangles), or nullopt.
+std::optional<std::string> meshClosureProblem(const TriangleMesh& mesh);
+
+}  // namespace lathesim::measure

@@ -1,3 +1,0 @@
-(expect: 3:1: error: M99 in the main program)
-G00 X50 Z2
-M99
