@@ -73,7 +73,14 @@ ClipRectangle clipRectangleOf(const PictureFrame& frame) {
   return {inset, inset, frame.widthPx - inset, frame.heightPx - inset};
 }
 
-std::string programPoint(const RZ& p) { return "X" + coordinate(diameterOf(p)) + " Z" + coordinate(p.y()); }
+std::string programPoint(const RZ& p) {
+  // Appended rather than "X" + …: GCC 12 warns falsely (-Wrestrict) on a literal plus a temporary.
+  std::string text = "X";
+  text += coordinate(diameterOf(p));
+  text += " Z";
+  text += coordinate(p.y());
+  return text;
+}
 
 void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::ToolpathInstant>& shown,
                   const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& lines, Overlay2D& marks,

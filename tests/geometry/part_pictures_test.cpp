@@ -87,7 +87,9 @@ TEST(RevolvedMesh, StepsFollowTheChordTolerance) {
     for (double tolerance : {0.01, 0.1, 0.5}) {
       const int n = angularStepsFor(r, tolerance);
       EXPECT_LE(r * (1 - std::cos(M_PI / n)), tolerance * (1 + 1e-12));
-      if (n > 12) EXPECT_GT(r * (1 - std::cos(M_PI / (n - 1))), tolerance);
+      if (n > 12) {
+        EXPECT_GT(r * (1 - std::cos(M_PI / (n - 1))), tolerance);
+      }
     }
 }
 
