@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -80,6 +81,19 @@ std::string duration(double seconds) {
 std::string figure(const std::string& name, const std::string& value, const std::string& cls = "") {
   return "<div class=\"figure" + (cls.empty() ? "" : " " + cls) + "\"><div class=\"value\">" + value +
          "</div><div class=\"name\">" + escaped(name) + "</div></div>\n";
+}
+
+/// "width=\"W\" height=\"H\"" from a PNG's header, so that the page is laid out before its
+/// pictures are decoded (a link to #view3d then lands on the view); empty if it is no PNG.
+std::string pngSizeAttributes(const std::string& png) {
+  static constexpr char kSignature[] = "\x89PNG\r\n\x1a\n";
+  if (png.size() < 24 || png.compare(0, 8, kSignature, 8) != 0 || png.compare(12, 4, "IHDR") != 0) return "";
+  auto bigEndian = [&png](std::size_t at) {
+    std::uint32_t value = 0;
+    for (std::size_t i = 0; i < 4; ++i) value = value << 8 | static_cast<unsigned char>(png[at + i]);
+    return value;
+  };
+  return "width=\"" + std::to_string(bigEndian(16)) + "\" height=\"" + std::to_string(bigEndian(20)) + "\" ";
 }
 
 std::vector<std::string> linesOf(const std::string& text) {
@@ -211,20 +225,22 @@ void writeReportHtml(const Json& report, const std::string& programText, const s
                      "</p></header>\n<main>\n";
   page += summary(report);
   page += problems(report);
+  // The part in 3D first, where the page opens; the pictures and the drawing check below.
+  if (!glb.empty())
+    page += "<h2>3D view</h2>\n<div id=\"view3d\" data-state=\"loading\"></div>\n<p class=\"hint\">The part and its "
+            "toolpath (feeds blue, rapids red). Drag to turn, scroll to zoom, right-drag to move.</p>\n";
   if (!pictures.empty()) {
     page += "<h2>Pictures</h2>\n<div class=\"pictures\">\n";
     for (const HtmlPicture& p : pictures) {
       const std::string bytes = batch::fileBytes(p.png);
       if (bytes.empty()) throw std::runtime_error("cannot read " + p.png.string() + " for report.html");
-      page += "<figure><img alt=\"" + escaped(p.caption) + "\" src=\"data:image/png;base64," + batch::base64(bytes) +
+      page += "<figure><img " + pngSizeAttributes(bytes) + "alt=\"" + escaped(p.caption) +
+              "\" src=\"data:image/png;base64," + batch::base64(bytes) +
               "\"><figcaption>" + escaped(p.caption) + "</figcaption></figure>\n";
     }
     page += "</div>\n";
   }
   page += checkSection(report);
-  if (!glb.empty())
-    page += "<h2>3D view</h2>\n<div id=\"view3d\" data-state=\"loading\"></div>\n<p class=\"hint\">The part and its "
-            "toolpath (feeds blue, rapids red). Drag to turn, scroll to zoom, right-drag to move.</p>\n";
   page += listing(report, programText);
   page += "</main>\n";
   if (!glb.empty()) {

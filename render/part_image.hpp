@@ -68,8 +68,9 @@ struct PartImageOptions {
 /// given, as gold insert and grey holder slabs in the meridian plane (or an arrow to it when
 /// it stands outside the picture); dimension lines in purple; the title, legend and (front
 /// and section views) a scale bar.
-/// The picture frames the bar and the jaws (without a bar, the part; without a part, the
-/// toolpath) with a margin, and the tool when it stands near them.
+/// The picture frames the bar and the front ends of the jaws (without a bar, the part and the
+/// whole jaws; without a part, the toolpath) with a margin, and the tool when it stands near
+/// them; the rest of the chuck runs out of the picture.
 /// Works with no display: an Xvfb server is started for the process if none is reachable.
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,

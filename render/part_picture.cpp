@@ -35,6 +35,10 @@ constexpr double kToolNearFraction = 0.25;  // a tool this far (of the frame's s
 // read as solid, thin enough to stay in the meridian plane.
 constexpr double kToolThicknessPerSize = 0.012;
 constexpr double kJawHalfWidthPerRadius = 0.18;  // as chuckActors draws them
+// The jaws' front ends framed with a bar: this far behind their face (of the bar's length)
+// and out past the bar (of its radius).
+constexpr double kJawFramedOfBarLength = 0.2;
+constexpr double kJawFramedOfBarRadius = 0.25;
 
 View viewOf(PartView view) { return partView(view == PartView::Iso ? kIsoAzimuthDeg : 0.0); }
 
@@ -60,11 +64,19 @@ PictureFrame framePicture(const PartImageOptions& options, const interp::Toolpat
   if (options.chuck) {
     const ChuckPicture& c = *options.chuck;
     const double half = kJawHalfWidthPerRadius * c.jawOuterRadiusMm;
+    // With a bar, only the jaws' front ends are framed: the rest of them runs out of the
+    // picture, as the body does, and the part stays large.
+    double zLow = c.jawZLowMm, rHigh = c.jawOuterRadiusMm;
+    if (options.bar) {
+      zLow = std::max(zLow, c.jawZHighMm - kJawFramedOfBarLength * (options.bar->zHighMm - options.bar->zLowMm));
+      rHigh = std::min(rHigh, std::max(c.jawInnerRadiusMm, options.bar->radiusMm) +
+                                  kJawFramedOfBarRadius * options.bar->radiusMm);
+    }
     for (int jaw = 0; jaw < 3; ++jaw) {
       const double a = jaw * 2 * M_PI / 3;
       const Eigen::Vector3d out(std::cos(a), std::sin(a), 0), side(-std::sin(a), std::cos(a), 0);
-      for (double z : {c.jawZLowMm, c.jawZHighMm})
-        for (double r : {c.jawInnerRadiusMm, c.jawOuterRadiusMm})
+      for (double z : {zLow, c.jawZHighMm})
+        for (double r : {c.jawInnerRadiusMm, rHigh})
           for (double s : {-half, half}) e.include(view, out * r + side * s + Eigen::Vector3d(0, 0, z));
     }
   }
@@ -106,7 +118,7 @@ vtkSmartPointer<vtkTextActor> textActor(const Label& label, int fontPx) {
   if (label.justify == Justify::Right) p->SetJustificationToRight();
   if (label.backed) {
     p->SetBackgroundColor(1.0, 1.0, 1.0);
-    p->SetBackgroundOpacity(0.8);
+    p->SetBackgroundOpacity(1.0);
   }
   actor->SetPosition(label.at.x(), label.at.y());
   return actor;
@@ -257,17 +269,17 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
   const int legendPx = std::max(10, titlePx * 3 / 4);
   const double left = titlePx;
   labels.push_back({Pixel(left, o.heightPx - 2 * titlePx), o.title.empty() ? s.toolpath.programName : o.title,
-                    kInkColour, Justify::Left, false});
+                    kInkColour, Justify::Left, true});
   const std::size_t titleLabel = labels.size() - 1;
   if (!caption.empty())
-    labels.push_back({Pixel(left, o.heightPx - 3.2 * titlePx), caption, kInkColour, Justify::Left, false});
+    labels.push_back({Pixel(left, o.heightPx - 3.2 * titlePx), caption, kInkColour, Justify::Left, true});
   // The legend, bottom up.
   std::vector<std::pair<std::string, Rgb>> legend{{"- - rapid", kRapidColour}, {"— feed", kFeedColour}};
   if (o.bar) legend.push_back({"the bar before cutting", kGhostLineColour});
   if (!o.dimensions.diameters.empty() || !o.dimensions.lengths.empty()) legend.push_back({"dimensions, mm", kDimensionColour});
   for (std::size_t n = 0; n < legend.size(); ++n)
     labels.push_back({Pixel(left, titlePx / 2.0 + static_cast<double>(n) * 1.5 * legendPx), legend[n].first,
-                      legend[n].second, Justify::Left, false});
+                      legend[n].second, Justify::Left, true});
   for (std::size_t n = 0; n < labels.size(); ++n) add(textActor(labels[n], n == titleLabel ? titlePx : legendPx));
 }
 

@@ -15,11 +15,10 @@ namespace {
 
 using test::Png;
 using test::Rgb;
+using test::partMetal;
 
-// Colour classes, loose enough for lighting and anti-aliasing, apart from one another.
-bool metal(const Rgb& c) {
-  return std::abs(c.r - c.g) <= 14 && std::abs(c.b - c.r) <= 16 && c.r > 40 && std::max({c.r, c.g, c.b}) < 228;
-}
+// Colour classes, loose enough for lighting and anti-aliasing, apart from one another; the
+// part's metal is test::partMetal (png_pixels.hpp), which tells it from the background.
 bool ghost(const Rgb& c) { return c.r > 180 && c.r - c.b > 25 && c.g > c.b; }  // amber over the background
 bool jaw(const Rgb& c) { return c.b - c.r > 30 && c.b < 210 && c.r < 140; }     // blue steel, darker than a feed
 bool cutFace(const Rgb& c) { return c.b > 170 && c.b - c.r > 30 && c.g > c.r; }
@@ -53,17 +52,19 @@ struct Scene {
   }
 };
 
-// The front view frames, by hand: across (Z) the jaws' Z−80 to the insert's Z20 (it stands
-// within a quarter of the frame, so it is framed): 100 mm; up (X) from the lower jaws'
-// corners, −0.5·50 − 0.866·9 = −32.79 (the jaws at 120° and 240°, 9 mm = 0.18·50 either
-// side), to the top jaw's 50: 82.79 mm. With 6 % margins and 15 % more on top, 800 × 600 px
-// leaves 704 × 438 px: 438 / 82.79 = 5.290 px/mm (< 704 / 100). Centre: Z−30 across; up,
-// the extent's middle 8.603 sits at 255 px, so the picture's centre (300 px) is at
-// 8.603 + 45 / 5.290 = 17.109. A point (r, z): x = 400 + (z + 30)·5.290, y = 300 + (r − 17.109)·5.290.
+// The front view frames, by hand: the bar, the insert (it stands within a quarter of the frame,
+// so it is framed) and the jaws' front ends — 0.2 of the bar's length behind their face
+// (Z−72) and 0.25 of its radius out past it (r 37.5). Across (Z): Z−72 to the insert's Z20,
+// 92 mm. Up (X): the bar's −30 (below the lower jaws' −0.5·37.5 − 0.866·9 = −26.54; 9 mm =
+// 0.18·50 either side of a jaw) to the top jaw's 37.5: 67.5 mm. With 6 % margins and 15 %
+// more on top, 800 × 600 px leaves 704 × 438 px: 438 / 67.5 = 6.4889 px/mm (< 704 / 92).
+// Centre: Z−26 across; up, the extent's middle 3.75 sits at 255 px, so the picture's centre
+// (300 px) is at 3.75 + 45 / 6.4889 = 10.685. A point (r, z):
+// x = 400 + (z + 26)·6.4889, y = 300 + (r − 10.685)·6.4889.
 Eigen::Vector2i frontPixel(double r, double z) {
-  const double pxPerMm = 438.0 / (50 + 0.5 * 50 + std::sqrt(3.0) / 2 * 9);
-  return {static_cast<int>(std::lround(400 + (z + 30) * pxPerMm)),
-          static_cast<int>(std::lround(300 + (r - 17.1090) * pxPerMm))};
+  const double pxPerMm = 438.0 / 67.5;
+  return {static_cast<int>(std::lround(400 + (z + 26) * pxPerMm)),
+          static_cast<int>(std::lround(300 + (r - (3.75 + 45 / pxPerMm)) * pxPerMm))};
 }
 
 /// How many pixels of a (2·half+1)² window about p pass `test`.
@@ -79,18 +80,21 @@ TEST(PartViews, FrontViewShowsPartGhostJawToolAndDimensionsWhereTheyStand) {
   test::TempDir dir;
   writePartImagePng(scene.part, scene.path, scene.options, dir.path() / "front.png");
   const Png png(dir.path() / "front.png");
+  const auto metal = [&png](int x, int y) { return partMetal(png, x, y); };
   ASSERT_EQ(png.width(), 800);
   constexpr int kWindow = 4;  // 9 × 9 px
-  EXPECT_EQ(around(png, frontPixel(-10, -30), kWindow, metal), 81);  // the part, below its axis
+  // Z−45, clear of the Ø40 dimension line, which stands at the middle of its face (Z−30).
+  EXPECT_EQ(around(png, frontPixel(-10, -45), kWindow, metal), 81);  // the part, below its axis
   EXPECT_EQ(around(png, frontPixel(-25, -30), kWindow, ghost), 81);  // the bar's removed ring
   EXPECT_EQ(around(png, frontPixel(40, -70), kWindow, jaw), 81);     // the top jaw
-  EXPECT_GT(around(png, frontPixel(15, 15), kWindow, gold), 70);     // the insert's middle
-  EXPECT_EQ(around(png, frontPixel(-40, 10), kWindow, ghost), 0);    // beyond the bar: background
+  EXPECT_GT(around(png, frontPixel(30, 15), kWindow, gold), 70);     // the insert's middle: r 25–35, Z10–20
+  EXPECT_EQ(around(png, frontPixel(40, 5), kWindow, ghost), 0);      // beyond the bar: background
   // The 60 length: its line 0.8 of a spacing (27 px) above the dimension band's foot (474 px),
   // from Z−60 to Z0, and its figure centred above it.
   const int lineY = static_cast<int>(474 + 0.8 * 27);
   EXPECT_GT(png.count(frontPixel(0, -55).x(), frontPixel(0, -5).x(), lineY - 1, lineY + 2, purple), 200);
-  EXPECT_GT(png.count(380, 420, lineY + 4, lineY + 20, purple), 15);  // "60.0"
+  const int figureX = frontPixel(0, -30).x();  // "60.0", centred on the length
+  EXPECT_GT(png.count(figureX - 20, figureX + 20, lineY + 4, lineY + 20, purple), 15);
   // The rapid from X200 Z200 comes in at the picture's right or top edge: red there.
   EXPECT_GT(png.count(560, 800, 300, 600, redLine), 40);
 }
@@ -116,13 +120,15 @@ TEST(PartViews, SectionViewCutsTheUpperHalfAndKeepsTheLowerAsSeen) {
   test::TempDir dir;
   writePartImagePng(scene.part, scene.path, scene.options, dir.path() / "section.png");
   const Png png(dir.path() / "section.png");
+  const auto metal = [&png](int x, int y) { return partMetal(png, x, y); };
   constexpr int kWindow = 4;
-  EXPECT_EQ(around(png, frontPixel(10, -30), kWindow, cutFace), 81);  // the cut, above the axis
-  EXPECT_EQ(around(png, frontPixel(-10, -30), kWindow, metal), 81);   // the part as seen, below
+  // Z−45, clear of the Ø40 dimension line at Z−30.
+  EXPECT_EQ(around(png, frontPixel(10, -45), kWindow, cutFace), 81);  // the cut, above the axis
+  EXPECT_EQ(around(png, frontPixel(-10, -45), kWindow, metal), 81);   // the part as seen, below
   EXPECT_EQ(around(png, frontPixel(25, -30), kWindow, ghost), 81);    // removed, above
   EXPECT_EQ(around(png, frontPixel(-25, -30), kWindow, ghost), 81);   // and below
   EXPECT_EQ(around(png, frontPixel(40, -70), kWindow, jaw), 81);      // the jaw, cut
-  EXPECT_EQ(around(png, frontPixel(10, -30), kWindow, metal), 0);
+  EXPECT_EQ(around(png, frontPixel(10, -45), kWindow, metal), 0);
 }
 
 TEST(PartViews, IsoViewFramesTheBarNotTheRapidAndMarksWhereItGoes) {
@@ -137,7 +143,7 @@ TEST(PartViews, IsoViewFramesTheBarNotTheRapidAndMarksWhereItGoes) {
   for (int y = 0; y < 600; y += 2) {
     int run = 0;
     for (int x = 0; x < 800; ++x) {
-      run = metal(png.at(x, y)) ? run + 1 : 0;
+      run = partMetal(png, x, y) ? run + 1 : 0;
       widest = std::max(widest, run);
     }
   }
