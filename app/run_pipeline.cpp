@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <stdexcept>
 #include <iostream>
 
 #include "app/at_line.hpp"
@@ -22,13 +21,6 @@
 namespace lathesim::app {
 
 namespace {
-
-void writeBytes(const std::string& bytes, const std::filesystem::path& file) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-}
 
 // A warning for the report, also printed on stderr; line 0 when it concerns the whole run.
 void warn(SimulatedRun& run, int line, int column, const std::string& message) {
@@ -134,7 +126,7 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   for (const std::string& format : options.exports) {
     const auto file = out.stage("part." + format);
     if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
-    if (format == "glb") writeBytes(run.modelGlb, file);
+    if (format == "glb") render::writeFileBytes(run.modelGlb, file);
     if (format == "ply") render::writePartPly(run.part, file);
     if (format == "obj") render::writePartObj(run.part, file);
   }

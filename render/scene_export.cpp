@@ -30,13 +30,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-void writeText(const std::string& bytes, const std::filesystem::path& file) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-}
-
 std::string decodeBase64(const std::string& text) {
   static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   int table[256];
@@ -166,12 +159,15 @@ std::string gltfToGlb(const std::string& text) {
   return glb;
 }
 
-void writePartGltf(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::filesystem::path& file) {
-  writeText(partGltf(part, toolpath), file);
+void writeFileBytes(const std::string& bytes, const std::filesystem::path& file) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-void writePartGlb(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::filesystem::path& file) {
-  writeText(gltfToGlb(partGltf(part, toolpath)), file);
+void writePartGltf(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::filesystem::path& file) {
+  writeFileBytes(partGltf(part, toolpath), file);
 }
 
 void writePartPly(const TriangleMesh& part, const std::filesystem::path& file) {

@@ -21,7 +21,7 @@ std::string gltfToGlb(const std::string& gltf);
 
 /// Each writes one file; throws std::runtime_error on failure.
 void writePartGltf(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::filesystem::path& file);
-void writePartGlb(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::filesystem::path& file);
+void writeFileBytes(const std::string& bytes, const std::filesystem::path& file);  // e.g. a GLB, as it is
 void writePartPly(const TriangleMesh& part, const std::filesystem::path& file);  // binary, little-endian
 void writePartObj(const TriangleMesh& part, const std::filesystem::path& file);
 
