@@ -10,7 +10,7 @@ namespace lathesim::app {
 class StagedOutput {
  public:
   explicit StagedOutput(std::filesystem::path folder);
-  ~StagedOutput();  // removes whatever was staged but not committed
+  ~StagedOutput();  // removes whatever was staged but not committed, and the folder if it made it
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
 
@@ -23,6 +23,7 @@ class StagedOutput {
 
  private:
   std::filesystem::path folder_;
+  bool madeFolder_ = false;
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temp, final
 };
 

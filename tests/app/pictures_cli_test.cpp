@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "tests/render/png_pixels.hpp"
@@ -80,6 +81,30 @@ TEST(PictureViews, EachViewAtTheSizeAskedAndABadSizeWritesNothing) {
   EXPECT_NE(refused.status, 0);
   EXPECT_NE(refused.err.find("WIDTHxHEIGHT"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(dir.path() / "bad"));
+}
+
+/// Where `name` is found on this process's PATH (empty if nowhere).
+fs::path onPath(const std::string& name) {
+  std::istringstream path(std::getenv("PATH") ? std::getenv("PATH") : "");
+  for (std::string folder; std::getline(path, folder, ':');)
+    if (!folder.empty() && fs::exists(fs::path(folder) / name)) return fs::path(folder) / name;
+  return {};
+}
+
+// Without ffmpeg, --animate is refused, plainly, and nothing is written, not even the folder.
+TEST(PictureAnimation, WithoutFfmpegIsAnErrorAndWritesNothing) {
+  ScratchDir dir("no-ffmpeg");
+  const fs::path bin = dir.path() / "bin";  // the X server the pictures may need, and no ffmpeg
+  fs::create_directories(bin);
+  for (const char* tool : {"Xvfb", "xauth"})
+    if (const fs::path found = onPath(tool); !found.empty()) fs::create_symlink(found, bin / tool);
+  auto args = partArgs("shop-g55-safety", dir.path() / "out");
+  args.push_back("--animate");
+  args.insert(args.begin(), {"PATH=" + bin.string(), kBinary.string()});
+  const auto outcome = test::runProcess(onPath("env"), args, dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("install the ffmpeg package"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
 }
 
 // ---------------------------------------------------------------------------------------
