@@ -24,10 +24,10 @@ std::string number(double value) {
   return text;
 }
 
-/// A file for the child's error output, beside nothing the user sees.
+/// A file for the child's error output, in the system's temporary folder (TMPDIR).
 std::filesystem::path logFile() {
-  char name[] = "/tmp/lathesim-ffmpeg-XXXXXX";
-  const int fd = ::mkstemp(name);
+  std::string name = (std::filesystem::temp_directory_path() / "lathesim-ffmpeg-XXXXXX").string();
+  const int fd = ::mkstemp(name.data());
   if (fd < 0) throw std::runtime_error(std::string("cannot make a temporary file: ") + std::strerror(errno));
   ::close(fd);
   return name;
