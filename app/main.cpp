@@ -56,9 +56,10 @@ int main(int argc, char** argv) {
   lathesim::app::addPictureOptions(*runCmd, run);
   lathesim::app::addPictureOptions(*checkCmd, check.run);
 
-  // --dialect, --control and --block-skip on every command that reads a program.
+  // --dialect, --control, --block-skip and --max-steps on every command that reads a program.
   struct OverrideArguments {
     std::string dialect, control, blockSkip;
+    std::optional<long long> maxSteps;
   };
   OverrideArguments runArgs, checkArgs, expandArgs;
   std::vector<std::string> dialects;
@@ -72,6 +73,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember(presets));
     command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
         ->check(CLI::IsMember({"on", "off"}));
+    command->add_option("--max-steps", args->maxSteps,
+                        "blocks the program may run again before it is stopped as an endless loop (overrides "
+                        "[macro] max_steps)")
+        ->check(CLI::PositiveNumber);
   }
 
   lathesim::app::BatchCli batch(cli);
@@ -82,6 +87,7 @@ int main(int argc, char** argv) {
     if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
     if (!args.control.empty()) overrides.controlPreset = args.control;
     if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
+    overrides.maxSteps = args.maxSteps;
     return overrides;
   };
   const auto optionalPath = [](const std::string& s) {
