@@ -165,6 +165,29 @@ std::string checkSection(const Json& r) {
   return html + "</table>\n";
 }
 
+/// report.json's threads: each as programmed and as measured (the means over the angles).
+std::string threadsSection(const Json& r) {
+  if (!r.contains("threads") || r.at("threads").empty()) return "";
+  std::string html = "<h2>Threads</h2>\n<table>\n<tr><th>line</th><th>code</th><th>kind</th><th class=\"num\">lead, mm "
+                     "(programmed)</th><th>measured</th></tr>\n";
+  for (const Json& t : r.at("threads")) {
+    const Json& p = t.at("programmed");
+    const Json& m = t.at("measured");
+    auto mean = [&m](const char* key) { return fixed(m.at(key).value("mean", 0.0), 3); };
+    const std::string measured =
+        m.contains("problem")
+            ? "not measured: " + escaped(m.value("problem", ""))
+            : "lead " + fixed(m.at("lead_mm").value("mean", 0.0), 4) + " mm, " + std::to_string(m.value("starts", 0)) +
+                  " start(s), " + escaped(m.value("hand", "")) + "-hand, major Ø" + mean("major_diameter_mm") +
+                  ", minor Ø" + mean("minor_diameter_mm") + ", pitch Ø" + mean("pitch_diameter_mm");
+    const int line = t.value("line", 0);
+    html += "<tr><td><a href=\"#L" + std::to_string(line) + "\">" + std::to_string(line) + "</a></td><td>" +
+            escaped(t.value("code", "")) + "</td><td>" + escaped(t.value("kind", "")) + "</td><td class=\"num\">" +
+            fixed(p.value("lead_mm", 0.0), 4) + "</td><td>" + measured + "</td></tr>\n";
+  }
+  return html + "</table>\n";
+}
+
 /// The program, one row per source line: its number, text, machine time and removed volume
 /// (its blocks' sums), a bar for the time and a warm tint for the removal; lines with a
 /// collision or a warning flagged at their number.
@@ -240,6 +263,7 @@ void writeReportHtml(const Json& report, const std::string& programText, const s
     }
     page += "</div>\n";
   }
+  page += threadsSection(report);
   page += checkSection(report);
   page += listing(report, programText);
   page += "</main>\n";

@@ -26,6 +26,7 @@ int runCommand(const RunOptions& options) {
             << options.out.string() << "/\n";
   for (const auto& c : figures.simulation.collisions)
     std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
+  for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';
   return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
+#include "measure/thread_measure.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
 #include "render/scene_export.hpp"
@@ -35,6 +36,13 @@ sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   sim::ToolOutlines tools;
   for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
   return tools;
+}
+
+sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
+  sim::ToolThicknesses thicknesses;
+  for (const auto& tool : setup.tools)
+    if (tool.thicknessMm) thicknesses.emplace(tool.number, *tool.thicknessMm);
+  return thicknesses;
 }
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out) {
@@ -73,15 +81,20 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     recording = std::make_unique<CutRecording>(run.job, options.animation, figures.program, *out);
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks,
-                                     recording ? recording->observer() : sim::CutObserver{});
+                                     thicknessesOf(setup), recording ? recording->observer() : sim::CutObserver{});
   if (recording) {
     run.progress->stage("finishing the video");
     recording->finish(*run.stock);
     figures.timing.animateS = recording->secondsSpent();
   }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
+  const sim::ToolOutlines outlines = outlinesOf(setup);
+  figures.threads = measure::measureThreads(*run.stock, run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap() - figures.timing.animateS;
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
+  for (const auto& thread : figures.threads)
+    if (const auto tooWide = measure::threadToolTooWide(thread, outlines.at(thread.programmed.tool), voxel))
+      warn(run, thread.programmed.line, thread.programmed.column, *tooWide);
   return run;
 }
 
@@ -121,6 +134,26 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
     const auto png = out.stage(pictureFileName(view));
     render::writePartImagePng(run.part, run.job.toolpath, image, png);
     run.pictures.push_back({pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view", png});
+  }
+  // A close-up of the first thread measured: six pitches around the middle of its grooves,
+  // from a pitch inside its root to half a pitch outside its crest, seen from the front so
+  // that its profile shows true on the silhouette.
+  for (const auto& thread : run.figures.threads) {
+    if (thread.measured.problem) continue;
+    const measure::ThreadMeasurement& m = thread.measured;
+    const double middle = 0.5 * (m.zLowMm + m.zHighMm), pitch = m.pitchMm.mean;
+    const double inner = 0.5 * std::min(m.minorDiameterMm.min, m.majorDiameterMm.min);
+    const double outer = 0.5 * std::max(m.majorDiameterMm.max, m.minorDiameterMm.max);
+    render::PartImageOptions closeUp;
+    closeUp.widthPx = pictures.widthPx;
+    closeUp.heightPx = pictures.heightPx;
+    closeUp.view = render::PartView::Front;
+    closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
+    closeUp.closeUp = render::CloseUp{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
+    const auto png = out.stage("thread.png");
+    render::writePartImagePng(run.part, run.job.toolpath, closeUp, png);
+    run.pictures.push_back({"thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line), png});
+    break;
   }
   run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
   for (const std::string& format : options.exports) {

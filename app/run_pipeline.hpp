@@ -41,6 +41,7 @@ struct SimulatedRun {
 };
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
+sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
 
 /// Reads the setup and program, checks the grid and simulates (progress on a terminal);
 /// records the cut into `out` when options.animation asks and `out` is given.

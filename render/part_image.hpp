@@ -48,6 +48,14 @@ struct ChuckPicture {
   double bodyZLowMm = 0;
 };
 
+/// A part of the picture to frame instead of the whole: the box Z `zLowMm`…`zHighMm` ×
+/// radius `radiusLowMm`…`radiusHighMm` of the meridian plane facing the viewer's up (a
+/// thread's close-up: its profile on the silhouette, its grooves on the face below).
+struct CloseUp {
+  double zLowMm = 0, zHighMm = 0;
+  double radiusLowMm = 0, radiusHighMm = 0;
+};
+
 struct PartImageOptions {
   int widthPx = 1600;
   int heightPx = 1200;
@@ -60,17 +68,20 @@ struct PartImageOptions {
   int dimensionDecimals = 1;            // their figures' decimals
   std::optional<SampledSection> section{};  // the part's section: the cut face of the Section view
   std::string caption{};                // a line under the title
+  /// Frame this box only (with the view Front: the profile true on the silhouette), without
+  /// the toolpath, the tool and the legend.
+  std::optional<CloseUp> closeUp{};
 };
 
 /// Renders off-screen to a PNG: the shaded part; the bar as a faint amber ghost; the chuck's
-/// jaws in dark blue steel; the toolpath over it (rapids dashed red, feeds solid blue), cut
-/// at the picture's edge where a move leaves it, with an arrow and where it goes; the tool, if
-/// given, as gold insert and grey holder slabs in the meridian plane (or an arrow to it when
-/// it stands outside the picture); dimension lines in purple; the title, legend and (front
-/// and section views) a scale bar.
+/// jaws in dark blue steel; the toolpath over it (rapids dashed red, feeds solid blue, thread
+/// moves solid green), cut at the picture's edge where a move leaves it, with an arrow and
+/// where it goes; the tool, if given, as gold insert and grey holder slabs in the meridian
+/// plane (or an arrow to it when it stands outside the picture); dimension lines in purple;
+/// the title, legend and (front and section views) a scale bar.
 /// The picture frames the bar and the front ends of the jaws (without a bar, the part and the
 /// whole jaws; without a part, the toolpath) with a margin, and the tool when it stands near
-/// them; the rest of the chuck runs out of the picture.
+/// them; the rest of the chuck runs out of the picture. A close-up frames its box instead.
 /// Works with no display: an Xvfb server is started for the process if none is reachable.
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,

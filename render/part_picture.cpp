@@ -53,6 +53,17 @@ void includeCircle(Extent& e, const View& view, double radius, double z) {
 PictureFrame framePicture(const PartImageOptions& options, const interp::Toolpath& toolpath, const TriangleMesh& part) {
   const View view = viewOf(options.view);
   Extent e;
+  if (options.closeUp) {
+    const CloseUp& box = *options.closeUp;
+    for (const double z : {box.zLowMm, box.zHighMm})
+      for (const double r : {box.radiusLowMm, box.radiusHighMm}) e.include(view, meridianPoint(RZ(r, z)));
+    // The whole part in depth, so that the camera does not clip it open.
+    for (const Eigen::Vector3f& v : part.vertices) {
+      const double depth = v.cast<double>().dot(view.towardsViewer);
+      e.minDepth = std::min(e.minDepth, depth), e.maxDepth = std::max(e.maxDepth, depth);
+    }
+    return frameExtent(view, e, options.widthPx, options.heightPx, kMarginFraction);
+  }
   if (options.bar) {
     for (double z : {options.bar->zLowMm, options.bar->zHighMm}) includeCircle(e, view, options.bar->radiusMm, z);
   } else if (!part.vertices.empty()) {
@@ -239,14 +250,14 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
     const MeridianProfile profile = MeridianProfile::fromSection(*o.section);
     for (const Segment& seg : profile.surface()) thin.line(s.frame.pixelOf(seg.a), s.frame.pixelOf(seg.b), kInkColour);
   }
-  drawToolpath(s.toolpath, shown, s.frame, clip, thick, marks, labels);
+  if (!o.closeUp) drawToolpath(s.toolpath, shown, s.frame, clip, thick, marks, labels);
   if (!o.dimensions.diameters.empty() || !o.dimensions.lengths.empty()) {
     const double topPx = s.frame.heightPx * (1.0 - kMarginFraction - kDimensionBand);
     drawDimensions(o.dimensions, o.dimensionDecimals, s.frame, topPx, thin, marks, labels);
   }
   if (o.view != PartView::Iso) drawScaleBar(s.frame, thin, labels);
 
-  if (shownTool) {
+  if (shownTool && !o.closeUp) {
     ToolPicture tool = *shownTool;
     if (shown) tool.position = shown->position;
     if (toolInPicture(tool, tool.position, s.frame)) {
@@ -274,7 +285,13 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
   if (!caption.empty())
     labels.push_back({Pixel(left, o.heightPx - 3.2 * titlePx), caption, kInkColour, Justify::Left, true});
   // The legend, bottom up.
-  std::vector<std::pair<std::string, Rgb>> legend{{"- - rapid", kRapidColour}, {"— feed", kFeedColour}};
+  std::vector<std::pair<std::string, Rgb>> legend;
+  if (!o.closeUp) {
+    legend = {{"- - rapid", kRapidColour}, {"— feed", kFeedColour}};
+    if (std::any_of(s.toolpath.moves.begin(), s.toolpath.moves.end(),
+                    [](const interp::Move& m) { return m.kind == interp::MoveKind::Thread; }))
+      legend.push_back({"— thread", kThreadColour});
+  }
   if (o.bar) legend.push_back({"the bar before cutting", kGhostLineColour});
   if (!o.dimensions.diameters.empty() || !o.dimensions.lengths.empty()) legend.push_back({"dimensions, mm", kDimensionColour});
   for (std::size_t n = 0; n < legend.size(); ++n)

@@ -94,7 +94,7 @@ void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::
       move.to = shown->position;  // the move so far (an arc keeps its centre)
     }
     const bool rapid = !interp::isCutting(move.kind);
-    const Rgb& colour = rapid ? kRapidColour : kFeedColour;
+    const Rgb& colour = rapid ? kRapidColour : move.kind == interp::MoveKind::Thread ? kThreadColour : kFeedColour;
     const std::vector<RZ> points = movePoints(move);
     double phase = 0;
     for (std::size_t k = 1; k < points.size(); ++k) {

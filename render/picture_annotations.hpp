@@ -18,6 +18,7 @@ namespace lathesim::render {
 
 inline constexpr Rgb kFeedColour{0.05, 0.25, 0.95};
 inline constexpr Rgb kRapidColour{0.90, 0.08, 0.08};
+inline constexpr Rgb kThreadColour{0.05, 0.55, 0.15};
 inline constexpr Rgb kToolMarkColour{0.85, 0.62, 0.05};
 
 enum class Justify { Left, Centre, Right };

@@ -13,6 +13,7 @@ using test::Rgb;
 
 bool blue(const Rgb& c) { return c.b > 150 && c.b > c.r + 80 && c.b > c.g + 60; }
 bool red(const Rgb& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
+bool green(const Rgb& c) { return c.g > 110 && c.g > c.r + 60 && c.g > c.b + 40; }
 // The insert's gold: strong red and green, little blue.
 bool gold(const Rgb& c) { return c.r > 170 && c.g > 120 && c.b < 90 && c.r > c.b + 110; }
 // The holder's dark steel grey: dark, and nearly neutral.
@@ -43,6 +44,40 @@ TEST(PartImagePng, ShadedPartWithBlueFeedAndRedRapidWithoutDisplay) {
   // The path, away from the legend in the lower-left corner.
   EXPECT_GT(png.count(400, 1600, 0, 1200, blue), 500);
   EXPECT_GT(png.count(400, 1600, 0, 1200, red), 100);
+}
+
+// Thread moves are drawn green (with their legend line); none are without them.
+TEST(PartImagePng, ThreadMovesAreGreen) {
+  ::unsetenv("DISPLAY");
+  interp::Toolpath path = test::rapidThenFeed();
+  interp::Move thread = path.moves.back();
+  thread.kind = interp::MoveKind::Thread;
+  thread.thread = {2.0, true, 0.0, 1};
+  thread.from = RZ(28, 10);
+  thread.to = RZ(28, -50);
+  path.moves.push_back(thread);
+  test::TempDir dir;
+  writePartImagePng(TriangleMesh{}, path, PartImageOptions{800, 600, "t", {}, {}}, dir.path() / "thread.png");
+  EXPECT_GT(Png(dir.path() / "thread.png").count(200, 800, 0, 600, green), 200);
+  writePartImagePng(TriangleMesh{}, test::rapidThenFeed(), PartImageOptions{800, 600, "t", {}, {}}, dir.path() / "none.png");
+  EXPECT_EQ(Png(dir.path() / "none.png").count(0, 800, 0, 600, green), 0);
+}
+
+// A close-up frames its box, straight from the side, without the toolpath: the box Z-10…10,
+// r 20…40 of a Φ60 cylinder fills the picture's width, the cylinder's top edge (r 30) across
+// its middle, and no path colour shows.
+TEST(PartImagePng, CloseUpFramesItsBoxWithoutTheToolpath) {
+  ::unsetenv("DISPLAY");
+  test::TempDir dir;
+  PartImageOptions options{800, 600, "close", {}};
+  options.view = PartView::Front;
+  options.closeUp = CloseUp{-10, 10, 20, 40};
+  writePartImagePng(test::cylinder(30.0, 60.0, 96, 8), test::rapidThenFeed(), options, dir.path() / "close.png");
+  Png png(dir.path() / "close.png");
+  EXPECT_EQ(png.count(0, 800, 0, 600, blue) + png.count(0, 800, 0, 600, red), 0);
+  // The part below the edge, background above it.
+  const Rgb below = png.at(400, 150), above = png.at(400, 450);
+  EXPECT_GT(distance(below, above), 40);
 }
 
 TEST(PartImagePng, EmptyMeshStillShowsTheToolpath) {
