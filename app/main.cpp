@@ -6,6 +6,7 @@
 
 #include "app/batch_cli.hpp"
 #include "app/commands.hpp"
+#include "app/picture_cli.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 
@@ -52,6 +53,8 @@ int main(int argc, char** argv) {
     command->add_option("--stock", stock, "the bar: D<diameter>xL<length>[xZ<face>], e.g. D40xL80 (over the setup's)");
   }
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
+  lathesim::app::addPictureOptions(*runCmd, run);
+  lathesim::app::addPictureOptions(*checkCmd, check.run);
 
   // --dialect, --control, --block-skip and --max-steps on every command that reads a program.
   struct OverrideArguments {

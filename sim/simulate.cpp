@@ -58,7 +58,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks,
-                          const ToolThicknesses& thicknesses) {
+                          const ToolThicknesses& thicknesses, const CutObserver& observer) {
   SimulationResult result;
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
@@ -95,6 +95,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     if (turning(head))
       while (end < moves.size() && moves[end].block == head.block && turning(moves[end])) ++end;
 
+    if (observer) observer(first, end, stock);
     double removed = 0.0;
     const ConvexPolygon& tool = toolOf(head, tools);
     if (interp::isCutting(head.kind) && !spindleTurns(head)) {
