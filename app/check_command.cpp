@@ -220,7 +220,8 @@ render::SectionImage sectionImage(const std::string& title, const SampledSection
 
 void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
                           const MeridianProfile& part, const MeridianProfile& drawing, const measure::DeviationReport& d,
-                          const std::vector<measure::ZRange>& threadZones, StagedOutput& out) {
+                          const std::vector<measure::ZRange>& threadZones, StagedOutput& out,
+                          std::vector<HtmlPicture>& pictures) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   render::DeviationImageOptions image;
   image.title = options.run.program.string() + " against " + target;
@@ -228,9 +229,11 @@ void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh,
   image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
                   " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
   render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing, threadZones), image, out.stage("deviation.png"));
+  pictures.push_back({"deviation.png: the part coloured by its deviation from the drawing", out.staged("deviation.png")});
   render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d, threadZones);
   half.caption = image.caption;
   render::writeSectionImagePng(half, out.stage("section.png"));
+  pictures.push_back({"section.png: the half-section against the drawing", out.staged("section.png")});
 }
 
 }  // namespace
@@ -246,7 +249,8 @@ int checkCommand(const CheckOptions& options) {
       !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing, callouts)))
     return 1;  // before the long part
   Stopwatch clock;
-  std::optional<SimulatedRun> run = simulateProgram(options.run, clock);
+  StagedOutput out(options.run.out);
+  std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
   if (!run) return 1;
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
@@ -269,14 +273,13 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
-  StagedOutput out(options.run.out);
-  stageRunFiles(*run, out, clock);
-  stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out);
+  stageRunFiles(*run, options.run, out, clock);
+  stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);
   report["check"] = checkJson(options, deviation, threadChecks, process, checkS);
-  writeJson(report, out.stage("report.json"));
+  stageReports(*run, report, out);
   out.commit();
   run->progress->stage("done");
   run->progress->finish();

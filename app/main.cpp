@@ -6,6 +6,7 @@
 
 #include "app/batch_cli.hpp"
 #include "app/commands.hpp"
+#include "app/picture_cli.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 
@@ -54,6 +55,8 @@ int main(int argc, char** argv) {
                         "(over the setup's)");
   }
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
+  lathesim::app::addPictureOptions(*runCmd, run);
+  lathesim::app::addPictureOptions(*checkCmd, check.run);
 
   // --dialect, --control, --block-skip and --max-steps on every command that reads a program.
   struct OverrideArguments {

@@ -146,10 +146,10 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
                         {"simulate", f.timing.simulateS},
                         {"mesh", f.timing.meshS},
                         {"render", f.timing.renderS}};
+  if (f.timing.animateS > 0) report["timing_s"]["animate"] = f.timing.animateS;
   return report;
 }
 
-void writeReportJson(const RunFigures& f, const std::filesystem::path& file) { writeJson(reportJson(f), file); }
 
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file) {
   std::ofstream out(file);

@@ -18,6 +18,7 @@ namespace lathesim::app {
 
 struct RunTimings {
   double parseS = 0, simulateS = 0, meshS = 0, renderS = 0;
+  double animateS = 0;  // --animate: drawing and encoding the frames (not counted in simulateS)
 };
 
 struct RunFigures {
@@ -49,10 +50,9 @@ struct RunFigures {
 /// The report as JSON, for commands that add their own section (check adds "check").
 nlohmann::ordered_json reportJson(const RunFigures& figures);
 
-void writeReportJson(const RunFigures& figures, const std::filesystem::path& file);
-
 /// One line for the terminal naming a thread and what was measured of it.
 std::string threadSummary(const measure::MeasuredThread& thread);
+
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file);
 
 }  // namespace lathesim::app

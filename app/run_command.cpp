@@ -8,14 +8,14 @@ namespace lathesim::app {
 
 int runCommand(const RunOptions& options) {
   Stopwatch clock;
-  std::optional<SimulatedRun> run = simulateProgram(options, clock);
+  StagedOutput out(options.out);
+  std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return 1;
   meshPart(*run, clock);
-  StagedOutput out(options.out);
-  stageRunFiles(*run, out, clock);
+  stageRunFiles(*run, options, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
-  writeReportJson(figures, out.stage("report.json"));
+  stageReports(*run, reportJson(figures), out);
   out.commit();
   run->progress->stage("done");
   run->progress->finish();

@@ -2,21 +2,35 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
 #include "app/at_line.hpp"
+#include "app/cut_recording.hpp"
+#include "app/part_pictures.hpp"
 #include "job/collision_checks.hpp"
-#include "app/tool_picture.hpp"
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "measure/thread_measure.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
+#include "render/scene_export.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::app {
+
+namespace {
+
+// A warning for the report, also printed on stderr; line 0 when it concerns the whole run.
+void warn(SimulatedRun& run, int line, int column, const std::string& message) {
+  run.figures.warnings.push_back(run.job.warningAt(line, column, message));
+  std::cerr << interp::format(run.figures.warnings.back()) << '\n';
+}
+void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, message); }
+
+}  // namespace
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup) {
   sim::ToolOutlines tools;
@@ -31,18 +45,7 @@ sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
   return thicknesses;
 }
 
-namespace {
-
-// A warning for the report, also printed on stderr; line 0 when it concerns the whole run.
-void warn(SimulatedRun& run, int line, int column, const std::string& message) {
-  run.figures.warnings.push_back(run.job.warningAt(line, column, message));
-  std::cerr << interp::format(run.figures.warnings.back()) << '\n';
-}
-void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, message); }
-
-}  // namespace
-
-std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out) {
   std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
@@ -73,9 +76,17 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.stockVolumeMm3 = run.stock->volumeMm3();
   if (auto problem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
+  std::unique_ptr<CutRecording> recording;
+  if (options.animation.mp4 && out)
+    recording = std::make_unique<CutRecording>(run.job, options.animation, figures.program, *out);
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
                                      [&](int done, int total) { run.progress->update(done, total); }, &checks,
-                                     thicknessesOf(setup));
+                                     thicknessesOf(setup), recording ? recording->observer() : sim::CutObserver{});
+  if (recording) {
+    run.progress->stage("finishing the video");
+    recording->finish(*run.stock);
+    figures.timing.animateS = recording->secondsSpent();
+  }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
   if (run.partedOff()) {  // what is left is the stub and the pieces that fell
     figures.stubVolumeMm3 = figures.finalVolumeMm3;
@@ -84,7 +95,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   const sim::ToolOutlines outlines = outlinesOf(setup);
   // A thread is measured on the part: after a part-off, on the piece that fell.
   figures.threads = measure::measureThreads(run.partStock(), run.job.toolpath, outlines, setup.dialect);
-  figures.timing.simulateS = clock.lap();
+  figures.timing.simulateS = clock.lap() - figures.timing.animateS;
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
   for (const auto& thread : figures.threads)
     if (const auto tooWide = measure::threadToolTooWide(thread, outlines.at(thread.programmed.tool), voxel))
@@ -116,8 +127,9 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
   figures.timing.meshS = clock.lap();
 }
 
-void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
-  run.progress->stage("writing STL, VDB and the render");
+void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock) {
+  const PictureRequest& pictures = options.pictures;
+  run.progress->stage("writing STL, VDB, the pictures and the report");
   render::writeBinaryStl(run.part, out.stage("part.stl"));
   if (run.partedOff()) render::writeBinaryStl(run.stub, out.stage("stub.stl"));
   {
@@ -126,12 +138,21 @@ void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   }
   render::writeToolpathVtp(run.job.toolpath, out.stage("toolpath.vtp"));
   run.stock->writeVdb(out.stage("stock.vdb"), run.figures.simulation.part.get());
-  render::PartImageOptions image;
-  image.title = run.figures.program;
-  image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);
-  render::writePartImagePng(run.part, run.job.toolpath, image, out.stage("part.png"));
+  render::PartImageOptions image =
+      partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
+  addPartSection(image, run.partStock().meridianSection(), run.figures.voxelMm);
+  std::vector<render::PartView> views{render::PartView::Iso};
+  for (const render::PartView view : pictures.views)
+    if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);
+  for (const render::PartView view : views) {
+    image.view = view;
+    const auto png = out.stage(pictureFileName(view));
+    render::writePartImagePng(run.part, run.job.toolpath, image, png);
+    run.pictures.push_back({pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view", png});
+  }
   // A close-up of the first thread measured: six pitches around the middle of its grooves,
-  // from a pitch inside its root to half a pitch outside its crest.
+  // from a pitch inside its root to half a pitch outside its crest, seen from the front so
+  // that its profile shows true on the silhouette.
   for (const auto& thread : run.figures.threads) {
     if (thread.measured.problem) continue;
     const measure::ThreadMeasurement& m = thread.measured;
@@ -139,12 +160,30 @@ void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
     const double inner = 0.5 * std::min(m.minorDiameterMm.min, m.majorDiameterMm.min);
     const double outer = 0.5 * std::max(m.majorDiameterMm.max, m.minorDiameterMm.max);
     render::PartImageOptions closeUp;
+    closeUp.widthPx = pictures.widthPx;
+    closeUp.heightPx = pictures.heightPx;
+    closeUp.view = render::PartView::Front;
     closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
     closeUp.closeUp = render::CloseUp{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
-    render::writePartImagePng(run.part, run.job.toolpath, closeUp, out.stage("thread.png"));
+    const auto png = out.stage("thread.png");
+    render::writePartImagePng(run.part, run.job.toolpath, closeUp, png);
+    run.pictures.push_back({"thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line), png});
     break;
   }
+  run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
+  for (const std::string& format : options.exports) {
+    const auto file = out.stage("part." + format);
+    if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
+    if (format == "glb") render::writeFileBytes(run.modelGlb, file);
+    if (format == "ply") render::writePartPly(run.part, file);
+    if (format == "obj") render::writePartObj(run.part, file);
+  }
   run.figures.timing.renderS = clock.lap();
+}
+
+void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
+  writeJson(report, out.stage("report.json"));
+  writeReportHtml(report, run.job.programText, run.pictures, run.modelGlb, out.stage("report.html"));
 }
 
 double peakMemoryMb() {

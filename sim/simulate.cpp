@@ -72,7 +72,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks,
-                          const ToolThicknesses& thicknesses) {
+                          const ToolThicknesses& thicknesses, const CutObserver& observer) {
   SimulationResult result;
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
@@ -110,6 +110,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     if (turning(head))
       while (end < moves.size() && moves[end].block == head.block && turning(moves[end])) ++end;
 
+    if (observer) observer(first, end, stock);
     double removed = 0.0;
     RevolvedRegion revolved;             // what a turning write swept (none for a thread or a slot)
     std::optional<ChangedArea> changed;  // where the write can have changed the stock

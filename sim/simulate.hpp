@@ -80,6 +80,10 @@ using ToolThicknesses = std::map<int, double>;
 inline constexpr double kDefaultInsertThicknessMm = 4.0;
 using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 
+/// Called before the moves [firstMove, endMove) are cut, with the stock as it stands then:
+/// what a picture taken while those moves run shows (the animation's frames).
+using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMove, const Stock& stock)>;
+
 /// Removes every move's swept region from `stock` in program order. Consecutive feeds and
 /// arcs of one block made with the spindle turning are united, revolved, and written once (a
 /// cycle's cut and retract overlap heavily); each rapid is written on its own so that a rapid
@@ -97,10 +101,11 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks);
 
-/// The same, with the tools' insert thicknesses for cuts made with the spindle stopped.
+/// The same, with the tools' insert thicknesses for cuts made with the spindle stopped, and
+/// telling `observer` (if set) of each group of moves before it is cut.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks,
-                          const ToolThicknesses& thicknesses);
+                          const ToolThicknesses& thicknesses, const CutObserver& observer = {});
 
 /// Whether the spindle turns during `move` (M03/M04 in force and S > 0).
 bool spindleTurns(const interp::Move& move);

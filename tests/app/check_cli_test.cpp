@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -67,8 +68,8 @@ TEST(CheckSeed001, CorrectTaperPassesAtTwoVoxels) {
   // The same output files as `run`, and the two deviation pictures.
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(dir.path() / "out")) names.insert(entry.path().filename().string());
-  const std::set<std::string> expected{"part.stl",  "part.png",    "toolpath.csv",  "toolpath.vtp",
-                                       "stock.vdb", "report.json", "deviation.png", "section.png"};
+  const std::set<std::string> expected{"part.stl",  "part.png",    "toolpath.csv",  "toolpath.vtp", "stock.vdb",
+                                       "report.json", "report.html", "deviation.png", "section.png"};
   EXPECT_EQ(names, expected);
 }
 
@@ -105,6 +106,14 @@ TEST(CheckSeed001, WrongTaperFailsWithTheHandWorkedExcess) {
   EXPECT_NEAR(region.at("z_range")[1].get<double>(), -5.59, 2 * kVoxelMm);
   EXPECT_LT(region.at("z_range")[0].get<double>(), -18.88 + 2 * kVoxelMm);
   EXPECT_GT(region.at("z_range")[0].get<double>(), -20.0 - kVoxelMm);
+  // report.html carries the deviation pictures and the region, flagged, with its largest excess.
+  const std::string html = test::readFile(dir.path() / "out" / "report.html");
+  EXPECT_NE(html.find("deviation.png: the part coloured by its deviation"), std::string::npos);
+  EXPECT_NE(html.find("section.png: the half-section against the drawing"), std::string::npos);
+  char row[96];
+  std::snprintf(row, sizeof row, "<tr class=\"problem-warning\"><td>excess</td><td class=\"num\">%.3f</td>",
+                region.at("max_mm").get<double>());
+  EXPECT_NE(html.find(row), std::string::npos) << row;
 }
 
 // The drawing may be another program's part, simulated with the same setup: R-20 against

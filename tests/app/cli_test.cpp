@@ -107,7 +107,7 @@ fs::path RunSeed001::out_;
 Outcome* RunSeed001::outcome_ = nullptr;
 
 // A threaded part (parts/g76-m30x2) at 0.25 mm: report.json's threads, the terminal's line,
-// and the close-up thread.png besides the six outputs.
+// and the close-up thread.png besides the seven outputs.
 TEST(RunThread, ReportsTheThreadMeasuredAndWritesItsCloseUp) {
   TempDir dir("run-thread");
   const fs::path out = dir.path() / "out";
@@ -117,6 +117,9 @@ TEST(RunThread, ReportsTheThreadMeasuredAndWritesItsCloseUp) {
                                    dir.path());
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_TRUE(fs::exists(out / "thread.png"));
+  const std::string html = readFile(out / "report.html");
+  EXPECT_NE(html.find("thread.png: a close-up of the thread of line 13"), std::string::npos);
+  EXPECT_NE(html.find("<h2>Threads</h2>"), std::string::npos);
   const nlohmann::json threads = nlohmann::json::parse(readFile(out / "report.json")).at("threads");
   ASSERT_EQ(threads.size(), 1u);
   const auto& t = threads[0];
@@ -141,11 +144,11 @@ TEST(RunThread, ReportsTheThreadMeasuredAndWritesItsCloseUp) {
       << outcome.out;
 }
 
-TEST_F(RunSeed001, WritesExactlyTheSixOutputs) {
+TEST_F(RunSeed001, WritesExactlyTheSevenOutputs) {
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(out_)) names.insert(entry.path().filename().string());
   const std::set<std::string> expected{"part.stl", "part.png", "toolpath.csv", "toolpath.vtp", "stock.vdb",
-                                       "report.json"};
+                                       "report.json", "report.html"};
   EXPECT_EQ(names, expected);  // no staged .tmp-* file left behind
   for (const auto& name : expected) EXPECT_GT(fs::file_size(out_ / name), 0u) << name;
 }
