@@ -68,7 +68,7 @@ std::optional<MeridianProfile> simulateTarget(const CheckOptions& options, doubl
   target.voxelMm = voxelMm;
   std::optional<SimulatedRun> run = simulateProgram(target, clock);
   if (!run) return std::nullopt;
-  return MeridianProfile::fromSection(run->stock->meridianSection());
+  return MeridianProfile::fromSection(run->partStock().meridianSection());
 }
 
 Json place(const RZ& p) { return {{"z", p.y()}, {"diameter", diameterOf(p)}}; }
@@ -258,7 +258,7 @@ int checkCommand(const CheckOptions& options) {
   const double tolerance = options.toleranceMm.value_or(2 * voxel);
 
   run->progress->stage("measuring against the drawing");
-  SampledSection section = run->stock->meridianSection();
+  SampledSection section = run->partStock().meridianSection();
   const MeridianProfile part = MeridianProfile::fromSection(section);
   // A thread's zone is checked by its callout, not by one meridian section.
   std::vector<measure::ZRange> threadZones;

@@ -50,7 +50,9 @@ int main(int argc, char** argv) {
                         "a directory of the control's programs: subprograms M98 calls that the file lacks")
         ->check(CLI::ExistingDirectory);
     auto& stock = command == runCmd ? run.stock : command == checkCmd ? check.run.stock : expand.stock;
-    command->add_option("--stock", stock, "the bar: D<diameter>xL<length>[xZ<face>], e.g. D40xL80 (over the setup's)");
+    command->add_option("--stock", stock,
+                        "the bar: D<diameter>[xd<bore>]xL<length>[xZ<face>], e.g. D40xL80 or the tube D60xd40xL80 "
+                        "(over the setup's)");
   }
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
   lathesim::app::addPictureOptions(*runCmd, run);

@@ -30,7 +30,7 @@ render::PartImageOptions partPictureOptions(const job::Setup& setup, const inter
   options.title = title;
   options.tool = toolPictureAtEnd(setup, toolpath);
   const sim::StockSpec& bar = setup.stock;
-  options.bar = render::BarOutline{bar.diameterMm / 2, bar.faceZMm - bar.lengthMm, bar.faceZMm};
+  options.bar = render::BarOutline{bar.diameterMm / 2, bar.faceZMm - bar.lengthMm, bar.faceZMm, bar.boreMm / 2};
   options.chuck = chuckPicture(setup);
   return options;
 }

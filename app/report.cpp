@@ -68,6 +68,23 @@ nlohmann::ordered_json controlJson(const interp::Control& control) {
   return {{"preset", control.preset}, {"parameters", parameters}};
 }
 
+// The first part-off (later ones are warnings), or null.
+nlohmann::ordered_json partedOffJson(const RunFigures& f) {
+  if (f.simulation.partOffs.empty()) return nullptr;
+  const sim::PartOff& off = f.simulation.partOffs.front();
+  nlohmann::ordered_json catcher = nullptr;
+  if (off.catcher)
+    catcher = {{"line", off.catcher->line}, {"column", off.catcher->column}, {"code", off.catcher->code},
+               {"in_place", off.catcher->inPlace}};
+  return {{"line", off.line},
+          {"column", off.column},
+          {"z", off.zMm},
+          {"volume_mm3", off.volumeMm3},
+          {"stub_volume_mm3", f.stubVolumeMm3},
+          {"stub_mesh_volume_mm3", f.stubMeshVolumeMm3},
+          {"parts_catcher", catcher}};
+}
+
 }  // namespace
 
 std::string threadSummary(const measure::MeasuredThread& thread) {
@@ -103,6 +120,7 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   report["stock_volume_mm3"] = f.stockVolumeMm3;
   report["final_volume_mm3"] = f.finalVolumeMm3;
   report["removed_volume_mm3"] = f.stockVolumeMm3 - f.finalVolumeMm3;
+  report["parted_off"] = partedOffJson(f);
   report["mesh_volume_mm3"] = f.meshVolumeMm3;
   report["volume_tolerance_mm3"] = f.volumeToleranceMm3;
   report["mesh_crumbs"] = {{"count", f.meshCrumbs.count}, {"volume_mm3", f.meshCrumbs.volumeMm3}};

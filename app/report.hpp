@@ -30,7 +30,9 @@ struct RunFigures {
   std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
   double finalVolumeMm3 = 0;  // measured on the level set after the program
-  double meshVolumeMm3 = 0;   // the exported mesh's enclosed volume, as a cross-check
+  double meshVolumeMm3 = 0;   // part.stl's enclosed volume, as a cross-check
+  double stubVolumeMm3 = 0;      // after a part-off: the stub's level set (final volume: stub + pieces)
+  double stubMeshVolumeMm3 = 0;  // and stub.stl's enclosed volume
   double volumeToleranceMm3 = 0;  // how far the part's volumes may stray (sim::volumeToleranceMm3)
   DroppedCrumbs meshCrumbs;       // sub-voxel shells left out of the exported mesh
   std::size_t meshTriangles = 0;

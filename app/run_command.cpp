@@ -24,6 +24,11 @@ int runCommand(const RunOptions& options) {
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
             << options.out.string() << "/\n";
+  if (!figures.simulation.partOffs.empty()) {
+    const sim::PartOff& off = figures.simulation.partOffs.front();
+    std::cout << "  parted off at line " << off.line << ", Z" << off.zMm << ": the part " << off.volumeMm3
+              << " mm³ (part.stl), the stub " << figures.stubVolumeMm3 << " mm³ (stub.stl)\n";
+  }
   for (const auto& c : figures.simulation.collisions)
     std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
   for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';

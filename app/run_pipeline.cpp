@@ -88,8 +88,13 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     figures.timing.animateS = recording->secondsSpent();
   }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
+  if (run.partedOff()) {  // what is left is the stub and the pieces that fell
+    figures.stubVolumeMm3 = figures.finalVolumeMm3;
+    for (const auto& off : figures.simulation.partOffs) figures.finalVolumeMm3 += off.volumeMm3;
+  }
   const sim::ToolOutlines outlines = outlinesOf(setup);
-  figures.threads = measure::measureThreads(*run.stock, run.job.toolpath, outlines, setup.dialect);
+  // A thread is measured on the part: after a part-off, on the piece that fell.
+  figures.threads = measure::measureThreads(run.partStock(), run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap() - figures.timing.animateS;
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
   for (const auto& thread : figures.threads)
@@ -101,12 +106,21 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
 void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.progress->stage("meshing");
   RunFigures& figures = run.figures;
-  run.part = run.stock->mesh(kExportAdaptivity);
+  run.part = run.partStock().mesh(kExportAdaptivity);
   // The level set's volume is checked against the whole mesh; crumbs thinner than a voxel
   // are then left out of the STL, and what they held is reported.
-  if (auto problem = measure::meshVolumeProblem(figures.finalVolumeMm3, run.part, figures.voxelMm)) warn(run, *problem);
+  const double partMm3 = run.partedOff() ? figures.simulation.partOffs.front().volumeMm3 : figures.finalVolumeMm3;
+  if (auto problem = measure::meshVolumeProblem(partMm3, run.part, figures.voxelMm)) warn(run, *problem);
   figures.meshCrumbs = dropCrumbs(run.part, figures.voxelMm);
   if (auto problem = measure::meshClosureProblem(run.part)) warn(run, *problem);
+  if (run.partedOff()) {
+    run.stub = run.stock->mesh(kExportAdaptivity);
+    if (auto problem = measure::meshVolumeProblem(figures.stubVolumeMm3, run.stub, figures.voxelMm, "stub"))
+      warn(run, *problem);
+    (void)dropCrumbs(run.stub, figures.voxelMm);
+    if (auto problem = measure::meshClosureProblem(run.stub, "stub")) warn(run, *problem);
+    figures.stubMeshVolumeMm3 = enclosedVolumeMm3(run.stub);
+  }
   figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
   figures.volumeToleranceMm3 = sim::volumeToleranceMm3(surfaceAreaMm2(run.part), figures.voxelMm);
   figures.meshTriangles = run.part.triangles.size();
@@ -117,15 +131,16 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   const PictureRequest& pictures = options.pictures;
   run.progress->stage("writing STL, VDB, the pictures and the report");
   render::writeBinaryStl(run.part, out.stage("part.stl"));
+  if (run.partedOff()) render::writeBinaryStl(run.stub, out.stage("stub.stl"));
   {
     std::ofstream csv(out.stage("toolpath.csv"));
     interp::writeToolpathCsv(run.job.toolpath, csv);
   }
   render::writeToolpathVtp(run.job.toolpath, out.stage("toolpath.vtp"));
-  run.stock->writeVdb(out.stage("stock.vdb"));
+  run.stock->writeVdb(out.stage("stock.vdb"), run.figures.simulation.part.get());
   render::PartImageOptions image =
       partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
-  addPartSection(image, run.stock->meridianSection(), run.figures.voxelMm);
+  addPartSection(image, run.partStock().meridianSection(), run.figures.voxelMm);
   std::vector<render::PartView> views{render::PartView::Iso};
   for (const render::PartView view : pictures.views)
     if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);

@@ -32,12 +32,17 @@ class Stopwatch {
 
 struct SimulatedRun {
   job::Job job;
-  std::unique_ptr<sim::Stock> stock;
+  std::unique_ptr<sim::Stock> stock;  // after a part-off, the stub left in the chuck
   std::unique_ptr<Progress> progress;
   RunFigures figures;  // parse and simulate filled; mesh and render by the later steps
   TriangleMesh part;   // empty until meshPart
+  TriangleMesh stub;   // after a part-off: the stub's mesh (meshPart)
   std::vector<HtmlPicture> pictures;  // staged, for report.html
   std::string modelGlb;               // the part and toolpath for report.html's 3D view
+
+  bool partedOff() const { return figures.simulation.part != nullptr; }
+  /// The finished part: the piece that parted off, or else the stock.
+  const sim::Stock& partStock() const { return partedOff() ? *figures.simulation.part : *stock; }
 };
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
@@ -48,11 +53,12 @@ sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
 /// Bad input: the diagnostics are printed and nullopt returned.
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out = nullptr);
 
-/// Meshes the final stock into run.part (figures: mesh volume, triangles, time).
+/// Meshes the part into run.part, and after a part-off the stub into run.stub (figures: mesh
+/// volumes, triangles, time).
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
-/// Stages the run's files into `out` (the pictures as options.pictures asks, the exports),
-/// and times them as rendering.
+/// Stages the run's files into `out` (the pictures as options.pictures asks, the exports;
+/// stub.stl too after a part-off), and times them as rendering.
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock);
 
 /// Stages report.json (`report`) and report.html.

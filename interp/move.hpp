@@ -111,6 +111,16 @@ struct ProgramStop {
   std::string code;  // "M00" or "M01"
 };
 
+/// A parts catcher command reached (Haas M35/M36: in place to catch, M37: withdrawn). It moves
+/// nothing the tool cuts; a part-off reports the one in force (sim/simulate.hpp).
+struct PartsCatcherCommand {
+  std::size_t movesBefore = 0;  // the toolpath's moves before it (it acts before its block's moves)
+  int line = 0;
+  int column = 0;    // of the M code
+  std::string code;  // "M36"
+  bool inPlace = false;
+};
+
 struct Toolpath {
   std::string programName;  // the file name as given
   RZ startPosition{0, 0};   // where the tool stood before the first move
@@ -118,6 +128,7 @@ struct Toolpath {
   int blockCount = 0;       // blocks read, including those that made no move
   std::vector<CycleStart> cycleStarts;  // every cycle block run, in program order
   std::vector<ProgramStop> stops;       // every M00/M01 reached, in program order
+  std::vector<PartsCatcherCommand> partsCatcher;  // every parts catcher command reached, in order
 };
 
 inline bool isArc(MoveKind kind) { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }

@@ -176,13 +176,21 @@ std::optional<double> finiteMm(const toml::node& node, const std::string& name, 
 }
 
 void readStock(const toml::table& table, sim::StockSpec& stock, Reporter& report) {
-  rejectUnknownKeys(table, "stock.", {"diameter", "length", "face_z"}, report);
+  rejectUnknownKeys(table, "stock.", {"diameter", "length", "face_z", "bore"}, report);
   if (const auto* node = table.get("diameter"))
     if (auto v = positiveMm(*node, "stock.diameter", report)) stock.diameterMm = *v;
   if (const auto* node = table.get("length"))
     if (auto v = positiveMm(*node, "stock.length", report)) stock.lengthMm = *v;
   if (const auto* node = table.get("face_z"))
     if (auto v = finiteMm(*node, "stock.face_z", report)) stock.faceZMm = *v;
+  if (const auto* node = table.get("bore")) {
+    if (auto v = positiveMm(*node, "stock.bore", report)) {
+      if (*v < stock.diameterMm) stock.boreMm = *v;
+      else
+        report.at(node->source(), "stock.bore (the tube's inside diameter, " + floatText(*v) +
+                                      " mm) must be smaller than stock.diameter (" + floatText(stock.diameterMm) + " mm)");
+    }
+  }
 }
 
 /// A position given as [X diameter, Z] in mm, as (radius, Z).

@@ -2,7 +2,9 @@
 // --stock on the command line: the bar as a few letters, parts joined by 'x':
 //   D40xL80        Φ40, 80 long, its face at Z0
 //   D40xL80xZ1     the same with the face at Z1
-// D (diameter) and L (length) are required, Z optional; numbers are mm, positive (Z any).
+//   D60xd40xL80    a tube: Φ60 outside, a Φ40 bore
+// D (diameter) and L (length) are required, d (bore) and Z optional; numbers are mm,
+// positive (Z any), the bore smaller than the diameter.
 
 #include <optional>
 #include <string>

@@ -17,7 +17,8 @@ struct Swept {
 };
 
 bool barHeld(const RZ& p, const sim::StockSpec& stock) {
-  return p.x() <= stock.diameterMm / 2 && p.y() <= stock.faceZMm && p.y() >= stock.faceZMm - stock.lengthMm;
+  return p.x() <= stock.diameterMm / 2 && p.x() >= stock.boreMm / 2 && p.y() <= stock.faceZMm &&
+         p.y() >= stock.faceZMm - stock.lengthMm;
 }
 
 }  // namespace

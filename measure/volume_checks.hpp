@@ -4,22 +4,25 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock_spec.hpp"
 
 namespace lathesim::measure {
 
-/// Why the untouched bar's level-set volume is not the cylinder's exact πr²L within the
-/// tolerance over the bar's surface, or nullopt.
+/// Why the untouched bar's level-set volume is not its exact π(R² − r²)L (r the bore's
+/// radius, 0 for a solid bar) within the tolerance over the bar's surface, or nullopt.
 std::optional<std::string> barVolumeProblem(const sim::StockSpec& bar, double levelSetMm3, double voxelMm);
 
 /// Why the part's level-set volume and the volume enclosed by its mesh (all of it, crumbs
 /// included) disagree by more than the tolerance over the mesh's surface, or nullopt.
-std::optional<std::string> meshVolumeProblem(double levelSetMm3, const TriangleMesh& mesh, double voxelMm);
+/// `solid` names it: "part", or "stub" (the stock left in the chuck after a part-off).
+std::optional<std::string> meshVolumeProblem(double levelSetMm3, const TriangleMesh& mesh, double voxelMm,
+                                             std::string_view solid = "part");
 
 /// Why the mesh would not make a closed, manifold STL (some edge not shared by exactly two
-/// triangles), or nullopt.
-std::optional<std::string> meshClosureProblem(const TriangleMesh& mesh);
+/// triangles), or nullopt; `solid` as above, and its STL is solid.stl.
+std::optional<std::string> meshClosureProblem(const TriangleMesh& mesh, std::string_view solid = "part");
 
 }  // namespace lathesim::measure

@@ -37,6 +37,7 @@ std::optional<PartView> viewNamed(std::string_view name);
 struct BarOutline {
   double radiusMm = 0;
   double zLowMm = 0, zHighMm = 0;
+  double boreRadiusMm = 0;  // a tube's bore; 0 for a solid bar
 };
 
 /// The chuck as the setup places it: its jaws grip the bar from `jawInnerRadiusMm` out to

@@ -127,20 +127,26 @@ void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRe
 }
 
 void drawBarOutline(const BarOutline& bar, PartView view, const PictureFrame& frame, Overlay2D& lines) {
-  const double r = bar.radiusMm;
+  const double r = bar.radiusMm, bore = bar.boreRadiusMm;
   for (double side : {-1.0, 1.0})
-    lines.line(frame.pixelOf(RZ(side * r, bar.zLowMm)), frame.pixelOf(RZ(side * r, bar.zHighMm)), kGhostLineColour);
+    for (double radius : bore > 0 ? std::vector{r, bore} : std::vector{r})
+      lines.line(frame.pixelOf(RZ(side * radius, bar.zLowMm)), frame.pixelOf(RZ(side * radius, bar.zHighMm)),
+                 kGhostLineColour);
   if (view != PartView::Iso) {
-    for (double z : {bar.zLowMm, bar.zHighMm}) lines.line(frame.pixelOf(RZ(-r, z)), frame.pixelOf(RZ(r, z)), kGhostLineColour);
+    for (double z : {bar.zLowMm, bar.zHighMm})
+      for (double side : {-1.0, 1.0})  // the end faces, from the axis or the bore out
+        lines.line(frame.pixelOf(RZ(side * bore, z)), frame.pixelOf(RZ(side * r, z)), kGhostLineColour);
     return;
   }
-  // The right-hand end face's circle, seen at an angle: an ellipse.
+  // The right-hand end face's circles, seen at an angle: ellipses.
   constexpr int kSteps = 96;
-  for (int k = 0; k < kSteps; ++k) {
-    const double a0 = 2 * M_PI * k / kSteps, a1 = 2 * M_PI * (k + 1) / kSteps;
-    lines.line(frame.pixelOf(Eigen::Vector3d(r * std::cos(a0), r * std::sin(a0), bar.zHighMm)),
-               frame.pixelOf(Eigen::Vector3d(r * std::cos(a1), r * std::sin(a1), bar.zHighMm)), kGhostLineColour);
-  }
+  for (double radius : bore > 0 ? std::vector{r, bore} : std::vector{r})
+    for (int k = 0; k < kSteps; ++k) {
+      const double a0 = 2 * M_PI * k / kSteps, a1 = 2 * M_PI * (k + 1) / kSteps;
+      lines.line(frame.pixelOf(Eigen::Vector3d(radius * std::cos(a0), radius * std::sin(a0), bar.zHighMm)),
+                 frame.pixelOf(Eigen::Vector3d(radius * std::cos(a1), radius * std::sin(a1), bar.zHighMm)),
+                 kGhostLineColour);
+    }
 }
 
 void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame& frame, double topPx,

@@ -108,7 +108,7 @@ vtkSmartPointer<vtkPlane> belowAxisPlane() {
 }
 
 vtkSmartPointer<vtkActor> ghostActor(const BarOutline& bar) {
-  const auto data = toPolyData(revolvedRectangle(0, bar.radiusMm, bar.zLowMm, bar.zHighMm));
+  const auto data = toPolyData(revolvedRectangle(bar.boreRadiusMm, bar.radiusMm, bar.zLowMm, bar.zHighMm));
   auto actor = flatActor(data, kGhostColour);
   actor->GetProperty()->SetOpacity(kGhostOpacity);
   actor->GetProperty()->FrontfaceCullingOn();

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "sim/move_sweep.hpp"
+#include "sim/part_off.hpp"
 #include "sim/simulation_warnings.hpp"
 
 namespace lathesim::sim {
@@ -21,20 +22,33 @@ double thicknessOf(const interp::Move& move, const ToolThicknesses& thicknesses)
   return found == thicknesses.end() ? kDefaultInsertThicknessMm : found->second;
 }
 
+// Adds `area` to where a write changed the stock.
+void widen(std::optional<ChangedArea>& changed, const ChangedArea& area) {
+  if (changed) changed->add(area);
+  else changed = area;
+}
+
 // What a move made with the spindle stopped removes: a straight slot along each segment.
-double removeSlots(const interp::Move& move, const ConvexPolygon& tool, double thicknessMm, Stock& stock) {
+double removeSlots(const interp::Move& move, const ConvexPolygon& tool, double thicknessMm, Stock& stock,
+                   std::optional<ChangedArea>& changed) {
   double removed = 0.0;
-  for (const auto& [from, to] : sweptSegments(move, stock.voxelMm()))
-    removed += stock.remove(StraightSlot(tool, from, to, thicknessMm, move.spindleAngleDeg));
+  for (const auto& [from, to] : sweptSegments(move, stock.voxelMm())) {
+    const StraightSlot slot(tool, from, to, thicknessMm, move.spindleAngleDeg);
+    removed += stock.remove(slot);
+    widen(changed, ChangedArea::of(slot.hull()));
+  }
   return removed;
 }
 
 // What a thread move removes: the outline along its helix, from its start angle (measured in
 // the direction the spindle turns) one turn per lead.
-double removeThread(const interp::Move& move, const ConvexPolygon& tool, Stock& stock) {
+double removeThread(const interp::Move& move, const ConvexPolygon& tool, Stock& stock,
+                    std::optional<ChangedArea>& changed) {
   const int sense = move.spindleDirection == interp::SpindleDirection::Clockwise ? 1 : -1;
-  return stock.remove(HelicalSweep(tool, move.from, move.to, move.thread.revolutions(move.from, move.to),
-                                   sense * move.thread.startAngleDeg, sense));
+  const HelicalSweep sweep(tool, move.from, move.to, move.thread.revolutions(move.from, move.to),
+                           sense * move.thread.startAngleDeg, sense);
+  widen(changed, ChangedArea::of(sweep.hull()));
+  return stock.remove(sweep);
 }
 
 }  // namespace
@@ -67,6 +81,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
   int spindleWarnedBlock = -1;  // one spindle warning per block
   int threadWarnedBlock = -1;   // one thread-start warning per block
   RZ frame(0, 0);               // the G50 frame of the moves so far
+  PartOffWatch partOffs;
   bool checkShift = false;      // after G50 moved it: until the first cut, or a warning
 
   for (std::size_t first = 0; first < moves.size();) {
@@ -97,25 +112,32 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 
     if (observer) observer(first, end, stock);
     double removed = 0.0;
+    RevolvedRegion revolved;             // what a turning write swept (none for a thread or a slot)
+    std::optional<ChangedArea> changed;  // where the write can have changed the stock
     const ConvexPolygon& tool = toolOf(head, tools);
     if (interp::isCutting(head.kind) && !spindleTurns(head)) {
-      removed = removeSlots(head, tool, thicknessOf(head, thicknesses), stock);
+      removed = removeSlots(head, tool, thicknessOf(head, thicknesses), stock, changed);
     } else if (head.kind == interp::MoveKind::Thread) {
       if (auto warning = threadPassStartsInStock(head, moves, first, stock); warning && threadWarnedBlock != head.block) {
         result.warnings.push_back(*warning);
         threadWarnedBlock = head.block;
       }
-      removed = removeThread(head, tool, stock);
+      removed = removeThread(head, tool, stock, changed);
     } else {
       std::vector<ConvexPolygon> pieces;
       for (std::size_t m = first; m < end; ++m) {
         const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
         pieces.insert(pieces.end(), swept.begin(), swept.end());
       }
-      removed = pieces.empty() ? 0.0 : stock.remove(RevolvedRegion(pieces));
+      revolved = RevolvedRegion(pieces);
+      if (!pieces.empty()) {
+        removed = stock.remove(revolved);
+        changed = ChangedArea::of(revolved);
+      }
     }
     for (std::size_t m = first; m < end; ++m) block.timeS += moves[m].timeS;
     block.removedMm3 += removed;
+    partOffs.afterCut(toolpath, first, end, revolved, changed, removed, stock, result);
     if (auto warning = cutWithSpindleStopped(head, removed, stock.voxelMm()); warning && spindleWarnedBlock != head.block) {
       result.warnings.push_back(*warning);
       spindleWarnedBlock = head.block;

@@ -6,6 +6,8 @@
 
 #include <functional>
 #include <map>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,10 +41,23 @@ struct SimulationWarning {
   std::string message;
 };
 
+/// A cut that parted the bar: after it, some material no longer hung together with the
+/// material at the chuck's end (Stock::takeLoosePieces), and fell.
+struct PartOff {
+  int line = 0;    // the block whose cut parted it
+  int column = 0;
+  double zMm = 0;  // Z of that cut's deepest point (its move ending nearest the axis, or past it)
+  double volumeMm3 = 0;  // the piece that fell, measured on its level set
+  std::optional<interp::PartsCatcherCommand> catcher;  // the parts catcher command in force, if any
+};
+
 struct SimulationResult {
   std::vector<BlockRemoval> blocks;  // blocks that made moves (a dwell counts), in program order
   std::vector<Collision> collisions;
   std::vector<SimulationWarning> warnings;
+  std::vector<PartOff> partOffs;     // in program order: the first piece is the part
+  std::shared_ptr<const Stock> part;  // the first piece's level set, taken out of the stock; null
+                                      // when nothing parted off (the stock is the part)
 };
 
 /// Adds a collision, or grows the block's own (same line and column) of the same kind when the
@@ -75,7 +90,9 @@ using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMov
 /// into material is caught and located; each thread move on its own along its helix (from
 /// its start angle, one turn per lead); each feed, arc or thread move made with the spindle
 /// stopped (before M03/M04, after M05, at S0) as a straight slot at the angle the spindle
-/// stands at (Move::spindleAngleDeg; arcs by their chords); dwells remove nothing.
+/// stands at (Move::spindleAngleDeg; arcs by their chords); dwells remove nothing. After each
+/// write that removed material, what came loose is taken out of `stock` (part_off.hpp): the
+/// stock is then the stub left in the chuck, and the first piece is the result's `part`.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress = {});
 

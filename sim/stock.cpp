@@ -36,9 +36,7 @@ void initializeOpenVdbOnce() {
 }  // namespace
 
 std::uint64_t estimatedStockBytes(const StockSpec& spec, double voxelMm) {
-  const double r = spec.diameterMm / 2.0;
-  const double surfaceMm2 = 2.0 * M_PI * r * r + 2.0 * M_PI * r * spec.lengthMm;
-  return static_cast<std::uint64_t>(surfaceMm2 / (voxelMm * voxelMm) * kBytesPerSurfaceVoxel *
+  return static_cast<std::uint64_t>(surfaceAreaMm2(spec) / (voxelMm * voxelMm) * kBytesPerSurfaceVoxel *
                                     kSurfaceGrowthAllowance);
 }
 
@@ -51,6 +49,15 @@ std::optional<std::string> gridProblem(const StockSpec& spec, double voxelMm) {
     char text[160];
     std::snprintf(text, sizeof text, "a %.3g mm voxel is too coarse for a %.3g mm stock; use at most %.3g mm",
                   voxelMm, shortest, shortest / kMinVoxelsAcrossStock);
+    return std::string(text);
+  }
+  // A tube's wall is material from both sides, as a bar's diameter is: it needs as many
+  // voxels across as a bar's radius.
+  const double wall = (spec.diameterMm - spec.boreMm) / 2.0;
+  if (spec.boreMm > 0.0 && wall / voxelMm < kMinVoxelsAcrossStock / 2.0) {
+    char text[160];
+    std::snprintf(text, sizeof text, "a %.3g mm voxel is too coarse for the tube's %.3g mm wall; use at most %.3g mm",
+                  voxelMm, wall, wall / (kMinVoxelsAcrossStock / 2.0));
     return std::string(text);
   }
   const double needed = static_cast<double>(estimatedStockBytes(spec, voxelMm));
@@ -112,9 +119,12 @@ double StockGrid::leafInsideVoxels(const Leaf& leaf) const {
 
 Stock::Stock(const StockSpec& spec, double voxelMm) : impl_(std::make_unique<StockGrid>(spec, voxelMm)) {
   const double r = spec.diameterMm / 2.0;
-  // The bar's cross-section, mirrored across the axis so that it revolves into a cylinder.
-  const std::vector<RZ> rectangle{{-r, spec.faceZMm - spec.lengthMm}, {r, spec.faceZMm - spec.lengthMm},
-                                  {r, spec.faceZMm}, {-r, spec.faceZMm}};
+  // The bar's section: a solid bar's mirrored across the axis so that it revolves into a
+  // cylinder; a tube's from the bore out, so that it revolves into the tube (the distance in
+  // the meridian plane is the tube's own, bore included).
+  const double inner = spec.boreMm > 0.0 ? spec.boreMm / 2.0 : -r;
+  const std::vector<RZ> rectangle{{inner, spec.faceZMm - spec.lengthMm}, {r, spec.faceZMm - spec.lengthMm},
+                                  {r, spec.faceZMm}, {inner, spec.faceZMm}};
   // Every voxel takes its value from the bar's own distance: the band voxel by voxel, the
   // interior as tiles the bar covers entirely. Nothing is left for a flood fill to guess
   // (OpenVDB's signed flood fill reads a 128³ block with no leaves left in it as air).
@@ -200,9 +210,17 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   return mesh;
 }
 
-void Stock::writeVdb(const std::filesystem::path& file) const {
+Stock::Stock(std::unique_ptr<StockGrid> grid) : impl_(std::move(grid)) {}
+
+void Stock::writeVdb(const std::filesystem::path& file, const Stock* part) const {
+  openvdb::GridPtrVec grids{impl_->grid};
+  if (part) {
+    openvdb::GridBase::Ptr piece = part->impl_->grid->copyGrid();  // shares the tree; only the name differs
+    piece->setName("part");
+    grids.push_back(piece);
+  }
   openvdb::io::File out(file.string());
-  out.write({impl_->grid});
+  out.write(grids);
   out.close();
 }
 

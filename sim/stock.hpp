@@ -2,6 +2,7 @@
 // The stock as a narrow-band level set. OpenVDB stays behind this interface (compiling a
 // FloatGrid costs seconds and gigabytes per translation unit), so callers see plain types.
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -41,6 +42,23 @@ std::uint64_t estimatedStockBytes(const StockSpec& spec, double voxelMm);
 
 /// Why a grid cannot be simulated here (too large for memory, bad voxel), or nullopt.
 std::optional<std::string> gridProblem(const StockSpec& spec, double voxelMm);
+
+/// Where a write can have changed the stock, in the meridian half-plane (mm): radii and Z that
+/// hold what was written (a thread's or a slot's revolved hull, for those).
+struct ChangedArea {
+  double rhoMin = 0, rhoMax = 0, zMin = 0, zMax = 0;
+
+  static ChangedArea of(const RevolvedRegion& region) {
+    return {std::max(region.lowerBound().x(), 0.0), region.maxRadius(), region.lowerBound().y(),
+            region.upperBound().y()};
+  }
+  void add(const ChangedArea& other) {
+    rhoMin = std::min(rhoMin, other.rhoMin);
+    rhoMax = std::max(rhoMax, other.rhoMax);
+    zMin = std::min(zMin, other.zMin);
+    zMax = std::max(zMax, other.zMax);
+  }
+};
 
 class Stock {
  public:
@@ -91,13 +109,22 @@ class Stock {
   /// a band's width beyond (see stock_outline.cpp).
   SampledSection meridianSection() const;
 
-  /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock".
-  void writeVdb(const std::filesystem::path& file) const;
+  /// Takes the material that no longer hangs together with the chuck's end out of this stock
+  /// and returns it as a stock of its own, or nullptr when all material still does (see
+  /// loose_pieces.cpp). The chuck's end is the material nearest the chuck: the lowest Z.
+  /// `lastCut`, where the stock was written since the material last hung together (crumbs
+  /// aside), lets it look only around there when the cut plainly parted nothing.
+  std::unique_ptr<Stock> takeLoosePieces(const std::optional<ChangedArea>& lastCut = std::nullopt);
+
+  /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock", and `part`'s
+  /// (a piece taken out by takeLoosePieces) beside it under the name "part".
+  void writeVdb(const std::filesystem::path& file, const Stock* part = nullptr) const;
 
   std::uint64_t activeVoxelCount() const;
   std::uint64_t memoryBytes() const;
 
  private:
+  explicit Stock(std::unique_ptr<StockGrid> grid);
   std::unique_ptr<StockGrid> impl_;
 };
 

@@ -74,6 +74,9 @@ constexpr std::array kMCodes{
     MCodeInfo{14, MGroup::Spindle, false, "live tool reverse", "live tooling (a driven tool spindle)"},
     MCodeInfo{15, MGroup::Spindle, false, "live tool stop", "live tooling (a driven tool spindle)"},
     MCodeInfo{30, MGroup::ProgramEnd, true, "end of program and rewind"},
+    MCodeInfo{35, MGroup::PartsCatcher, true, "parts catcher to the part-off position (Haas)"},
+    MCodeInfo{36, MGroup::PartsCatcher, true, "parts catcher on (Haas)"},
+    MCodeInfo{37, MGroup::PartsCatcher, true, "parts catcher off (Haas)"},
     MCodeInfo{98, MGroup::Subprogram, true, "subprogram call"},
     MCodeInfo{99, MGroup::Subprogram, true, "subprogram return"},
     MCodeInfo{133, MGroup::Spindle, false, "live tool forward (Haas)", "live tooling (a driven tool spindle)"},
@@ -223,6 +226,7 @@ std::string_view groupName(MGroup group) {
     case MGroup::Coolant: return "coolant";
     case MGroup::Stop: return "program stop";
     case MGroup::Subprogram: return "subprogram";
+    case MGroup::PartsCatcher: return "parts catcher";
   }
   return "unknown";
 }

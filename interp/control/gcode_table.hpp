@@ -35,6 +35,7 @@ enum class MGroup {
   Coolant,     // M08 M09
   Stop,        // M00 M01
   Subprogram,  // M98 M99
+  PartsCatcher,  // Haas M35 M36 M37: moves nothing the tool cuts; reported at a part-off
 };
 
 struct GCodeInfo {

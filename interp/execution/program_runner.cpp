@@ -53,6 +53,8 @@ class ProgramRunner {
   Result<std::size_t> callMacro(std::size_t index, const std::vector<Word>& words);
   Result<std::size_t> giveBack(const SubprogramReturn& giveBack, std::size_t index);
   void listStop(std::size_t index, const ParsedBlock& words);
+  void listPartsCatcher(std::size_t index, const ParsedBlock& words);
+  std::pair<int, int> listedAt(std::size_t index, int column) const;
   Status loadProgram(int programNumber, std::string_view code, int column, std::size_t caller);
   void warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut);
   // A block that runs again (a loop, a repeated call) says the same thing once.
@@ -189,6 +191,7 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   for (Error& warning : done.warnings) warn(std::move(warning), index);
   const ProgramFlow flow = done.flow;
   state_ = std::move(done.state);
+  listPartsCatcher(index, words);  // before the block's moves: it acts before them
   toolpath_.moves.insert(toolpath_.moves.end(), done.moves.begin(), done.moves.end());
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
   listStop(index, words);
@@ -228,15 +231,29 @@ Result<std::size_t> ProgramRunner::callMacro(std::size_t index, const std::vecto
   return target;
 }
 
-// M00/M01 are listed in the report at their line; in a subprogram's own file, at the line of
-// the main program's call that led there.
+// Where a code of block `index` at `column` is listed in the report: at its line; in a
+// subprogram's own file, at the line of the main program's call that led there.
+std::pair<int, int> ProgramRunner::listedAt(std::size_t index, int column) const {
+  const ProgramBlock& block = program_.blocks[index];
+  if (block.source == 0 || !calls_.outermostCall()) return {block.line, column};
+  const ProgramBlock& call = program_.blocks[*calls_.outermostCall()];
+  return {call.line, call.column};
+}
+
+// M00/M01 are listed in the report.
 void ProgramRunner::listStop(std::size_t index, const ParsedBlock& words) {
   const auto stop = words.mCode(MGroup::Stop);
   if (!stop) return;
-  const ProgramBlock& block = program_.blocks[index];
-  const bool own = block.source == 0 || !calls_.outermostCall();
-  const ProgramBlock& at = own ? block : program_.blocks[*calls_.outermostCall()];
-  toolpath_.stops.push_back({at.line, own ? stop->column : at.column, stop->text});
+  const auto [line, column] = listedAt(index, stop->column);
+  toolpath_.stops.push_back({line, column, stop->text});
+}
+
+// The parts catcher's commands are listed with the moves made before them.
+void ProgramRunner::listPartsCatcher(std::size_t index, const ParsedBlock& words) {
+  const auto catcher = words.mCode(MGroup::PartsCatcher);
+  if (!catcher) return;
+  const auto [line, column] = listedAt(index, catcher->column);
+  toolpath_.partsCatcher.push_back({toolpath_.moves.size(), line, column, catcher->text, catcher->number != 37});
 }
 
 Result<std::size_t> ProgramRunner::giveBack(const SubprogramReturn& giveBack, std::size_t index) {

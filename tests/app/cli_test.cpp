@@ -3,17 +3,15 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/binary_stl.hpp"
 #include "tests/support/golden_rows.hpp"
 #include "tests/support/lathesim_process.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -236,61 +234,13 @@ TEST_F(RunSeed001, ToolpathCsvIsTheGoldenToolpath) {
   test::expectSameRows(interp::readToolpathCsv(in), goldenToolpath(kPart), "toolpath.csv", kCsvRoundingMm);
 }
 
-/// A binary STL's triangles, as read from the file.
-using Vertex = std::array<float, 3>;
-using Triangle = std::array<Vertex, 3>;
-
-std::vector<Triangle> readBinaryStl(const std::string& bytes) {
-  std::uint32_t count = 0;
-  std::memcpy(&count, bytes.data() + 80, 4);
-  std::vector<Triangle> triangles(count);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(i) + 12;  // past the normal
-    for (int v = 0; v < 3; ++v) std::memcpy(triangles[i][v].data(), facet + 12 * v, 12);
-  }
-  return triangles;
-}
-
 TEST_F(RunSeed001, PartStlIsClosedAndHoldsTheExpectedVolume) {
-  const std::string bytes = readFile(out_ / "part.stl");
-  ASSERT_GE(bytes.size(), 84u);
-  std::uint32_t count = 0;
-  std::memcpy(&count, bytes.data() + 80, 4);
-  ASSERT_GT(count, 0u);
-  ASSERT_EQ(bytes.size(), 84u + 50u * count);
-  const std::vector<Triangle> triangles = readBinaryStl(bytes);
-
-  // Weld by exact position, then every undirected edge must be used by exactly two
-  // triangles, once in each direction: closed and consistently oriented.
-  std::map<Vertex, int> ids;
-  const auto id = [&](const Vertex& v) { return ids.emplace(v, static_cast<int>(ids.size())).first->second; };
-  std::map<std::pair<int, int>, int> directed;
-  int degenerate = 0;
-  for (const Triangle& t : triangles) {
-    const std::array<int, 3> v{id(t[0]), id(t[1]), id(t[2])};
-    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) ++degenerate;
-    for (int k = 0; k < 3; ++k) ++directed[{v[k], v[(k + 1) % 3]}];
-  }
-  EXPECT_EQ(degenerate, 0);
-  int badEdges = 0;
-  for (const auto& [edge, uses] : directed) {
-    const auto reverse = directed.find({edge.second, edge.first});
-    if (uses != 1 || reverse == directed.end() || reverse->second != 1) ++badEdges;
-  }
-  EXPECT_EQ(badEdges, 0) << "of " << directed.size() << " directed edges";
-
-  // Divergence theorem: V = Σ v0 · (v1 × v2) / 6 over outward-oriented triangles.
-  double volume = 0;
-  for (const Triangle& t : triangles) {
-    const auto& a = t[0];
-    const auto& b = t[1];
-    const auto& c = t[2];
-    const double cx = double(b[1]) * c[2] - double(b[2]) * c[1];
-    const double cy = double(b[2]) * c[0] - double(b[0]) * c[2];
-    const double cz = double(b[0]) * c[1] - double(b[1]) * c[0];
-    volume += (a[0] * cx + a[1] * cy + a[2] * cz) / 6.0;
-  }
-  EXPECT_NEAR(volume, expectedFinalVolumeMm3(kPart), kTolerance);
+  const std::vector<test::StlTriangle> triangles = test::readBinaryStl(readFile(out_ / "part.stl"));
+  ASSERT_GT(triangles.size(), 0u);
+  const test::StlFacts facts = test::factsOf(triangles);
+  EXPECT_EQ(facts.degenerate, 0);
+  EXPECT_EQ(facts.badEdges, 0) << "of " << facts.directedEdges << " directed edges";
+  EXPECT_NEAR(facts.volumeMm3, expectedFinalVolumeMm3(kPart), kTolerance);
 }
 
 std::uint32_t bigEndian32(const std::string& bytes, std::size_t at) {

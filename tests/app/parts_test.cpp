@@ -59,13 +59,24 @@ struct ExpectedCollision {
   double volumeMm3 = 0;
 };
 
-/// What expected.toml says: either the diagnostic, or both volumes (and the collisions, if any).
+/// Where a part is meant to part off, `[parted_off]`: the block, the Z of the cut, the piece
+/// that falls and the stub left in the chuck.
+struct ExpectedPartOff {
+  int line = 0;
+  double zMm = 0;
+  double volumeMm3 = 0;
+  double stubVolumeMm3 = 0;
+};
+
+/// What expected.toml says: either the diagnostic, or both volumes (and the collisions and the
+/// part-off, if any).
 struct Expected {
   std::optional<std::string> diagnostic;
-  double finalVolumeMm3 = 0;
+  double finalVolumeMm3 = 0;  // all the material left: after a part-off, the piece and the stub
   double removedVolumeMm3 = 0;
   std::optional<double> cycleTimeS;
   std::vector<ExpectedCollision> collisions;
+  std::optional<ExpectedPartOff> partedOff;
 };
 
 Expected readExpected(const std::string& part) {
@@ -88,6 +99,11 @@ Expected readExpected(const std::string& part) {
       expected.collisions.push_back({c["line"].value<int>().value(), c["kind"].value<std::string>().value(),
                                      c["volume_mm3"].value<double>().value()});
     }
+  }
+  if (const auto* off = table["parted_off"].as_table()) {
+    expected.partedOff = ExpectedPartOff{(*off)["line"].value<int>().value(), (*off)["z"].value<double>().value(),
+                                         (*off)["volume_mm3"].value<double>().value(),
+                                         (*off)["stub_volume_mm3"].value<double>().value()};
   }
   return expected;
 }
@@ -120,7 +136,8 @@ using test::volumeToleranceMm3;
 
 struct Simulated {
   double stockVolumeMm3 = 0;
-  double finalVolumeMm3 = 0;
+  double finalVolumeMm3 = 0;  // the stock left, and every piece that parted off
+  double stubVolumeMm3 = 0;   // the stock left
   sim::SimulationResult result;
 };
 
@@ -130,7 +147,8 @@ Simulated simulatePart(const job::Setup& setup, const interp::Toolpath& toolpath
   out.stockVolumeMm3 = stock.volumeMm3();
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck too
   out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {}, &checks);
-  out.finalVolumeMm3 = stock.volumeMm3();
+  out.stubVolumeMm3 = out.finalVolumeMm3 = stock.volumeMm3();
+  for (const auto& off : out.result.partOffs) out.finalVolumeMm3 += off.volumeMm3;
   return out;
 }
 
@@ -184,6 +202,17 @@ TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
       EXPECT_EQ(collisions[i].line, expected.collisions[i].line);
       EXPECT_EQ(collisions[i].kind, expected.collisions[i].kind);
       EXPECT_NEAR(collisions[i].volumeMm3, expected.collisions[i].volumeMm3, 0.05 * expected.collisions[i].volumeMm3);
+    }
+    // The part-off the part is meant to have, the piece and the stub by hand; any other part
+    // keeps its material together.
+    const auto& offs = simulated.result.partOffs;
+    ASSERT_EQ(offs.size(), expected.partedOff ? 1u : 0u)
+        << offs.size() << " part-off(s)" << (offs.empty() ? "" : ", the first on line " + std::to_string(offs[0].line));
+    if (expected.partedOff) {
+      EXPECT_EQ(offs[0].line, expected.partedOff->line);
+      EXPECT_NEAR(offs[0].zMm, expected.partedOff->zMm, 1e-9);
+      EXPECT_NEAR(offs[0].volumeMm3, expected.partedOff->volumeMm3, tolerance);
+      EXPECT_NEAR(simulated.stubVolumeMm3, expected.partedOff->stubVolumeMm3, tolerance);
     }
   }
 }

@@ -258,6 +258,29 @@ TEST(Interpreter, ProgramStopsAreListedNotTimed) {
   EXPECT_EQ(result.toolpath.stops[2].line, 6);
 }
 
+TEST(Interpreter, PartsCatcherCommandsAreListedWhereTheyAct) {
+  // Haas M35/M36 put the catcher in place, M37 withdraws it; each is listed with the moves made
+  // before it, so that a part-off can tell which was in force. A catcher code beside a move acts
+  // before it.
+  const auto result = run("G00 X50 Z2\nM36\nG01 X20 F0.1 M37\nM98 P1000\nM30\nO1000\nM35\nM99\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const auto& catcher = result.toolpath.partsCatcher;
+  ASSERT_EQ(catcher.size(), 3u);
+  EXPECT_EQ(catcher[0].code, "M36");
+  EXPECT_EQ(catcher[0].line, 2);
+  EXPECT_EQ(catcher[0].column, 1);
+  EXPECT_EQ(catcher[0].movesBefore, 1u);
+  EXPECT_TRUE(catcher[0].inPlace);
+  EXPECT_EQ(catcher[1].code, "M37");
+  EXPECT_EQ(catcher[1].column, 14);
+  EXPECT_EQ(catcher[1].movesBefore, 1u);
+  EXPECT_FALSE(catcher[1].inPlace);
+  EXPECT_EQ(catcher[2].code, "M35");
+  EXPECT_EQ(catcher[2].line, 7);
+  EXPECT_EQ(catcher[2].movesBefore, 2u);
+  EXPECT_TRUE(catcher[2].inPlace);
+}
+
 TEST(Interpreter, ASlashInsideABlockSkipsTheRestOfItWhenBlockSkipIsOn) {
   // Fanuc's optional block skip in mid-block (⚠): "/Z5" is dropped with the switch on, and the
   // slash alone is dropped with it off.

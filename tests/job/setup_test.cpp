@@ -275,7 +275,7 @@ TEST(ParseSetupErrors, SyntaxErrorCarriesTomlsPosition) {
 
 TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
   const Diagnostic d = onlyError("[stock]\ndiameter = 50\n  diamter = 5\n");
-  EXPECT_EQ(d.message, "unknown key 'stock.diamter' (expected diameter, length or face_z)");
+  EXPECT_EQ(d.message, "unknown key 'stock.diamter' (expected diameter, length, face_z or bore)");
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.column, 3);
   EXPECT_EQ(d.sourceLine, "  diamter = 5");
@@ -308,6 +308,34 @@ TEST(ParseSetupErrors, NegativeDiameter) {
   EXPECT_EQ(d.message, "stock.diameter must be a positive number of mm, got -5");
   EXPECT_EQ(d.line, 2);
   EXPECT_EQ(d.column, 12);
+}
+
+TEST(ParseSetup, ABoreMakesATube) {
+  const SetupResult result = parse("[stock]\ndiameter = 60\nbore = 40.5\nlength = 80\n");
+  ASSERT_TRUE(result.setup.has_value());
+  EXPECT_DOUBLE_EQ(result.setup->stock.boreMm, 40.5);
+  EXPECT_DOUBLE_EQ(result.setup->stock.diameterMm, 60.0);
+  EXPECT_DOUBLE_EQ(parse("[stock]\ndiameter = 60\n").setup->stock.boreMm, 0.0);  // a solid bar
+}
+
+TEST(ParseSetupErrors, ABoreMustBePositiveAndInsideTheBar) {
+  // As wide as the bar, wider (the bore given before the diameter), and the default Φ125 bar's.
+  for (const auto& [text, bore] : {std::pair{"[stock]\ndiameter = 60\nbore = 60\n", "60.0"},
+                                   {"[stock]\nbore = 70\ndiameter = 60\n", "70.0"},
+                                   {"[stock]\nbore = 130\n", "130.0"}}) {
+    const Diagnostic d = onlyError(text);
+    EXPECT_EQ(d.message, "stock.bore (the tube's inside diameter, " + std::string(bore) +
+                             " mm) must be smaller than stock.diameter (" +
+                             (std::string(text).find("60") != std::string::npos ? "60.0" : "125.0") + " mm)")
+        << text;
+    EXPECT_EQ(d.sourceLine.rfind("bore = ", 0), 0u) << d.sourceLine;
+    EXPECT_EQ(d.column, 8);  // the value
+  }
+  for (const char* text : {"[stock]\nbore = 0\n", "[stock]\nbore = -5\n"}) {
+    const Diagnostic d = onlyError(text);
+    EXPECT_EQ(d.line, 2) << text;
+    EXPECT_NE(d.message.find("stock.bore must be a positive number of mm"), std::string::npos) << d.message;
+  }
 }
 
 TEST(ParseSetupErrors, ZeroLength) {

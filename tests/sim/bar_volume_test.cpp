@@ -20,18 +20,22 @@ namespace {
 
 constexpr double kBlockVoxels = 128.0;
 
-double barVolumeMm3(const StockSpec& bar) { return M_PI * bar.diameterMm * bar.diameterMm / 4.0 * bar.lengthMm; }
+// π(R² − r²)L, r the bore's radius (0 for a solid bar).
+double barVolumeMm3(const StockSpec& bar) {
+  return M_PI * (bar.diameterMm * bar.diameterMm - bar.boreMm * bar.boreMm) / 4.0 * bar.lengthMm;
+}
+// Outside 2πRL, bore 2πrL, two end faces π(R² − r²) each.
 double barSurfaceMm2(const StockSpec& bar) {
-  const double r = bar.diameterMm / 2.0;
-  return 2.0 * M_PI * r * r + 2.0 * M_PI * r * bar.lengthMm;
+  const double outer = bar.diameterMm / 2.0, inner = bar.boreMm / 2.0;
+  return 2.0 * M_PI * (outer + inner) * bar.lengthMm + 2.0 * M_PI * (outer * outer - inner * inner);
 }
 
 void expectExactVolume(const StockSpec& bar, double voxelMm) {
   ASSERT_FALSE(gridProblem(bar, voxelMm).has_value()) << "the sweep asks for a bar the simulator refuses";
   const Stock stock(bar, voxelMm);
   EXPECT_NEAR(stock.volumeMm3(), barVolumeMm3(bar), volumeToleranceMm3(barSurfaceMm2(bar), voxelMm))
-      << "Φ" << bar.diameterMm << "×" << bar.lengthMm << " face at Z" << bar.faceZMm << ", " << voxelMm << " mm voxels ("
-      << bar.faceZMm / voxelMm << " voxels)";
+      << "Φ" << bar.diameterMm << " bore Φ" << bar.boreMm << " ×" << bar.lengthMm << " face at Z" << bar.faceZMm << ", "
+      << voxelMm << " mm voxels (" << bar.faceZMm / voxelMm << " voxels)";
 }
 
 // Bars whose faces step through block boundaries: from 2 voxels below to 5 voxels above
@@ -75,6 +79,32 @@ TEST(BarVolume, IsExactWhereverTheRadiusFallsInTheGrid) {
   for (int step = 0; step < 13; ++step) {
     const double radiusVoxels = 2.0 * kBlockVoxels - 3.0 + (step + 0.37) * 9.0 / 13.0;
     expectExactVolume({2.0 * radiusVoxels * kVoxelMm, 84.0 * kVoxelMm, 3.3}, kVoxelMm);
+  }
+}
+
+// Tubes: the bore's wall steps through a block boundary (256 voxels from the axis) as the
+// outside did above, and the face through one, on tubes from a thin wall (12 voxels) to a
+// thick one at three voxel sizes; each against π(R² − r²)L. The bore is air the bar never
+// had: the writer must leave its blocks alone, not fill them.
+TEST(TubeVolume, IsExactWhereverTheBoreAndTheFacesFallInTheGrid) {
+  constexpr double kVoxelMm = 0.5;
+  for (int step = 0; step < 9; ++step) {
+    const double boreVoxels = 2.0 * kBlockVoxels - 3.0 + (step + 0.29) * 7.0 / 9.0;  // radius
+    const double wallVoxels = step % 2 ? 12.0 + step : 60.0 + 7.3 * step;
+    expectExactVolume({2.0 * (boreVoxels + wallVoxels) * kVoxelMm, 70.0 * kVoxelMm, 1.7, 2.0 * boreVoxels * kVoxelMm},
+                      kVoxelMm);
+  }
+  struct TubeFamily {
+    double voxelMm, diameterMm, boreMm, lengthMm;
+  };
+  const std::vector<TubeFamily> families{{0.1, 30.0, 20.0, 14.0}, {0.2, 60.0, 40.0, 30.5}, {0.25, 100.0, 30.0, 45.0}};
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    const TubeFamily& family = families[f];
+    for (int step = 0; step < 6; ++step) {
+      const double faceVoxels = -2.0 + (step + static_cast<double>(f) / families.size()) * 1.3;  // through Z0's boundary
+      expectExactVolume({family.diameterMm, family.lengthMm, faceVoxels * family.voxelMm, family.boreMm},
+                        family.voxelMm);
+    }
   }
 }
 

@@ -4,7 +4,10 @@
 //
 // The tool is a rectangle and every move runs along an axis, so each move sweeps a
 // rectangle of the (r, z) half-plane and what a program leaves is the bar minus a union of
-// rectangles: exact on a grid of the rectangles' own edges. Cut positions lie on a lattice
+// rectangles: exact on a grid of the rectangles' own edges. A face pass below the face
+// followed by a retract along the axis cuts a ring loose: it falls (part-off), so the grid's
+// cells are joined across their shared edges after every write, and what no longer hangs
+// together with the bar's left end is gone from then on. Cut positions lie on a lattice
 // (pitch 2–3.5 voxels, at an arbitrary phase to the voxels, anchored at the bar's face and
 // rim), so the cuts meet each other's faces exactly — face passes repeated at the same Z,
 // a pass ending where the last began, pecks retracing their plunge, a face pass at the
@@ -46,16 +49,20 @@ class RevolvedBoxes {
       rs_.insert(rs_.end(), {std::min(b.r0, radius), std::min(b.r1, radius)});
       zs_.insert(zs_.end(), {std::clamp(b.z0, zs_[0], zs_[1]), std::clamp(b.z1, zs_[0], zs_[1])});
     }
+    // Edges the program puts at one place may differ in the last bits (a plunge's Z plus the
+    // tool's width against a lattice Z): one edge, or a cell of no thickness would join, or
+    // part, the pieces on either side of it.
     for (auto* axis : {&rs_, &zs_}) {
       std::sort(axis->begin(), axis->end());
-      axis->erase(std::unique(axis->begin(), axis->end()), axis->end());
+      axis->erase(std::unique(axis->begin(), axis->end(), [](double a, double b) { return b - a < 1e-9; }), axis->end());
     }
     // The first box that covers each cell (boxes.size() when none does): boxes in reverse
     // order, each over the cells between its edges.
     firstCut_.assign(cells(), static_cast<int>(boxes.size()));
+    fallen_.assign(cells(), 0);
     const auto cellsBetween = [](const std::vector<double>& edges, double lo, double hi) {
-      return std::pair(std::lower_bound(edges.begin(), edges.end(), lo) - edges.begin(),
-                       std::lower_bound(edges.begin(), edges.end(), hi) - edges.begin());
+      return std::pair(std::lower_bound(edges.begin(), edges.end(), lo - 1e-9) - edges.begin(),
+                       std::lower_bound(edges.begin(), edges.end(), hi - 1e-9) - edges.begin());
     };
     for (int k = static_cast<int>(boxes.size()) - 1; k >= 0; --k) {
       const Box& b = boxes[k];
@@ -71,20 +78,67 @@ class RevolvedBoxes {
     double surfaceMm2 = 0;
   };
 
-  /// What is left once the first `cutBoxes` boxes are cut.
+  /// What is left once the first `cutBoxes` boxes are cut (and what fell has gone).
   Solid left(int cutBoxes) const {
-    return measure([&](int cell) { return firstCut_[cell] >= cutBoxes; });
+    return measure([&](int cell) { return !fallen_[cell] && firstCut_[cell] >= cutBoxes; });
   }
   /// What boxes [from, to) remove, given boxes [0, from) are already cut.
   Solid removed(int from, int to) const {
-    return measure([&](int cell) { return firstCut_[cell] >= from && firstCut_[cell] < to; });
+    return measure([&](int cell) { return !fallen_[cell] && firstCut_[cell] >= from && firstCut_[cell] < to; });
+  }
+
+  /// Once the first `cutBoxes` boxes are cut: the pieces of what is left that no longer share
+  /// an edge, through each other, with the cells at the bar's left end (never cut). They fall:
+  /// gone from left() and removed() from then on. A piece thinner than `crumbMm` (twice its
+  /// volume over its area, as for the mesh's crumbs) is no part the grid could hold — a sliver
+  /// between two plunges whose step the program rounded — and stays.
+  std::vector<Solid> fall(int cutBoxes, double crumbMm) {
+    const int nr = static_cast<int>(rs_.size()) - 1, nz = static_cast<int>(zs_.size()) - 1;
+    const auto material = [&](int i, int j) {
+      return i >= 0 && i < nr && j >= 0 && j < nz && !fallen_[index(i, j)] && firstCut_[index(i, j)] >= cutBoxes;
+    };
+    std::vector<int> piece(cells(), -1);
+    std::vector<int> stack;
+    int pieces = 0;
+    std::vector<bool> held;
+    for (int i0 = 0; i0 < nr; ++i0)
+      for (int j0 = 0; j0 < nz; ++j0) {
+        if (!material(i0, j0) || piece[index(i0, j0)] >= 0) continue;
+        held.push_back(false);
+        stack.assign(1, index(i0, j0));
+        piece[index(i0, j0)] = pieces;
+        while (!stack.empty()) {
+          const int cell = stack.back();
+          stack.pop_back();
+          const int i = cell / nz, j = cell % nz;
+          held.back() = held.back() || j == 0;
+          for (const auto& [di, dj] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
+            if (material(i + di, j + dj) && piece[index(i + di, j + dj)] < 0) {
+              piece[index(i + di, j + dj)] = pieces;
+              stack.push_back(index(i + di, j + dj));
+            }
+        }
+        ++pieces;
+      }
+    std::vector<Solid> fell;
+    for (int p = 0; p < pieces; ++p) {
+      if (held[p]) continue;
+      const Solid solid = measure([&](int cell) { return piece[cell] == p; });
+      if (2.0 * solid.volumeMm3 / solid.surfaceMm2 < crumbMm) continue;
+      fell.push_back(solid);
+      for (int cell = 0; cell < cells(); ++cell)
+        if (piece[cell] == p) fallen_[cell] = 1;
+    }
+    return fell;
   }
 
   /// The length (mm) of the part's edges — circles through the corners of its section —
   /// that lie within `reachMm` of one of `boxes`, once the first `cutBoxes` are cut.
   double edgeLengthNear(int cutBoxes, const std::vector<Box>& boxes, double reachMm) const {
     const int nr = static_cast<int>(rs_.size()) - 1, nz = static_cast<int>(zs_.size()) - 1;
-    const auto in = [&](int i, int j) { return i >= 0 && i < nr && j >= 0 && j < nz && firstCut_[index(i, j)] >= cutBoxes; };
+    const auto in = [&](int i, int j) {
+      return i >= 0 && i < nr && j >= 0 && j < nz && !fallen_[index(i, j)] && firstCut_[index(i, j)] >= cutBoxes;
+    };
     double length = 0.0;
     for (int i = 1; i <= nr; ++i)  // corners on the axis are points
       for (int j = 0; j <= nz; ++j) {
@@ -122,6 +176,7 @@ class RevolvedBoxes {
 
   std::vector<double> rs_, zs_;
   std::vector<int> firstCut_;
+  std::vector<char> fallen_;  // per cell: part of a piece that fell
 };
 
 /// The box a straight axis-parallel move of a rectangular tool [0, wr] × [0, wz] sweeps,
@@ -283,22 +338,41 @@ TEST(CutVolume, EveryBlockRemovesItsExactVolumeAndTheMeshAgrees) {
 
     std::vector<Box> boxes;
     std::vector<int> boxesAfterBlock;  // per block ordinal: how many boxes are cut once it has run
-    for (const interp::Move& move : interpreted.toolpath.moves) {
+    // Where sim writes (simulate.hpp): a block's consecutive feeds together, each rapid alone.
+    // After each write, what came loose falls: how many boxes are cut then, per block.
+    std::vector<std::vector<int>> writesOfBlock;
+    const auto& moves = interpreted.toolpath.moves;
+    for (std::size_t m = 0; m < moves.size(); ++m) {
+      const interp::Move& move = moves[m];
       ASSERT_TRUE(std::abs(move.from.x() - move.to.x()) < 1e-9 || std::abs(move.from.y() - move.to.y()) < 1e-9)
           << "line " << move.line << " is not along an axis";
       boxes.push_back(sweptBox(move, program.toolRadialMm, program.toolAxialMm));
       boxesAfterBlock.resize(move.block + 1, boxesAfterBlock.empty() ? 0 : boxesAfterBlock.back());
       boxesAfterBlock[move.block] = static_cast<int>(boxes.size());
+      writesOfBlock.resize(move.block + 1);
+      const bool writtenWithNext = m + 1 < moves.size() && moves[m + 1].block == move.block &&
+                                   interp::isCutting(move.kind) && interp::isCutting(moves[m + 1].kind);
+      if (!writtenWithNext) writesOfBlock[move.block].push_back(static_cast<int>(boxes.size()));
     }
-    const RevolvedBoxes exact(program.bar, boxes);
+    RevolvedBoxes exact(program.bar, boxes);
 
     Stock stock(program.bar, h);
     const RevolvedBoxes::Solid bar = exact.left(0);
     EXPECT_NEAR(stock.volumeMm3(), bar.volumeMm3, volumeToleranceMm3(bar.surfaceMm2, h));
     const SimulationResult result = simulate(interpreted.toolpath, tools, stock);
     int cutBefore = 0;
+    std::size_t partOffs = 0;
     for (const BlockRemoval& block : result.blocks) {
       const int cutAfter = boxesAfterBlock[block.block];
+      for (const int cut : writesOfBlock[block.block])
+        for (const RevolvedBoxes::Solid& piece : exact.fall(cut, h)) {
+          ASSERT_LT(partOffs, result.partOffs.size()) << "line " << block.line << " parts off " << piece.volumeMm3
+                                                      << " mm³, which sim does not see";
+          EXPECT_EQ(result.partOffs[partOffs].line, block.line);
+          EXPECT_NEAR(result.partOffs[partOffs].volumeMm3, piece.volumeMm3, volumeToleranceMm3(piece.surfaceMm2, h))
+              << "line " << block.line;
+          ++partOffs;
+        }
       const RevolvedBoxes::Solid removed = exact.removed(cutBefore, cutAfter);
       // Next to an edge of the part the level set is only a bound on the distance (the max
       // of the cuts' distances; sweep-math.md): the row of air voxels along an edge may
@@ -312,6 +386,7 @@ TEST(CutVolume, EveryBlockRemovesItsExactVolumeAndTheMeshAgrees) {
           << "line " << block.line;
       cutBefore = cutAfter;
     }
+    EXPECT_EQ(result.partOffs.size(), partOffs);
     const RevolvedBoxes::Solid part = exact.left(static_cast<int>(boxes.size()));
     const double tolerance = volumeToleranceMm3(part.surfaceMm2, h);
     const double levelSet = stock.volumeMm3();

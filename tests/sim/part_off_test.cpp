@@ -1,0 +1,193 @@
+// Part-off: a cut that separates the bar is found, the piece that falls is taken out of the
+// stock, and both are measured against volumes worked out by hand (cylinders and rings).
+// Programs are read by the interpreter, so G75's pecks are its own; the blade is 3 mm wide,
+// programmed at its +Z corner, so a cut at Z leaves the kerf Z−3 … Z.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "interp/interpreter.hpp"
+#include "sim/simulate.hpp"
+
+namespace lathesim::sim {
+namespace {
+
+constexpr double kBladeWidthMm = 3.0;
+
+ToolOutlines tools() {
+  ToolOutlines outlines;
+  const std::vector<RZ> blade{{0, 0}, {15, 0}, {15, -kBladeWidthMm}, {0, -kBladeWidthMm}};
+  outlines.emplace(1, *ConvexPolygon::fromOutline(blade).polygon);
+  const std::vector<RZ> axialBlade{{0, 0}, {2, 0}, {2, 20}, {0, 20}};  // a face groove 2 mm wide
+  outlines.emplace(2, *ConvexPolygon::fromOutline(axialBlade).polygon);
+  const std::vector<RZ> innerBlade{{0, 0}, {6, 0}, {6, 3}, {0, 3}};  // an internal groove 3 mm wide
+  outlines.emplace(3, *ConvexPolygon::fromOutline(innerBlade).polygon);
+  const std::vector<RZ> turning{{0, 0}, {10, 1}, {12, 12}, {1, 10}};  // the default tool, flanks leaning 1 in 10
+  outlines.emplace(4, *ConvexPolygon::fromOutline(turning).polygon);
+  return outlines;
+}
+
+interp::Toolpath toolpathOf(const std::string& program) {
+  interp::InterpreterOptions options;
+  options.startPosition = {50.0, 50.0};
+  options.toolNumbers = {1, 2, 3, 4};
+  interp::InterpretResult result = interp::interpret(program, "part_off.nc", options);
+  EXPECT_TRUE(result.ok()) << (result.diagnostics.empty() ? "" : interp::format(result.diagnostics[0]));
+  return result.toolpath;
+}
+
+struct PartOffRun {
+  SimulationResult result;
+  double stubMm3 = 0;  // what is left in the stock
+};
+
+PartOffRun simulateProgram(const StockSpec& bar, double voxelMm, const std::string& program) {
+  Stock stock(bar, voxelMm);
+  PartOffRun run;
+  run.result = simulate(toolpathOf(program), tools(), stock);
+  run.stubMm3 = stock.volumeMm3();
+  return run;
+}
+
+// 5 % of a voxel layer over a solid's surface, as the README states for every volume.
+double tolerance(double surfaceMm2, double voxelMm) { return 0.05 * voxelMm * surfaceMm2; }
+// A cylinder's or a tube's surface, r the bore's radius.
+double surface(double outer, double inner, double length) {
+  return 2 * M_PI * (outer + inner) * length + 2 * M_PI * (outer * outer - inner * inner);
+}
+
+// A bar Φ40 × 50 (Z-50 … 0), parted by G01 to X0 or past the centre, at Z positions on and off
+// the voxel grid: the piece Z … 0 falls (400π·|Z|), the stub Z-50 … Z−3 stays.
+TEST(PartOff, G01ToTheCentreOrPastItPartsTheBar) {
+  const StockSpec bar{40.0, 50.0, 0.0};
+  for (const double voxel : {0.25, 0.4})
+    for (const double z : {-20.0, -31.3})
+      for (const char* endX : {"X0.", "X-2.", "X-6."}) {
+        SCOPED_TRACE(testing::Message() << voxel << " mm voxels, Z" << z << ", G01 " << endX);
+        const std::string program = "G99 M03 S500\nG00 X44. Z" + std::to_string(z) + "\nG01 " + endX +
+                                    " F0.05\nG00 X60.\nM30\n";
+        const PartOffRun run = simulateProgram(bar, voxel, program);
+        ASSERT_EQ(run.result.partOffs.size(), 1u);
+        const PartOff& off = run.result.partOffs[0];
+        EXPECT_EQ(off.line, 3);
+        EXPECT_EQ(off.column, 1);
+        EXPECT_NEAR(off.zMm, z, 1e-9);
+        const double pieceLength = -z, stubLength = 50.0 + z - kBladeWidthMm;
+        EXPECT_NEAR(off.volumeMm3, 400 * M_PI * pieceLength, tolerance(surface(20, 0, pieceLength), voxel));
+        EXPECT_NEAR(run.stubMm3, 400 * M_PI * stubLength, tolerance(surface(20, 0, stubLength), voxel));
+        ASSERT_TRUE(run.result.part);
+        EXPECT_NEAR(run.result.part->volumeMm3(), off.volumeMm3, 1e-6);
+        EXPECT_FALSE(off.catcher);
+        EXPECT_TRUE(run.result.warnings.empty()) << run.result.warnings[0].message;
+      }
+}
+
+// G75 to X-1 in 3 mm pecks (P6000: Δi on the diameter): the piece falls on the cycle's line.
+TEST(PartOff, G75PeckCyclePartsTheBarOnItsLine) {
+  const PartOffRun run = simulateProgram({40.0, 50.0, 0.0}, 0.25,
+                                  "G99 M03 S500\nG00 X42. Z-25.\nG75 R0.5\nG75 X-1. P6000 F0.05\nG00 X60.\nM30\n");
+  ASSERT_EQ(run.result.partOffs.size(), 1u);
+  EXPECT_EQ(run.result.partOffs[0].line, 4);
+  EXPECT_NEAR(run.result.partOffs[0].zMm, -25.0, 1e-9);
+  EXPECT_NEAR(run.result.partOffs[0].volumeMm3, 400 * M_PI * 25, tolerance(surface(20, 0, 25), 0.25));
+  EXPECT_NEAR(run.stubMm3, 400 * M_PI * 22, tolerance(surface(20, 0, 22), 0.25));
+}
+
+// A tube Φ40 with a Φ20 bore parts when the blade passes the bore (r 10), not before.
+TEST(PartOff, ATubePartsWhenTheCutReachesItsBore) {
+  const StockSpec tube{40.0, 50.0, 0.0, 20.0};
+  for (const double voxel : {0.25, 0.4}) {
+    SCOPED_TRACE(testing::Message() << voxel << " mm voxels");
+    const PartOffRun parted = simulateProgram(tube, voxel, "G99 M03 S500\nG00 X44. Z-18.7\nG01 X18. F0.05\nG00 X60.\nM30\n");
+    ASSERT_EQ(parted.result.partOffs.size(), 1u);
+    EXPECT_EQ(parted.result.partOffs[0].line, 3);
+    EXPECT_NEAR(parted.result.partOffs[0].volumeMm3, 300 * M_PI * 18.7, tolerance(surface(20, 10, 18.7), voxel));
+    EXPECT_NEAR(parted.stubMm3, 300 * M_PI * 28.3, tolerance(surface(20, 10, 28.3), voxel));
+
+    // To X22 (r 11) the wall keeps a 1 mm ring: a groove, nothing falls.
+    const PartOffRun grooved = simulateProgram(tube, voxel, "G99 M03 S500\nG00 X44. Z-18.7\nG01 X22. F0.05\nG00 X60.\nM30\n");
+    EXPECT_TRUE(grooved.result.partOffs.empty());
+    EXPECT_FALSE(grooved.result.part);
+    EXPECT_NEAR(grooved.stubMm3, 300 * M_PI * 50 - (400 - 121) * M_PI * 3, tolerance(surface(20, 10, 50), voxel));
+  }
+}
+
+// A groove that leaves a core of Φ2 (four voxels of radius at 0.25 mm) holds the bar together.
+TEST(PartOff, AGrooveThatLeavesACoreDoesNotPartTheBar) {
+  const PartOffRun run = simulateProgram({40.0, 50.0, 0.0}, 0.25, "G99 M03 S500\nG00 X44. Z-20.\nG01 X2. F0.05\nG00 X60.\nM30\n");
+  EXPECT_TRUE(run.result.partOffs.empty());
+  EXPECT_FALSE(run.result.part);
+}
+
+// Facing to X0 with a flank that leans 1 in 10 leaves a cone on the axis, its point on the face
+// (r < z/10 over the 1 mm cut: 0.01 mm³): loose, but a crumb, not a part.
+TEST(PartOff, ThePipAFaceCutToTheCentreLeavesIsNoPart) {
+  for (const double voxel : {0.2, 0.25}) {
+    const PartOffRun run = simulateProgram({40.0, 50.0, 1.0}, voxel, "G99 M03 S500\nT0404\nG00 X44. Z0.\nG01 X0. F0.2\nM30\n");
+    EXPECT_TRUE(run.result.partOffs.empty()) << voxel << " mm voxels: " << run.result.partOffs[0].volumeMm3 << " mm³";
+    EXPECT_NEAR(run.stubMm3, 400 * M_PI * 49, tolerance(surface(20, 0, 49), voxel));  // Z-49..0 left
+  }
+}
+
+// The section falls in two with no Z free of material: a face groove (r 14…16, 10 deep) meets an
+// internal groove from the bore (r 10…16, Z-12…-9), and the ring r 10…14, Z-9…0 comes loose
+// while the outside (r 16…20) runs on to the face: 96π·9 = 864π mm³ falls.
+TEST(PartOff, ARingCutLooseInsideATubeFalls) {
+  const double voxel = 0.25;
+  const PartOffRun run = simulateProgram({40.0, 50.0, 0.0, 20.0}, voxel,
+                                  "G99 M03 S500\nT0202\nG00 X28. Z2.\nG01 Z-10. F0.05\nG00 Z2.\n"
+                                  "T0303\nG00 X8.\nZ-12.\nG01 X20.\nG00 X8.\nG00 Z5.\nM30\n");
+  ASSERT_EQ(run.result.partOffs.size(), 1u);
+  EXPECT_EQ(run.result.partOffs[0].line, 9);
+  const double ringSurface = surface(14, 10, 9);
+  EXPECT_NEAR(run.result.partOffs[0].volumeMm3, 864 * M_PI, tolerance(ringSurface, voxel));
+  const double stubMm3 = 300 * M_PI * 50 - 60 * M_PI * 10 - 156 * M_PI * 3 - 864 * M_PI + 60 * M_PI * 1;
+  EXPECT_NEAR(run.stubMm3, stubMm3, tolerance(surface(20, 10, 50) + ringSurface, voxel));
+}
+
+// After the part-off, a cut where the part was finds nothing to cut (the part has fallen) and
+// says so; a second part-off further down the stub is a second piece, warned of.
+TEST(PartOff, CutsAfterThePartOffDoNotTouchThePartThatFell) {
+  const double voxel = 0.25;
+  const PartOffRun run = simulateProgram({40.0, 50.0, 0.0}, voxel,
+                                  "G99 M03 S500\nG00 X44. Z-25.\nG01 X-1. F0.05\nG00 X44.\n"
+                                  "G00 Z-5.\nG01 X10.\nG00 X44.\n"
+                                  "G00 Z-40.\nG01 X-1.\nG00 X60.\nM30\n");
+  ASSERT_EQ(run.result.partOffs.size(), 2u);
+  ASSERT_TRUE(run.result.part);
+  EXPECT_NEAR(run.result.part->volumeMm3(), 400 * M_PI * 25, tolerance(surface(20, 0, 25), voxel));
+  ASSERT_EQ(run.result.warnings.size(), 2u);
+  EXPECT_EQ(run.result.warnings[0].line, 6);
+  EXPECT_NE(run.result.warnings[0].message.find("parted off at line 3"), std::string::npos)
+      << run.result.warnings[0].message;
+  EXPECT_EQ(run.result.warnings[1].line, 9);
+  EXPECT_NE(run.result.warnings[1].message.find("a second piece"), std::string::npos) << run.result.warnings[1].message;
+  EXPECT_EQ(run.result.partOffs[1].line, 9);
+  EXPECT_NEAR(run.result.partOffs[1].volumeMm3, 400 * M_PI * 12, tolerance(surface(20, 0, 12), voxel));
+  EXPECT_NEAR(run.stubMm3, 400 * M_PI * 7, tolerance(surface(20, 0, 7), voxel));
+  ASSERT_EQ(run.result.blocks.size(), 9u);
+  EXPECT_EQ(run.result.blocks[4].line, 6);
+  EXPECT_NEAR(run.result.blocks[4].removedMm3, 0.0, tolerance(surface(20, 0, 3), voxel));
+}
+
+// The parts catcher command in force when the piece falls is reported with it.
+TEST(PartOff, TheCatcherInForceIsReported) {
+  const StockSpec bar{40.0, 50.0, 0.0};
+  const std::string cut = "G00 X44. Z-20.\nG01 X-1. F0.05\nG00 X60.\nM30\n";
+  const PartOffRun caught = simulateProgram(bar, 0.4, "G99 M03 S500\nM37\nM36\n" + cut);
+  ASSERT_EQ(caught.result.partOffs.size(), 1u);
+  ASSERT_TRUE(caught.result.partOffs[0].catcher);
+  EXPECT_EQ(caught.result.partOffs[0].catcher->code, "M36");
+  EXPECT_EQ(caught.result.partOffs[0].catcher->line, 3);
+  EXPECT_TRUE(caught.result.partOffs[0].catcher->inPlace);
+  const PartOffRun dropped = simulateProgram(bar, 0.4, "G99 M03 S500\nM36\nM37\n" + cut);
+  ASSERT_EQ(dropped.result.partOffs.size(), 1u);
+  ASSERT_TRUE(dropped.result.partOffs[0].catcher);
+  EXPECT_EQ(dropped.result.partOffs[0].catcher->code, "M37");
+  EXPECT_FALSE(dropped.result.partOffs[0].catcher->inPlace);
+}
+
+}  // namespace
+}  // namespace lathesim::sim
