@@ -14,6 +14,7 @@
 #include "job/comment_tools.hpp"
 #include "job/stock_option.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/printable_text.hpp"
 #include "job/control_setup.hpp"
 
 namespace lathesim::job {
@@ -101,7 +102,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
     if (!chosen) {
       std::string names;
       for (std::string_view n : interp::controlPresets()) names += (names.empty() ? "" : ", ") + std::string(n);
-      std::cerr << "lathesim: error: --control " << *overrides.controlPreset << ": no such control preset (expected "
+      std::cerr << "lathesim: error: --control " << interp::printable(*overrides.controlPreset) << ": no such control preset (expected "
                 << names << ")\n";
       return std::nullopt;
     }
@@ -130,7 +131,7 @@ std::optional<Job> loadJob(const JobRequest& request) {
 
   std::ifstream in(program, std::ios::binary);
   if (!in) {
-    std::cerr << program.string() << ": error: cannot read the program file\n";
+    std::cerr << interp::printable(program.string()) << ": error: cannot read the program file\n";
     return std::nullopt;
   }
   std::ostringstream text;
@@ -140,7 +141,7 @@ std::optional<Job> loadJob(const JobRequest& request) {
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {
-      std::cerr << "lathesim: error: " << *problem << '\n';
+      std::cerr << "lathesim: error: " << interp::printable(*problem) << '\n';
       return std::nullopt;
     }
     job.setup.stock = std::get<sim::StockSpec>(stock);

@@ -27,6 +27,18 @@ TEST(Diagnostic, WarningAndWholeFileForms) {
             "a.nc: error: cannot read");
 }
 
+// A line holding ESC (and a C1 CSI) is shown with them written out; the caret stays under
+// the character its column names, however wide the escapes before it.
+TEST(Diagnostic, ControlCharactersAreWrittenOutAndTheCaretFollows) {
+  const Diagnostic d{Severity::Error, "t\x1b.nc", 1, 11, "bad \x07 here", "\x1b[2J X1\xc2\x9b" "5 @"};
+  EXPECT_EQ(format(d),
+            "t\\x1b.nc:1:11: error: bad \\x07 here\n"
+            "\\x1b[2J X1\\u009b5 @\n" +
+                std::string(18, ' ') + "^");
+  // A column past the end of the line still counts its own spaces.
+  EXPECT_EQ(format({Severity::Error, "a.nc", 1, 5, "m", "\tX"}), "a.nc:1:5: error: m\n\tX\n    ^");
+}
+
 TEST(Diagnostic, LineOfStripsLineEndings) {
   const std::string_view text = "first\r\nsecond\nthird";
   EXPECT_EQ(lineOf(text, 1), "first");
