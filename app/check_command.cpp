@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "interp/printable_text.hpp"
 #include "measure/deviation.hpp"
 #include "measure/drawing.hpp"
 #include "measure/gouge_causes.hpp"
@@ -34,12 +35,12 @@ std::optional<MeridianProfile> loadProfile(const std::filesystem::path& file) {
 std::optional<MeridianProfile> loadStl(const std::filesystem::path& file) {
   render::StlRead read = render::readStl(file);
   if (!read.mesh) {
-    std::cerr << file.string() << ": error: " << read.problem << '\n';
+    std::cerr << interp::printable(file.string()) << ": error: " << interp::printable(read.problem) << '\n';
     return std::nullopt;
   }
   std::vector<Segment> slice = meridianSlice(*read.mesh);
   if (slice.empty()) {
-    std::cerr << file.string() << ": error: the design does not cross the half-plane y = 0, x ≥ 0; a turned part's "
+    std::cerr << interp::printable(file.string()) << ": error: the design does not cross the half-plane y = 0, x ≥ 0; a turned part's "
               << "STL must have its axis along Z through the origin\n";
     return std::nullopt;
   }
@@ -118,7 +119,7 @@ std::string where(const RZ& p) {
 
 void printSummary(const CheckOptions& options, const measure::DeviationReport& d) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
-  std::cout << options.run.program.string() << " against " << target << ": "
+  std::cout << interp::printable(options.run.program.string()) << " against " << interp::printable(target) << ": "
             << (d.withinTolerance() ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm\n";
   std::cout << "  max excess " << fixed(d.maxExcessMm, 3) << " mm";
   if (d.maxExcessMm >= 0.0005) std::cout << " at " << where(d.maxExcessAt);
@@ -136,7 +137,7 @@ void printSummary(const CheckOptions& options, const measure::DeviationReport& d
     }
     std::cout << '\n';
   }
-  std::cout << "  outputs in " << options.run.out.string() << "/\n";
+  std::cout << "  outputs in " << interp::printable(options.run.out.string()) << "/\n";
 }
 
 /// Each mesh vertex's deviation: the drawing's signed distance at its (r, z), as for the
@@ -190,28 +191,27 @@ void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh,
   image.toleranceMm = d.toleranceMm;
   image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
                   " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
-  render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing), image, out.stage("deviation.png"));
+  out.write("deviation.png", [&](const std::filesystem::path& file) {
+    render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing), image, file);
+  });
   render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d);
   half.caption = image.caption;
-  render::writeSectionImagePng(half, out.stage("section.png"));
+  out.write("section.png", [&](const std::filesystem::path& file) { render::writeSectionImagePng(half, file); });
 }
 
 }  // namespace
 
 int checkCommand(const CheckOptions& options) {
-  if (options.toleranceMm && !(*options.toleranceMm >= 0)) {
-    std::cerr << "lathesim: error: the tolerance must be a number of mm, zero or more\n";
-    return 1;
-  }
   std::optional<MeridianProfile> drawing;
   if (options.drawing && !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing)))
-    return 1;  // before the long part
+    return job::kExitBadInput;  // before the long part
+  StagedOutput out(options.run.out);
   Stopwatch clock;
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock);
-  if (!run) return 1;
+  if (!run) return job::kExitBadInput;
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
-  if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return 1;
+  if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return job::kExitBadInput;
   const double tolerance = options.toleranceMm.value_or(2 * voxel);
 
   run->progress->stage("measuring against the drawing");
@@ -223,20 +223,19 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
-  StagedOutput out(options.run.out);
   stageRunFiles(*run, out, clock);
   stageDeviationImages(options, run->part, section, part, *drawing, deviation, out);
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);
   report["check"] = checkJson(options, deviation, process, checkS);
-  writeJson(report, out.stage("report.json"));
+  out.write("report.json", [&](const std::filesystem::path& file) { writeJson(report, file); });
   out.commit();
   run->progress->stage("done");
   run->progress->finish();
 
   printSummary(options, deviation);
-  return deviation.withinTolerance() ? 0 : kExitOutOfTolerance;
+  return deviation.withinTolerance() ? job::kExitOk : job::kExitOutOfTolerance;
 }
 
 }  // namespace lathesim::app

@@ -1,8 +1,8 @@
 #include "app/report.hpp"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
+
+#include "app/staged_output.hpp"
 
 namespace lathesim::app {
 
@@ -69,9 +69,9 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
 void writeReportJson(const RunFigures& f, const std::filesystem::path& file) { writeJson(reportJson(f), file); }
 
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file) {
-  std::ofstream out(file);
-  out << report.dump(2) << '\n';
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  // Text a program quoted (a comment in a note) need not be UTF-8: such bytes become U+FFFD.
+  const std::string text = report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  writeTextFile(file, [&](std::ostream& out) { out << text << '\n'; });
 }
 
 }  // namespace lathesim::app

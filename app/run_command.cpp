@@ -2,31 +2,32 @@
 
 #include "app/commands.hpp"
 #include "app/run_pipeline.hpp"
+#include "interp/printable_text.hpp"
 #include "interp/toolpath_csv.hpp"
 
 namespace lathesim::app {
 
 int runCommand(const RunOptions& options) {
+  StagedOutput out(options.out);  // first: a folder that takes no files is said before the long part
   Stopwatch clock;
   std::optional<SimulatedRun> run = simulateProgram(options, clock);
-  if (!run) return 1;
+  if (!run) return job::kExitBadInput;
   meshPart(*run, clock);
-  StagedOutput out(options.out);
   stageRunFiles(*run, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
-  writeReportJson(figures, out.stage("report.json"));
+  out.write("report.json", [&](const std::filesystem::path& file) { writeReportJson(figures, file); });
   out.commit();
   run->progress->stage("done");
   run->progress->finish();
 
-  std::cout << figures.program << " (control " << figures.control.preset << "): " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
+  std::cout << interp::printable(figures.program) << " (control " << figures.control.preset << "): " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
-            << options.out.string() << "/\n";
+            << interp::printable(options.out.string()) << "/\n";
   for (const auto& c : figures.simulation.collisions)
     std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
-  return 0;
+  return job::kExitOk;
 }
 
 job::JobRequest jobRequestOf(const RunOptions& options) {
@@ -35,9 +36,9 @@ job::JobRequest jobRequestOf(const RunOptions& options) {
 
 int expandCommand(const job::JobRequest& request) {
   const std::optional<job::Job> loaded = job::loadJob(request);
-  if (!loaded) return 1;
+  if (!loaded) return job::kExitBadInput;
   interp::writeToolpathCsv(loaded->toolpath, std::cout);
-  return 0;
+  return job::kExitOk;
 }
 
 }  // namespace lathesim::app

@@ -2,7 +2,6 @@
 
 #include <sys/resource.h>
 
-#include <fstream>
 #include <iostream>
 
 #include "app/at_line.hpp"
@@ -90,17 +89,17 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
 
 void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   run.progress->stage("writing STL, VDB and the render");
-  render::writeBinaryStl(run.part, out.stage("part.stl"));
-  {
-    std::ofstream csv(out.stage("toolpath.csv"));
-    interp::writeToolpathCsv(run.job.toolpath, csv);
-  }
-  render::writeToolpathVtp(run.job.toolpath, out.stage("toolpath.vtp"));
-  run.stock->writeVdb(out.stage("stock.vdb"));
+  using Path = std::filesystem::path;
+  out.write("part.stl", [&](const Path& file) { render::writeBinaryStl(run.part, file); });
+  out.write("toolpath.csv", [&](const Path& file) {
+    writeTextFile(file, [&](std::ostream& csv) { interp::writeToolpathCsv(run.job.toolpath, csv); });
+  });
+  out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
+  out.write("stock.vdb", [&](const Path& file) { run.stock->writeVdb(file); });
   render::PartImageOptions image;
   image.title = run.figures.program;
   image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);
-  render::writePartImagePng(run.part, run.job.toolpath, image, out.stage("part.png"));
+  out.write("part.png", [&](const Path& file) { render::writePartImagePng(run.part, run.job.toolpath, image, file); });
   run.figures.timing.renderS = clock.lap();
 }
 
