@@ -18,14 +18,16 @@ std::optional<int> codeNumber(const Word& word) {
 std::string codeText(char letter, int number) { return fmt::format("{}{:02}", letter, number); }
 
 // A known, supported code, or the error saying why the word is not one. `info` is the table
-// entry found for the word's number (nullptr when none); `known` lists valid codes.
-template <class Info>
+// entry found for the word's number (nullptr when none); `known()` lists valid codes, only
+// when needed: listing them walks the whole table, which every G word of a long program
+// would pay for.
+template <class Info, class ListKnown>
 Result<Code> checkedCode(const Word& word, std::optional<int> written, int line, const Info* info,
-                         std::string_view known) {
+                         const ListKnown& known) {
   if (info == nullptr) {
     return Error{line, word.column,
                  fmt::format("unknown {} code {}: expected one of {}", word.letter, word.text(),
-                             known)};
+                             known())};
   }
   const std::string text = codeText(word.letter, *written);
   if (!info->lacks.empty()) {
@@ -83,14 +85,15 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
     if (word.letter == 'G') {
       const auto number = codeNumber(word);
       const GCodeInfo* info = number ? findGCode(*number, dialect) : nullptr;
-      auto code = checkedCode(word, number, line, info,
-                              fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect)));
+      auto code = checkedCode(word, number, line, info, [dialect] {
+        return fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect));
+      });
       if (!code.ok()) return code.error();
       keepLast(block.gCodes, info->group, code.value(), block);
     } else if (word.letter == 'M') {
       const auto number = codeNumber(word);
       const MCodeInfo* info = number ? findMCode(*number) : nullptr;
-      auto code = checkedCode(word, number, line, info, supportedMCodes());
+      auto code = checkedCode(word, number, line, info, supportedMCodes);
       if (!code.ok()) return code.error();
       keepLast(block.mCodes, info->group, code.value(), block);
     } else {
