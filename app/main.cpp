@@ -101,6 +101,7 @@ int main(int argc, char** argv) {
   // --dialect, --control and --block-skip on every command that reads a program.
   struct OverrideArguments {
     std::string dialect, control, blockSkip;
+    std::optional<std::size_t> maxMoves;
   };
   OverrideArguments runArgs, checkArgs, expandArgs;
   std::vector<std::string> dialects;
@@ -114,6 +115,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember(presets));
     command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
         ->check(CLI::IsMember({"on", "off"}));
+    command->add_option("--max-moves", args->maxMoves,
+                        "moves the program may make before it is refused (overrides [sim] max_moves; default " +
+                            std::to_string(lathesim::interp::kDefaultMaxMoves) + ")")
+        ->check(CLI::PositiveNumber);
   }
 
   lathesim::app::BatchCli batch(cli);
@@ -136,6 +141,7 @@ int main(int argc, char** argv) {
     if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
     if (!args.control.empty()) overrides.controlPreset = args.control;
     if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
+    overrides.maxMoves = args.maxMoves;
     return overrides;
   };
   const auto optionalPath = [](const std::string& s) {

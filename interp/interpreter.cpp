@@ -50,6 +50,18 @@ Status loadSubprogram(Program& program, const SubprogramCall& call, const Progra
                 program, caller);
 }
 
+// More moves than `maxMoves`: an error at the line of the move that passed the limit
+// (a subprogram file's moves carry the line of the M98 that called it).
+std::optional<Error> moveLimitError(const std::vector<Move>& moves, std::size_t maxMoves) {
+  if (moves.size() <= maxMoves) return std::nullopt;
+  const Move& passing = moves[maxMoves];
+  return Error{passing.line, passing.column,
+               fmt::format("the program makes more than {} moves (the limit) by this block: a toolpath that long takes "
+                           "hours to simulate, and nested repeats can ask for billions; if it is meant, raise the "
+                           "limit with --max-moves or [sim] max_moves",
+                           maxMoves)};
+}
+
 // Runs the program from its first block until M02/M30, the end of the text, or the first
 // error; appends to `toolpath` and `warnings`. A block's read error is reported when
 // execution reaches it. Moves made in a subprogram's own file carry the line of the M98 in
@@ -105,6 +117,7 @@ Status runProgram(Program& program, const InterpreterOptions& options, Toolpath&
     }
     state = std::move(done.state);
     toolpath.moves.insert(toolpath.moves.end(), done.moves.begin(), done.moves.end());
+    if (auto tooMany = moveLimitError(toolpath.moves, options.maxMoves)) return *tooMany;
     toolpath.cycleStarts.insert(toolpath.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
     if (const auto stop = block.parsed.value().mCode(MGroup::Stop)) {
       const bool own = block.source == 0 || !calls.outermostCall();
@@ -169,6 +182,8 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   if (status.ok()) status = compensateNoseRadius(moves);
   if (status.ok()) status = applyToolOffsets(moves);
   if (status.ok() && options.control.rapidPath == RapidPath::NonLinear) splitRapidsIntoAxisLegs(moves, options.machine);
+  if (status.ok())  // the dog-legs' second legs count too
+    if (auto tooMany = moveLimitError(moves, options.maxMoves)) status = *tooMany;
   if (status.ok() && options.machine.travel) status = checkTravel(moves, *options.machine.travel);
   // A diagnostic in the file it names: the program's own, or a subprogram's.
   const auto diagnostic = [&](Severity severity, const Error& e) {

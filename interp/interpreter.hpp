@@ -18,6 +18,10 @@
 
 namespace lathesim::interp {
 
+/// Moves a program may make before it is refused (InterpreterOptions::maxMoves): a million
+/// blocks and their dog-leg rapids pass; nested repeats (M98 P9999… four deep) do not.
+inline constexpr std::size_t kDefaultMaxMoves = 2'000'000;
+
 struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
@@ -35,6 +39,7 @@ struct InterpreterOptions {
                                                          // lacks, in order (program_library.hpp)
   std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
                                   // reference point (or the start) if unset
+  std::size_t maxMoves = kDefaultMaxMoves;  // more is an error at the block that passes it
 };
 
 struct InterpretResult {

@@ -86,6 +86,7 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.offsets = setup.offsets;
   options.workOffsets = setup.workOffsets;
   options.machineZero = setup.machineZero;
+  options.maxMoves = setup.maxMoves;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
 }
@@ -108,6 +109,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
     }
     setup.control = std::move(*chosen);
   }
+  if (overrides.maxMoves) setup.maxMoves = *overrides.maxMoves;
   if (overrides.blockSkip)
     (void)setup.control.set("block_skip", std::string(*overrides.blockSkip ? "on" : "off"), "command line");
   return setup;

@@ -33,6 +33,7 @@ struct SetupOverrides {
   std::optional<interp::Dialect> dialect;    // --dialect: [machine] dialect
   std::optional<std::string> controlPreset;  // --control: the preset; the setup's [control] keys still apply
   std::optional<bool> blockSkip;             // --block-skip on|off: control.block_skip
+  std::optional<std::size_t> maxMoves;       // --max-moves: [sim] max_moves
 };
 
 /// The setup with the command line's overrides; nullopt (the problem printed) for an unknown

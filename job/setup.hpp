@@ -13,6 +13,7 @@
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
+#include "interp/interpreter.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/execution/work_frame.hpp"
@@ -42,6 +43,7 @@ struct Setup {
   interp::Control control;  // [control]: the preset and its parameters, how the machine behaves
                             // ([machine] initial_feed_mode is control.power_on_feed_mode)
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
+  std::size_t maxMoves = interp::kDefaultMaxMoves;  // [sim] max_moves, --max-moves: more is an error
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end

@@ -54,6 +54,7 @@ TEST(ExitStatus, BadCommandLinesExitTwo) {
       {{"run", program, "--control", "haas", "--out", out}, "haas"},
       {{"run", program, "--dialect", "siemens", "--out", out}, "siemens"},
       {{"run", program, "--block-skip", "maybe", "--out", out}, "maybe"},
+      {{"run", program, "--max-moves", "0", "--out", out}, "--max-moves"},
       {{"check", program, "--out", out}, "--target"},
       {{"check", program, "--target", part("seed001-taper-r24", "drawing.toml"), "--tol", "-1", "--out", out}, "--tol"},
       {{"expand", program, "--setup", (scratch.path() / "none.toml").string()}, "none.toml"},
@@ -80,6 +81,20 @@ TEST(ExitStatus, BadProgramExitsOneAndGoodRunZero) {
                               part("seed001-taper-r24", "setup.toml")},
                              scratch.path());
   EXPECT_EQ(good.status, 0) << good.err;
+}
+
+// Seed 001 makes 6 moves (its first rapid is a dog-leg): 6 pass, 5 are refused with the figure.
+TEST(ExitStatus, MoreMovesThanTheLimitIsABadProgram) {
+  test::ScratchDir scratch("max-moves");
+  const auto args = [&](const char* limit) {
+    return std::vector<std::string>{"expand", part("seed001-taper-r24", "program.nc"), "--setup",
+                                    part("seed001-taper-r24", "setup.toml"), "--max-moves", limit};
+  };
+  EXPECT_EQ(lathesim(args("6"), scratch.path()).status, 0);
+  const auto refused = lathesim(args("5"), scratch.path());
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("program.nc:2:1: error: the program makes more than 5 moves (the limit)"), std::string::npos)
+      << refused.err;
 }
 
 TEST(CommandLine, VersionNamesTheProgramAndExitsZero) {

@@ -30,6 +30,7 @@ InterpreterOptions optionsFrom(fuzz::FuzzInput& input) {
   options.offsets[1] = ToolOffset{0.0, 0.0, 0.8, 3, 0.0, 0.0, 0.0};
   options.offsets[2] = ToolOffset{1.5, -2.0, 0.4, 8, 0.02, 0.0, 0.0};
   if (input.choice(2) == 0) options.machine.travel = TravelLimits{-10.0, 300.0, -200.0, 250.0};
+  options.maxMoves = 20000;  // the limit holds at any figure; a small one keeps runs fast
   return options;
 }
 
