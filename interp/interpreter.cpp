@@ -144,6 +144,17 @@ void placeInSetupFrame(std::vector<Move>& moves) {
   }
 }
 
+// A file with no block to run is the wrong file or a program cut short, not a part that
+// needs no machining: said as such rather than simulated as an untouched bar.
+Status refuseEmptyProgram(const Program& program, std::string_view programText) {
+  if (!program.blocks.empty()) return success();
+  const bool blank = programText.find_first_not_of(" \t\r\n") == std::string_view::npos;
+  return Error{0, 0,
+               blank ? "the program is empty: there is no block to run"
+                     : "the program holds only comments (and '%' or directive lines): there is no block to run; "
+                       "is it the right file, or was it cut short?"};
+}
+
 // A program of another control family is refused as a whole, naming the family.
 Status refuseForeignProgram(std::string_view programText) {
   const auto foreign = recogniseForeignProgram(programText);
@@ -172,6 +183,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   Program program = readProgram(programText, options.control.blockSkip, options.dialect);
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
+  if (status.ok()) status = refuseEmptyProgram(program, programText);
   if (status.ok()) status = runProgram(program, options, result.toolpath, warnings);
   // The moves are made as programmed, in the work coordinate systems (G54–G59, G50); placed in
   // the setup's frame, then G41/G42 and the tool offsets' shifts are applied, each rapid is
