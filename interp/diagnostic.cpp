@@ -32,6 +32,22 @@ std::string format(const Diagnostic& diagnostic) {
   return text;
 }
 
+LineStarts::LineStarts(std::string_view text) {
+  starts_.push_back(0);
+  for (std::size_t at = text.find('\n'); at != std::string_view::npos; at = text.find('\n', at + 1))
+    starts_.push_back(at + 1);
+}
+
+std::string LineStarts::lineOf(std::string_view text, int line) const {
+  if (line <= 0 || static_cast<std::size_t>(line) > starts_.size()) return {};
+  const std::size_t begin = starts_[static_cast<std::size_t>(line) - 1];
+  if (begin > text.size()) return {};
+  std::size_t end = text.find('\n', begin);
+  if (end == std::string_view::npos) end = text.size();
+  if (end > begin && text[end - 1] == '\r') --end;
+  return std::string(text.substr(begin, end - begin));
+}
+
 std::string lineOf(std::string_view text, int line) {
   if (line <= 0) return {};
   std::size_t begin = 0;

@@ -198,11 +198,12 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
     if (auto tooMany = moveLimitError(moves, options.maxMoves)) status = *tooMany;
   if (status.ok() && options.machine.travel) status = checkTravel(moves, *options.machine.travel);
   // A diagnostic in the file it names: the program's own, or a subprogram's.
+  const LineStarts programLines(programText);
   const auto diagnostic = [&](Severity severity, const Error& e) {
-    std::string_view text = programText;
     for (const SourceText& source : program.sources)
-      if (!e.file.empty() && source.name == e.file) text = source.text;
-    return Diagnostic{severity, e.file.empty() ? fileName : e.file, e.line, e.column, e.message, lineOf(text, e.line)};
+      if (!e.file.empty() && source.name == e.file)
+        return Diagnostic{severity, e.file, e.line, e.column, e.message, lineOf(source.text, e.line)};
+    return Diagnostic{severity, fileName, e.line, e.column, e.message, programLines.lineOf(programText, e.line)};
   };
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.

@@ -93,7 +93,7 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
 
 interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
   return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
-          interp::lineOf(programText, line)};
+          programLines.lineOf(programText, line)};
 }
 
 std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
@@ -118,7 +118,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
 std::optional<Job> loadJob(const JobRequest& request) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
-  Job job{defaultSetup(), {}, {}, {}, {}};
+  Job job{defaultSetup(), {}, {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     print(loaded.diagnostics);
@@ -140,6 +140,7 @@ std::optional<Job> loadJob(const JobRequest& request) {
   text << in.rdbuf();
 
   job.programText = text.str();
+  job.programLines = interp::LineStarts(job.programText);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {

@@ -20,6 +20,7 @@ struct Job {
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   std::string programText;
+  interp::LineStarts programLines;  // of programText: a warning per block stays linear
 
   /// A warning located in the program, ready to print and report.
   interp::Diagnostic warningAt(int line, int column, std::string message) const;
