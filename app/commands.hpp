@@ -26,7 +26,7 @@ struct RunOptions {
   std::optional<std::filesystem::path> setup;
   std::filesystem::path out = "out";
   std::optional<double> voxelMm;
-  job::SetupOverrides overrides;  // --dialect, --control, --block-skip
+  job::SetupOverrides overrides;  // --dialect, --control, --block-skip, --max-steps
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
   std::vector<std::filesystem::path> programDirectories;  // --programs
   std::optional<std::string> stock;  // --stock D40xL80 (job/stock_option.hpp)

@@ -98,9 +98,10 @@ int main(int argc, char** argv) {
   }
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)")->check(CLI::ExistingFile);
 
-  // --dialect, --control and --block-skip on every command that reads a program.
+  // --dialect, --control, --block-skip, --max-steps and --max-moves on every command that reads a program.
   struct OverrideArguments {
     std::string dialect, control, blockSkip;
+    std::optional<long long> maxSteps;
     std::optional<std::size_t> maxMoves;
   };
   OverrideArguments runArgs, checkArgs, expandArgs;
@@ -115,6 +116,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember(presets));
     command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
         ->check(CLI::IsMember({"on", "off"}));
+    command->add_option("--max-steps", args->maxSteps,
+                        "blocks the program may run again before it is stopped as an endless loop (overrides "
+                        "[macro] max_steps)")
+        ->check(CLI::PositiveNumber);
     command->add_option("--max-moves", args->maxMoves,
                         "moves the program may make before it is refused (overrides [sim] max_moves; default " +
                             std::to_string(lathesim::interp::kDefaultMaxMoves) + ")")
@@ -141,6 +146,7 @@ int main(int argc, char** argv) {
     if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
     if (!args.control.empty()) overrides.controlPreset = args.control;
     if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
+    overrides.maxSteps = args.maxSteps;
     overrides.maxMoves = args.maxMoves;
     return overrides;
   };

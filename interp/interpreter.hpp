@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,6 +13,7 @@
 #include "interp/control/control_parameters.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
+#include "interp/execution/step_guard.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/execution/work_frame.hpp"
@@ -39,6 +41,10 @@ struct InterpreterOptions {
                                                          // lacks, in order (program_library.hpp)
   std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
                                   // reference point (or the start) if unset
+  long long maxSteps = kDefaultMaxSteps;  // blocks a run may run again (a block's first run is
+                                         // free): ends endless loops (execution/step_guard.hpp)
+  std::map<int, double> macroVariables;  // common macro variables set before the run
+                                         // (#100–#199, #500–#999)
   std::size_t maxMoves = kDefaultMaxMoves;  // more is an error at the block that passes it
 };
 

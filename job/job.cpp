@@ -45,8 +45,9 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
   Setup& setup = job.setup;
   std::vector<int> mounted;
   for (const interp::ProgramBlock& block : program.blocks) {
-    if (block.skipped || !block.parsed.ok() || !block.parsed.value().has('T')) continue;
-    const interp::Word t = block.parsed.value().words.at('T');
+    const interp::ParsedBlock* words = block.skipped ? nullptr : block.plainWords();
+    if (words == nullptr || !words->has('T')) continue;
+    const interp::Word t = words->words.at('T');
     const auto read = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line);
     if (!read.ok() || read.value().tool == 0) continue;  // the interpreter reports a bad T word
     const int number = read.value().tool;
@@ -86,6 +87,8 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.offsets = setup.offsets;
   options.workOffsets = setup.workOffsets;
   options.machineZero = setup.machineZero;
+  options.maxSteps = setup.macro.maxSteps;
+  options.macroVariables = setup.macro.variables;
   options.maxMoves = setup.maxMoves;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
@@ -112,6 +115,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
   if (overrides.maxMoves) setup.maxMoves = *overrides.maxMoves;
   if (overrides.blockSkip)
     (void)setup.control.set("block_skip", std::string(*overrides.blockSkip ? "on" : "off"), "command line");
+  if (overrides.maxSteps) setup.macro.maxSteps = *overrides.maxSteps;
   return setup;
 }
 

@@ -34,6 +34,7 @@ struct SetupOverrides {
   std::optional<interp::Dialect> dialect;    // --dialect: [machine] dialect
   std::optional<std::string> controlPreset;  // --control: the preset; the setup's [control] keys still apply
   std::optional<bool> blockSkip;             // --block-skip on|off: control.block_skip
+  std::optional<long long> maxSteps;         // --max-steps: [macro] max_steps
   std::optional<std::size_t> maxMoves;       // --max-moves: [sim] max_moves
 };
 
@@ -45,7 +46,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides);
 struct JobRequest {
   std::filesystem::path program;
   std::optional<std::filesystem::path> setup;
-  SetupOverrides overrides;  // --dialect, --control, --block-skip
+  SetupOverrides overrides;  // --dialect, --control, --block-skip, --max-steps
   std::vector<std::filesystem::path> programDirectories;  // --programs: subprograms the program
                                                           // lacks, looked for before its own directory
   std::optional<std::string> stock;  // --stock D40xL80: the bar, over the setup's and the program's

@@ -454,7 +454,8 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
 
   Setup setup = defaultSetup();
   setup.sourceName = fileName;
-  rejectUnknownKeys(root, "", {"stock", "machine", "control", "sim", "tool", "chuck", "offset", "work_offset"}, report);
+  rejectUnknownKeys(root, "", {"stock", "machine", "control", "sim", "tool", "chuck", "offset", "work_offset", "macro"},
+                    report);
   // [control] before [machine]: its preset is what machine.initial_feed_mode modifies.
   if (const auto* node = root.get("control")) {
     if (const auto* table = tableAt(*node, "control", report)) {
@@ -486,6 +487,11 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
     });
   }
 
+  if (const auto* node = root.get("macro")) {
+    readMacroSetup(*node, setup.macro, [&report](const toml::source_region& where, std::string message) {
+      report.at(where, std::move(message));
+    });
+  }
   if (const auto* node = root.get("work_offset")) {
     readWorkOffsets(*node, setup.workOffsets, [&report](const toml::source_region& where, std::string message) {
       report.at(where, std::move(message));

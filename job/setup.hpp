@@ -17,6 +17,7 @@
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/execution/work_frame.hpp"
+#include "job/macro_setup.hpp"
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
@@ -50,6 +51,7 @@ struct Setup {
   interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
   interp::WorkOffsets workOffsets = interp::zeroWorkOffsets();  // [[work_offset]]: G54–G59
   std::optional<RZ> machineZero;      // [machine] zero: G53's zero (radius, Z); unset: the reference point
+  MacroSetup macro;                   // [macro] (job/macro_setup.hpp): step limit, variables
 };
 
 /// The voxel size used when neither --voxel nor [sim] voxel says: the default part runs in

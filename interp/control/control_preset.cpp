@@ -1,7 +1,7 @@
 // The parameter and preset tables (see control_preset.hpp). References: the GSK980TDi manual,
 // chapter 3 (§) and its parameter list (No.), as lathe-cycles.md §10 cites them; Fanuc 0i-T
 // parameter numbers are from general knowledge of the control (B-64604EN was not at hand),
-// so every Fanuc entry is unverified.
+// so a Fanuc entry is unverified unless it names the Fanuc manual page that says so.
 
 #include "interp/control/control_preset.hpp"
 
@@ -163,8 +163,8 @@ const std::vector<PresetDefinition>& presetTable() {
       {"fanuc-0i-t",
        std::nullopt,
        {
-           {"rapid_positioning", "nonlinear", "Fanuc 1401#1 LRP = 0", false},
-           {"decimal_point_input", "increments", "Fanuc 3401#0 DPI = 0 (factory setting)", false},
+           {"rapid_positioning", "nonlinear", "Fanuc 1401#1 LRP = 0 (the bit: B-63944EN §4.1; its factory value assumed)", false},
+           {"decimal_point_input", "increments", "Fanuc 3401#0 DPI = 0 (DPI = 1 is calculator input, B-62764EN §5; its factory value assumed)", false},
            {"least_increment", 0.001, "Fanuc 1004#1 ISC = 0 (IS-B; IS-C is an option)", false},
            {"increment_words", "increments", "no parameter: always least increments", false},
            {"block_skip", "on", "BDT switch on the operator panel", false},
@@ -175,7 +175,7 @@ const std::vector<PresetDefinition>& presetTable() {
            {"g73_single_pass", "runs_once", "d = 1: one pass, at the allowance", false},
            {"arc_end_off_circle", "alarm", "Fanuc PS0020 beyond parameter 3410", false},
            {"arc_radius_tolerance", 0.01, "Fanuc 3410", false},
-           {"g28_tool_offset", "keep", "set by parameters", false},
+           {"g28_tool_offset", "keep", "0i-TC B-64114EN §14.1.6 (G28 does not cancel the offset vector)", true},
            {"absolute_and_incremental", "alarm", "X and U in one block alarm", false},
            {"drawing_angle_word", "A", "Fanuc 3405#4 CCR = 0 (A; ,A when 1)", false},
            {"corner_words", ",C/,R", "Fanuc chamfering and corner R", false},

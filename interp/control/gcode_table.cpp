@@ -36,7 +36,7 @@ constexpr std::array kGCodes{
     GCodeInfo{57, GGroup::WorkCoordinates, true, "work coordinate system 4"},
     GCodeInfo{58, GGroup::WorkCoordinates, true, "work coordinate system 5"},
     GCodeInfo{59, GGroup::WorkCoordinates, true, "work coordinate system 6"},
-    GCodeInfo{65, GGroup::NonModal, false, "macro call"},
+    GCodeInfo{65, GGroup::NonModal, true, "macro call"},
     GCodeInfo{70, GGroup::NonModal, true, "finishing cycle"},
     GCodeInfo{71, GGroup::NonModal, true, "OD/ID roughing cycle"},
     GCodeInfo{72, GGroup::NonModal, true, "face roughing cycle"},

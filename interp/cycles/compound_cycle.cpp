@@ -126,7 +126,7 @@ Result<ContourSpan> CompoundCycle::contourSpan() const {
                                              "run on its own",
                                              code_.text));
   }
-  return findContourBlocks(place_->program, place_->index, request);
+  return findContourBlocks(*place_, request, state_, options_);
 }
 
 // GSK (lathe-cycles.md §8): a G41/G42 in force before G70–G73 is suspended for the cycle and
@@ -140,7 +140,7 @@ ModalState CompoundCycle::contourStartState() const {
 // The contour G71–G73 rough against: the ns–nf path, offset by the nose radius when the
 // contour's blocks ask for G41/G42 (the cycle ends the compensation).
 Result<ExtractedContour> CompoundCycle::contour(ContourSpan span) const {
-  auto extracted = extractContour(place_->program, span, contourStartState(), options_);
+  auto extracted = extractContour(*place_, span, contourStartState(), options_);
   if (!extracted.ok()) return extracted.error();
   auto compensated = compensatedContour(extracted.value().contour, extracted.value().noseComps);
   if (!compensated.ok()) return compensated.error();
@@ -171,7 +171,7 @@ Status CompoundCycle::finishing() {
                                              code_.text, *ns.sequenceNumber, ns.line));
   }
   const RZ start = state_.position;
-  auto run = runContourBlocks(place_->program, span.value(), contourStartState(), options_);
+  auto run = runContourBlocks(*place_, span.value(), contourStartState(), options_);
   if (!run.ok()) return run.error();
   const NoseSide before = state_.noseSide;
   state_ = std::move(run.value().state);

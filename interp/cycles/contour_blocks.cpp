@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "interp/execution/sorted_words.hpp"
 #include "interp/motion/corners.hpp"
-
 #include "interp/text/label_number.hpp"
 
 namespace lathesim::interp {
@@ -89,15 +89,17 @@ Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
 
 // A block that holds its N number and nothing else.
 bool isLabelOnly(const ProgramBlock& block) {
-  if (!block.parsed.ok()) return false;
-  const ParsedBlock& parsed = block.parsed.value();
-  return parsed.gCodes.empty() && parsed.mCodes.empty() && parsed.words.size() == 1 && parsed.has('N');
+  const ParsedBlock* parsed = block.plainWords();
+  return parsed != nullptr && parsed->gCodes.empty() && parsed->mCodes.empty() && parsed->words.size() == 1 &&
+         parsed->has('N');
 }
 
 }  // namespace
 
-Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleIndex,
-                                      const ContourRequest& request) {
+Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequest& request,
+                                      const ModalState& state, const InterpreterOptions& options) {
+  const Program& program = cycle.program;
+  const std::size_t cycleIndex = cycle.index;
   if (!request.p || !request.q) {
     return Error{request.line, request.column,
                  fmt::format("{} needs P(ns) and Q(nf), the N numbers of the contour's first "
@@ -125,14 +127,21 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
     const ProgramBlock& block = program.blocks[i];
     if (block.skipped) continue;
     ++count;
-    if (!block.parsed.ok()) return block.parsed.error();
+    if (const auto* macroBlock = block.macroBlock(); macroBlock != nullptr && macroBlock->statement) {
+      return Error{block.line, block.column,
+                   fmt::format("a macro statement is not allowed in the contour of {} ({}): only blocks of "
+                               "G00–G03, G04, G96/G97, G98/G99 and G40–G42",
+                               request.cycle, name)};
+    }
+    auto words = sortedWords(block, cycle.variables, state, options);
+    if (!words.ok()) return words.error();
     if (block.sequenceNumber && !numbers.insert(*block.sequenceNumber).second) {
       return Error{block.line, block.column,
                    fmt::format("N{} appears twice in the contour of {} ({}); give each block "
                                "its own N number",
                                *block.sequenceNumber, request.cycle, name)};
     }
-    auto status = checkContourBlock(block.parsed.value(), i == span.start, request.cycle, name);
+    auto status = checkContourBlock(words.value(), i == span.start, request.cycle, name);
     if (!status.ok()) return status.error();
   }
   if (count > kMaxContourBlocks) {
@@ -143,13 +152,15 @@ Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleI
   return span;
 }
 
-Result<BlockOutcome> runContourBlocks(const Program& program, ContourSpan span,
+Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
                                       ModalState state, const InterpreterOptions& options) {
   BlockOutcome outcome;
   for (std::size_t i = span.first; i <= span.last; ++i) {
-    const ProgramBlock& block = program.blocks[i];
+    const ProgramBlock& block = cycle.program.blocks[i];
     if (block.skipped) continue;
-    auto done = executeBlock(block.parsed.value(), std::move(state), options, block.ordinal);
+    auto words = sortedWords(block, cycle.variables, state, options);
+    if (!words.ok()) return words.error();
+    auto done = executeBlock(words.value(), std::move(state), options, block.ordinal);
     if (!done.ok()) return done.error();
     state = std::move(done.value().state);
     const auto& moves = done.value().moves;
@@ -161,15 +172,17 @@ Result<BlockOutcome> runContourBlocks(const Program& program, ContourSpan span,
   return outcome;
 }
 
-Result<ExtractedContour> extractContour(const Program& program, ContourSpan span,
+Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan span,
                                         const ModalState& state,
                                         const InterpreterOptions& options) {
-  auto run = runContourBlocks(program, span, state, options);
+  auto run = runContourBlocks(cycle, span, state, options);
   if (!run.ok()) return run.error();
   std::vector<Error> cornerWarnings;  // G70 gives them, when it runs the same blocks
   if (auto corners = insertCorners(run.value().moves, cornerWarnings); !corners.ok()) return corners.error();
-  const ProgramBlock& first = program.blocks[span.start];
-  const ParsedBlock& firstParsed = first.parsed.value();
+  const ProgramBlock& first = cycle.program.blocks[span.start];
+  auto firstWords = sortedWords(first, cycle.variables, state, options);
+  if (!firstWords.ok()) return firstWords.error();
+  const ParsedBlock& firstParsed = firstWords.value();
   ExtractedContour extracted;
   extracted.firstBlockRapid = firstParsed.gCode(GGroup::Motion)->number == 0;
   extracted.firstBlockHasX = firstParsed.has('X') || firstParsed.has('U');

@@ -40,9 +40,11 @@ struct ContourRequest {
   int column = 0;          // of the cycle's code
 };
 
-/// Finds and checks the contour of the cycle in block `cycleIndex`.
-Result<ContourSpan> findContourBlocks(const Program& program, std::size_t cycleIndex,
-                                      const ContourRequest& request);
+/// Finds and checks the contour of the cycle in block `cycle.index`. Macro blocks among them
+/// are read with the variables as they are now, under `state` (for G20) and the options'
+/// dialect; a macro statement in the contour is an error.
+Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequest& request,
+                                      const ModalState& state, const InterpreterOptions& options);
 
 /// The contour as G71–G73 see it, run from `state.position` (A) on a copy of the state.
 struct ExtractedContour {
@@ -56,13 +58,13 @@ struct ExtractedContour {
 
 /// Runs the span's blocks through the block executor from `state`; their moves, dwells left
 /// out, become the contour, each segment located at its block. Nothing of the state is kept.
-Result<ExtractedContour> extractContour(const Program& program, ContourSpan span,
+Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan span,
                                         const ModalState& state,
                                         const InterpreterOptions& options);
 
 /// G70: runs the span's blocks as written from `state`. The moves carry their own blocks'
 /// lines; the state is the one after the last block.
-Result<BlockOutcome> runContourBlocks(const Program& program, ContourSpan span,
+Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
                                       ModalState state, const InterpreterOptions& options);
 
 }  // namespace lathesim::interp

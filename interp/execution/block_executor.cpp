@@ -278,8 +278,9 @@ Status Executor::applyTool() {
     std::vector<std::string> seen;  // the program's T words, each once, where first written
     std::string used;
     for (const ProgramBlock& b : place_->program.blocks) {
-      if (b.skipped || !b.parsed.ok() || !b.parsed.value().has('T')) continue;
-      const std::string text = b.parsed.value().words.at('T').text();
+      const ParsedBlock* words = b.skipped ? nullptr : b.plainWords();
+      if (words == nullptr || !words->has('T')) continue;
+      const std::string text = words->words.at('T').text();
       if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
       seen.push_back(text);
       used += fmt::format("{}{} (line {})", used.empty() ? "" : ", ", text, b.line);
@@ -375,7 +376,16 @@ Status Executor::applyReferenceReturn(const Code& code) {
   // Under G41/G42 the compensation is suspended at the intermediate point (lathe-cycles.md §10):
   // the legs are no part of the chain, which ends with the move before them and resumes with a
   // start-up after them.
+  const std::size_t first = moves_.size();
   emitLegs(legs);
+  // The reference point is a position of the machine: the axes that return reach it without the
+  // tool offset (GSK980TDi §3.15 note 4; Fanuc 0i-TC B-64114EN §14.1.6, the vector is not
+  // reflected in the G28 block), while the intermediate point is a programmed one and keeps it.
+  for (std::size_t i = first; i < moves_.size(); ++i) {
+    if (moves_[i].cycleStep != 2) continue;
+    if (radiusMm) moves_[i].offsetShift.x() = 0;
+    if (zMm) moves_[i].offsetShift.y() = 0;
+  }
   if (!legs.empty()) state_.position = legs.back().to;
   // GSK No.182#2: arrived at the reference, the control forgets the tool offset until a T word.
   if (options_.control.offsetAfterReturn == OffsetAfterReturn::Cancelled) {

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "interp/macro/variables.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/execution/modal_state.hpp"
@@ -28,6 +29,8 @@ struct BlockOutcome {
 struct BlockPlace {
   const Program& program;
   std::size_t index;  // into program.blocks
+  const macro::VariableStore* variables = nullptr;  // the macro variables, for contour blocks
+                                                    // whose words are expressions
 };
 
 /// Runs `block` from `state`. `ordinal` is the block's 0-based number among the blocks read.

@@ -1,5 +1,6 @@
 #include "interp/execution/call_stack.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include <fmt/format.h>
@@ -11,49 +12,78 @@ std::string programName(int number) { return fmt::format("O{:04}", number); }
 
 }  // namespace
 
-Result<std::size_t> CallStack::call(const SubprogramCall& call, std::size_t index) {
-  const int line = program_.blocks[index].line;
-  const auto start = program_.programStart.find(call.programNumber);
+Result<std::size_t> CallStack::programStart(int programNumber, const char* code, int column,
+                                            std::size_t index) const {
+  const auto start = program_.programStart.find(programNumber);
   if (start == program_.programStart.end()) {
-    return Error{line, call.column,
-                 fmt::format("M98 calls {} but the program has no block O{}: a subprogram "
-                             "starts with its O number and ends with M99",
-                             programName(call.programNumber), call.programNumber)};
+    return Error{program_.blocks[index].line, column,
+                 fmt::format("{} calls {} but the program has no block O{}: a {} starts with its O "
+                             "number and ends with M99",
+                             code, programName(programNumber), programNumber,
+                             std::string(code) == "G65" ? "macro" : "subprogram")};
   }
-  // The chain of programs running: the main program's own O number if it has one, then
-  // every subprogram called.
-  std::vector<int> chain;
-  if (const auto main = program_.programNumberOf(0)) chain.push_back(*main);
-  for (const Frame& frame : frames_) chain.push_back(frame.programNumber);
-  bool recursive = false;
-  std::string shown;
-  for (int number : chain) {
-    recursive = recursive || number == call.programNumber;
-    shown += programName(number) + " → ";
-  }
-  if (recursive) {
-    return Error{line, call.column,
-                 fmt::format("M98 calls {} while it is already running ({}{}): a subprogram "
-                             "may not call itself, directly or through others",
-                             programName(call.programNumber), shown,
-                             programName(call.programNumber))};
-  }
-  if (static_cast<int>(frames_.size()) >= kMaxSubprogramNesting) {
-    return Error{line, call.column,
-                 fmt::format("M98 calls {} from {} levels of subprograms ({}{}): the control "
-                             "nests at most {} levels",
-                             programName(call.programNumber), frames_.size(), shown,
-                             programName(call.programNumber), kMaxSubprogramNesting)};
-  }
-  frames_.push_back({call.programNumber, start->second, index, call.column, call.repeats - 1});
   return start->second;
 }
 
-Result<std::size_t> CallStack::giveBack(const SubprogramReturn& giveBack, std::size_t index) {
+std::string CallStack::chainTo(int programNumber) const {
+  std::string shown;
+  if (const auto main = program_.programNumberOf(0)) shown += programName(*main) + " → ";
+  for (const Frame& frame : frames_) shown += programName(frame.programNumber) + " → ";
+  return shown + programName(programNumber);
+}
+
+int CallStack::framesOfKind(bool macro) const {
+  return static_cast<int>(std::count_if(frames_.begin(), frames_.end(),
+                                        [macro](const Frame& frame) { return frame.macro == macro; }));
+}
+
+Result<std::size_t> CallStack::call(const SubprogramCall& call, std::size_t index) {
+  const int line = program_.blocks[index].line;
+  auto start = programStart(call.programNumber, "M98", call.column, index);
+  if (!start.ok()) return start;
+  // The chain of programs running: the main program's own O number if it has one, then
+  // every subprogram and macro called.
+  bool recursive = program_.programNumberOf(0) == call.programNumber;
+  for (const Frame& frame : frames_) recursive = recursive || frame.programNumber == call.programNumber;
+  if (recursive) {
+    return Error{line, call.column,
+                 fmt::format("M98 calls {} while it is already running ({}): a subprogram "
+                             "may not call itself, directly or through others",
+                             programName(call.programNumber), chainTo(call.programNumber))};
+  }
+  const int levels = framesOfKind(false);
+  if (levels >= kMaxSubprogramNesting) {
+    return Error{line, call.column,
+                 fmt::format("M98 calls {} from {} levels of subprograms ({}): the control "
+                             "nests at most {} levels",
+                             programName(call.programNumber), levels, chainTo(call.programNumber),
+                             kMaxSubprogramNesting)};
+  }
+  frames_.push_back({call.programNumber, false, start.value(), index, call.column, call.repeats - 1});
+  return start;
+}
+
+Result<std::size_t> CallStack::callMacro(const macro::MacroCall& call, std::size_t index) {
+  auto start = programStart(call.programNumber, "G65", call.column, index);
+  if (!start.ok()) return start;
+  // A macro may call itself (Fanuc allows it); the nesting limit bounds the recursion.
+  const int levels = framesOfKind(true);
+  if (levels >= kMaxMacroNesting) {
+    return Error{program_.blocks[index].line, call.column,
+                 fmt::format("G65 calls {} from {} levels of macro calls ({}): the control nests at most {} "
+                             "(local variable levels 0–{})",
+                             programName(call.programNumber), levels, chainTo(call.programNumber),
+                             kMaxMacroNesting, kMaxMacroNesting)};
+  }
+  frames_.push_back({call.programNumber, true, start.value(), index, call.column, call.repeats - 1});
+  return start;
+}
+
+Result<CallReturn> CallStack::giveBack(const SubprogramReturn& giveBack, std::size_t index) {
   Frame& frame = frames_.back();
   if (frame.repeatsLeft > 0) {
     --frame.repeatsLeft;
-    return frame.start;
+    return CallReturn{frame.start, true, false, frame.callFrom, frame.column};
   }
   std::size_t next = frame.callFrom + 1;
   if (giveBack.sequence) {
@@ -65,8 +95,9 @@ Result<std::size_t> CallStack::giveBack(const SubprogramReturn& giveBack, std::s
     }
     next = found.front();
   }
+  const CallReturn back{next, false, frame.macro, frame.callFrom, frame.column};
   frames_.pop_back();
-  return next;
+  return back;
 }
 
 std::optional<Error> CallStack::unfinished() const {

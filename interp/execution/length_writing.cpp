@@ -5,8 +5,9 @@
 namespace lathesim::interp {
 
 void LengthWriting::note(const Word& word, int line, int block) {
-  // Zero reads the same under both: X0 is no evidence either way.
-  if (word.value == 0) return;
+  // Zero reads the same under both: X0 is no evidence either way; nor is a value a macro
+  // expression gave (X#1), which is a length under both.
+  if (word.value == 0 || word.evaluated) return;
   if (block != block_) {
     block_ = block;
     blockBare_.reset();

@@ -16,7 +16,7 @@ namespace lathesim::interp {
 class LengthWriting {
  public:
   /// Notes a length word of the block with ordinal `block` at `line` (zero, the same either way,
-  /// is not noted).
+  /// and a value a macro expression gave are not noted).
   void note(const Word& word, int line, int block);
 
   /// One warning for a program that mixes the two forms, at a length written without a point

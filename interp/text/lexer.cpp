@@ -1,8 +1,10 @@
 #include "interp/text/lexer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
+#include <optional>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -56,7 +58,8 @@ bool readsAsProse(std::string_view tail) {
   return true;
 }
 
-// The address letters of lathe G-code (system A). Others are unknown letters.
+// The address letters of lathe G-code (system A). Others are unknown letters, except in a
+// G65 block, where every letter but G L N O P passes an argument.
 // B and C are read as words so that a code taking them (G10's C) can; left over, they are
 // refused as the axes this lathe lacks (block_executor.cpp). A is a direct drawing
 // dimension's angle, D the GSK's corner radius.
@@ -91,6 +94,80 @@ double readNumber(std::string_view number) {
   double value = 0.0;
   std::from_chars(number.data(), number.data() + number.size(), value);
   return value;
+}
+
+// The words of Fanuc Custom Macro B. A run of letters that is one of these is a name, never
+// address letters: GOTO is not G with no number (the controls read them the same way, and
+// spaces inside a block are insignificant there too).
+constexpr std::array<std::string_view, 33> kMacroNames{
+    "IF",  "GOTO", "THEN", "WHILE", "DO",  "END",                                // statements
+    "SIN", "COS",  "TAN",  "ASIN",  "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX",  // functions
+    "FUP", "LN",   "EXP",  "POW",   "BIN", "BCD",  "ADP",
+    "EQ",  "NE",   "GT",   "GE",    "LT",  "LE",                                 // comparisons
+    "AND", "OR",   "XOR",  "MOD"};                                               // operators
+
+bool isLetter(const SourceChar& c) { return c.text.size() == 1 && isAsciiLetter(c.text[0]); }
+bool isDigit(const SourceChar& c) { return c.text.size() == 1 && isAsciiDigit(c.text[0]); }
+bool is(const SourceChar& c, char expected) { return c.text.size() == 1 && c.text[0] == expected; }
+
+std::string upperCase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// The characters of a letter's number: from `from` while they are digits, '.', '+' or '-'.
+std::string numberAt(const std::vector<SourceChar>& chars, std::size_t from, std::size_t& end) {
+  std::string number;
+  end = from;
+  while (end < chars.size() && isNumberChar(chars[end].text)) number += chars[end++].text;
+  return number;
+}
+
+// Whether the block holds the word G65 written as a plain number (G65, g065).
+bool holdsMacroCall(const std::vector<SourceChar>& chars) {
+  for (std::size_t i = 0; i < chars.size(); ++i) {
+    if (!isLetter(chars[i]) || std::toupper(static_cast<unsigned char>(chars[i].text[0])) != 'G') continue;
+    std::size_t end = 0;
+    const std::string number = numberAt(chars, i + 1, end);
+    if (isWellFormedNumber(number) && readNumber(number) == 65.0) return true;
+  }
+  return false;
+}
+
+// Why `letter` (upper case) cannot start a word here, if it cannot.
+std::optional<std::string> letterProblem(char letter, const std::string& written, bool macroCall) {
+  if (macroCall) return std::nullopt;  // G65's arguments: A–Z (G L N O P are its own words)
+  if (letter == 'Y') return std::string("Y: this machine has no Y axis; a lathe moves in X (diameter) and Z only");
+  if (kKnownLetters.find(letter) == std::string_view::npos) {
+    return fmt::format("unknown letter '{}': lathe G-code words start with one of {}", written, kKnownLetters);
+  }
+  return std::nullopt;
+}
+
+Token makeToken(TokenKind kind, int column, std::string text, double value = 0.0, Word word = {}) {
+  Token token;
+  token.kind = kind;
+  token.column = column;
+  token.word = std::move(word);
+  token.text = std::move(text);
+  token.value = value;
+  return token;
+}
+
+std::optional<TokenKind> punctuation(const SourceChar& c) {
+  if (c.text.size() != 1) return std::nullopt;
+  switch (c.text[0]) {
+    case '#': return TokenKind::Hash;
+    case '[': return TokenKind::Open;
+    case ']': return TokenKind::Close;
+    case '=': return TokenKind::Equals;
+    case '+': return TokenKind::Plus;
+    case '-': return TokenKind::Minus;
+    case '*': return TokenKind::Times;
+    case '/': return TokenKind::Divide;
+    case ',': return TokenKind::Comma;
+    default: return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -212,6 +289,8 @@ Result<std::optional<RawBlock>> BlockReader::next() {
     RawBlock block;
     block.line = line_;
     bool started = false;
+    int bracketDepth = 0;    // inside a Macro B expression's [ ]
+    bool assigning = false;  // past the '=' of a Macro B assignment
     std::vector<std::string> comments;
     while (at_ < text_.size() && text_[at_] != '\n' && text_[at_] != ';') {
       const char c = text_[at_];
@@ -243,10 +322,12 @@ Result<std::optional<RawBlock>> BlockReader::next() {
       const std::size_t length = codePointLength(text_, at_);
       if (!started && c == '/') {
         block.deleted = true;
-      } else if (c == '/' && !block.skipFrom) {
+      } else if (c == '/' && bracketDepth == 0 && !assigning && !block.skipFrom) {
         block.skipFrom = block.chars.size();
       } else {
         block.chars.push_back({std::string(text_.substr(at_, length)), column_});
+        bracketDepth += c == '[' ? 1 : c == ']' && bracketDepth > 0 ? -1 : 0;
+        assigning = assigning || c == '=';
       }
       if (!started) block.column = column_;
       started = true;
@@ -371,16 +452,19 @@ std::optional<Error> letterOForZero(const RawBlock& block, std::size_t at, char 
 
 }  // namespace
 
-Result<std::vector<Word>> tokenize(const RawBlock& block) {
+Result<std::vector<Token>> lexBlock(const RawBlock& block) {
   if (auto strange = strangeCharacter(block)) return *strange;
   if (auto paren = strayClosingParenthesis(block)) return *paren;
-  std::vector<Word> words;
+  std::vector<Token> tokens;
   const auto& chars = block.chars;
+  const bool macroCall = holdsMacroCall(chars);
   std::size_t i = 0;
+  int bracketDepth = 0;
   while (i < chars.size()) {
-    // ",A" and its kin: the comma and the letter make one address.
-    const bool comma = chars[i].text == "," && i + 1 < chars.size() && chars[i + 1].text.size() == 1 &&
-                       std::isalpha(static_cast<unsigned char>(chars[i + 1].text[0]));
+    // ",A" and its kin: the comma and the letter make one address. Inside a macro expression's
+    // [ ] a comma parts a function's arguments (ATAN[#1,SIN[#2]]).
+    const bool comma = bracketDepth == 0 && chars[i].text == "," && i + 1 < chars.size() &&
+                       chars[i + 1].text.size() == 1 && std::isalpha(static_cast<unsigned char>(chars[i + 1].text[0]));
     const int commaColumn = chars[i].column;
     if (comma) {
       const char after = static_cast<char>(std::toupper(static_cast<unsigned char>(chars[i + 1].text[0])));
@@ -393,46 +477,89 @@ Result<std::vector<Word>> tokenize(const RawBlock& block) {
       ++i;
     }
     const SourceChar& head = chars[i];
-    const unsigned char byte = static_cast<unsigned char>(head.text[0]);
     // ':' is the ISO tape's program number address, the same as O (`:0100` is O0100).
     const bool colon = head.text == ":";
-    if (!colon && (head.text.size() != 1 || !std::isalpha(byte))) {
-      return Error{block.line, head.column,
-                   fmt::format("unexpected character '{}': expected a word, a letter followed by "
-                               "a number such as X20",
-                               head.text)};
+    if (isLetter(head) || colon) {
+      std::size_t runEnd = i;
+      std::string run;
+      while (!colon && runEnd < chars.size() && isLetter(chars[runEnd])) run += chars[runEnd++].text;
+      run = upperCase(run);
+      if (run.size() > 1 && std::find(kMacroNames.begin(), kMacroNames.end(), run) != kMacroNames.end()) {
+        tokens.push_back(makeToken(TokenKind::Name, head.column, run));
+        i = runEnd;
+        continue;
+      }
+      const char letter = colon ? 'O' : run[0];
+      if (auto problem = letterProblem(letter, head.text, macroCall || colon)) {
+        return Error{block.line, head.column, *problem};
+      }
+      Word word;
+      word.letter = comma ? static_cast<char>(std::tolower(static_cast<unsigned char>(letter))) : letter;
+      word.column = comma ? commaColumn : head.column;
+      // X#1, X[#1+2], X-#1, X-[…]: the value is an expression that follows.
+      const std::size_t next = i + 1;
+      const bool sign = next < chars.size() && (is(chars[next], '-') || is(chars[next], '+'));
+      const std::size_t valueAt = sign ? next + 1 : next;
+      if (valueAt < chars.size() && (is(chars[valueAt], '#') || is(chars[valueAt], '['))) {
+        tokens.push_back(makeToken(TokenKind::Address, word.column, word.text(), 0.0, word));
+        i = next;
+        continue;
+      }
+      std::size_t end = 0;
+      word.number = numberAt(chars, next, end);
+      if (letter != 'O') {
+        if (auto zero = letterOForZero(block, end, letter, word.number)) return *zero;
+      }
+      if (word.number.empty()) {
+        return Error{block.line, head.column,
+                     fmt::format("{} has no number: expected a value after it, such as {}20", letter, letter)};
+      }
+      if (!isWellFormedNumber(word.number)) {
+        return Error{block.line, head.column,
+                     fmt::format("malformed number in {}{}: expected an optional sign, then digits "
+                                 "with at most one decimal point",
+                                 letter, word.number)};
+      }
+      word.value = readNumber(word.number);
+      tokens.push_back(makeToken(TokenKind::Word, word.column, word.text(), word.value, word));
+      i = end;
+      continue;
     }
-    const char letter = colon ? 'O' : static_cast<char>(std::toupper(byte));
-    if (letter == 'Y') {
-      return Error{block.line, head.column,
-                   "Y: this machine has no Y axis; a lathe moves in X (diameter) and Z only"};
+    if (isDigit(head) || is(head, '.')) {  // a number of a macro expression: no sign of its own
+      std::string number;
+      std::size_t end = i;
+      while (end < chars.size() && (isDigit(chars[end]) || is(chars[end], '.'))) number += chars[end++].text;
+      if (!isWellFormedNumber(number)) {
+        return Error{block.line, head.column,
+                     fmt::format("malformed number {}: expected digits with at most one decimal point", number)};
+      }
+      tokens.push_back(makeToken(TokenKind::Number, head.column, number, readNumber(number)));
+      i = end;
+      continue;
     }
-    if (kKnownLetters.find(letter) == std::string_view::npos) {
-      return Error{block.line, head.column,
-                   fmt::format("unknown letter '{}': lathe G-code words start with one of {}",
-                               head.text, kKnownLetters)};
+    if (const auto kind = punctuation(head)) {
+      bracketDepth += *kind == TokenKind::Open ? 1 : *kind == TokenKind::Close ? -1 : 0;
+      tokens.push_back(makeToken(*kind, head.column, head.text));
+      ++i;
+      continue;
     }
-    std::string number;
-    std::size_t end = i + 1;
-    while (end < chars.size() && isNumberChar(chars[end].text)) number += chars[end++].text;
-    if (letter != 'O') {
-      if (auto zero = letterOForZero(block, end, letter, number)) return *zero;
+    return Error{block.line, head.column,
+                 fmt::format("unexpected character '{}': expected a word, a letter followed by a number such as X20",
+                             head.text)};
+  }
+  return tokens;
+}
+
+Result<std::vector<Word>> tokenize(const RawBlock& block) {
+  auto tokens = lexBlock(block);
+  if (!tokens.ok()) return tokens.error();
+  std::vector<Word> words;
+  for (const Token& token : tokens.value()) {
+    if (token.kind != TokenKind::Word) {
+      return Error{block.line, token.column,
+                   fmt::format("unexpected '{}': expected a word, a letter followed by a number such as X20", token.text)};
     }
-    if (number.empty()) {
-      return Error{block.line, head.column,
-                   fmt::format("{} has no number: expected a value after it, such as {}20",
-                               letter, letter)};
-    }
-    if (!isWellFormedNumber(number)) {
-      return Error{block.line, head.column,
-                   fmt::format("malformed number in {}{}: expected an optional sign, then digits "
-                               "with at most one decimal point",
-                               letter, number)};
-    }
-    if (comma) words.push_back({static_cast<char>(std::tolower(static_cast<unsigned char>(letter))), number,
-                                readNumber(number), commaColumn});
-    else words.push_back({letter, number, readNumber(number), head.column});
-    i = end;
+    words.push_back(token.word);
   }
   return words;
 }

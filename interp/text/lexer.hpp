@@ -1,9 +1,12 @@
 #pragma once
-// Source text → blocks of words, each located by line and column (columns count UTF-8
+// Source text → blocks of tokens, each located by line and column (columns count UTF-8
 // code points). Two stages, so a deleted block is skipped without being tokenized:
-//   BlockReader::next()  splits the text at ';' and newlines, drops spaces, tabs,
-//                        ( ... ) comments and '%' lines, and notes a leading '/';
-//   tokenize()           turns a block's remaining characters into words like X20.0.
+//   BlockReader::next()  splits the text at ';' and newlines, drops spaces, tabs and '%'
+//                        lines, keeps ( ... ) comments aside, and notes a leading '/';
+//   lexBlock()           turns a block's remaining characters into tokens: words like X20.0,
+//                        and the pieces of Fanuc Custom Macro B (# [ ] = + - * / , numbers,
+//                        and names such as SIN, GT, WHILE); tokenize() is the same for a
+//                        block of plain words only.
 // The lexer knows nothing of modal state.
 //
 // Text as shops and DNC links send it:
@@ -23,7 +26,9 @@
 //     opens with '['.
 //   - A '%' line before the first block opens the program; one after it closes it: the text
 //     ends there (what follows is not run, and the interpreter says so).
-//   - A '/' inside a block marks where the optional block skip drops the rest of it (Fanuc ⚠).
+//   - A '/' inside a block marks where the optional block skip drops the rest of it (Fanuc ⚠),
+//     but within a Macro B expression's [ ] or right of an assignment's '=' it divides
+//     (`X[#1/2]`, `#1=#2/2`), as the Fanuc macro manual has it for a '/' in an expression.
 
 #include <optional>
 #include <utility>
@@ -48,6 +53,7 @@ struct RawBlock {
   bool deleted = false;  // it started with '/' (block delete)
   std::vector<SourceChar> chars;  // everything after the '/', spaces and comments removed
   std::vector<std::string> comments;       // its ( … ) comments and a prose tail after its ';'
+                                           // (#3000's alarm message is the first)
   std::vector<std::string> commentsAbove;  // comment-only lines directly above it
   std::optional<std::size_t> skipFrom;     // a '/' inside the block: the index into chars where
                                            // the words it skips start
@@ -72,13 +78,42 @@ struct ReadNote {
 /// have the letter in lower case ('a'), so that they never meet the plain letter's word.
 struct Word {
   char letter = 0;     // upper case; lower case for a comma word
-  std::string number;  // as written without spaces, e.g. "-5.5", ".5", "0101"
+  std::string number;  // as written without spaces, e.g. "-5.5", ".5", "0101"; for a value a
+                       // macro expression gave, as the control reads it (macro/block_words.hpp)
   double value = 0.0;  // the number as read, in the program's units
   int column = 0;      // column of the letter (of the comma for a comma word)
+  bool evaluated = false;  // the value came from a macro expression (X#1, X[#1+2]): Fanuc reads
+                           // it as a real number, as if written with a decimal point
   std::string text() const {
     const bool comma = letter >= 'a' && letter <= 'z';
     return (comma ? std::string(",") + static_cast<char>(letter - 'a' + 'A') : std::string(1, letter)) + number;
   }
+};
+
+/// What a token of a block is. A plain G-code block is all Words; the rest belong to
+/// Fanuc Custom Macro B.
+enum class TokenKind {
+  Word,     // a letter and its number, X20.0
+  Address,  // a letter whose value follows as a macro expression: the X of X#1, X-#1, X[#1+2]
+  Name,     // a macro keyword, function or operator: IF GOTO THEN WHILE DO END, SIN …, EQ …, AND …
+  Number,   // a number inside a macro expression or statement: the 1 of #1, the 2.5 of #1=2.5
+  Hash,     // #
+  Open,     // [
+  Close,    // ]
+  Equals,   // =
+  Plus,     // +
+  Minus,    // -
+  Times,    // *
+  Divide,   // /
+  Comma,    // , (POW[a,b], ATAN[a,b])
+};
+
+struct Token {
+  TokenKind kind = TokenKind::Word;
+  int column = 0;
+  Word word;         // Word: the word; Address: the letter (word.letter) alone
+  std::string text;  // as written: the upper-cased name, the number's digits, the character
+  double value = 0.0;  // Number: its value
 };
 
 /// Splits program text into blocks, one at a time, so nothing after M30 is ever read.
@@ -124,8 +159,14 @@ class BlockReader {
   std::vector<ReadNote> directives_;  // each '[' line skipped
 };
 
-/// The words of a block. Fails on an unexpected character, an unknown letter, a letter
-/// with no number, or a malformed number such as "20.3.".
+/// The tokens of a block. Fails on an unexpected character, an unknown letter, a letter with
+/// no number, or a malformed number such as "20.3.". A block holding G65 (a macro call) may
+/// use every letter but G L N O P as an argument (A, B, Y …); others only the letters of lathe
+/// G-code.
+Result<std::vector<Token>> lexBlock(const RawBlock& block);
+
+/// The words of a block of plain words; fails like lexBlock, and at the first token that is
+/// not a word.
 Result<std::vector<Word>> tokenize(const RawBlock& block);
 
 }  // namespace lathesim::interp

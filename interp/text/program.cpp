@@ -4,28 +4,42 @@
 
 #include <fmt/format.h>
 
+#include "interp/macro/block_syntax.hpp"
 #include "interp/text/label_number.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-const Word* wordOf(const std::vector<Word>& words, char letter) {
-  for (const Word& word : words)
-    if (word.letter == letter) return &word;
+const Word* wordOf(const std::vector<Token>& tokens, char letter) {
+  for (const Token& token : tokens)
+    if (token.kind == TokenKind::Word && token.word.letter == letter) return &token.word;
   return nullptr;
 }
 
 // The block's N or O number; an error for one too long or not a number (the block then
 // carries it, reported if the block runs).
-Status readLabel(const std::vector<Word>& words, char letter, int line, std::optional<int>& number) {
-  const Word* word = wordOf(words, letter);
+Status readLabel(const std::vector<Token>& tokens, char letter, int line, std::optional<int>& number) {
+  const Word* word = wordOf(tokens, letter);
   if (word == nullptr) return success();
   auto read = letter == 'N' ? labelNumberOf(*word, line, kMaxSequenceDigits, "a sequence number")
                             : labelNumberOf(*word, line, kMaxProgramDigits, "a program number");
   if (!read.ok()) return read.error();
   number = read.value();
   return success();
+}
+
+Result<BlockContent> contentOf(const std::vector<Token>& tokens, const RawBlock& raw, Dialect dialect) {
+  if (macro::needsMacroReader(tokens)) {
+    auto macroBlock = macro::readMacroBlock(tokens, raw);
+    if (!macroBlock.ok()) return macroBlock.error();
+    return BlockContent{std::make_shared<const macro::MacroBlock>(std::move(macroBlock).value())};
+  }
+  std::vector<Word> words;
+  for (const Token& token : tokens) words.push_back(token.word);
+  auto parsed = parseBlock(words, raw.line, raw.column, dialect);
+  if (!parsed.ok()) return parsed.error();
+  return BlockContent{std::move(parsed).value()};
 }
 
 }  // namespace
@@ -60,7 +74,7 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
     if (!next.ok()) {  // an unclosed comment: nothing after it can be split into blocks
       block.line = next.error().line;
       block.column = next.error().column;
-      block.parsed = next.error();
+      block.content = next.error();
       program.programOf.push_back(currentProgram);
       program.blocks.push_back(std::move(block));
       break;
@@ -75,15 +89,15 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
     block.commentsAbove = raw.commentsAbove;
     block.skipped = raw.deleted && blockDelete;
     if (!block.skipped) {
-      auto words = tokenize(raw);
-      if (words.ok()) {
-        const Status sequence = readLabel(words.value(), 'N', raw.line, block.sequenceNumber);
-        const Status number = readLabel(words.value(), 'O', raw.line, block.programNumber);
-        block.parsed = !sequence.ok() ? Result<ParsedBlock>(sequence.error())
-                       : !number.ok() ? Result<ParsedBlock>(number.error())
-                                      : parseBlock(words.value(), raw.line, raw.column, dialect);
+      auto tokens = lexBlock(raw);
+      if (tokens.ok()) {
+        const Status sequence = readLabel(tokens.value(), 'N', raw.line, block.sequenceNumber);
+        const Status number = readLabel(tokens.value(), 'O', raw.line, block.programNumber);
+        block.content = !sequence.ok() ? Result<BlockContent>(sequence.error())
+                        : !number.ok() ? Result<BlockContent>(number.error())
+                                       : contentOf(tokens.value(), raw, dialect);
       } else {
-        block.parsed = words.error();
+        block.content = tokens.error();
       }
     }
     const std::size_t index = program.blocks.size();

@@ -1,21 +1,31 @@
 #pragma once
 // The whole program text read into blocks before any runs, so that execution can jump:
-// M98 to an O number, G70–G73 to the N numbers of their contour. Each block is tokenized
-// and sorted into words as it is read; an error in a block is kept with the block and
-// reported only if execution reaches it (text after M30 that never runs is never checked,
-// as when the program was read block by block).
+// M98 to an O number, G70–G73 to the N numbers of their contour, GOTO and WHILE of Custom
+// Macro B. Each block is tokenized as it is read; a block of plain words is sorted into codes
+// then, a block of Custom Macro B (a statement, an expression in an address, a G65 call) is
+// kept as read, its words sorted each time it runs, since their values may change between
+// runs. An error in a block is kept with the block and reported only if execution reaches it
+// (text after M30 that never runs is never checked, as when the program was read block by
+// block).
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
+#include "interp/macro/statement.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/result.hpp"
 
 namespace lathesim::interp {
+
+/// What a block says: plain words sorted into codes, or a block of Custom Macro B (held apart,
+/// so that the many plain blocks of a long program stay small).
+using BlockContent = std::variant<ParsedBlock, std::shared_ptr<const macro::MacroBlock>>;
 
 struct ProgramBlock {
   int ordinal = 0;        // 0-based position among the blocks read
@@ -28,7 +38,18 @@ struct ProgramBlock {
   std::optional<int> programNumber;   // its O word: a program starts here
   std::vector<std::string> comments;       // its own comments (lexer.hpp: RawBlock)
   std::vector<std::string> commentsAbove;  // comment-only lines directly above it
-  Result<ParsedBlock> parsed = Error{};  // the sorted words, or why the block cannot run
+  Result<BlockContent> content = Error{};  // what the block says, or why it cannot run
+
+  /// The sorted words of a block of plain words; nullptr for a macro block or a bad one.
+  const ParsedBlock* plainWords() const {
+    return content.ok() ? std::get_if<ParsedBlock>(&content.value()) : nullptr;
+  }
+  /// The block of Custom Macro B; nullptr for a block of plain words or a bad one.
+  const macro::MacroBlock* macroBlock() const {
+    if (!content.ok()) return nullptr;
+    const auto* held = std::get_if<std::shared_ptr<const macro::MacroBlock>>(&content.value());
+    return held != nullptr ? held->get() : nullptr;
+  }
 };
 
 /// A text the blocks were read from: the program's own (name empty) or a subprogram's file.

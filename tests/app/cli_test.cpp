@@ -326,6 +326,27 @@ TEST(Cli, ExpandPrintsExactlyTheGoldenToolpath) {
   EXPECT_EQ(lines.size(), 1 + goldenToolpath(kPart).size());  // nothing else on stdout
 }
 
+// An endless Macro B loop stops at the step limit, which --max-steps sets over [macro]
+// max_steps; the error names the loop's WHILE.
+TEST(Cli, MaxStepsStopsAnEndlessLoopAtItsWhile) {
+  TempDir dir("steps");
+  const fs::path program = dir.path() / "endless.nc";
+  writeFile(program, "G00 X50 Z2\nWHILE [#1 LT 1] DO 1\nG00 W0\nEND 1\nM30\n");
+  const fs::path setup = dir.path() / "setup.toml";
+  writeFile(setup, "[macro]\nmax_steps = 100\n");
+  const Outcome fromSetup = lathesim({"expand", program.string(), "--setup", setup.string()}, dir.path());
+  EXPECT_EQ(fromSetup.status, 1);
+  EXPECT_EQ(fromSetup.err.rfind(program.string() + ":2:1: error: the program is still in this loop after 100 blocks "
+                                                   "run again", 0),
+            0u)
+      << fromSetup.err;
+  const Outcome fromCli =
+      lathesim({"expand", program.string(), "--setup", setup.string(), "--max-steps", "7"}, dir.path());
+  EXPECT_EQ(fromCli.status, 1);
+  EXPECT_NE(fromCli.err.find("after 7 blocks run again"), std::string::npos) << fromCli.err;
+  EXPECT_TRUE(fromCli.out.empty());
+}
+
 TEST(Cli, ControlAndBlockSkipOnTheCommandLineOverrideTheSetup) {
   TempDir dir("control");
   const fs::path program = dir.path() / "p.nc";

@@ -272,13 +272,14 @@ TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
 TEST(ParseSetupErrors, UnknownTopLevelTable) {
   const Diagnostic d = onlyError("[stock]\ndiameter = 50\n[spindle]\nrpm = 5\n");
   EXPECT_EQ(d.message,
-            "unknown table 'spindle' (expected stock, machine, control, sim, tool, chuck, offset or work_offset)");
+            "unknown table 'spindle' (expected stock, machine, control, sim, tool, chuck, offset, work_offset or macro)");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, UnknownTopLevelKey) {
   const Diagnostic d = onlyError("voxel = 0.2\n");
-  EXPECT_EQ(d.message, "unknown key 'voxel' (expected stock, machine, control, sim, tool, chuck, offset or work_offset)");
+  EXPECT_EQ(d.message,
+            "unknown key 'voxel' (expected stock, machine, control, sim, tool, chuck, offset, work_offset or macro)");
   EXPECT_EQ(d.line, 1);
   EXPECT_EQ(d.column, 1);
 }

@@ -489,20 +489,37 @@ TEST(NoseCompensation, G28EndsTheChainAtItsIntermediatePoint) {
 }
 
 // After G28 the GSK980TDi forgets the tool offset (No.182#2 = 0, §3.15 note 4); fanuc-0i-t keeps
-// it (⚠). Offset 5 shifts the tip by x 0.4 (diameter): +0.2 of radius. The G28 legs run under
-// the offset; the move after them is unshifted on the GSK, shifted on the Fanuc.
+// it (the 0i-TC manual B-64114EN §14.1.6: G28 does not cancel the offset vector). On both the
+// axes that return reach the reference point itself, a position of the machine: the vector is not
+// in force in the G28 block. Offset 5 shifts the tip by x 0.4 (diameter), +0.2 of radius, and z
+// -0.3. The tool goes to X20 Z2 under the offset, (10.2, 1.7); G28 U0 W0 has no intermediate leg
+// and ends at the reference (100, 200) exactly; the next G00 X20 Z2 ends at (10, 2) on the GSK,
+// (10.2, 1.7) on the Fanuc.
 TEST(ToolOffsets, G28CancelsTheOffsetWhereThePresetSays) {
-  for (const auto& [after, shiftMm] : {std::pair{OffsetAfterReturn::Cancelled, 0.0}, {OffsetAfterReturn::Kept, 0.2}}) {
+  for (const auto& [after, shift] :
+       {std::pair{OffsetAfterReturn::Cancelled, RZ(0, 0)}, {OffsetAfterReturn::Kept, RZ(0.2, -0.3)}}) {
     InterpreterOptions options = compOptions();
-    options.offsets[5] = ToolOffset{0.4, 0, 0, 0, 0, 0};
+    options.offsets[5] = ToolOffset{0.4, -0.3, 0, 0, 0, 0};
     options.control.offsetAfterReturn = after;
     const auto result = test::run("T0105 G99\nG00 X20 Z2\nG28 U0 W0\nG00 X20 Z2\n", options);
     ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
-    expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10.2, 2},
-                                       {kRapid, 10.2, 2, 100.2, 200},
-                                       {kRapid, 100.2, 200, 10 + shiftMm, 2}});
+    expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10.2, 1.7},
+                                       {kRapid, 10.2, 1.7, 100, 200},
+                                       {kRapid, 100, 200, 10 + shift.x(), 2 + shift.y()}});
     EXPECT_EQ(result.toolpath.moves[2].toolOffset, after == OffsetAfterReturn::Kept ? 5 : 0);
   }
+}
+
+// G28 with one axis: only that axis reaches the reference without the offset; the other does not
+// move and keeps it. G28 W5 from (10.2, 1.7) (program (10, 2)): to the intermediate point, program
+// Z7 under the offset (10.2, 6.7), then Z to the reference Z200 exactly, X staying at 10.2.
+TEST(ToolOffsets, G28LeavesTheOffsetOfAnAxisItDoesNotReturn) {
+  InterpreterOptions options = compOptions();
+  options.offsets[5] = ToolOffset{0.4, -0.3, 0, 0, 0, 0};
+  const auto result = test::run("T0105 G99\nG00 X20 Z2\nG28 W5\n", options);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves,
+             {{kRapid, 100, 200, 10.2, 1.7}, {kRapid, 10.2, 1.7, 10.2, 6.7}, {kRapid, 10.2, 6.7, 10.2, 200}});
 }
 
 }  // namespace

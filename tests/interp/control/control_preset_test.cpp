@@ -52,6 +52,9 @@ TEST(ControlPreset, TheDefaultParametersAreTheGsk980tdiPresets) {
   EXPECT_EQ(defaults.arcRadiusToleranceMm, gsk.arcRadiusToleranceMm);
   EXPECT_EQ(defaults.offsetAfterReturn, gsk.offsetAfterReturn);
   EXPECT_EQ(defaults.absoluteWithIncremental, gsk.absoluteWithIncremental);
+  EXPECT_EQ(defaults.drawingAngleWord, gsk.drawingAngleWord);
+  EXPECT_EQ(defaults.cornerWords, gsk.cornerWords);
+  EXPECT_EQ(defaults.chamferSize, gsk.chamferSize);
   EXPECT_EQ(defaults.toolWordForms, gsk.toolWordForms);
   EXPECT_EQ(defaults.roughingDepthMm, gsk.roughingDepthMm);
   EXPECT_EQ(defaults.roughingRetractMm, gsk.roughingRetractMm);
@@ -79,8 +82,10 @@ TEST(ControlPreset, TheTwoControlsDifferWhereTheManualsSay) {
   EXPECT_EQ(fanuc.parameters.offsetAfterReturn, OffsetAfterReturn::Kept);
   EXPECT_EQ(settingOf(gsk, "rapid_positioning").manual, "GSK No.1#7 = 0 (§3.2; G28 legs §3.15 note 3)");
   EXPECT_TRUE(settingOf(gsk, "rapid_positioning").verified);
-  EXPECT_EQ(settingOf(fanuc, "decimal_point_input").manual, "Fanuc 3401#0 DPI = 0 (factory setting)");
-  EXPECT_FALSE(settingOf(fanuc, "decimal_point_input").verified);  // B-64604EN was not at hand
+  EXPECT_EQ(settingOf(fanuc, "decimal_point_input").manual,
+            "Fanuc 3401#0 DPI = 0 (DPI = 1 is calculator input, B-62764EN §5; its factory value assumed)");
+  EXPECT_FALSE(settingOf(fanuc, "decimal_point_input").verified);  // the factory value: B-64604EN was not at hand
+  EXPECT_TRUE(settingOf(fanuc, "g28_tool_offset").verified);       // 0i-TC B-64114EN §14.1.6
   EXPECT_EQ(std::get<std::string>(settingOf(fanuc, "power_on_feed_mode").value), "G99");
 }
 

@@ -43,6 +43,44 @@ TEST(DecimalPoint, ABareLengthIsMillimetresOnTheGskAndIncrementsOnTheFanuc) {
   expectMoves(interpret("G00 X20 Z-10.\n", "t.nc", isC).toolpath.moves, {{kRapid, 100, 200, 0.001, -10, 0, 0}});
 }
 
+TEST(DecimalPoint, EveryReadingOfABareNumber) {
+  // G00 X1234 W-567 from (r 100, Z200), under each decimal point input, increment system and unit.
+  // By hand: calculator reads 1234 mm (inch); increments count 0.001 mm at IS-B, 0.0001 mm at
+  // IS-C, a tenth of that in inch (0.0001 / 0.00001 inch), 25.4 mm to the inch. X is a diameter.
+  struct Case {
+    DecimalPointInput input;
+    double leastIncrementMm;
+    bool inch;
+    double radiusMm, dzMm;
+  };
+  const Case cases[] = {
+      {DecimalPointInput::Calculator, 0.001, false, 617, -567},
+      {DecimalPointInput::Calculator, 0.0001, false, 617, -567},
+      {DecimalPointInput::Calculator, 0.001, true, 15671.8, -14401.8},
+      {DecimalPointInput::LeastIncrements, 0.001, false, 0.617, -0.567},
+      {DecimalPointInput::LeastIncrements, 0.0001, false, 0.0617, -0.0567},
+      {DecimalPointInput::LeastIncrements, 0.001, true, 1.56718, -1.44018},      // 0.1234 / 0.0567 inch
+      {DecimalPointInput::LeastIncrements, 0.0001, true, 0.156718, -0.144018},  // 0.01234 / 0.00567 inch
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(testing::Message() << "increments " << (c.input == DecimalPointInput::LeastIncrements) << ", "
+                                    << c.leastIncrementMm << " mm, inch " << c.inch);
+    InterpreterOptions options = test::defaultOptions();
+    options.control.decimalPointInput = c.input;
+    options.control.leastIncrementMm = c.leastIncrementMm;
+    const auto result = interpret(std::string(c.inch ? "G20 " : "") + "G00 X1234 W-567\n", "t.nc", options);
+    ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+    ASSERT_EQ(result.toolpath.moves.size(), 1u);
+    EXPECT_NEAR(result.toolpath.moves[0].to.x(), c.radiusMm, 1e-9);
+    EXPECT_NEAR(result.toolpath.moves[0].to.y(), 200 + c.dzMm, 1e-9);
+    // With a point the word is a length as written, under every reading.
+    const auto pointed = interpret(std::string(c.inch ? "G20 " : "") + "G00 X12.34 W-5.67\n", "t.nc", options);
+    ASSERT_TRUE(pointed.ok());
+    EXPECT_NEAR(pointed.toolpath.moves[0].to.x(), (c.inch ? 25.4 : 1.0) * 6.17, 1e-9);
+    EXPECT_NEAR(pointed.toolpath.moves[0].to.y(), 200 - (c.inch ? 25.4 : 1.0) * 5.67, 1e-9);
+  }
+}
+
 TEST(DecimalPoint, AMixedBlockIsWarnedWithBothReadings) {
   const auto gsk = interpret("G00 X20 Z-10.\n", "t.nc", under("gsk980tdi"));
   ASSERT_EQ(warningsOf(gsk).size(), 1u);

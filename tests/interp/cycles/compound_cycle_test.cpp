@@ -312,6 +312,39 @@ TEST(G71, FirstBlockValuesDefaultToTheParameters) {
   EXPECT_TRUE(run("G00 X40 Z2\nG71 U1 R1\nG71 P10 Q20 F0.2\nN10 G00 X34\nN20 G01 Z-5\n").diagnostics.empty());
 }
 
+TEST(G72, FirstBlockValuesDefaultToTheParametersWithAWarning) {
+  // Δd = 1 in Z (No.51), e = 0.5 (No.52): from A (22, 2) the first level is Z1, cut along X to the
+  // axis, then the 45° retract at feed (the GSK's) by 0.5 in both axes.
+  const auto result = run("G00 X44 Z2\nG72 P10 Q20 F0.2\nN10 G00 Z-1.5\nN20 G01 X0\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const auto& moves = result.toolpath.moves;
+  ASSERT_GE(moves.size(), 4u);
+  expectMoves({moves[1], moves[2], moves[3]}, {{kRapid, 22, 2, 22, 1, 0, 2},
+                                               {kFeed, 22, 1, 0, 1, 0.2, 3},
+                                               {kFeed, 0, 1, 0.5, 1.5, 0.2, 4}});
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].line, 2);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "G72 P… Q… runs without a first block G72 W(Δd) R(e): Δd 1 mm and e 0.5 mm come from the control's "
+            "parameters (g71_depth, g71_retract), not from the program");
+}
+
+TEST(G73, FirstBlockValuesDefaultToTheParametersWithAWarning) {
+  // Δi = Δk = 0 and d = 1 (No.53–55), d = 1 cut as two passes (GSK): both at no shift, A (30, 2)
+  // → (20, 2) by the ns block's G01, back, again, and back to A.
+  const auto result = run("G00 X60 Z2\nG73 P10 Q10 F0.2\nN10 G01 X40\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectMoves(result.toolpath.moves, {{kRapid, 100, 200, 30, 2, 0, 0},
+                                      {kFeed, 30, 2, 20, 2, 0.2, 2},
+                                      {kRapid, 20, 2, 30, 2, 0, 1},
+                                      {kFeed, 30, 2, 20, 2, 0.2, 2},
+                                      {kRapid, 20, 2, 30, 2, 0, 4}});
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].message,
+            "G73 P… Q… runs without a first block G73 U(Δi) W(Δk) R(d): Δi 0 mm, Δk 0 mm and d 1 come from the "
+            "control's parameters (g73_relief_x, g73_relief_z, g73_passes), not from the program");
+}
+
 TEST(G71, GsksKAndJWordsAreRead) {
   // K0/K1 (the monotonic check, always made) and J0 change nothing; J1's extra pass is refused.
   const std::string_view base = "G00 X40 Z2\nG71 U1 R1\nG71 P10 Q20 F0.2 ";

@@ -189,6 +189,26 @@ TEST(ArcMove, BeyondTheToleranceTheGskMovesTheCentreAndTheFanucAlarms) {
               "it is 7.0711 mm from the centre X40 Z0, the start point 10 mm");
 }
 
+TEST(ArcMove, TheToleranceIsTheControlsParameter) {
+  // The end (15, -5.03) lies 0.03 off the circle of radius 5 about (15, 0) that I5 K0 give. With
+  // arc_radius_tolerance 0.05 both presets take it: the centre moves quietly onto the chord's
+  // bisector; with the default 0.01 the GSK warns and the Fanuc alarms.
+  for (const ArcEndOffCircle rule : {ArcEndOffCircle::MoveCentre, ArcEndOffCircle::Alarm}) {
+    InterpreterOptions options = test::defaultOptions();
+    options.control.arcEndOffCircle = rule;
+    options.control.arcRadiusToleranceMm = 0.05;
+    const auto result = run("G00 X20. Z0.\nG03 X30. Z-5.03 I5. K0. F0.1\n", options);
+    ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+    EXPECT_TRUE(result.diagnostics.empty());
+    expectCentreMovedOntoBothEnds(result.toolpath.moves.at(1), RZ(15, 0), 5);
+    options.control.arcRadiusToleranceMm = 0.01;
+    const auto strict = run("G00 X20. Z0.\nG03 X30. Z-5.03 I5. K0. F0.1\n", options);
+    EXPECT_EQ(strict.ok(), rule == ArcEndOffCircle::MoveCentre);
+    ASSERT_EQ(strict.diagnostics.size(), 1u);
+    EXPECT_EQ(strict.diagnostics[0].severity, rule == ArcEndOffCircle::MoveCentre ? Severity::Warning : Severity::Error);
+  }
+}
+
 TEST(ArcMove, NoAxisOrCentreWordsMakeNoMove) {
   const auto result = run("G00 X20 Z0\nG02 F0.1\nG03\n");
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;

@@ -71,6 +71,62 @@ TEST(Corners, ACornerRadiusIsTangentToBothLines) {
   }
 }
 
+// A sweep of corners: up the face to P = (r 15, Z0), then 10 mm on at every angle b from +Z
+// (b = 90° would be in line, 270° straight back). By the rule, with u1 and u2 the unit vectors
+// from P back along the face and on along the second line: the chamfer or the arc runs from
+// P + d·u1 to P + d·u2, d the size for ,C (from the corner); for GSK L the chamfer's own length
+// is the size; a corner radius R is tangent to both lines (its centre R from each tangent point,
+// square to the line there) and turns left (counter-clockwise) when the second line heads
+// toward the chuck (cos b < 0).
+TEST(Corners, ASweepOfAnglesMakesEachCornerByTheRule) {
+  const double pi = std::acos(-1.0);
+  for (const int degrees : {-60, -20, 0, 30, 60, 75, 105, 120, 150, 180, 210, 240}) {
+    const double b = degrees * pi / 180.0;
+    const std::string secondLine =
+        "G01 X" + std::to_string(2 * (15 + 10 * std::sin(b))) + " Z" + std::to_string(10 * std::cos(b)) + "\n";
+    for (const auto& [preset, word, kind] : {std::tuple{"gsk980tdi", "L1.", "length"},
+                                             {"gsk980tdi", "D1.", "radius"},
+                                             {"fanuc-0i-t", ",C1.", "from corner"},
+                                             {"fanuc-0i-t", ",R1.", "radius"}}) {
+      SCOPED_TRACE(testing::Message() << degrees << "° " << preset << " " << word);
+      InterpreterOptions options = test::defaultOptions();
+      options.control = controlPreset(preset)->parameters;
+      options.control.rapidPath = RapidPath::Linear;
+      const auto result = interpret("G99 G00 X20. Z0.\nG01 X30. " + std::string(word) + " F0.1\n" + secondLine,
+                                    "t.nc", options);
+      ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+      const auto& moves = result.toolpath.moves;
+      ASSERT_EQ(moves.size(), 4u);
+      const RZ p(15, 0);
+      const RZ u1(-1, 0);
+      const RZ u2 = (moves[3].to - p).normalized();
+      const RZ a = moves[2].from;
+      const RZ c = moves[2].to;
+      EXPECT_EQ(moves[1].to, a);
+      EXPECT_EQ(moves[3].from, c);
+      const double d = (a - p).norm();
+      EXPECT_NEAR((a - (p + d * u1)).norm(), 0, 1e-9);  // on the face
+      EXPECT_NEAR((c - (p + d * u2)).norm(), 0, 1e-9);  // on the second line, as far from P
+      if (std::string(kind) == "from corner") {
+        EXPECT_NEAR(d, 1, 1e-9);
+      }
+      if (std::string(kind) == "length") {
+        EXPECT_NEAR((c - a).norm(), 1, 1e-9);
+      }
+      if (std::string(kind) != "radius") {
+        EXPECT_EQ(moves[2].kind, MoveKind::Feed);
+        continue;
+      }
+      const RZ o = moves[2].center;
+      EXPECT_NEAR((a - o).norm(), 1, 1e-9);
+      EXPECT_NEAR((c - o).norm(), 1, 1e-9);
+      EXPECT_NEAR((a - o).dot(u1), 0, 1e-9);
+      EXPECT_NEAR((c - o).dot(u2), 0, 1e-9);
+      EXPECT_EQ(moves[2].kind, std::cos(b) < 0 ? MoveKind::ArcCCW : MoveKind::ArcCW);
+    }
+  }
+}
+
 TEST(Corners, WhatTheCornerCannotBeIsNamed) {
   // Too long for the face's 5 mm (GSK §3.11.3); before a rapid; after the program's last move.
   expectError(runUnder("gsk980tdi", "X30. D8."), 2, 10,

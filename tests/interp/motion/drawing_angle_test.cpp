@@ -59,6 +59,30 @@ TEST(DrawingAngle, TheCommaFormIsTheControlsWhenItSaysSo) {
   expectError(runUnder("gsk980tdi", "X30. A135."), 2, 10, "A135. is not used by any code in this block");
 }
 
+// A sweep of angles all round, X or Z given: the line ends on the given X (Z) and runs along the
+// angle, its direction (ΔZ, Δr) parallel to (cos a, sin a): ΔZ·sin a − Δr·cos a = 0. From
+// (r 10, Z0) to X30 (r 15) or to Z-10.
+TEST(DrawingAngle, ASweepOfAnglesEndsOnTheGivenAxisAlongTheAngle) {
+  for (const int degrees : {-170, -135, -100, -60, -30, -5, 3, 20, 45, 70, 88, 92, 110, 135, 160, 177, 200, 250, 300, 340}) {
+    const double a = degrees * std::acos(-1.0) / 180.0;
+    for (const bool givesX : {true, false}) {
+      SCOPED_TRACE(testing::Message() << degrees << "°, " << (givesX ? "X" : "Z") << " given");
+      const double offZ = std::abs(std::remainder(degrees, 180.0));  // from the Z axis
+      const double offX = std::abs(std::remainder(degrees - 90.0, 180.0));
+      if ((givesX ? offZ : offX) < 1.0) continue;  // the alarm, tested below
+      if (!givesX && std::tan(a) > 1.0) continue;    // Z-10 would take it through the axis
+      const auto result =
+          runUnder("gsk980tdi", std::string(givesX ? "X30" : "Z-10") + " Q" + std::to_string(degrees * 1000));
+      ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+      const Move& line = result.toolpath.moves.at(1);
+      EXPECT_EQ(line.from, RZ(10, 0));
+      EXPECT_EQ(givesX ? line.to.x() : line.to.y(), givesX ? 15 : -10);
+      const RZ d = line.to - line.from;
+      EXPECT_NEAR(d.y() * std::sin(a) - d.x() * std::cos(a), 0, 1e-9 * (1 + d.norm()));
+    }
+  }
+}
+
 TEST(DrawingAngle, LinesAlongAnAxisAloneOrWithBothEndsAreNamed) {
   expectError(runUnder("gsk980tdi", "Z-10 Q90000"), 2, 10,
               "Q90000 is a line along X: it never reaches another Z; give X instead");

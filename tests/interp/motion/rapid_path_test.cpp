@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "../test_support.hpp"
 #include "interp/motion/cycle_time.hpp"
 
@@ -112,6 +115,47 @@ TEST(RapidPath, BothLegsOfG28AndTheRapidsOfCyclesAreDogLegs) {
                                       {kRapid, 30, 10 + 40.0 / 3, 30, 40, 0, 1},
                                       {kRapid, 30, 40, 50, 40 + 80.0 / 3, 0, 2},
                                       {kRapid, 50, 40 + 80.0 / 3, 50, 150, 0, 2}});
+}
+
+// Every direction, length and pair of rates: the diagonal moves both axes at their full rates
+// (|Δr| / rate X = |ΔZ| / rate Z), the rest moves one axis alone, the legs join and end where
+// the rapid does, and their times add up to the slower axis's.
+TEST(RapidPath, ASweepOfRapidsSplitAsTheAxesMove) {
+  const RZ start(40, 10);
+  for (const auto& [rateX, rateZ] : {std::pair{6000.0, 8000.0}, {3000.0, 12000.0}, {10000.0, 10000.0}}) {
+    const MachineLimits machine{rateX, rateZ, 3000.0, std::nullopt};
+    for (const double dr : {-35.0, -7.5, -0.25, 0.0, 0.3, 12.0, 60.0}) {
+      for (const double dz : {-120.0, -9.0, -0.4, 0.0, 0.2, 5.0, 80.0}) {
+        SCOPED_TRACE(testing::Message() << "rates " << rateX << "/" << rateZ << ", Δr " << dr << ", ΔZ " << dz);
+        Move rapid;
+        rapid.from = start;
+        rapid.to = start + RZ(dr, dz);
+        std::vector<Move> moves{rapid};
+        splitRapidsIntoAxisLegs(moves, machine);
+        const double tX = std::abs(dr) / rateX;
+        const double tZ = std::abs(dz) / rateZ;
+        if (tX == 0 || tZ == 0 || std::abs(tX - tZ) <= 1e-12 * std::max(tX, tZ)) {
+          ASSERT_EQ(moves.size(), 1u);  // one axis, or both arriving together: straight
+          continue;
+        }
+        ASSERT_EQ(moves.size(), 2u);
+        EXPECT_EQ(moves[0].from, rapid.from);
+        EXPECT_EQ(moves[0].to, moves[1].from);
+        EXPECT_EQ(moves[1].to, rapid.to);
+        const RZ diagonal = moves[0].to - moves[0].from;
+        const RZ rest = moves[1].to - moves[1].from;
+        EXPECT_NEAR(std::abs(diagonal.x()) / rateX, std::min(tX, tZ), 1e-15);
+        EXPECT_NEAR(std::abs(diagonal.y()) / rateZ, std::min(tX, tZ), 1e-15);
+        EXPECT_GE(diagonal.x() * dr, 0.0);  // each axis goes its own way, never back
+        EXPECT_GE(diagonal.y() * dz, 0.0);
+        EXPECT_EQ(tX < tZ ? rest.x() : rest.y(), 0.0);  // the quicker axis has arrived
+        Toolpath toolpath;
+        toolpath.moves = moves;
+        (void)assignMoveTimes(toolpath, machine);
+        EXPECT_NEAR(cycleTimeS(toolpath), 60.0 * std::max(tX, tZ), 1e-12);
+      }
+    }
+  }
 }
 
 TEST(RapidPath, TheRapidsOfACycleAreDogLegs) {

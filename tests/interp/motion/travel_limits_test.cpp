@@ -58,5 +58,16 @@ TEST(TravelLimits, TheToolOffsetAndG50AreInTheSetupsFrame) {
   EXPECT_FALSE(interpret("G00 X390\n", "t.nc", withTravel()).ok());
 }
 
+TEST(TravelLimits, G28UnderAToolOffsetReachesTheReferenceNotBeyondIt) {
+  // The travel ends at the reference X200 Z200 (where derived travel puts it). Offset 1 shifts
+  // the tip by X+0.4 and Z+0.6: G00 X40 Z2 ends at X40.4 Z2.6; G28 U0 W0 returns both axes to the
+  // reference itself, X200 Z200, not X200.4 Z200.6 beyond the travel.
+  InterpreterOptions options = withTravel(true);
+  options.offsets[1] = ToolOffset{0.4, 0.6, 0, 0, 0, 0};
+  const auto result = interpret("T0101\nG00 X40 Z2\nG28 U0 W0\n", "t.nc", options);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  EXPECT_EQ(result.toolpath.moves.back().to, RZ(100, 200));
+}
+
 }  // namespace
 }  // namespace lathesim::interp

@@ -148,9 +148,76 @@ TEST(Tokenize, YSaysThereIsNoYAxis) {
 }
 
 TEST(Tokenize, StrayCharacterIsAnError) {
-  const Error error = tokenizeError("G00 X10 # 5");
+  const Error error = tokenizeError("G00 X10 @ 5");
   EXPECT_EQ(error.column, 9);
-  EXPECT_NE(error.message.find("unexpected character '#'"), std::string::npos);
+  EXPECT_NE(error.message.find("unexpected character '@'"), std::string::npos);
+}
+
+std::vector<Token> tokensOf(std::string_view text) {
+  auto blocks = readAll(text);
+  EXPECT_EQ(blocks.size(), 1u);
+  auto tokens = lexBlock(blocks.at(0));
+  EXPECT_TRUE(tokens.ok()) << (tokens.ok() ? "" : tokens.error().message);
+  return tokens.ok() ? tokens.value() : std::vector<Token>{};
+}
+
+TEST(LexBlock, MacroStatementTokensKeepTheirColumns) {
+  //                                    1234567890123456789012
+  const std::vector<Token> tokens = tokensOf("IF [#1 GT -1.5] GOTO 20");
+  const std::vector<std::pair<TokenKind, int>> expected{
+      {TokenKind::Name, 1},   {TokenKind::Open, 4},    {TokenKind::Hash, 5},   {TokenKind::Number, 6},
+      {TokenKind::Name, 8},   {TokenKind::Minus, 11},  {TokenKind::Number, 12}, {TokenKind::Close, 15},
+      {TokenKind::Name, 17},  {TokenKind::Number, 22}};
+  ASSERT_EQ(tokens.size(), expected.size());
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(tokens[i].kind, expected[i].first);
+    EXPECT_EQ(tokens[i].column, expected[i].second);
+  }
+  EXPECT_EQ(tokens[0].text, "IF");
+  EXPECT_EQ(tokens[4].text, "GT");
+  EXPECT_DOUBLE_EQ(tokens[6].value, 1.5);  // the sign is the Minus before it
+  EXPECT_EQ(tokens[8].text, "GOTO");
+}
+
+TEST(LexBlock, AnAddressTakesAVariableOrABracketedValue) {
+  const std::vector<Token> tokens = tokensOf("G01 X-#1 Z[#2*2] F0.2");
+  ASSERT_EQ(tokens.size(), 13u);  // G01 X - # 1 Z [ # 2 * 2 ] F0.2
+  EXPECT_EQ(tokens[0].kind, TokenKind::Word);
+  EXPECT_EQ(tokens[1].kind, TokenKind::Address);
+  EXPECT_EQ(tokens[1].word.letter, 'X');
+  EXPECT_EQ(tokens[1].column, 5);
+  EXPECT_EQ(tokens[2].kind, TokenKind::Minus);
+  EXPECT_EQ(tokens[3].kind, TokenKind::Hash);
+  EXPECT_EQ(tokens[5].kind, TokenKind::Address);  // Z
+  EXPECT_EQ(tokens[6].kind, TokenKind::Open);
+  EXPECT_EQ(tokens[12].kind, TokenKind::Word);  // F0.2 stays a plain word
+  EXPECT_EQ(tokens[12].word.text(), "F0.2");
+}
+
+TEST(LexBlock, NamesAreReadInAnyCaseAndNeverAsAddressLetters) {
+  const std::vector<Token> tokens = tokensOf("while[#1le#2]do1");
+  ASSERT_EQ(tokens.size(), 10u);
+  EXPECT_EQ(tokens[0].text, "WHILE");
+  EXPECT_EQ(tokens[4].text, "LE");
+  EXPECT_EQ(tokens[8].text, "DO");
+  // GOTO is a name, G0 a word.
+  EXPECT_EQ(tokensOf("GOTO5")[0].kind, TokenKind::Name);
+  EXPECT_EQ(tokensOf("G0 X5")[0].kind, TokenKind::Word);
+}
+
+TEST(LexBlock, AMacroCallTakesEveryArgumentLetterOthersDoNot) {
+  const std::vector<Token> call = tokensOf("G65 P9010 A1. B2. Y3. E4 H5 V6");
+  ASSERT_EQ(call.size(), 8u);
+  EXPECT_EQ(call[4].word.letter, 'Y');
+  auto blocks = readAll("G01 Y5");
+  EXPECT_NE(lexBlock(blocks[0]).error().message.find("no Y axis"), std::string::npos);
+}
+
+TEST(BlockReader, CommentsAreKeptWithTheirBlock) {
+  const auto blocks = readAll("#3000 = 1 (TOO BIG) (second)\n");
+  ASSERT_EQ(blocks.size(), 1u);
+  EXPECT_EQ(blocks[0].comments, (std::vector<std::string>{"TOO BIG", "second"}));
 }
 
 }  // namespace

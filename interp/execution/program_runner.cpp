@@ -1,0 +1,302 @@
+#include "interp/execution/program_runner.hpp"
+
+#include <algorithm>
+#include <set>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "interp/execution/block_executor.hpp"
+#include "interp/execution/call_stack.hpp"
+#include "interp/execution/macro_flow.hpp"
+#include "interp/execution/modal_state.hpp"
+#include "interp/execution/step_guard.hpp"
+#include "interp/macro/block_words.hpp"
+#include "interp/macro/macro_call.hpp"
+#include "interp/macro/variables.hpp"
+#include "interp/text/program_library.hpp"
+#include "interp/text/word_units.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+class ProgramRunner {
+ public:
+  ProgramRunner(Program& program, const InterpreterOptions& options, Toolpath& toolpath, std::vector<Error>& warnings,
+                std::vector<Error>& notes)
+      : program_(program),
+        options_(options),
+        toolpath_(toolpath),
+        warnings_(warnings),
+        notes_(notes),
+        calls_(program),
+        variables_(options.macroVariables),
+        guard_(options.maxSteps, program.blocks.size()),
+        flow_(program, variables_, guard_) {
+    state_.frame.offsets = options.workOffsets;
+    state_.position = options.startPosition - state_.frame.shift();
+    state_.feedMode = options.control.powerOnFeedMode;
+    state_.compound = CompoundCycleParams::of(options.control);
+    if (!options.toolNumbers.empty()) state_.tool = options.toolNumbers.front();
+  }
+
+  Status run();
+
+ private:
+  Result<std::size_t> runBlock(std::size_t index);
+  Error stepLimitError(std::size_t index) const;
+  Result<std::size_t> runMacroWords(std::size_t index, const macro::MacroBlock& block);
+  Result<std::size_t> runWords(std::size_t index, const ParsedBlock& words);
+  Result<std::size_t> callMacro(std::size_t index, const std::vector<Word>& words);
+  Result<std::size_t> giveBack(const SubprogramReturn& giveBack, std::size_t index);
+  void listStop(std::size_t index, const ParsedBlock& words);
+  Status loadProgram(int programNumber, std::string_view code, int column, std::size_t caller);
+  void warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut);
+  // A block that runs again (a loop, a repeated call) says the same thing once.
+  void warn(Error warning, std::size_t index) {
+    Error located = inFile(std::move(warning), index);
+    if (warned_.insert({located.file, located.line, located.column, located.message}).second)
+      warnings_.push_back(std::move(located));
+  }
+  // An error or warning of block `index`, naming its file when it is a subprogram's own.
+  Error inFile(Error error, std::size_t index) const {
+    const ProgramBlock& block = program_.blocks[index];
+    if (block.source != 0) error.file = program_.sources[static_cast<std::size_t>(block.source)].name;
+    return error;
+  }
+
+  Program& program_;
+  const InterpreterOptions& options_;
+  Toolpath& toolpath_;
+  std::vector<Error>& warnings_;
+  std::vector<Error>& notes_;
+  ModalState state_;
+  CallStack calls_;
+  macro::VariableStore variables_;
+  StepGuard guard_;
+  MacroFlow flow_;
+  std::set<std::tuple<std::string, int, int, std::string>> warned_;  // (file, line, column, message)
+  std::set<std::size_t> notedStops_;             // blocks whose #3006 stop is listed: once each
+};
+
+Status ProgramRunner::run() {
+  if (program_.textAfterEnd) warnings_.push_back(*program_.textAfterEnd);
+  std::size_t next = 0;
+  while (!state_.ended && next < program_.blocks.size()) {
+    const std::size_t index = next;
+    auto after = runBlock(index);
+    if (!after.ok()) return after.error();
+    next = after.value();
+  }
+  if (!state_.ended) {
+    if (auto error = calls_.unfinished()) return *error;
+  }
+  if (auto mixed = state_.lengthWriting.mixedWarning(NumberReading::of(options_.control, state_.inch)))
+    warnings_.push_back(*mixed);
+  return success();
+}
+
+// Runs block `index`; the block to run next, or the error located in its file. Loading a
+// called program's file grows the blocks: no reference to one is kept across a call.
+Result<std::size_t> ProgramRunner::runBlock(std::size_t index) {
+  const ProgramBlock& block = program_.blocks[index];
+  toolpath_.blockCount = std::max(toolpath_.blockCount, block.ordinal + 1);
+  if (block.skipped) return index + 1;
+  if (!block.content.ok()) return inFile(block.content.error(), index);
+  if (guard_.step(index)) return stepLimitError(index);
+
+  Result<std::size_t> after = index + 1;
+  if (const ParsedBlock* words = block.plainWords()) {
+    after = runWords(index, *words);
+  } else if (const macro::MacroBlock* macroBlock = block.macroBlock(); macroBlock->statement) {
+    std::vector<Error> stops;
+    after = flow_.run(index, stops);
+    for (Error& stop : stops)
+      if (notedStops_.insert(index).second) notes_.push_back(inFile(std::move(stop), index));
+  } else {
+    after = runMacroWords(index, *macroBlock);
+  }
+  if (!after.ok()) return after.error().file.empty() ? inFile(after.error(), index) : after.error();
+  return after;
+}
+
+Error ProgramRunner::stepLimitError(std::size_t index) const {
+  const std::string limit = fmt::format("{} blocks run again", guard_.maxSteps());
+  const std::string raise = "raise the step limit with --max-steps or [macro] max_steps if the program is meant to "
+                            "run longer";
+  if (const auto loop = guard_.stuckLoop()) {
+    const ProgramBlock& block = program_.blocks[loop->block];
+    return inFile(Error{block.line, loop->column,
+                        fmt::format("the program is still in this loop after {}: it never ends, or runs longer than "
+                                    "the step limit; {}",
+                                    limit, raise)},
+                  loop->block);
+  }
+  const ProgramBlock& block = program_.blocks[index];
+  return inFile(Error{block.line, block.column,
+                      fmt::format("the program has reached {} and is not finished; {}", limit, raise)},
+                index);
+}
+
+void ProgramRunner::warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut) {
+  const int line = program_.blocks[index].line;
+  for (const macro::VacantWord& word : leftOut) {
+    warn({line, word.column,
+          fmt::format("{}: {} is vacant, so {} is left out of this block, as a Fanuc control does", word.written,
+                      word.written.substr(word.written.find('#')), word.letter)},
+         index);
+  }
+}
+
+Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro::MacroBlock& block) {
+  const int line = program_.blocks[index].line;
+  const int column = program_.blocks[index].column;
+  auto evaluated = macro::evaluateWords(block, variables_, line, NumberReading::of(options_.control, state_.inch));
+  if (!evaluated.ok()) return evaluated.error();
+  const macro::BlockWords words = std::move(evaluated).value();  // owned: a call may grow the blocks
+  warnLeftOut(index, words.leftOut);
+  Result<std::size_t> after = index + 1;
+  if (words.macroCall) {
+    // A length argument written without a decimal point is read like any such length.
+    for (const macro::MacroWord& word : block.words)
+      if (!word.expression && macro::isLengthArgument(word.word.letter))
+        state_.lengthWriting.note(word.word, line, program_.blocks[index].ordinal);
+    after = callMacro(index, words.words);
+  } else if (auto parsed = parseBlock(words.words, line, column, options_.dialect); parsed.ok()) {
+    after = runWords(index, parsed.value());
+  } else {
+    after = parsed.error();
+  }
+  if (!after.ok()) return macro::withLeftOutNote(after.error(), words.leftOut);
+  return after;
+}
+
+Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock& words) {
+  const int source = program_.blocks[index].source;
+  const BlockPlace place{program_, index, &variables_};
+  auto outcome = executeBlock(words, state_, options_, program_.blocks[index].ordinal, &place);
+  if (!outcome.ok()) return outcome.error();
+
+  BlockOutcome& done = outcome.value();
+  if (source != 0 && calls_.outermostCall()) {  // a subprogram's own file: the main program's call
+    const ProgramBlock& site = program_.blocks[*calls_.outermostCall()];
+    for (Move& move : done.moves) std::tie(move.line, move.column) = std::pair{site.line, site.column};
+    for (CycleStart& start : done.cycleStarts) std::tie(start.line, start.column) = std::pair{site.line, site.column};
+  }
+  for (Error& warning : done.warnings) warn(std::move(warning), index);
+  const ProgramFlow flow = done.flow;
+  state_ = std::move(done.state);
+  toolpath_.moves.insert(toolpath_.moves.end(), done.moves.begin(), done.moves.end());
+  const ProgramBlock& made = program_.blocks[index];
+  if (auto tooMany = moveLimitError(toolpath_.moves.size(), options_.maxMoves, made.line, made.column)) return *tooMany;
+  toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
+  listStop(index, words);
+  if (flow.call) {
+    if (auto loaded = loadProgram(flow.call->programNumber, "M98", flow.call->column, index); !loaded.ok()) {
+      return loaded.error();
+    }
+    auto target = calls_.call(*flow.call, index);
+    if (!target.ok()) return target.error();
+    flow_.enterProgram();
+    return target;
+  }
+  if (flow.giveBack && !calls_.inSubprogram()) {
+    // M99 in the main program: the control starts it over, forever; it is simulated once.
+    warn({program_.blocks[index].line, flow.giveBack->column,
+          "M99 ends the main program: the control runs it again from the start, forever; lathesim simulates it "
+          "once"},
+         index);
+    state_.ended = true;
+    return index + 1;
+  }
+  if (flow.giveBack) return giveBack(*flow.giveBack, index);
+  if (flow.continueAfter) return *flow.continueAfter + 1;
+  return index + 1;
+}
+
+Result<std::size_t> ProgramRunner::callMacro(std::size_t index, const std::vector<Word>& words) {
+  auto call = macro::readMacroCall(words, program_.blocks[index].line);
+  if (!call.ok()) return call.error();
+  if (auto loaded = loadProgram(call.value().programNumber, "G65", call.value().column, index); !loaded.ok()) {
+    return loaded.error();
+  }
+  auto target = calls_.callMacro(call.value(), index);
+  if (!target.ok()) return target.error();
+  variables_.pushLevel(call.value().arguments);
+  flow_.enterProgram();
+  return target;
+}
+
+// M00/M01 are listed in the report at their line; in a subprogram's own file, at the line of
+// the main program's call that led there.
+void ProgramRunner::listStop(std::size_t index, const ParsedBlock& words) {
+  const auto stop = words.mCode(MGroup::Stop);
+  if (!stop) return;
+  const ProgramBlock& block = program_.blocks[index];
+  const bool own = block.source == 0 || !calls_.outermostCall();
+  const ProgramBlock& at = own ? block : program_.blocks[*calls_.outermostCall()];
+  toolpath_.stops.push_back({at.line, own ? stop->column : at.column, stop->text});
+}
+
+Result<std::size_t> ProgramRunner::giveBack(const SubprogramReturn& giveBack, std::size_t index) {
+  auto back = calls_.giveBack(giveBack, index);
+  if (!back.ok()) return back.error();
+  const CallReturn& done = back.value();
+  if (done.repeat) {
+    flow_.restartProgram();
+    guard_.jumpedBack(index, done.next, {done.callBlock, done.callColumn});
+    return done.next;
+  }
+  if (done.leftMacro) variables_.popLevel();
+  flow_.leaveProgram();
+  // M99 P to a block of the caller at or before its call: the caller loops through the call,
+  // a loop of its own as a GOTO back would be (the M99's P is where it is written).
+  flow_.cameTo(done.next);
+  if (done.next <= done.callBlock) guard_.jumpedBack(done.callBlock, done.next, {index, giveBack.sequenceColumn});
+  return done.next;
+}
+
+// A program M98 or G65 calls that the text does not hold: read it from its file
+// (program_library.hpp), or say which names were looked for where.
+Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int column, std::size_t caller) {
+  if (program_.programStart.count(programNumber) != 0) return success();
+  if (const auto file = findProgramFile(programNumber, options_.programDirectories)) {
+    appendProgramFile(program_, file->path.string(), file->text, programNumber, options_.control.blockSkip,
+                      options_.dialect);
+    guard_.programGrew(program_.blocks.size());
+    flow_.programGrew();
+    return success();
+  }
+  const auto names = programFileNames(programNumber);
+  std::string directories;
+  for (const auto& directory : options_.programDirectories)
+    directories += (directories.empty() ? "" : ", ") + directory.string();
+  return inFile(Error{program_.blocks[caller].line, column,
+                      fmt::format("{} calls O{:04}, which is neither in this program nor in a file: "
+                                  "looked for {}, {}, {} … {} in {}; give the directory of the "
+                                  "control's programs with --programs DIR",
+                                  code, programNumber, names[0], names[1], names[2], names.back(),
+                                  directories.empty() ? "no directory" : directories)},
+                caller);
+}
+
+}  // namespace
+
+std::optional<Error> moveLimitError(std::size_t moves, std::size_t maxMoves, int line, int column) {
+  if (moves <= maxMoves) return std::nullopt;
+  return Error{line, column,
+               fmt::format("the program makes more than {} moves (the limit) by this block: a toolpath that long takes "
+                           "hours to simulate, and nested repeats can ask for billions; if it is meant, raise the "
+                           "limit with --max-moves or [sim] max_moves",
+                           maxMoves)};
+}
+
+Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
+                  std::vector<Error>& warnings, std::vector<Error>& notes) {
+  return ProgramRunner(program, options, toolpath, warnings, notes).run();
+}
+
+}  // namespace lathesim::interp
