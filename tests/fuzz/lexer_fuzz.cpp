@@ -46,6 +46,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const ReadNote& note : reader.notes()) show(Error{note.line, note.column, note.message}, text);
   const Program program = readProgram(text, /*blockDelete=*/true, Dialect::FanucA);
   for (const ProgramBlock& block : program.blocks)
-    if (!block.parsed.ok()) show(block.parsed.error(), text);
+    if (!block.content.ok()) show(block.content.error(), text);
   return 0;
 }
