@@ -1,5 +1,5 @@
 // libFuzzer harness: a whole program interpreted — cycles, subprograms (M98 within the text),
-// compensation, corners, travel — under a dialect and control preset the first bytes choose,
+// Custom Macro B (variables, expressions, loops, G65), compensation, corners, travel — under a dialect and control preset the first bytes choose,
 // then timed and written as toolpath.csv, as a run does. Errors are answers; a crash, a hang,
 // a leak or undefined behaviour is a finding.
 
@@ -30,7 +30,10 @@ InterpreterOptions optionsFrom(fuzz::FuzzInput& input) {
   options.offsets[1] = ToolOffset{0.0, 0.0, 0.8, 3, 0.0, 0.0, 0.0};
   options.offsets[2] = ToolOffset{1.5, -2.0, 0.4, 8, 0.02, 0.0, 0.0};
   if (input.choice(2) == 0) options.machine.travel = TravelLimits{-10.0, 300.0, -200.0, 250.0};
-  options.maxMoves = 20000;  // the limit holds at any figure; a small one keeps runs fast
+  // The limits hold at any figure; small ones keep runs fast (the defaults let an endless
+  // macro loop run a million blocks, 15 s under the sanitizers).
+  options.maxMoves = 20000;
+  options.maxSteps = 20000;
   return options;
 }
 
