@@ -46,6 +46,14 @@ TEST(CommonSlips, DecimalPointWhereAWholeNumberIsMeant) {
               "G73 R2.5 is not a number of passes d: a decimal point where a whole number is meant");
 }
 
+// Found by the interpreter fuzz harness: ",A30." read as Fanuc's comma word indexed the G65
+// argument table with a lower-case letter, past its end (undefined behaviour).
+TEST(CommonSlips, CommaBetweenMacroArguments) {
+  expectError(run("G65 P9010 D40, A30. B-20.\nM30\nO9010\nM99\n"), 1, 14,
+              "',A30.' in a G65 block: a macro call's arguments are letters and numbers one after another, with no "
+              "comma between them");
+}
+
 TEST(CommonSlips, ProgramOfOnlyCommentsOrNothing) {
   for (const char* text : {"(PART 1234)\n(OP 10)\n", "%\n(only a comment)\n%\n", "[BILLET X40 Z80\n(T1)\n"}) {
     const InterpretResult r = run(text);
