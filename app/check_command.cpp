@@ -2,6 +2,7 @@
 // deviation.hpp for how), attribute each gouge to the moves that cut it, and write the run's
 // files plus the deviation pictures and report.json's "check" section.
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "measure/drawing.hpp"
 #include "measure/gouge_causes.hpp"
 #include "measure/process_figures.hpp"
+#include "measure/thread_check.hpp"
 #include "app/run_pipeline.hpp"
 #include "geometry/mesh_slice.hpp"
 #include "render/deviation_image.hpp"
@@ -23,11 +25,13 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// The drawing's outline from a profile file, or nullopt with the diagnostics printed.
-std::optional<MeridianProfile> loadProfile(const std::filesystem::path& file) {
+/// The drawing's outline from a profile file, or nullopt with the diagnostics printed; its
+/// thread callouts into `threads`.
+std::optional<MeridianProfile> loadProfile(const std::filesystem::path& file, std::vector<measure::ThreadCallout>& threads) {
   measure::DrawingResult drawing = measure::loadDrawing(file);
   for (const auto& d : drawing.diagnostics) std::cerr << interp::format(d) << '\n';
   if (!drawing.outline) return std::nullopt;
+  threads = std::move(drawing.threads);
   return MeridianProfile::fromPolygon(std::move(*drawing.outline));
 }
 
@@ -70,12 +74,18 @@ std::optional<MeridianProfile> simulateTarget(const CheckOptions& options, doubl
 
 Json place(const RZ& p) { return {{"z", p.y()}, {"diameter", diameterOf(p)}}; }
 
-Json checkJson(const CheckOptions& options, const measure::DeviationReport& d, const measure::ProcessFigures& p, double checkS) {
+bool allWithin(const measure::DeviationReport& d, const std::vector<measure::ThreadCheck>& threads) {
+  return d.withinTolerance() &&
+         std::all_of(threads.begin(), threads.end(), [](const measure::ThreadCheck& t) { return t.within(); });
+}
+
+Json checkJson(const CheckOptions& options, const measure::DeviationReport& d, const std::vector<measure::ThreadCheck>& threadChecks,
+               const measure::ProcessFigures& p, double checkS) {
   Json check;
   check["target"] = options.drawing ? options.drawing->string() : options.targetProgram->string();
   check["target_kind"] = targetKind(options);
   check["tolerance_mm"] = d.toleranceMm;
-  check["within_tolerance"] = d.withinTolerance();
+  check["within_tolerance"] = allWithin(d, threadChecks);
   check["max_excess_mm"] = d.maxExcessMm;
   check["max_excess_at"] = place(d.maxExcessAt);
   check["max_gouge_mm"] = d.maxGougeMm;
@@ -90,6 +100,15 @@ Json checkJson(const CheckOptions& options, const measure::DeviationReport& d, c
                        {"z_range", {r.lower.y(), r.upper.y()}},
                        {"diameter_range", {diameterOf(r.lower), diameterOf(r.upper)}},
                        {"lines", r.lines}});
+  auto& threads = check["threads"] = Json::array();
+  for (const auto& t : threadChecks) {
+    Json items = Json::array();
+    for (const auto& i : t.items)
+      items.push_back({{"name", i.name}, {"expected", i.expected}, {"measured", i.measured}, {"within", i.within}});
+    Json thread{{"z_range", {t.callout.zLowMm, t.callout.zHighMm}}, {"within", t.within()}, {"items", items}};
+    if (t.line) thread["line"] = *t.line;
+    threads.push_back(thread);
+  }
   Json process;
   process["rapid_path_mm"] = p.rapidPathMm;
   process["feed_path_mm"] = p.feedPathMm;
@@ -117,10 +136,20 @@ std::string where(const RZ& p) {
   return text;
 }
 
-void printSummary(const CheckOptions& options, const measure::DeviationReport& d) {
+void printSummary(const CheckOptions& options, const measure::DeviationReport& d,
+                  const std::vector<measure::ThreadCheck>& threads) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   std::cout << interp::printable(options.run.program.string()) << " against " << interp::printable(target) << ": "
-            << (d.withinTolerance() ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm\n";
+            << (allWithin(d, threads) ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm\n";
+  for (const auto& t : threads) {
+    std::cout << "  thread Z" << fixed(t.callout.zLowMm, 3) << "..Z" << fixed(t.callout.zHighMm, 3);
+    if (t.line) std::cout << " (line " << *t.line << ")";
+    std::cout << ": " << (t.within() ? "as called out" : "NOT as called out");
+    for (const auto& i : t.items)
+      std::cout << (&i == &t.items.front() ? "; " : ", ") << i.name << " " << i.measured
+                << (i.within ? "" : " (expected " + i.expected + ")");
+    std::cout << '\n';
+  }
   std::cout << "  max excess " << fixed(d.maxExcessMm, 3) << " mm";
   if (d.maxExcessMm >= 0.0005) std::cout << " at " << where(d.maxExcessAt);
   std::cout << ", excess volume " << fixed(d.excessVolumeMm3, 1) << " mm³\n";
@@ -140,14 +169,20 @@ void printSummary(const CheckOptions& options, const measure::DeviationReport& d
   std::cout << "  outputs in " << interp::printable(options.run.out.string()) << "/\n";
 }
 
+bool inZones(const std::vector<measure::ZRange>& zones, double z) {
+  return std::any_of(zones.begin(), zones.end(), [z](const measure::ZRange& r) { return r.contains(z); });
+}
+
 /// Each mesh vertex's deviation: the drawing's signed distance at its (r, z), as for the
-/// part's surface samples (the vertex lies on the part's surface).
-std::vector<float> vertexDeviations(const TriangleMesh& part, const MeridianProfile& drawing) {
+/// part's surface samples (the vertex lies on the part's surface); 0 in a thread's zone,
+/// which its callout checks.
+std::vector<float> vertexDeviations(const TriangleMesh& part, const MeridianProfile& drawing,
+                                    const std::vector<measure::ZRange>& threadZones) {
   std::vector<float> deviations;
   deviations.reserve(part.vertices.size());
   for (const Eigen::Vector3f& v : part.vertices) {
     const RZ p(std::hypot(static_cast<double>(v.x()), static_cast<double>(v.y())), v.z());
-    deviations.push_back(static_cast<float>(drawing.signedDistance(p).signedMm));
+    deviations.push_back(inZones(threadZones, p.y()) ? 0.0f : static_cast<float>(drawing.signedDistance(p).signedMm));
   }
   return deviations;
 }
@@ -164,7 +199,8 @@ std::string regionLabel(const measure::DeviationRegion& r) {
 constexpr std::size_t kLabelledRegions = 4;
 
 render::SectionImage sectionImage(const std::string& title, const SampledSection& section, const MeridianProfile& part,
-                                  const MeridianProfile& drawing, const measure::DeviationReport& d) {
+                                  const MeridianProfile& drawing, const measure::DeviationReport& d,
+                                  const std::vector<measure::ZRange>& threadZones) {
   render::SectionImage image;
   image.title = title;
   image.drawing = drawing.surface();
@@ -173,6 +209,7 @@ render::SectionImage sectionImage(const std::string& title, const SampledSection
   for (int k = 0; k < section.zCount; ++k)
     for (int i = 0; i < section.rCount; ++i) {
       const RZ p(i * section.stepMm, section.zFirstMm + k * section.stepMm);
+      if (inZones(threadZones, p.y())) continue;
       const bool inPart = section.at(i, k) < 0, inDrawing = drawing.contains(p);
       if (inPart && !inDrawing) image.excessCells.push_back(p);
       if (inDrawing && !inPart) image.gougeCells.push_back(p);
@@ -184,30 +221,36 @@ render::SectionImage sectionImage(const std::string& title, const SampledSection
 
 void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
                           const MeridianProfile& part, const MeridianProfile& drawing, const measure::DeviationReport& d,
-                          StagedOutput& out) {
+                          const std::vector<measure::ZRange>& threadZones, StagedOutput& out,
+                          std::vector<HtmlPicture>& pictures) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   render::DeviationImageOptions image;
   image.title = options.run.program.string() + " against " + target;
   image.toleranceMm = d.toleranceMm;
   image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
                   " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
-  out.write("deviation.png", [&](const std::filesystem::path& file) {
-    render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing), image, file);
+  const auto deviationPng = out.write("deviation.png", [&](const std::filesystem::path& file) {
+    render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing, threadZones), image, file);
   });
-  render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d);
+  pictures.push_back({"deviation.png: the part coloured by its deviation from the drawing", deviationPng});
+  render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d, threadZones);
   half.caption = image.caption;
-  out.write("section.png", [&](const std::filesystem::path& file) { render::writeSectionImagePng(half, file); });
+  const auto sectionPng =
+      out.write("section.png", [&](const std::filesystem::path& file) { render::writeSectionImagePng(half, file); });
+  pictures.push_back({"section.png: the half-section against the drawing", sectionPng});
 }
 
 }  // namespace
 
 int checkCommand(const CheckOptions& options) {
   std::optional<MeridianProfile> drawing;
-  if (options.drawing && !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing)))
+  std::vector<measure::ThreadCallout> callouts;
+  if (options.drawing &&
+      !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing, callouts)))
     return job::kExitBadInput;  // before the long part
-  StagedOutput out(options.run.out);
   Stopwatch clock;
-  std::optional<SimulatedRun> run = simulateProgram(options.run, clock);
+  StagedOutput out(options.run.out);
+  std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
   if (!run) return job::kExitBadInput;
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
@@ -217,25 +260,32 @@ int checkCommand(const CheckOptions& options) {
   run->progress->stage("measuring against the drawing");
   SampledSection section = run->stock->meridianSection();
   const MeridianProfile part = MeridianProfile::fromSection(section);
-  measure::DeviationReport deviation = measure::measureDeviation(section, part, *drawing, tolerance);
+  // A thread's zone is checked by its callout, not by one meridian section.
+  std::vector<measure::ZRange> threadZones;
+  std::vector<measure::ThreadCheck> threadChecks;
+  for (const auto& callout : callouts) {
+    threadZones.push_back({callout.zLowMm, callout.zHighMm});
+    threadChecks.push_back(measure::checkThread(callout, run->figures.threads, voxel));
+  }
+  measure::DeviationReport deviation = measure::measureDeviation(section, part, *drawing, tolerance, threadZones);
   measure::attributeGouges(deviation, run->job.toolpath, outlinesOf(run->job.setup), run->job.setup.stock, run->figures.voxelMm);
   const measure::ProcessFigures process = measure::processFigures(run->job.toolpath, run->figures.simulation, voxel);
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
-  stageRunFiles(*run, out, clock);
-  stageDeviationImages(options, run->part, section, part, *drawing, deviation, out);
+  stageRunFiles(*run, options.run, out, clock);
+  stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);
-  report["check"] = checkJson(options, deviation, process, checkS);
-  out.write("report.json", [&](const std::filesystem::path& file) { writeJson(report, file); });
+  report["check"] = checkJson(options, deviation, threadChecks, process, checkS);
+  stageReports(*run, report, out);
   out.commit();
   run->progress->stage("done");
   run->progress->finish();
 
-  printSummary(options, deviation);
-  return deviation.withinTolerance() ? job::kExitOk : job::kExitOutOfTolerance;
+  printSummary(options, deviation, threadChecks);
+  return allWithin(deviation, threadChecks) ? job::kExitOk : job::kExitOutOfTolerance;
 }
 
 }  // namespace lathesim::app

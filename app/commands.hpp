@@ -7,9 +7,11 @@
 #include <vector>
 
 #include "interp/control/dialect.hpp"
+#include "interp/motion/toolpath_clock.hpp"
 #include "job/exit_status.hpp"
 #include "job/job.hpp"
 #include "job/setup.hpp"
+#include "render/part_image.hpp"
 
 namespace lathesim::app {
 
@@ -21,6 +23,22 @@ using job::kDefaultVoxelMm;  // when neither --voxel nor [sim] voxel says
 /// (Φ50 at 0.25 mm: volume −0.05 % here, −0.17 % at 0.05).
 inline constexpr double kExportAdaptivity = 0.002;
 
+/// The pictures of the part: part.png (the isometric view) always, and these views besides.
+struct PictureRequest {
+  std::vector<render::PartView> views;  // --views: part-front.png, part-section.png
+  int widthPx = 1600, heightPx = 1200;  // --size
+};
+
+/// --animate: the cut as a video, frames at an even pace.
+struct AnimationRequest {
+  bool mp4 = false;  // cut.mp4
+  bool gif = false;  // cut.gif too
+  interp::Pace pace = interp::Pace::MachineTime;
+  int frames = 120;
+  double framesPerSecond = 15;
+  int widthPx = 800, heightPx = 600;  // --video-size
+};
+
 struct RunOptions {
   std::filesystem::path program;
   std::optional<std::filesystem::path> setup;
@@ -30,6 +48,9 @@ struct RunOptions {
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
   std::vector<std::filesystem::path> programDirectories;  // --programs
   std::optional<std::string> stock;  // --stock D40xL80 (job/stock_option.hpp)
+  PictureRequest pictures;
+  AnimationRequest animation;
+  std::vector<std::string> exports;  // --export: gltf, glb, ply, obj (part.gltf, …)
 };
 
 int runCommand(const RunOptions& options);

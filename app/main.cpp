@@ -7,6 +7,7 @@
 #include "app/batch_cli.hpp"
 #include "app/commands.hpp"
 #include "app/interrupts.hpp"
+#include "app/picture_cli.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/printable_text.hpp"
@@ -97,6 +98,8 @@ int main(int argc, char** argv) {
         });
   }
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)")->check(CLI::ExistingFile);
+  lathesim::app::addPictureOptions(*runCmd, run);
+  lathesim::app::addPictureOptions(*checkCmd, check.run);
 
   // --dialect, --control, --block-skip, --max-steps and --max-moves on every command that reads a program.
   struct OverrideArguments {

@@ -1,12 +1,61 @@
 #include "app/report.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include "app/staged_output.hpp"
 
-namespace lathesim::app {
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <cstdio>
+#include <stdexcept>
 
+namespace lathesim::app {
 namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json spreadJson(const measure::Spread& s) {
+  return {{"mean", s.mean}, {"min", s.min}, {"max", s.max}, {"spread", s.range()}};
+}
+
+Json threadJson(const measure::MeasuredThread& thread) {
+  const measure::ProgrammedThread& p = thread.programmed;
+  const measure::ThreadMeasurement& m = thread.measured;
+  Json programmed{{"lead_mm", p.leadMm},
+                  {"starts", p.starts},
+                  {"hand", p.leadAlongZ ? (p.rightHand ? "right" : "left") : "face"},
+                  {"start_angle_deg", p.startAngleDeg},
+                  {"root_diameter_mm", 2 * p.rootRadiusMm},
+                  {"z_range", {p.zMinMm, p.zMaxMm}}};
+  Json measured;
+  if (m.problem) {
+    measured["problem"] = *m.problem;
+  } else {
+    measured = {{"angles_deg", m.anglesDeg},
+                {"grooves", m.grooves},
+                {"z_range", {m.zLowMm, m.zHighMm}},
+                {"lead_mm", spreadJson(m.leadMm)},
+                {"lead_per_turn_mm", m.leadPerTurnMm},
+                {"pitch_mm", spreadJson(m.pitchMm)},
+                {"starts", m.starts},
+                {"hand", m.rightHand ? "right" : "left"},
+                {"start_angle_deg", m.startAngleDeg},
+                {"major_diameter_mm", spreadJson(m.majorDiameterMm)},
+                {"minor_diameter_mm", spreadJson(m.minorDiameterMm)},
+                {"pitch_diameter_mm", spreadJson(m.pitchDiameterMm)},
+                {"flank_angles_deg", {{"left", spreadJson(m.leftFlankDeg)}, {"right", spreadJson(m.rightFlankDeg)}}}};
+  }
+  return {{"line", p.line},
+          {"column", p.column},
+          {"code", p.code},
+          {"kind", p.internal ? "internal" : "external"},
+          {"programmed", programmed},
+          {"measured", measured}};
+}
+
+std::string fixed(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
 
 nlohmann::ordered_json valueJson(const interp::ParameterValue& value) {
   if (const auto* name = std::get_if<std::string>(&value)) return *name;
@@ -22,6 +71,22 @@ nlohmann::ordered_json controlJson(const interp::Control& control) {
 }
 
 }  // namespace
+
+std::string threadSummary(const measure::MeasuredThread& thread) {
+  const measure::ProgrammedThread& p = thread.programmed;
+  const measure::ThreadMeasurement& m = thread.measured;
+  std::string line = "thread, line " + std::to_string(p.line) + " (" + p.code + ", " +
+                     (p.internal ? "internal" : "external") + "): programmed lead " + fixed(p.leadMm, 4) + " mm, " +
+                     std::to_string(p.starts) + (p.starts == 1 ? " start, " : " starts, ") +
+                     (p.leadAlongZ ? (p.rightHand ? "right" : "left") : "face") + "-hand; ";
+  if (m.problem) return line + "not measured: " + *m.problem;
+  return line + "measured lead " + fixed(m.leadMm.mean, 4) + " mm (±" + fixed(m.leadMm.range() / 2, 4) + " over " +
+         std::to_string(m.anglesDeg.size()) + " angles), " + std::to_string(m.starts) +
+         (m.starts == 1 ? " start, " : " starts, ") + (m.rightHand ? "right" : "left") + "-hand, major Φ" +
+         fixed(m.majorDiameterMm.mean, 3) + ", minor Φ" + fixed(m.minorDiameterMm.mean, 3) + " (programmed root Φ" +
+         fixed(2 * p.rootRadiusMm, 3) + "), pitch Φ" + fixed(m.pitchDiameterMm.mean, 3) + ", flanks " +
+         fixed(m.leftFlankDeg.mean, 1) + "°/" + fixed(m.rightFlankDeg.mean, 1) + "°";
+}
 
 nlohmann::ordered_json reportJson(const RunFigures& f) {
   nlohmann::ordered_json report;
@@ -52,6 +117,8 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   auto& blocks = report["blocks"] = nlohmann::ordered_json::array();
   for (const auto& b : f.simulation.blocks)
     blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}});
+  auto& threads = report["threads"] = nlohmann::ordered_json::array();
+  for (const auto& t : f.threads) threads.push_back(threadJson(t));
   auto& stops = report["stops"] = nlohmann::ordered_json::array();
   for (const auto& s : f.stops) stops.push_back({{"line", s.line}, {"column", s.column}, {"code", s.code}});
   auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
@@ -63,10 +130,10 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
                         {"simulate", f.timing.simulateS},
                         {"mesh", f.timing.meshS},
                         {"render", f.timing.renderS}};
+  if (f.timing.animateS > 0) report["timing_s"]["animate"] = f.timing.animateS;
   return report;
 }
 
-void writeReportJson(const RunFigures& f, const std::filesystem::path& file) { writeJson(reportJson(f), file); }
 
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file) {
   // Text a program quoted (a comment in a note) need not be UTF-8: such bytes become U+FFFD.

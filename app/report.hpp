@@ -10,6 +10,7 @@
 #include "interp/control/control_preset.hpp"
 #include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
+#include "measure/thread_measure.hpp"
 #include "interp/move.hpp"
 #include "sim/simulate.hpp"
 
@@ -17,6 +18,7 @@ namespace lathesim::app {
 
 struct RunTimings {
   double parseS = 0, simulateS = 0, meshS = 0, renderS = 0;
+  double animateS = 0;  // --animate: drawing and encoding the frames (not counted in simulateS)
 };
 
 struct RunFigures {
@@ -36,6 +38,7 @@ struct RunFigures {
   double cycleTimeS = 0;  // the machine time of all moves (interp/motion/cycle_time.hpp)
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
   sim::SimulationResult simulation;
+  std::vector<measure::MeasuredThread> threads;  // every thread cut, as programmed and as measured
   std::vector<interp::ProgramStop> stops;  // M00/M01 reached: listed, not timed
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;
@@ -45,7 +48,9 @@ struct RunFigures {
 /// The report as JSON, for commands that add their own section (check adds "check").
 nlohmann::ordered_json reportJson(const RunFigures& figures);
 
-void writeReportJson(const RunFigures& figures, const std::filesystem::path& file);
+/// One line for the terminal naming a thread and what was measured of it.
+std::string threadSummary(const measure::MeasuredThread& thread);
+
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file);
 
 }  // namespace lathesim::app

@@ -8,15 +8,15 @@
 namespace lathesim::app {
 
 int runCommand(const RunOptions& options) {
-  StagedOutput out(options.out);  // first: a folder that takes no files is said before the long part
   Stopwatch clock;
-  std::optional<SimulatedRun> run = simulateProgram(options, clock);
+  StagedOutput out(options.out);
+  std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return job::kExitBadInput;
   meshPart(*run, clock);
-  stageRunFiles(*run, out, clock);
+  stageRunFiles(*run, options, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
-  out.write("report.json", [&](const std::filesystem::path& file) { writeReportJson(figures, file); });
+  stageReports(*run, reportJson(figures), out);
   out.commit();
   run->progress->stage("done");
   run->progress->finish();
@@ -27,6 +27,7 @@ int runCommand(const RunOptions& options) {
             << interp::printable(options.out.string()) << "/\n";
   for (const auto& c : figures.simulation.collisions)
     std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
+  for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';
   return job::kExitOk;
 }
 

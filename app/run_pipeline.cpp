@@ -2,25 +2,24 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
+#include <fstream>
 #include <iostream>
 
 #include "app/at_line.hpp"
+#include "app/cut_recording.hpp"
+#include "app/part_pictures.hpp"
 #include "job/collision_checks.hpp"
-#include "app/tool_picture.hpp"
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
+#include "measure/thread_measure.hpp"
 #include "render/mesh_files.hpp"
 #include "render/part_image.hpp"
+#include "render/scene_export.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::app {
-
-sim::ToolOutlines outlinesOf(const job::Setup& setup) {
-  sim::ToolOutlines tools;
-  for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
-  return tools;
-}
 
 namespace {
 
@@ -33,7 +32,20 @@ void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, messa
 
 }  // namespace
 
-std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock) {
+sim::ToolOutlines outlinesOf(const job::Setup& setup) {
+  sim::ToolOutlines tools;
+  for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
+  return tools;
+}
+
+sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
+  sim::ToolThicknesses thicknesses;
+  for (const auto& tool : setup.tools)
+    if (tool.thicknessMm) thicknesses.emplace(tool.number, *tool.thicknessMm);
+  return thicknesses;
+}
+
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out) {
   std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
   if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
   SimulatedRun run;
@@ -64,11 +76,25 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.stockVolumeMm3 = run.stock->volumeMm3();
   if (auto problem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
+  std::unique_ptr<CutRecording> recording;
+  if (options.animation.mp4 && out)
+    recording = std::make_unique<CutRecording>(run.job, options.animation, figures.program, *out);
   figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
-                                     [&](int done, int total) { run.progress->update(done, total); }, &checks);
+                                     [&](int done, int total) { run.progress->update(done, total); }, &checks,
+                                     thicknessesOf(setup), recording ? recording->observer() : sim::CutObserver{});
+  if (recording) {
+    run.progress->stage("finishing the video");
+    recording->finish(*run.stock);
+    figures.timing.animateS = recording->secondsSpent();
+  }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
-  figures.timing.simulateS = clock.lap();
+  const sim::ToolOutlines outlines = outlinesOf(setup);
+  figures.threads = measure::measureThreads(*run.stock, run.job.toolpath, outlines, setup.dialect);
+  figures.timing.simulateS = clock.lap() - figures.timing.animateS;
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
+  for (const auto& thread : figures.threads)
+    if (const auto tooWide = measure::threadToolTooWide(thread, outlines.at(thread.programmed.tool), voxel))
+      warn(run, thread.programmed.line, thread.programmed.column, *tooWide);
   return run;
 }
 
@@ -87,8 +113,9 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
   figures.timing.meshS = clock.lap();
 }
 
-void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
-  run.progress->stage("writing STL, VDB and the render");
+void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock) {
+  const PictureRequest& pictures = options.pictures;
+  run.progress->stage("writing STL, VDB, the pictures and the report");
   using Path = std::filesystem::path;
   out.write("part.stl", [&](const Path& file) { render::writeBinaryStl(run.part, file); });
   out.write("toolpath.csv", [&](const Path& file) {
@@ -96,11 +123,55 @@ void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock) {
   });
   out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
   out.write("stock.vdb", [&](const Path& file) { run.stock->writeVdb(file); });
-  render::PartImageOptions image;
-  image.title = run.figures.program;
-  image.tool = toolPictureAtEnd(run.job.setup, run.job.toolpath);
-  out.write("part.png", [&](const Path& file) { render::writePartImagePng(run.part, run.job.toolpath, image, file); });
+  render::PartImageOptions image =
+      partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
+  addPartSection(image, run.stock->meridianSection(), run.figures.voxelMm);
+  std::vector<render::PartView> views{render::PartView::Iso};
+  for (const render::PartView view : pictures.views)
+    if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);
+  for (const render::PartView view : views) {
+    image.view = view;
+    const auto png = out.write(pictureFileName(view),
+                               [&](const Path& file) { render::writePartImagePng(run.part, run.job.toolpath, image, file); });
+    run.pictures.push_back({pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view", png});
+  }
+  // A close-up of the first thread measured: six pitches around the middle of its grooves,
+  // from a pitch inside its root to half a pitch outside its crest, seen from the front so
+  // that its profile shows true on the silhouette.
+  for (const auto& thread : run.figures.threads) {
+    if (thread.measured.problem) continue;
+    const measure::ThreadMeasurement& m = thread.measured;
+    const double middle = 0.5 * (m.zLowMm + m.zHighMm), pitch = m.pitchMm.mean;
+    const double inner = 0.5 * std::min(m.minorDiameterMm.min, m.majorDiameterMm.min);
+    const double outer = 0.5 * std::max(m.majorDiameterMm.max, m.minorDiameterMm.max);
+    render::PartImageOptions closeUp;
+    closeUp.widthPx = pictures.widthPx;
+    closeUp.heightPx = pictures.heightPx;
+    closeUp.view = render::PartView::Front;
+    closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
+    closeUp.closeUp = render::CloseUp{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
+    const auto png = out.write("thread.png",
+                               [&](const Path& file) { render::writePartImagePng(run.part, run.job.toolpath, closeUp, file); });
+    run.pictures.push_back({"thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line), png});
+    break;
+  }
+  run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
+  for (const std::string& format : options.exports) {
+    out.write("part." + format, [&](const Path& file) {
+      if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
+      if (format == "glb") render::writeFileBytes(run.modelGlb, file);
+      if (format == "ply") render::writePartPly(run.part, file);
+      if (format == "obj") render::writePartObj(run.part, file);
+    });
+  }
   run.figures.timing.renderS = clock.lap();
+}
+
+void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
+  using Path = std::filesystem::path;
+  out.write("report.json", [&](const Path& file) { writeJson(report, file); });
+  out.write("report.html",
+            [&](const Path& file) { writeReportHtml(report, run.job.programText, run.pictures, run.modelGlb, file); });
 }
 
 double peakMemoryMb() {

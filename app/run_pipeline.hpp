@@ -10,6 +10,7 @@
 #include "job/job.hpp"
 #include "app/progress.hpp"
 #include "app/report.hpp"
+#include "app/report_html.hpp"
 #include "app/staged_output.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock.hpp"
@@ -35,19 +36,27 @@ struct SimulatedRun {
   std::unique_ptr<Progress> progress;
   RunFigures figures;  // parse and simulate filled; mesh and render by the later steps
   TriangleMesh part;   // empty until meshPart
+  std::vector<HtmlPicture> pictures;  // staged, for report.html
+  std::string modelGlb;               // the part and toolpath for report.html's 3D view
 };
 
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
+sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
 
-/// Reads the setup and program, checks the grid and simulates (progress on a terminal).
+/// Reads the setup and program, checks the grid and simulates (progress on a terminal);
+/// records the cut into `out` when options.animation asks and `out` is given.
 /// Bad input: the diagnostics are printed and nullopt returned.
-std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock);
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out = nullptr);
 
 /// Meshes the final stock into run.part (figures: mesh volume, triangles, time).
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
-/// Stages the run's files into `out`, and times them as rendering.
-void stageRunFiles(SimulatedRun& run, StagedOutput& out, Stopwatch& clock);
+/// Stages the run's files into `out` (the pictures as options.pictures asks, the exports),
+/// and times them as rendering.
+void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock);
+
+/// Stages report.json (`report`) and report.html.
+void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out);
 
 /// This process's peak resident memory so far (MB; an Xvfb it started is not counted).
 double peakMemoryMb();

@@ -85,11 +85,12 @@ fs::path StagedOutput::stage(const std::string& name) {
   return temp;
 }
 
-void StagedOutput::write(const std::string& name, const std::function<void(const fs::path&)>& writer) {
+fs::path StagedOutput::write(const std::string& name, const std::function<void(const fs::path&)>& writer) {
   const fs::path temp = stage(name);
   try {
     writer(temp);
     syncFile(temp);
+    return temp;
   } catch (const std::exception& e) {
     // The writers name the file they were given: name the one the user will look for.
     const fs::path final = folder_ / name;

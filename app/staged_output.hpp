@@ -21,16 +21,17 @@ class StagedOutput {
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
 
-  /// Writes `folder/name` through `writer`, given the temporary path; a failure (an
-  /// exception, a full disk found when the file is synced) throws std::runtime_error
-  /// naming the final file.
-  void write(const std::string& name, const std::function<void(const std::filesystem::path&)>& writer);
+  /// Writes `folder/name` through `writer`, given the temporary path, and returns that path;
+  /// a failure (an exception, a full disk found when the file is synced) throws
+  /// std::runtime_error naming the final file.
+  std::filesystem::path write(const std::string& name, const std::function<void(const std::filesystem::path&)>& writer);
+  /// Where to write the file that will become `folder/name`, for a writer that another
+  /// process runs (ffmpeg); write() when lathesim writes it.
+  std::filesystem::path stage(const std::string& name);
   /// Renames every staged file into place.
   void commit();
 
  private:
-  std::filesystem::path stage(const std::string& name);  // the temporary for `folder/name`
-
   std::filesystem::path folder_;
   std::vector<std::filesystem::path> madeFolders_;  // outermost first
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temp, final

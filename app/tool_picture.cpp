@@ -4,11 +4,9 @@
 
 namespace lathesim::app {
 
-render::ToolPicture toolPictureAtEnd(const job::Setup& setup, const interp::Toolpath& toolpath) {
+render::ToolPicture toolPicture(const job::Setup& setup, int number, const RZ& position) {
   render::ToolPicture picture;
-  picture.position = toolpath.moves.empty() ? toolpath.startPosition : toolpath.moves.back().to;
-  // The first tool is mounted at start; interp checks every T word against the setup.
-  const int number = toolpath.moves.empty() ? 0 : toolpath.moves.back().tool;
+  picture.position = position;
   const auto tool = std::find_if(setup.tools.begin(), setup.tools.end(),
                                  [number](const job::ToolDefinition& t) { return t.number == number; });
   const job::ToolDefinition* mounted = tool != setup.tools.end() ? &*tool : setup.tools.empty() ? nullptr : &setup.tools.front();
@@ -16,6 +14,12 @@ render::ToolPicture toolPictureAtEnd(const job::Setup& setup, const interp::Tool
   picture.insert = mounted->outline.vertices();
   if (mounted->holderBody) picture.holder = mounted->holderBody->vertices();
   return picture;
+}
+
+render::ToolPicture toolPictureAtEnd(const job::Setup& setup, const interp::Toolpath& toolpath) {
+  // The first tool is mounted at start; interp checks every T word against the setup.
+  if (toolpath.moves.empty()) return toolPicture(setup, 0, toolpath.startPosition);
+  return toolPicture(setup, toolpath.moves.back().tool, toolpath.moves.back().to);
 }
 
 }  // namespace lathesim::app

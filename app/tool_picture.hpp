@@ -8,6 +8,9 @@
 
 namespace lathesim::app {
 
+/// Tool `number` standing at `position` (the first tool if the setup lacks it).
+render::ToolPicture toolPicture(const job::Setup& setup, int number, const RZ& position);
+
 render::ToolPicture toolPictureAtEnd(const job::Setup& setup, const interp::Toolpath& toolpath);
 
 }  // namespace lathesim::app

@@ -181,6 +181,16 @@ void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, doub
   }
 }
 
+double RevolvedRegion::planarDistance(double r, double z, double cap) const {
+  double d = std::numeric_limits<double>::infinity();
+  for (const Piece& piece : pieces_) d = std::min(d, pieceDistance(edges_.data(), piece, r, z, cap));
+  return d;
+}
+
+void RevolvedRegion::planarDistanceColumnMin(double r, double z0, double dz, double cap, double (&out)[kColumn]) const {
+  for (const Piece& piece : pieces_) pieceDistanceColumn(edges_.data(), piece, r, z0, dz, cap, out);
+}
+
 RevolvedRegion RevolvedRegion::near(double rho, double z, double radius) const {
   RevolvedRegion subset;
   nearInto(rho, z, radius, subset);

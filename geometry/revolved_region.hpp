@@ -30,6 +30,13 @@ class RevolvedRegion {
   static constexpr int kColumn = 8;
   void signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const;
 
+  /// The plain 2D signed distance of (r, z) to the union of the polygons, r any sign: no
+  /// revolution, no mirror image (for regions that are not revolved: a thread's tool outline,
+  /// a cut with the spindle stopped). Same meaning of cap as signedDistance.
+  double planarDistance(double r, double z, double cap) const;
+  /// The same at (r, z0 + k·dz), k = 0…kColumn−1, each lowered into out[k] (out is not reset).
+  void planarDistanceColumnMin(double r, double z0, double dz, double cap, double (&out)[kColumn]) const;
+
   /// The part of this region that matters within `radius` of (ρ, z): the pieces that come
   /// that close, and of each only the edges that can be nearest there. Evaluating it there
   /// gives the same values as the whole region wherever they are ≤ radius minus the

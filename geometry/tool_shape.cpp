@@ -210,11 +210,13 @@ BuiltTool grooveTool(double widthMm, double leftRadiusMm, double rightRadiusMm, 
   return {std::move(tool), {}, {}};
 }
 
-BuiltTool threadTool(double profileDeg, double pitchMm, double noseRadiusMm, std::optional<int> tipNumber) {
+BuiltTool threadTool(double profileDeg, double pitchMm, double noseRadiusMm, std::optional<int> tipNumber,
+                     bool internal) {
   if (!(profileDeg > 0 && profileDeg < 180)) return failed("a thread profile angle must lie between 0° and 180°");
   if (!(pitchMm > 0)) return failed("a thread tool needs a positive pitch");
   std::string problem;
-  const auto tip = checkedTip(tipNumber, 8, {8, 0}, "a thread tool", problem);
+  const auto tip = internal ? checkedTip(tipNumber, 6, {6, 0}, "an internal thread tool", problem)
+                            : checkedTip(tipNumber, 8, {8, 0}, "a thread tool", problem);
   if (!tip) return failed(problem);
   const double half = rad(profileDeg) / 2;
   const double height = pitchMm / (2 * std::tan(half));  // the fundamental triangle: width = pitch at the top
@@ -223,7 +225,7 @@ BuiltTool threadTool(double profileDeg, double pitchMm, double noseRadiusMm, std
     return failed("nose radius " + std::to_string(r) + " mm is too large for the profile");
   // The sharp V: apex at the origin; the nose centre on the axis of symmetry, r/sin(half) above it.
   const ZX nose(0, r / std::sin(half));
-  const ZX point = *tip == 8 ? ZX(0, nose.y() - r) : nose;
+  const ZX point = *tip == 0 ? nose : ZX(0, nose.y() - r);
   // The inset triangle of the rounded V, then rounded by r, cut at the fundamental height.
   const double insetTop = height + 2 * r;  // tall enough; the cut at `height` is applied below
   std::vector<ZX> outline = roundedOutline({nose, ZX(-insetTop * std::tan(half), insetTop + nose.y()),
@@ -233,7 +235,10 @@ BuiltTool threadTool(double profileDeg, double pitchMm, double noseRadiusMm, std
     if (p.y() < height) clipped.push_back(p);
   clipped.push_back(ZX(-pitchMm / 2, height));
   clipped.push_back(ZX(pitchMm / 2, height));
-  ToolShape tool{placed(clipped, -point), std::nullopt, *tip, r, toRZ(nose - point), toRZ(-point)};
+  // An internal insert is the same V pointing outward: mirrored in X about its programmed point.
+  const auto facing = [internal](const ZX& p) { return internal ? ZX(p.x(), -p.y()) : p; };
+  for (ZX& p : clipped) p = facing(p - point);
+  ToolShape tool{placed(clipped, ZX(0, 0)), std::nullopt, *tip, r, toRZ(facing(nose - point)), toRZ(facing(-point))};
   return {std::move(tool), {}, {}};
 }
 

@@ -59,9 +59,11 @@ BuiltTool grooveTool(double widthMm, double leftRadiusMm, double rightRadiusMm, 
                      std::optional<int> tipNumber);
 
 /// A threading insert: a V of included angle profileDeg symmetric about the radial direction,
-/// point toward −X, nose radius noseRadiusMm, as tall as the fundamental triangle of the pitch
-/// (pitch / (2·tan(angle/2))). Tips: 8 (the point, default) or 0 (the nose centre).
-BuiltTool threadTool(double profileDeg, double pitchMm, double noseRadiusMm, std::optional<int> tipNumber);
+/// point toward −X (toward +X for an internal insert), nose radius noseRadiusMm, as tall as the
+/// fundamental triangle of the pitch (pitch / (2·tan(angle/2))). Tips: 8 external, 6 internal
+/// (the point, default), or 0 (the nose centre).
+BuiltTool threadTool(double profileDeg, double pitchMm, double noseRadiusMm, std::optional<int> tipNumber,
+                     bool internal = false);
 
 /// A drill on the spindle axis: point angle, diameter, flute length from the point. The
 /// programmed point is the drill's point; tip number 0.

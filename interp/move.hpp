@@ -12,11 +12,34 @@ namespace lathesim::interp {
 
 // Rapid and Feed are straight. ArcCW / ArcCCW are G02 / G03: clockwise / counter-clockwise
 // in the usual drawing view (Z to the right, X up, the upper half of the part), about
-// `center`. A Dwell stands still for `dwellS` (from == to).
-enum class MoveKind { Rapid, Feed, ArcCW, ArcCCW, Dwell };
+// `center`. A Dwell stands still for `dwellS` (from == to). A Thread move is straight and
+// synchronised with the spindle (G32, and the cut and run-out of G92 and G76): `thread`
+// says how; its `feed` is the lead.
+enum class MoveKind { Rapid, Feed, ArcCW, ArcCCW, Dwell, Thread };
 enum class FeedMode { PerMinute, PerRevolution };  // G98 / G99 (system A)
 enum class SpindleMode { Rpm, SurfaceSpeed };      // G97 / G96
 enum class NoseSide { None, Left, Right };         // G40 / G41 / G42
+enum class SpindleDirection { Clockwise, CounterClockwise };  // M03 / M04
+
+/// How a Thread move is tied to the spindle. The spindle angle θ is measured from its
+/// one-revolution signal in the direction it turns (M03 or M04): the move starts when the
+/// spindle stands at `startAngleDeg` (G32/G92 Q, a start of G92 L; a move chained to the
+/// thread move before it starts where that one ended), and each revolution carries the tool
+/// `leadMm` along the lead axis (the long axis of the cut: Z, or X counted as a radius).
+/// So the move takes |Δ along the lead axis| / leadMm revolutions.
+struct ThreadMotion {
+  double leadMm = 0;
+  bool leadAlongZ = true;
+  double startAngleDeg = 0;  // in [0, 360)
+  int starts = 1;            // starts of the thread it cuts, as programmed (G92 L, HNC C)
+  bool operator==(const ThreadMotion&) const = default;
+
+  /// Revolutions the spindle makes while the tool goes from `from` to `to`.
+  double revolutions(const RZ& from, const RZ& to) const {
+    const double travel = leadAlongZ ? to.y() - from.y() : to.x() - from.x();
+    return (travel < 0 ? -travel : travel) / leadMm;
+  }
+};
 
 /// The nose radius compensation a move was programmed under (interp/compensation/nose_compensation.hpp):
 /// the side, and the nose radius R and imaginary tip number (0–9) of the tool offset in force.
@@ -53,6 +76,7 @@ struct Move {
   NoseComp noseComp;   // G41/G42 in force as programmed; the toolpath's moves are already
                        // compensated (from/to/center are the imaginary tip's path)
   bool spindleOn = false;
+  SpindleDirection spindleDirection = SpindleDirection::Clockwise;  // the last M03/M04
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
   std::optional<double> spindleLimitRpm;  // G50 S, in force under G96
@@ -63,6 +87,10 @@ struct Move {
   int column = 0;     // 1-based column where that block starts
   int cycleStep = 0;  // 1–4 inside a G90/G94 cycle (rapid in, cut, retract, rapid back), 1–2 in
                       // G28 (to the intermediate point, to the reference); 0 outside
+  ThreadMotion thread{};  // Thread moves only
+  double spindleAngleDeg = 0;  // where the spindle stands when the move starts: its angle from
+                               // the one-revolution signal about +Z (M03 turns it up, M04
+                               // down), in [0, 360); see interp/motion/spindle_angle.hpp
 };
 
 /// Where a canned cycle (G90, G94, …) started: its point A, where the tool stands when the
@@ -94,8 +122,8 @@ struct Toolpath {
 
 inline bool isArc(MoveKind kind) { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }
 
-/// Moves that cut at the programmed feed: straight feeds and arcs.
-inline bool isCutting(MoveKind kind) { return kind == MoveKind::Feed || isArc(kind); }
+/// Moves that cut: straight feeds, arcs and thread moves.
+inline bool isCutting(MoveKind kind) { return kind == MoveKind::Feed || isArc(kind) || kind == MoveKind::Thread; }
 
 /// The kind as toolpath.csv and reports name it.
 inline const char* kindName(MoveKind kind) {
@@ -105,6 +133,7 @@ inline const char* kindName(MoveKind kind) {
     case MoveKind::ArcCW: return "cw";
     case MoveKind::ArcCCW: return "ccw";
     case MoveKind::Dwell: return "dwell";
+    case MoveKind::Thread: return "thread";
   }
   return "unknown";
 }

@@ -10,10 +10,11 @@ namespace lathesim::interp {
 namespace {
 
 constexpr std::string_view kContractHeader = "line,kind,x0,z0,x1,z1,feed";
-constexpr std::string_view kHeader = "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s";
+constexpr std::string_view kTimedHeader = "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s";
+constexpr std::string_view kHeader = "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s,thread_deg,spindle";
 
 bool knownKind(const std::string& kind) {
-  for (MoveKind k : {MoveKind::Rapid, MoveKind::Feed, MoveKind::ArcCW, MoveKind::ArcCCW, MoveKind::Dwell})
+  for (MoveKind k : {MoveKind::Rapid, MoveKind::Feed, MoveKind::ArcCW, MoveKind::ArcCCW, MoveKind::Dwell, MoveKind::Thread})
     if (kind == kindName(k)) return true;
   return false;
 }
@@ -41,19 +42,26 @@ void writeToolpathCsv(const Toolpath& toolpath, std::ostream& out) {
         << ',' << csvNumber(move.feed) << ',';
     if (isArc(move.kind)) out << csvNumber(diameterOf(move.center)) << ',' << csvNumber(move.center.y());
     else out << ',';
-    out << ',' << csvNumber(move.timeS) << '\n';
+    out << ',' << csvNumber(move.timeS) << ',';
+    if (move.kind == MoveKind::Thread)
+      out << csvNumber(move.thread.startAngleDeg) << ','
+          << (move.spindleDirection == SpindleDirection::Clockwise ? "cw" : "ccw");
+    else
+      out << ',';
+    out << '\n';
   }
 }
 
 std::vector<CsvRow> readToolpathCsv(std::istream& in) {
   std::string text;
   if (std::getline(in, text) && !text.empty() && text.back() == '\r') text.pop_back();
-  const bool full = text == kHeader;
+  const bool threads = text == kHeader;
+  const bool full = threads || text == kTimedHeader;
   if (!full && text != kContractHeader) {
-    throw std::runtime_error(
-        fmt::format("toolpath CSV: expected the header '{}' (or its first seven columns)", kHeader));
+    throw std::runtime_error(fmt::format(
+        "toolpath CSV: expected the header '{}' (or its first ten or seven columns)", kHeader));
   }
-  const std::size_t columns = full ? 10 : 7;
+  const std::size_t columns = threads ? 12 : full ? 10 : 7;
   std::vector<CsvRow> rows;
   int lineNumber = 1;
   while (std::getline(in, text)) {
@@ -66,7 +74,8 @@ std::vector<CsvRow> readToolpathCsv(std::istream& in) {
     if (!text.empty() && text.back() == ',') fields.emplace_back();  // getline drops a last empty field
     if (fields.size() != columns || !knownKind(fields[1])) {
       throw std::runtime_error(fmt::format(
-          "toolpath CSV line {}: expected {} fields as in the header, with kind rapid, feed, cw, ccw or dwell, "
+          "toolpath CSV line {}: expected {} fields as in the header, with kind rapid, feed, cw, ccw, dwell or "
+          "thread, "
           "got '{}'",
           lineNumber, columns, text));
     }
@@ -83,6 +92,10 @@ std::vector<CsvRow> readToolpathCsv(std::istream& in) {
         row.xc = optionalNumber(fields[7]);
         row.zc = optionalNumber(fields[8]);
         row.timeS = optionalNumber(fields[9]);
+      }
+      if (threads) {
+        row.threadDeg = optionalNumber(fields[10]);
+        if (!fields[11].empty()) row.spindle = fields[11];
       }
       rows.push_back(row);
     } catch (const std::logic_error&) {

@@ -31,7 +31,7 @@ std::optional<CommentTool> place(BuiltTool built, int number, std::string descri
   if (!built.tool) return std::nullopt;
   ToolShape& shape = *built.tool;
   return CommentTool{ToolDefinition{number, std::move(shape.cutter), std::move(shape.holderBody), shape.tipNumber,
-                                    shape.noseRadiusMm},
+                                    shape.noseRadiusMm, std::nullopt},
                      std::move(description), std::move(built.warnings)};
 }
 

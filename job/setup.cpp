@@ -265,7 +265,7 @@ std::optional<std::pair<double, double>> rangeOf(const toml::node& node, const s
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   rejectUnknownKeys(table, "machine.",
                     {"start", "rapid", "max_rpm", "reference", "travel_x", "travel_z", "dialect", "initial_feed_mode",
-                     "zero"},
+                     "thread_runout", "zero"},
                     report);
   if (const auto* node = table.get("travel_x")) setup.travelXDiameterMm = rangeOf(*node, "machine.travel_x", report);
   if (const auto* node = table.get("travel_z")) setup.travelZMm = rangeOf(*node, "machine.travel_z", report);
@@ -295,6 +295,15 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   if (const auto* node = table.get("rapid")) readRapid(*node, setup.machine, report);
   if (const auto* node = table.get("max_rpm"))
     if (auto v = positiveRate(*node, "machine.max_rpm", "rpm", report)) setup.machine.maxRpm = *v;
+  if (const auto* node = table.get("thread_runout")) {
+    const auto leads = numberOf(*node);
+    if (!leads || !(*leads >= 0.0) || !(*leads <= 9.9))
+      report.at(node->source(), "machine.thread_runout must be a number of leads from 0 to 9.9 (the control's "
+                                "G92/G76 run-out parameter, GSK No.19 and Fanuc No.5130 in 0.1 lead), got " +
+                                    describe(*node));
+    else
+      setup.threadRunoutLeads = *leads;
+  }
 }
 
 void readSim(const toml::table& table, Setup& setup, Reporter& report) {
@@ -325,7 +334,7 @@ std::optional<ToolDefinition> readTool(const toml::table& table, const std::stri
   std::vector<std::string_view> known{"number", "polygon"};
   known.insert(known.end(), toolShapeKeys().begin(), toolShapeKeys().end());
   rejectUnknownKeys(table, name + ".", known, report);
-  ToolDefinition tool{1, defaultOutline(), std::nullopt, 3, 0.0};
+  ToolDefinition tool{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt};
   bool ok = true;
   std::vector<ToolKeyProblem> shapeProblems;
   readToolShape(table, name, tool, shapeProblems);
@@ -422,7 +431,7 @@ Setup defaultSetup() {
   setup.referencePosition = setup.startPosition;
   setup.voxelMm = std::nullopt;
   setup.control = *interp::controlPreset(interp::kDefaultControlPreset);
-  setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0});
+  setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt});
   return setup;
 }
 

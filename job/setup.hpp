@@ -29,6 +29,9 @@ struct ToolDefinition {
   std::optional<ConvexPolygon> holderBody;  // catalogue tools: the holder's head and shank; never cuts
   int tipNumber = 3;          // Fanuc imaginary tip 0–9: the programmed point relative to the nose
   double noseRadiusMm = 0.0;  // 0 for a polygon tool
+  // The insert's thickness across the tool's plane (mm): what a cut made with the spindle
+  // stopped removes across it. `thickness`, or an ISO insert's own; unset: sim's default.
+  std::optional<double> thicknessMm;
 };
 
 struct Setup {
@@ -43,6 +46,9 @@ struct Setup {
   interp::Dialect dialect = interp::Dialect::FanucA;  // [machine] dialect: how codes are written
   interp::Control control;  // [control]: the preset and its parameters, how the machine behaves
                             // ([machine] initial_feed_mode is control.power_on_feed_mode)
+  // [machine] thread_runout: the run-out G92 and G76 make when the program gives none, in leads
+  // (the control's parameter: GSK No.19, Fanuc No.5130, both in 0.1 lead). 0: none.
+  double threadRunoutLeads = 0.0;
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::size_t maxMoves = interp::kDefaultMaxMoves;  // [sim] max_moves, --max-moves: more is an error
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start

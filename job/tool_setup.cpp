@@ -1,8 +1,10 @@
 // [[tool]] shape keys → ToolDefinition. The kind is "turning" when insert/holder are given,
 // else what `kind` says; each kind takes its own keys:
 //   turning: insert, holder, tip          groove: width, corner_radius (r or [r−Z, r+Z]), depth, tip
-//   thread:  angle, pitch, nose_radius, tip   drill: diameter, point_angle, length
-// A polygon tool may give tip alone (default 3).
+//   thread:  angle, pitch, nose_radius, tip, or insert (a laydown code: 16ER200ISO), nose_radius, tip
+//   drill:   diameter, point_angle, length
+// A polygon tool may give tip alone (default 3). Any tool may give thickness (mm), the
+// insert's thickness for cuts made with the spindle stopped (an ISO insert's own otherwise).
 
 #include "job/tool_setup.hpp"
 
@@ -12,6 +14,7 @@
 
 #include "geometry/iso_holder.hpp"
 #include "geometry/iso_insert.hpp"
+#include "geometry/thread_insert.hpp"
 #include "geometry/tool_shape.hpp"
 
 namespace lathesim::job {
@@ -28,7 +31,7 @@ const std::vector<KindKeys>& kinds() {
   static const std::vector<KindKeys> table{
       {"turning", {"insert", "holder", "tip"}},
       {"groove", {"width", "corner_radius", "depth", "tip"}},
-      {"thread", {"angle", "pitch", "nose_radius", "tip"}},
+      {"thread", {"insert", "angle", "pitch", "nose_radius", "tip"}},
       {"drill", {"diameter", "point_angle", "length"}},
   };
   return table;
@@ -172,13 +175,36 @@ void readTurning(ToolReader& r, ToolDefinition& tool) {
   for (const auto& w : insert.warnings) r.warn(*insertText, r.name() + ".insert: " + w);
   if (!insert.value || !holder.value || r.failed()) return;
   take(turningTool(*insert.value, *holder.value, tip), *holderText, r, tool);
+  if (!tool.thicknessMm) tool.thicknessMm = insert.value->thicknessMm;
+}
+
+// A laydown threading insert (geometry/thread_insert.hpp): its profile, pitch and nose radius
+// (nose_radius overrides the derived one); angle and pitch come from the code alone.
+void readThreadInsert(ToolReader& r, ToolDefinition& tool) {
+  for (const char* key : {"angle", "pitch"})
+    if (const toml::node* node = r.table().get(key))
+      r.error(*node, r.name() + "." + key + " comes from the insert code; give one or the other");
+  const auto* text = r.table().get("insert")->as_string();
+  if (!text) {
+    r.error(*r.table().get("insert"), r.name() + ".insert must be a catalogue code in quotes, e.g. \"16ER200ISO\"");
+    return;
+  }
+  const auto insert = parseThreadInsert(text->get());
+  if (insert.problem) {
+    r.error(*text, r.name() + ".insert: " + insert.problem->message, 1 + static_cast<int>(insert.problem->index));
+    return;
+  }
+  const auto nose = r.number("nose_radius", insert.value->noseRadiusMm, true, "mm");
+  const auto tip = r.tip();
+  if (!nose || r.failed()) return;
+  take(threadTool(insert.value->profileDeg, insert.value->pitchMm, *nose, tip, insert.value->internal), *text, r, tool);
 }
 
 }  // namespace
 
 const std::vector<std::string_view>& toolShapeKeys() {
   static const std::vector<std::string_view> keys = [] {
-    std::vector<std::string_view> all{"kind"};
+    std::vector<std::string_view> all{"kind", "thickness"};
     for (const auto& k : kinds())
       for (auto key : k.keys)
         if (std::find(all.begin(), all.end(), key) == all.end()) all.push_back(key);
@@ -190,6 +216,7 @@ const std::vector<std::string_view>& toolShapeKeys() {
 bool readToolShape(const toml::table& table, const std::string& name, ToolDefinition& tool,
                    std::vector<ToolKeyProblem>& problems) {
   ToolReader r(table, name, problems);
+  if (table.contains("thickness")) tool.thicknessMm = r.number("thickness", std::nullopt, false, "mm");
   const toml::node* kindNode = table.get("kind");
   std::string kind;
   if (kindNode) {
@@ -201,13 +228,15 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
     }
     kind = text->get();
   } else if (table.contains("insert") || table.contains("holder")) {
-    kind = "turning";
+    // A laydown threading insert's code starts with its size digits, an ISO 1832 one with a letter.
+    const auto* insert = table.get("insert") ? table.get("insert")->as_string() : nullptr;
+    kind = insert && !table.contains("holder") && looksLikeThreadInsert(insert->get()) ? "thread" : "turning";
   }
 
   if (kind.empty()) {  // a polygon tool (or the default outline): only tip may be added
     for (auto&& [key, node] : table) {
       const std::string_view k = key.str();
-      if (k == "number" || k == "polygon" || k == "tip") continue;
+      if (k == "number" || k == "polygon" || k == "tip" || k == "thickness") continue;
       for (const auto& kk : kinds())
         if (std::find(kk.keys.begin(), kk.keys.end(), k) != kk.keys.end()) {
           r.error(node, name + "." + std::string(k) + " needs kind = \"" + std::string(kk.kind) + "\"");
@@ -224,7 +253,7 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
   const auto& allowed = std::find_if(kinds().begin(), kinds().end(), [&](const KindKeys& k) { return k.kind == kind; })->keys;
   for (auto&& [key, node] : table) {
     const std::string_view k = key.str();
-    if (k == "number" || k == "polygon" || k == "kind") continue;
+    if (k == "number" || k == "polygon" || k == "kind" || k == "thickness") continue;
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end() &&
         std::find(toolShapeKeys().begin(), toolShapeKeys().end(), k) != toolShapeKeys().end())
       r.error(node, name + "." + std::string(k) + " does not apply to a " + kind + " tool");
@@ -240,6 +269,8 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
     const auto tip = r.tip();
     if (width && corners && depth && !r.failed())
       take(grooveTool(*width, corners->first, corners->second, *depth, tip), table, r, tool);
+  } else if (kind == "thread" && table.contains("insert")) {
+    readThreadInsert(r, tool);
   } else if (kind == "thread") {
     const auto angle = r.number("angle", 60.0, false, "degrees");
     const auto pitch = r.number("pitch", std::nullopt, false, "mm");

@@ -10,9 +10,15 @@ namespace {
 
 double ramp(double signedMm, double h) { return std::clamp(0.5 - signedMm / h, 0.0, 1.0); }
 
-void measureVolumes(const SampledSection& s, const MeridianProfile& drawing, DeviationReport& report) {
+bool ignoredAt(const std::vector<ZRange>& ignored, double z) {
+  return std::any_of(ignored.begin(), ignored.end(), [z](const ZRange& r) { return r.contains(z); });
+}
+
+void measureVolumes(const SampledSection& s, const MeridianProfile& drawing, const std::vector<ZRange>& ignored,
+                    DeviationReport& report) {
   const double h = s.stepMm;
   for (int k = 0; k < s.zCount; ++k) {
+    if (ignoredAt(ignored, s.zFirstMm + k * h)) continue;
     for (int i = 0; i < s.rCount; ++i) {
       const RZ p(i * h, s.zFirstMm + k * h);
       const double partInside = ramp(s.at(i, k), h);
@@ -85,7 +91,7 @@ std::vector<DeviationRegion> groupRegions(const std::vector<DeviationSample>& sa
 }  // namespace
 
 DeviationReport measureDeviation(const SampledSection& section, const MeridianProfile& part,
-                                 const MeridianProfile& drawing, double toleranceMm) {
+                                 const MeridianProfile& drawing, double toleranceMm, const std::vector<ZRange>& ignored) {
   DeviationReport report;
   report.toleranceMm = toleranceMm;
   const double h = section.stepMm;
@@ -93,6 +99,7 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
   // (Most are the end of one segment and the start of the next, so some appear twice.)
   for (const Segment& s : part.surface()) {
     for (const RZ& p : {s.a, s.b}) {
+      if (ignoredAt(ignored, p.y())) continue;
       const SurfaceDistance d = drawing.signedDistance(p);
       report.samples.push_back({p, d.nearest, d.signedMm});
     }
@@ -107,6 +114,7 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
       for (int n = 0; n < steps; ++n) points.push_back(s.a + (s.b - s.a) * (static_cast<double>(n) / steps));
     }
     for (const RZ& q : points) {
+      if (ignoredAt(ignored, q.y())) continue;
       const SurfaceDistance d = part.signedDistance(q);
       report.samples.push_back({q, d.nearest, -d.signedMm});
     }
@@ -115,7 +123,7 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
     if (s.mm > report.maxExcessMm) report.maxExcessMm = s.mm, report.maxExcessAt = s.at;
     if (-s.mm > report.maxGougeMm) report.maxGougeMm = -s.mm, report.maxGougeAt = s.at;
   }
-  measureVolumes(section, drawing, report);
+  measureVolumes(section, drawing, ignored, report);
   report.regions = groupRegions(report.samples, toleranceMm, 2 * h);
   return report;
 }

@@ -59,8 +59,15 @@ struct DeviationReport {
   bool withinTolerance() const { return maxExcessMm <= toleranceMm && maxGougeMm <= toleranceMm; }
 };
 
-/// Measures `part` (whose samples are `section`) against `drawing`.
+/// A stretch of Z left out of the comparison (mm): a thread's zone, checked by its callout.
+struct ZRange {
+  double lowMm = 0, highMm = 0;
+  bool contains(double z) const { return z >= lowMm && z <= highMm; }
+};
+
+/// Measures `part` (whose samples are `section`) against `drawing`, except in `ignored`.
 DeviationReport measureDeviation(const SampledSection& section, const MeridianProfile& part,
-                                 const MeridianProfile& drawing, double toleranceMm);
+                                 const MeridianProfile& drawing, double toleranceMm,
+                                 const std::vector<ZRange>& ignored = {});
 
 }  // namespace lathesim::measure

@@ -82,6 +82,57 @@ std::optional<RZ> centreFromRadius(const RZ& a, const RZ& b, double radius, bool
   return RZ((a + b) / 2 + side * offset * right);
 }
 
+/// A pair of numbers [a, b] with a ≤ b under `key`, or nullopt with an error if present but wrong.
+std::optional<std::pair<double, double>> pairOf(Reader& reader, const toml::table& row, const char* key) {
+  const toml::node* node = row.get(key);
+  if (node == nullptr) return std::nullopt;
+  const toml::array* pair = node->as_array();
+  const auto a = pair && pair->size() == 2 ? pair->get(0)->value<double>() : std::nullopt;
+  const auto b = pair && pair->size() == 2 ? pair->get(1)->value<double>() : std::nullopt;
+  if (!a || !b || !std::isfinite(*a) || !std::isfinite(*b) || *a > *b) {
+    reader.error(node->source(), std::string("thread ") + key + " must be [least, greatest], two numbers in mm");
+    return std::nullopt;
+  }
+  return std::pair(*a, *b);
+}
+
+std::optional<ThreadCallout> threadCallout(Reader& reader, const toml::table& row) {
+  for (const auto& [key, node] : row)
+    if (key.str() != "z_range" && key.str() != "pitch" && key.str() != "starts" && key.str() != "hand" &&
+        key.str() != "major" && key.str() != "minor" && key.str() != "pitch_diameter")
+      reader.error(key.source(), "unknown thread key '" + std::string(key.str()) +
+                                     "' (expected z_range, pitch, starts, hand, major, minor or pitch_diameter)");
+  ThreadCallout callout;
+  callout.line = static_cast<int>(row.source().begin.line);
+  const auto zone = pairOf(reader, row, "z_range");
+  if (!zone && !row.get("z_range")) reader.error(row.source(), "a [[thread]] needs z_range = [low Z, high Z]");
+  const auto pitch = number(reader, row, "pitch", true);
+  if (pitch && !(*pitch > 0)) reader.error(row.get("pitch")->source(), "thread pitch must be a number > 0 (mm)");
+  if (const toml::node* starts = row.get("starts")) {
+    const auto n = starts->value<int64_t>();
+    if (!n || *n < 1) reader.error(starts->source(), "thread starts must be a whole number ≥ 1");
+    else callout.starts = static_cast<int>(*n);
+  }
+  if (const toml::node* hand = row.get("hand")) {
+    const auto text = hand->value<std::string>();
+    if (!text || (*text != "right" && *text != "left")) reader.error(hand->source(), "thread hand must be \"right\" or \"left\"");
+    else callout.rightHand = *text == "right";
+  }
+  const auto limits = [&](const char* key) -> std::optional<DiameterLimits> {
+    const auto pair = pairOf(reader, row, key);
+    if (!pair) return std::nullopt;
+    return DiameterLimits{pair->first, pair->second};
+  };
+  callout.major = limits("major");
+  callout.minor = limits("minor");
+  callout.pitchDiameter = limits("pitch_diameter");
+  if (!zone || !pitch || !(*pitch > 0)) return std::nullopt;
+  callout.zLowMm = zone->first;
+  callout.zHighMm = zone->second;
+  callout.pitchMm = *pitch;
+  return callout;
+}
+
 }  // namespace
 
 DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileName) {
@@ -96,7 +147,20 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
     return result;
   }
   for (const auto& [key, node] : table)
-    if (key.str() != "profile") reader.error(key.source(), "unknown key '" + std::string(key.str()) + "' (expected [[profile]] rows)");
+    if (key.str() != "profile" && key.str() != "thread")
+      reader.error(key.source(), "unknown key '" + std::string(key.str()) + "' (expected [[profile]] rows and [[thread]] callouts)");
+  if (const toml::node* threads = table.get("thread")) {
+    const toml::array* rows = threads->as_array();
+    if (rows == nullptr) reader.error(threads->source(), "thread must be [[thread]] tables");
+    for (std::size_t n = 0; rows && n < rows->size(); ++n) {
+      const toml::table* row = rows->get(n)->as_table();
+      if (row == nullptr) {
+        reader.error(rows->get(n)->source(), "a thread callout must be a table");
+        continue;
+      }
+      if (auto callout = threadCallout(reader, *row)) result.threads.push_back(*callout);
+    }
+  }
   const toml::array* rows = table["profile"].as_array();
   if (rows == nullptr || rows->size() < 2) {
     reader.error(table.source(), "the drawing needs at least two [[profile]] rows, each with x (diameter) and z");

@@ -18,6 +18,18 @@
 // first point) — unless the last row repeats the first, which closes it as given: a bored
 // part, whose section does not reach the axis. See README.md "Checking a part against its
 // drawing".
+//
+// A thread is stated by its callout, not by the outline (which there shows the major
+// diameter, as drawings do); its zone is then checked by the callout alone:
+//
+//   [[thread]]
+//   z_range = [-30, 0]           # where it lies along Z
+//   pitch = 2                    # mm
+//   starts = 1                   # optional (1)
+//   hand = "right"               # optional: "right" or "left"
+//   major = [29.7, 30.0]         # optional: the diameter's limits [least, greatest], mm
+//   minor = [27.4, 27.7]         # optional
+//   pitch_diameter = [28.9, 29.3]  # optional
 
 #include <filesystem>
 #include <optional>
@@ -32,8 +44,23 @@ namespace lathesim::measure {
 /// Arcs become chords no further than this from the true arc (mm): far below any voxel.
 inline constexpr double kDrawingChordErrorMm = 1e-4;
 
+/// A diameter's limits, mm.
+struct DiameterLimits {
+  double least = 0, greatest = 0;
+};
+
+struct ThreadCallout {
+  int line = 0;  // of its [[thread]] table
+  double zLowMm = 0, zHighMm = 0;
+  double pitchMm = 0;
+  int starts = 1;
+  std::optional<bool> rightHand;
+  std::optional<DiameterLimits> major, minor, pitchDiameter;
+};
+
 struct DrawingResult {
   std::optional<std::vector<RZ>> outline;  // (radius, Z) points, arcs as chords; open at the axis
+  std::vector<ThreadCallout> threads;
   std::vector<interp::Diagnostic> diagnostics;
 };
 

@@ -98,7 +98,7 @@ void writeBinaryStl(const TriangleMesh& mesh, const std::filesystem::path& stl) 
 }
 
 // The `kind` cell value: 0 rapid, 1 feed, 2 clockwise arc (G02), 3 counter-clockwise arc
-// (G03), 4 dwell.
+// (G03), 4 dwell, 5 thread.
 int vtpKind(interp::MoveKind kind) {
   switch (kind) {
     case interp::MoveKind::Rapid: return 0;
@@ -106,6 +106,7 @@ int vtpKind(interp::MoveKind kind) {
     case interp::MoveKind::ArcCW: return 2;
     case interp::MoveKind::ArcCCW: return 3;
     case interp::MoveKind::Dwell: return 4;
+    case interp::MoveKind::Thread: return 5;
   }
   return 1;
 }

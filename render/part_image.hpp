@@ -1,11 +1,16 @@
 #pragma once
-// The picture a user looks at first: the finished part, lit and shaded, with the toolpath.
+// The pictures a user looks at first: the finished part, framed, with the bar it came from as
+// a faint ghost, the chuck's jaws, the tool where it stands, the toolpath and the main
+// dimensions; seen from three sides (isometric, front, half-section).
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "geometry/meridian_profile.hpp"
+#include "geometry/part_dimensions.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "interp/move.hpp"
 
@@ -19,15 +24,64 @@ struct ToolPicture {
   RZ position{0, 0};
 };
 
+enum class PartView {
+  Iso,      // turned 22° about the vertical so the end face shows (part.png)
+  Front,    // as a drawing shows a turned part: X up, Z to the right
+  Section,  // the front view cut open above the axis: the profile against the bar and the chuck
+};
+std::string_view viewName(PartView view);  // "iso", "front", "section"
+std::optional<PartView> viewNamed(std::string_view name);
+
+/// The bar before the program: drawn as a faint ghost around the part, and what the picture
+/// frames.
+struct BarOutline {
+  double radiusMm = 0;
+  double zLowMm = 0, zHighMm = 0;
+};
+
+/// The chuck as the setup places it: its jaws grip the bar from `jawInnerRadiusMm` out to
+/// `jawOuterRadiusMm` between `jawZLowMm` and `jawZHighMm`; its body reaches back from the
+/// jaws to `bodyZLowMm`. Drawn as three jaws (one straight up) on the body.
+struct ChuckPicture {
+  double jawInnerRadiusMm = 0, jawOuterRadiusMm = 0;
+  double jawZLowMm = 0, jawZHighMm = 0;
+  double bodyZLowMm = 0;
+};
+
+/// A part of the picture to frame instead of the whole: the box Z `zLowMm`…`zHighMm` ×
+/// radius `radiusLowMm`…`radiusHighMm` of the meridian plane facing the viewer's up (a
+/// thread's close-up: its profile on the silhouette, its grooves on the face below).
+struct CloseUp {
+  double zLowMm = 0, zHighMm = 0;
+  double radiusLowMm = 0, radiusHighMm = 0;
+};
+
 struct PartImageOptions {
   int widthPx = 1600;
   int heightPx = 1200;
   std::string title;  // drawn in a corner: the program's name
-  std::optional<ToolPicture> tool;  // drawn where it stands, if given
+  std::optional<ToolPicture> tool{};  // drawn where it stands, if given
+  PartView view = PartView::Iso;
+  std::optional<BarOutline> bar{};      // the ghost; with it the picture frames the bar, not the toolpath
+  std::optional<ChuckPicture> chuck{};
+  PartDimensions dimensions{};          // drawn as dimension lines
+  int dimensionDecimals = 1;            // their figures' decimals
+  std::optional<SampledSection> section{};  // the part's section: the cut face of the Section view
+  std::string caption{};                // a line under the title
+  /// Frame this box only (with the view Front: the profile true on the silhouette), without
+  /// the toolpath, the tool and the legend.
+  std::optional<CloseUp> closeUp{};
 };
 
-/// Renders off-screen to a PNG (rapids dashed red, feeds solid blue over the shaded part,
-/// and the tool, if given, as gold insert and grey holder slabs in the meridian plane).
+/// Renders off-screen to a PNG: the shaded part; the bar as a faint amber ghost; the chuck's
+/// jaws in dark blue steel; the toolpath over it (rapids dashed red, feeds solid blue, thread
+/// moves solid green), cut at the picture's edge where a move leaves it, with an arrow and
+/// where it goes; the tool, if given, as gold insert and grey holder slabs in the meridian
+/// plane (or an arrow to it when it stands outside the picture); dimension lines in purple;
+/// the title, legend and (front and section views) a scale bar.
+/// The picture frames the bar and the front ends of the jaws (without a bar, the part and the
+/// whole jaws; without a part, the toolpath) with a margin, and the tool when it stands near
+/// them; the rest of the chuck runs out of the picture. A close-up frames its box instead.
 /// Works with no display: an Xvfb server is started for the process if none is reachable.
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,

@@ -20,14 +20,6 @@
 #include <vtkWindowToImageFilter.h>
 
 namespace lathesim::render {
-namespace {
-
-// The camera turns this far about the vertical (X) axis from square-on, towards +Z, so the
-// end face shows. Turning about X keeps the spindle axis horizontal, and with a parallel
-// projection the toolpath plane (y = 0) projects onto the part's top silhouette exactly.
-constexpr double kAzimuthDeg = 22.0;
-
-}  // namespace
 
 vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data) {
   vtkNew<vtkPolyDataNormals> normals;
@@ -82,15 +74,6 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh) {
   return polyData;
 }
 
-View partView() {
-  const double a = kAzimuthDeg * M_PI / 180.0;
-  View v;
-  v.towardsViewer = Eigen::Vector3d(0.0, std::cos(a), std::sin(a));
-  v.up = Eigen::Vector3d(1.0, 0.0, 0.0);
-  v.right = v.up.cross(v.towardsViewer);  // (0, −sin, cos): +Z to the right
-  return v;
-}
-
 void frame(vtkCamera* camera, const View& view, const Extent& e, double aspect) {
   const Eigen::Vector3d centre = view.right * ((e.minRight + e.maxRight) / 2) +
                                  view.up * ((e.minUp + e.maxUp) / 2) +
@@ -105,6 +88,20 @@ void frame(vtkCamera* camera, const View& view, const Extent& e, double aspect) 
   camera->SetPosition(eye.data());
   camera->SetViewUp(view.up.data());
   camera->SetParallelScale(1.05 * std::max(halfHeight, halfWidth / aspect));
+  camera->SetClippingRange(0.5 * depth, 3.5 * depth);
+}
+
+void applyFrame(vtkCamera* camera, const PictureFrame& f) {
+  const View& view = f.view;
+  const double depth = std::max({f.maxDepthMm - f.minDepthMm, f.widthPx / f.pxPerMm, f.heightPx / f.pxPerMm, 1.0});
+  const Eigen::Vector3d centre =
+      view.right * f.centreMm.x() + view.up * f.centreMm.y() + view.towardsViewer * ((f.minDepthMm + f.maxDepthMm) / 2);
+  camera->ParallelProjectionOn();
+  camera->SetFocalPoint(centre.data());
+  const Eigen::Vector3d eye = centre + view.towardsViewer * (2.0 * depth);
+  camera->SetPosition(eye.data());
+  camera->SetViewUp(view.up.data());
+  camera->SetParallelScale(f.heightPx / 2.0 / f.pxPerMm);
   camera->SetClippingRange(0.5 * depth, 3.5 * depth);
 }
 

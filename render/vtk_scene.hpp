@@ -4,7 +4,6 @@
 
 #include <array>
 #include <filesystem>
-#include <limits>
 #include <string>
 
 #include <Eigen/Core>
@@ -17,6 +16,7 @@
 #include <vtkTextActor.h>
 
 #include "geometry/triangle_mesh.hpp"
+#include "render/picture_frame.hpp"
 
 namespace lathesim::render {
 
@@ -28,29 +28,12 @@ vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);
 /// there is no reorientation pass.
 vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data);
 
-/// The view: looking at the XZ plane from +Y, turned towards +Z by an azimuth, X up.
-struct View {
-  Eigen::Vector3d towardsViewer, up, right;
-};
-View partView();
-
-/// Extent of everything drawn, along the view's axes (mm).
-struct Extent {
-  double minRight = std::numeric_limits<double>::infinity(), maxRight = -minRight;
-  double minUp = minRight, maxUp = -minRight;
-  double minDepth = minRight, maxDepth = -minRight;
-  bool empty() const { return !(minRight <= maxRight); }
-  void include(const View& view, const Eigen::Vector3d& p) {
-    const double r = p.dot(view.right), u = p.dot(view.up), d = p.dot(view.towardsViewer);
-    minRight = std::min(minRight, r), maxRight = std::max(maxRight, r);
-    minUp = std::min(minUp, u), maxUp = std::max(maxUp, u);
-    minDepth = std::min(minDepth, d), maxDepth = std::max(maxDepth, d);
-  }
-};
-
 /// Parallel camera on `view`, framing `e` tightly (5 % margin) in a viewport of
 /// `aspect` = width / height. Parallel projection keeps the profile true to scale.
 void frame(vtkCamera* camera, const View& view, const Extent& e, double aspect);
+
+/// Parallel camera showing exactly `f` (its centre, scale and depth).
+void applyFrame(vtkCamera* camera, const PictureFrame& f);
 
 vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx, const std::array<double, 3>& colour);
 

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Benchmark: seed 000's Φ125×112 program at 0.2 mm and 0.1 mm. Prints, from one run, the
 # CLI's wall time, peak memory and STL size, and simulate against its floor (building the
-# bar's level set once from its analytic distance) with their ratio. Then the parts/ batch
-# against the same programs run one `lathesim run` (or `check`) after another.
+# bar's level set once from its analytic distance) with their ratio. Then threads at 0.1 mm:
+# parts/g76-m30x2 (M30×2×30 by G76, ten passes) per thread pass against its bar's floor, and
+# a CAM-style thread of 3,600 chained G32 blocks of 0.1 mm: its time per pass. Then the parts/
+# batch against the same programs run one `lathesim run` (or `check`) after another.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh >/dev/null
@@ -23,7 +25,7 @@ done
 
 echo
 echo "== simulate vs floor (Google Benchmark, mean of 3, same run)"
-build/lathesim_bench --benchmark_format=csv 2>/dev/null > "$tmp/bench.csv"
+build/lathesim_bench --benchmark_filter='BM_Floor|BM_Simulate' --benchmark_format=csv 2>/dev/null > "$tmp/bench.csv"
 awk -F, '
   /^"BM_Floor\/[0-9]+\/iterations/    { split($1, a, "/"); floor[a[2]] = $3; floorCpu[a[2]] = $4 }
   /^"BM_Simulate\/[0-9]+\/iterations/ { split($1, a, "/"); sim[a[2]] = $3; simCpu[a[2]] = $4 }
@@ -35,6 +37,24 @@ awk -F, '
     for (um = 200; um >= 100; um -= 100)
       printf "%-9s %10.3f %12.3f %16.2f %14.2f %20.2f\n", um / 1000, floor[um], sim[um], sim[um] / floor[um], (sim[um] - floor[um]) / floor[um], simCpu[um] / floorCpu[um]
   }' "$tmp/bench.csv"
+
+echo
+echo "== threads at 0.1 mm (Google Benchmark, same run): per thread pass against the bar's floor"
+passes=$(build/lathesim expand parts/g76-m30x2/program.nc --setup parts/g76-m30x2/setup.toml | grep -c ',thread,')
+build/lathesim_bench --benchmark_filter='G76|ShortPasses' --benchmark_format=csv 2>/dev/null > "$tmp/threads.csv"
+awk -F, -v passes="$passes" '
+  /^"BM_G76Floor/          { floor = $3; floorCpu = $4 }
+  /^"BM_G76Relief/         { relief = $3; reliefCpu = $4 }
+  /^"BM_G76Simulate/       { sim = $3; simCpu = $4 }
+  /^"BM_ShortPassesFloor/  { shortFloor = $3; shortFloorCpu = $4 }
+  /^"BM_ShortPasses\//     { short = $3; shortCpu = $4 }
+  END {
+    # A pass: (simulate − the relief cut before the G76) / passes; the ratio of CPU time over
+    # all threads is the steadier one on a shared machine.
+    printf "%-34s %10s %12s %14s %18s\n", "", "floor_s", "simulate_s", "per pass_s", "pass/floor (cpu)"
+    printf "%-34s %10.3f %12.3f %14.4f %11.2f (%.2f)\n", "g76-m30x2, " passes " passes", floor, sim, (sim - relief) / passes, (sim - relief) / passes / floor, (simCpu - reliefCpu) / passes / floorCpu
+    printf "%-34s %10.3f %12.3f %14.5f %11.3f (%.3f)\n", "3,600 chained G32 of 0.1 mm", shortFloor, short, (short - shortFloor) / 3600, (short - shortFloor) / 3600 / shortFloor, (shortCpu - shortFloorCpu) / 3600 / shortFloorCpu
+  }' "$tmp/threads.csv"
 
 # The cores the machine gives right now: a CPU-bound task alone, then two at once (2.00 on
 # a quiet 2-core machine; a shared one may give less, and no batch can beat that).

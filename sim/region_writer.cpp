@@ -1,4 +1,8 @@
-// Writing a revolved region into the stock's level set, touching as little as possible.
+// Writing a swept region into the stock's level set, touching as little as possible. The
+// region is a shape (below): revolved (a turning cut, the bar itself), helical (a thread
+// pass) or a straight slot (a cut with the spindle stopped); the writer asks a shape only how
+// a cube of voxels lies to it and what its distance is over a column of voxels, so every
+// shape shares the one classification and the one voxel write.
 //
 // The work that cannot be avoided is proportional to the surface a cut creates or passes,
 // so the grid is visited coarse to fine: 128³ blocks the region cannot reach are skipped,
@@ -20,8 +24,6 @@
 
 namespace lathesim::sim {
 namespace {
-
-double squared(double v) { return v * v; }
 
 // What writing one column of a leaf needs besides the values and the distances.
 struct ColumnWrite {
@@ -79,6 +81,78 @@ __attribute__((target_clones("avx2", "default"))) double writeColumn(const Colum
   return lost;
 }
 
+enum class Reach { None, Partly, Covers };
+
+// How a cube of voxels (centre x, y, z in mm, half-diagonal in mm) lies to a region whose
+// distance at the centre is `psi` and changes by at most `slope` per mm: out of the band's
+// reach, wholly inside, or partly.
+Reach reachOf(double psi, double slope, double halfDiagonal, double band) {
+  const double reach = slope * halfDiagonal + band;
+  return psi > reach ? Reach::None : psi < -reach ? Reach::Covers : Reach::Partly;
+}
+
+// The shapes. Each gives: the bounds of the revolved region that contains it (lowerBound,
+// upperBound, maxRadius: which blocks to look at and which ring of columns), a Local (what is
+// kept of it near one place, to evaluate there), the whole as a Local, the subset near a point,
+// the reach of a cube, and the distance over a column of voxels (x, y, z0 + k·dz).
+
+// A solid of revolution: distances are 2D, of (ρ, z); exact, so slope 1.
+struct RevolvedShape {
+  const RevolvedRegion& region;
+  using Local = RevolvedRegion;
+
+  const RevolvedRegion& bounds() const { return region; }
+  const Local& whole() const { return region; }
+  void nearInto(double x, double y, double z, double radius, Local& out) const {
+    region.nearInto(std::sqrt(x * x + y * y), z, radius, out);
+  }
+  static bool empty(const Local& local) { return local.empty(); }
+  static Reach reach(const Local& local, double x, double y, double z, double halfDiagonal, double band, double h) {
+    return reachOf(local.signedDistance(std::sqrt(x * x + y * y), z, halfDiagonal + band + h), 1.0, halfDiagonal, band);
+  }
+  static void column(const Local& local, double x, double y, double z0, double dz, double cap,
+                     double (&out)[RevolvedRegion::kColumn]) {
+    local.signedDistanceColumn(std::sqrt(x * x + y * y), z0, dz, cap, out);
+  }
+};
+
+// A region that is not revolved (a thread pass, a cut with the spindle stopped): its revolved
+// hull bounds it and decides what is out of reach; its own distance, with its slope, decides
+// the rest. Its Local is the whole sweep (a tool outline is small: nothing to subset).
+// A cube is taken as covered (filled as one tile, with no voxel's distance taken) only when
+// its centre lies deeper inside than the distance can rise over its half-diagonal: so the
+// distance must never read deeper than the region is, its ends included (a groove stops in
+// the face where the pass ended: helical_sweep.cpp bounds the depth by it). Near the axis the
+// helix's slope has no bound and nothing is covered. Only the bar itself is written with Add,
+// and it is revolved; these shapes only remove.
+template <class Sweep>
+struct SweptShape {
+  const Sweep& sweep;
+  struct Local {
+    const Sweep* sweep = nullptr;
+  };
+
+  const RevolvedRegion& bounds() const { return sweep.hull(); }
+  Local whole() const { return {&sweep}; }
+  void nearInto(double, double, double, double, Local& out) const { out.sweep = &sweep; }
+  static bool empty(const Local& local) { return local.sweep == nullptr; }
+  static Reach reach(const Local& local, double x, double y, double z, double halfDiagonal, double band, double h) {
+    const double rho = std::sqrt(x * x + y * y);
+    if (reachOf(local.sweep->hull().signedDistance(rho, z, halfDiagonal + band + h), 1.0, halfDiagonal, band) ==
+        Reach::None)
+      return Reach::None;
+    const double slope = slopeOf(*local.sweep, rho - halfDiagonal);
+    if (!std::isfinite(slope)) return Reach::Partly;
+    return reachOf(local.sweep->signedDistance(x, y, z, slope * halfDiagonal + band + h), slope, halfDiagonal, band);
+  }
+  static void column(const Local& local, double x, double y, double z0, double dz, double cap,
+                     double (&out)[RevolvedRegion::kColumn]) {
+    local.sweep->signedDistanceColumn(x, y, z0, dz, cap, out);
+  }
+  static double slopeOf(const HelicalSweep& helix, double rhoMin) { return helix.lipschitzAt(rhoMin); }
+  static double slopeOf(const StraightSlot&, double) { return 1.0; }  // an exact distance
+};
+
 enum class Action {
   Update,   // an existing leaf the region's boundary passes through
   Densify,  // a tile the region's boundary passes through: becomes a leaf first
@@ -96,10 +170,13 @@ struct Task {
   double insideBefore = 0;   // Fill: material voxels it held before
 };
 
+template <class Shape>
 class RegionWriter {
+  using Local = typename Shape::Local;
+
  public:
-  RegionWriter(StockGrid& stock, const RevolvedRegion& region, RegionWrite how)
-      : stock_(stock), region_(region), h_(stock.voxel), bg_(stock.background),
+  RegionWriter(StockGrid& stock, const Shape& shape, RegionWrite how)
+      : stock_(stock), shape_(shape), h_(stock.voxel), bg_(stock.background),
         sign_(how == RegionWrite::Add ? 1.0 : -1.0), removing_(how == RegionWrite::Remove),
         leafReach_(0.5 * std::sqrt(3.0) * (kLeafDim - 1) * h_ + bg_),
         blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_),
@@ -125,26 +202,27 @@ class RegionWriter {
   double u(float phi) const { return sign_ * phi; }
   float filledValue() const { return static_cast<float>(-sign_ * bg_); }
 
-  double distanceAtCentre(const Coord& origin, int dim, double cap) const {
-    return distanceAtCentre(region_, origin, dim, cap);
-  }
-  double distanceAtCentre(const RevolvedRegion& region, const Coord& origin, int dim, double cap) const {
+  // How the cube of dim³ voxels at `origin` lies to the region (seen through `local`).
+  Reach reachOfCube(const Local& local, const Coord& origin, int dim) const {
     const double half = 0.5 * (dim - 1);
-    const double x = (origin.x() + half) * h_, y = (origin.y() + half) * h_;
-    return region.signedDistance(std::sqrt(x * x + y * y), (origin.z() + half) * h_, cap);
+    const double halfDiagonal = 0.5 * std::sqrt(3.0) * (dim - 1) * h_;
+    return Shape::reach(local, (origin.x() + half) * h_, (origin.y() + half) * h_, (origin.z() + half) * h_,
+                        halfDiagonal, bg_, h_);
   }
-  RevolvedRegion near(const Coord& origin, int dim, double radius) const {
+  Local near(const Coord& origin, int dim, double radius) const {
     const double half = 0.5 * (dim - 1);
-    const double x = (origin.x() + half) * h_, y = (origin.y() + half) * h_;
-    return region_.near(std::sqrt(x * x + y * y), (origin.z() + half) * h_, radius);
+    Local local;
+    shape_.nearInto((origin.x() + half) * h_, (origin.y() + half) * h_, (origin.z() + half) * h_, radius, local);
+    return local;
   }
 
   openvdb::CoordBBox candidateBox() const {
-    const double rMax = region_.maxRadius() + blockReach_;
+    const RevolvedRegion& bounds = shape_.bounds();
+    const double rMax = bounds.maxRadius() + blockReach_;
     openvdb::CoordBBox box(Coord(stock_.toIndexFloor(-rMax), stock_.toIndexFloor(-rMax),
-                                 stock_.toIndexFloor(region_.lowerBound().y() - blockReach_)),
+                                 stock_.toIndexFloor(bounds.lowerBound().y() - blockReach_)),
                            Coord(stock_.toIndexCeil(rMax), stock_.toIndexCeil(rMax),
-                                 stock_.toIndexCeil(region_.upperBound().y() + blockReach_)));
+                                 stock_.toIndexCeil(bounds.upperBound().y() + blockReach_)));
     if (removing_) box.intersect(stock_.materialBounds);  // nothing to remove outside it
     return box;
   }
@@ -173,12 +251,12 @@ class RegionWriter {
       auto& tasks = found.local();
       for (std::size_t b = range.begin(); b != range.end(); ++b) {
         const Coord& block = blocks[b];
-        const double psi = distanceAtCentre(block, kNode1Dim, blockReach_ + h_);
-        if (psi > blockReach_) continue;  // out of reach
+        const Reach reach = reachOfCube(shape_.whole(), block, kNode1Dim);
+        if (reach == Reach::None) continue;  // out of reach
         const Node1* node = accessor.template probeConstNode<Node1>(block);
         const float tile = accessor.getValue(block);
         if (!node && u(tile) <= -bg_) continue;  // already entirely in the region's state
-        if (psi < -blockReach_) {
+        if (reach == Reach::Covers) {
           tasks.push_back({block, 2, Action::Fill, nullptr, 0.0f, node1InsideVoxels(node, tile)});
           continue;
         }
@@ -203,23 +281,24 @@ class RegionWriter {
           if (!box.hasOverlap(openvdb::CoordBBox(sub, sub.offsetBy(kSub - 1)))) continue;
           // Wholly outside the region: nothing to do. Wholly inside: one task fills its
           // leaves, with no distance to take.
-          const double psi = distanceAtCentre(sub, kSub, subReach + h_);
-          if (psi > subReach) continue;
-          if (psi < -subReach) {  // its 64 leaf slots are filled in restructure()
+          const Reach reach = reachOfCube(shape_.whole(), sub, kSub);
+          if (reach == Reach::None) continue;
+          if (reach == Reach::Covers) {  // its 64 leaf slots are filled in restructure()
             tasks.push_back({sub, 1, Action::FillSub, nullptr, 0.0f, 0.0});
             continue;
           }
           // Within the sub-block only the pieces and edges near it matter.
-          const RevolvedRegion local = near(sub, kSub, subReach + leafReach_ + h_);
+          const Local local = near(sub, kSub, subReach + leafReach_ + h_);
           classifyLeavesOf(local, sub, kSub, box, accessor, tasks);
         }
   }
 
   template <typename Accessor>
-  void classifyLeavesOf(const RevolvedRegion& local, const Coord& block, int dim, const openvdb::CoordBBox& box,
+  void classifyLeavesOf(const Local& local, const Coord& block, int dim, const openvdb::CoordBBox& box,
                         Accessor& accessor, std::vector<Task>& tasks) const {
-    const double rhoMax = region_.maxRadius() + leafReach_;
-    const double rhoMin = region_.lowerBound().x() > 0.0 ? region_.lowerBound().x() - leafReach_ : -1.0;
+    const RevolvedRegion& bounds = shape_.bounds();
+    const double rhoMax = bounds.maxRadius() + leafReach_;
+    const double rhoMin = bounds.lowerBound().x() > 0.0 ? bounds.lowerBound().x() - leafReach_ : -1.0;
     for (int x = block.x(); x < block.x() + dim; x += kLeafDim)
       for (int y = block.y(); y < block.y() + dim; y += kLeafDim) {
         // A column of leaves whose footprint lies wholly inside or outside the ring the
@@ -231,12 +310,12 @@ class RegionWriter {
         for (int z = block.z(); z < block.z() + dim; z += kLeafDim) {
           const Coord origin(x, y, z);
           if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
-          const double psi = distanceAtCentre(local, origin, kLeafDim, leafReach_ + h_);
-          if (psi > leafReach_) continue;
+          const Reach leafReach = reachOfCube(local, origin, kLeafDim);
+          if (leafReach == Reach::None) continue;
           Leaf* leaf = accessor.probeLeaf(origin);
           const float tile = leaf ? 0.0f : accessor.getValue(origin);
           if (!leaf && u(tile) <= -bg_) continue;
-          const Reach reach = std::abs(psi) < leafReach_ ? reachOfQuarters(local, origin) : psi > 0 ? Reach::None : Reach::Covers;
+          const Reach reach = leafReach == Reach::Partly ? reachOfQuarters(local, origin) : leafReach;
           if (reach == Reach::None) continue;
           if (reach == Reach::Covers) {
             tasks.push_back({origin, 1, Action::Fill, nullptr, 0.0f,
@@ -248,18 +327,15 @@ class RegionWriter {
       }
   }
 
-  enum class Reach { None, Partly, Covers };
-
   // A finer look at a leaf the coarse test could not decide: the distance at the centres of
   // its eight 4³ quarters, each with its own (smaller) reach.
-  Reach reachOfQuarters(const RevolvedRegion& local, const Coord& origin) const {
-    const double quarterReach = 0.5 * std::sqrt(3.0) * 3.0 * h_ + bg_;
+  Reach reachOfQuarters(const Local& local, const Coord& origin) const {
     bool allBeyond = true, allCovered = true;
     for (int q = 0; q < 8; ++q) {
       const Coord quarter = origin.offsetBy((q & 1) * 4, ((q >> 1) & 1) * 4, ((q >> 2) & 1) * 4);
-      const double psi = distanceAtCentre(local, quarter, 4, quarterReach + h_);
-      allBeyond &= psi > quarterReach;
-      allCovered &= psi < -quarterReach;
+      const Reach reach = reachOfCube(local, quarter, 4);
+      allBeyond &= reach == Reach::None;
+      allCovered &= reach == Reach::Covers;
     }
     return allBeyond ? Reach::None : allCovered ? Reach::Covers : Reach::Partly;
   }
@@ -387,13 +463,12 @@ class RegionWriter {
     ghostCandidates_.assign(leaves.size(), Leaf::NodeMaskType());
     std::vector<double> insideLost(leaves.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
-      RevolvedRegion local;  // each leaf's subset, in memory reused from leaf to leaf
+      Local local;  // each leaf's subset, in memory reused from leaf to leaf
       for (std::size_t l = range.begin(); l != range.end(); ++l) {
         Leaf& leaf = *leaves[l];
         const Coord o = leaf.origin();
-        region_.nearInto(std::sqrt(squared((o.x() + 3.5) * h_) + squared((o.y() + 3.5) * h_)), (o.z() + 3.5) * h_,
-                         leafReach_, local);
-        if (local.empty()) continue;
+        shape_.nearInto((o.x() + 3.5) * h_, (o.y() + 3.5) * h_, (o.z() + 3.5) * h_, leafReach_, local);
+        if (Shape::empty(local)) continue;
         float* values = leaf.buffer().data();  // written in place: the loop is the hot path
         auto& activeMask = leaf.getValueMask();
         double lost = 0.0;
@@ -405,7 +480,7 @@ class RegionWriter {
             for (int k = 0; k < kLeafDim; ++k) anyOpen |= u(values[column + k]) > -bg_;
             if (!anyOpen) continue;
             double psi[RevolvedRegion::kColumn];
-            local.signedDistanceColumn(std::sqrt(x * x + squared((o.y() + j) * h_)), o.z() * h_, h_, bg_, psi);
+            Shape::column(local, x, (o.y() + j) * h_, o.z() * h_, h_, bg_, psi);
             // A column's eight voxels are one byte of the leaf's masks (LeafNode<float, 3>).
             lost += writeColumn(column_, values + column, psi, activeMask.template getWord<std::uint8_t>(column >> 3),
                                 ghostCandidates_[l].template getWord<std::uint8_t>(column >> 3));
@@ -514,7 +589,7 @@ class RegionWriter {
   }
 
   StockGrid& stock_;
-  const RevolvedRegion& region_;
+  const Shape& shape_;
   const double h_;
   const float bg_;
   const double sign_;
@@ -530,7 +605,18 @@ class RegionWriter {
 
 double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how) {
   if (region.empty()) return 0.0;
-  return RegionWriter(stock, region, how).run();
+  const RevolvedShape shape{region};
+  return RegionWriter<RevolvedShape>(stock, shape, how).run();
+}
+
+double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how) {
+  const SweptShape<HelicalSweep> shape{sweep};
+  return RegionWriter<SweptShape<HelicalSweep>>(stock, shape, how).run();
+}
+
+double writeRegion(StockGrid& stock, const StraightSlot& slot, RegionWrite how) {
+  const SweptShape<StraightSlot> shape{slot};
+  return RegionWriter<SweptShape<StraightSlot>>(stock, shape, how).run();
 }
 
 }  // namespace lathesim::sim

@@ -16,7 +16,30 @@ const ConvexPolygon& toolOf(const interp::Move& move, const ToolOutlines& tools)
   return tool->second;
 }
 
+double thicknessOf(const interp::Move& move, const ToolThicknesses& thicknesses) {
+  const auto found = thicknesses.find(move.tool);
+  return found == thicknesses.end() ? kDefaultInsertThicknessMm : found->second;
+}
+
+// What a move made with the spindle stopped removes: a straight slot along each segment.
+double removeSlots(const interp::Move& move, const ConvexPolygon& tool, double thicknessMm, Stock& stock) {
+  double removed = 0.0;
+  for (const auto& [from, to] : sweptSegments(move, stock.voxelMm()))
+    removed += stock.remove(StraightSlot(tool, from, to, thicknessMm, move.spindleAngleDeg));
+  return removed;
+}
+
+// What a thread move removes: the outline along its helix, from its start angle (measured in
+// the direction the spindle turns) one turn per lead.
+double removeThread(const interp::Move& move, const ConvexPolygon& tool, Stock& stock) {
+  const int sense = move.spindleDirection == interp::SpindleDirection::Clockwise ? 1 : -1;
+  return stock.remove(HelicalSweep(tool, move.from, move.to, move.thread.revolutions(move.from, move.to),
+                                   sense * move.thread.startAngleDeg, sense));
+}
+
 }  // namespace
+
+bool spindleTurns(const interp::Move& move) { return move.spindleOn && move.spindleS > 0.0; }
 
 void recordCollision(std::vector<Collision>& collisions, const interp::Move& move, const char* kind, double volumeMm3) {
   // The block's collisions are the last ones, of one or more kinds.
@@ -30,12 +53,19 @@ void recordCollision(std::vector<Collision>& collisions, const interp::Move& mov
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks) {
+  return simulate(toolpath, tools, stock, progress, checks, {});
+}
+
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress, const CollisionChecks* checks,
+                          const ToolThicknesses& thicknesses, const CutObserver& observer) {
   SimulationResult result;
   const auto& moves = toolpath.moves;
   const double voxelVolume = stock.voxelMm() * stock.voxelMm() * stock.voxelMm();
   const int totalBlocks = toolpath.blockCount;
   auto cycleStart = toolpath.cycleStarts.begin();
   int spindleWarnedBlock = -1;  // one spindle warning per block
+  int threadWarnedBlock = -1;   // one thread-start warning per block
   RZ frame(0, 0);               // the G50 frame of the moves so far
   bool checkShift = false;      // after G50 moved it: until the first cut, or a warning
 
@@ -57,17 +87,34 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
       checkShift = !warning && !interp::isCutting(head.kind);
     }
 
+    // Turning: the feeds and arcs that follow in this block with the spindle turning too.
+    const auto turning = [](const interp::Move& m) {
+      return (m.kind == interp::MoveKind::Feed || interp::isArc(m.kind)) && spindleTurns(m);
+    };
     std::size_t end = first + 1;
-    if (interp::isCutting(head.kind))
-      while (end < moves.size() && moves[end].block == head.block && interp::isCutting(moves[end].kind)) ++end;
+    if (turning(head))
+      while (end < moves.size() && moves[end].block == head.block && turning(moves[end])) ++end;
 
-    std::vector<ConvexPolygon> pieces;
-    for (std::size_t m = first; m < end; ++m) {
-      const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
-      pieces.insert(pieces.end(), swept.begin(), swept.end());
-      block.timeS += moves[m].timeS;
+    if (observer) observer(first, end, stock);
+    double removed = 0.0;
+    const ConvexPolygon& tool = toolOf(head, tools);
+    if (interp::isCutting(head.kind) && !spindleTurns(head)) {
+      removed = removeSlots(head, tool, thicknessOf(head, thicknesses), stock);
+    } else if (head.kind == interp::MoveKind::Thread) {
+      if (auto warning = threadPassStartsInStock(head, moves, first, stock); warning && threadWarnedBlock != head.block) {
+        result.warnings.push_back(*warning);
+        threadWarnedBlock = head.block;
+      }
+      removed = removeThread(head, tool, stock);
+    } else {
+      std::vector<ConvexPolygon> pieces;
+      for (std::size_t m = first; m < end; ++m) {
+        const auto swept = sweptPieces(moves[m], toolOf(moves[m], tools), stock.voxelMm());
+        pieces.insert(pieces.end(), swept.begin(), swept.end());
+      }
+      removed = pieces.empty() ? 0.0 : stock.remove(RevolvedRegion(pieces));
     }
-    const double removed = pieces.empty() ? 0.0 : stock.remove(RevolvedRegion(pieces));
+    for (std::size_t m = first; m < end; ++m) block.timeS += moves[m].timeS;
     block.removedMm3 += removed;
     if (auto warning = cutWithSpindleStopped(head, removed, stock.voxelMm()); warning && spindleWarnedBlock != head.block) {
       result.warnings.push_back(*warning);
@@ -85,7 +132,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress) {
-  return simulate(toolpath, tools, stock, progress, nullptr);
+  return simulate(toolpath, tools, stock, progress, nullptr, {});
 }
 
 }  // namespace lathesim::sim

@@ -1,6 +1,8 @@
 #pragma once
-// Runs a toolpath through the stock: every move sweeps its tool's outline from start to end,
-// revolved about the spindle axis, and removes what it covers.
+// Runs a toolpath through the stock: every move sweeps its tool's outline from start to end
+// and removes what it covers — revolved about the spindle axis while the spindle turns, along
+// the helix for a thread move (geometry/helical_sweep.hpp), and as a straight slot the
+// insert's thickness wide when the spindle stands (geometry/straight_slot.hpp).
 
 #include <functional>
 #include <map>
@@ -57,12 +59,23 @@ inline constexpr double kCollisionVoxels = 10.0;
 inline constexpr double kInsideStockVoxels = 1.0;
 
 using ToolOutlines = std::map<int, ConvexPolygon>;  // tool number → outline (radial, axial) mm
+/// tool number → the insert's thickness across the tool's plane (mm): what a cut with the
+/// spindle stopped removes across that plane. A tool not listed is kDefaultInsertThicknessMm.
+using ToolThicknesses = std::map<int, double>;
+inline constexpr double kDefaultInsertThicknessMm = 4.0;
 using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 
-/// Removes every move's swept region from `stock` in program order. Consecutive cutting
-/// moves (feeds and arcs) of one block are united and written once (a cycle's cut and
-/// retract overlap heavily); each rapid is written on its own so that a rapid into material
-/// is caught and located; dwells remove nothing.
+/// Called before the moves [firstMove, endMove) are cut, with the stock as it stands then:
+/// what a picture taken while those moves run shows (the animation's frames).
+using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMove, const Stock& stock)>;
+
+/// Removes every move's swept region from `stock` in program order. Consecutive feeds and
+/// arcs of one block made with the spindle turning are united, revolved, and written once (a
+/// cycle's cut and retract overlap heavily); each rapid is written on its own so that a rapid
+/// into material is caught and located; each thread move on its own along its helix (from
+/// its start angle, one turn per lead); each feed, arc or thread move made with the spindle
+/// stopped (before M03/M04, after M05, at S0) as a straight slot at the angle the spindle
+/// stands at (Move::spindleAngleDeg; arcs by their chords); dwells remove nothing.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress = {});
 
@@ -70,5 +83,14 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
 /// when `checks` is given.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
                           const BlockProgress& progress, const CollisionChecks* checks);
+
+/// The same, with the tools' insert thicknesses for cuts made with the spindle stopped, and
+/// telling `observer` (if set) of each group of moves before it is cut.
+SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
+                          const BlockProgress& progress, const CollisionChecks* checks,
+                          const ToolThicknesses& thicknesses, const CutObserver& observer = {});
+
+/// Whether the spindle turns during `move` (M03/M04 in force and S > 0).
+bool spindleTurns(const interp::Move& move);
 
 }  // namespace lathesim::sim

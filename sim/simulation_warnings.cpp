@@ -39,12 +39,25 @@ std::optional<SimulationWarning> shiftedMoveInStock(const interp::Move& move, co
 
 std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head, double removedMm3,
                                                        double voxelMm) {
-  if (!interp::isCutting(head.kind) || head.spindleOn) return std::nullopt;
+  if (!interp::isCutting(head.kind) || spindleTurns(head)) return std::nullopt;
   if (removedMm3 <= kCollisionVoxels * voxelMm * voxelMm * voxelMm) return std::nullopt;
+  const char* why = head.spindleOn ? "at S0" : "with no M03/M04 in force (or after M05)";
   return SimulationWarning{head.line, head.column,
-                           "cutting with the spindle stopped: this block removes " + number("%.1f", removedMm3) +
-                               " mm³ with no M03/M04 in force (or after M05); start the spindle "
-                               "before cutting"};
+                           "cutting with the spindle stopped: this block cuts a straight slot of " +
+                               number("%.1f", removedMm3) + " mm³ (the tool's outline, as thick as the insert, at "
+                               "spindle angle " + number("%.0f", head.spindleAngleDeg) + "°) " + why +
+                               "; start the spindle before cutting"};
+}
+
+std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& move, std::span<const interp::Move> moves,
+                                                         std::size_t index, const Stock& stock) {
+  const bool continues = index > 0 && moves[index - 1].kind == interp::MoveKind::Thread && moves[index - 1].to == move.from;
+  if (continues || stock.signedDistanceAt(move.from) >= -kInsideStockVoxels * stock.voxelMm()) return std::nullopt;
+  return SimulationWarning{move.line, move.column,
+                           "this thread pass starts at X" + number("%g", diameterOf(move.from)) + " Z" +
+                               number("%g", move.from.y()) +
+                               ", inside the stock: the cut would be synchronised with the spindle with the tool "
+                               "already in the material; start the pass clear of the part"};
 }
 
 }  // namespace lathesim::sim

@@ -1,6 +1,8 @@
 #pragma once
 // The warnings the simulation gives, worded in one place (see SimulationWarning).
 
+#include <span>
+
 #include "interp/move.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock.hpp"
@@ -16,9 +18,15 @@ std::optional<SimulationWarning> cycleStartInStock(const interp::CycleStart& sta
 /// declared is not where the setup has the tool.
 std::optional<SimulationWarning> shiftedMoveInStock(const interp::Move& move, const Stock& stock);
 
-/// A warning when a cutting move (feed or arc) group with the spindle stopped removed more
-/// than kCollisionVoxels voxels' worth of material.
+/// A warning when a cutting move (feed, arc or thread) made with the spindle stopped removed
+/// more than kCollisionVoxels voxels' worth of material: it names the cut, a straight slot.
 std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head, double removedMm3,
                                                        double voxelMm);
+
+/// A warning when the thread pass that `moves[index]` begins (a thread move not continuing the
+/// one before it) starts inside `stock` (deeper than kInsideStockVoxels): the pass would be
+/// synchronised to the spindle with the tool already in the material.
+std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& move, std::span<const interp::Move> moves,
+                                                         std::size_t index, const Stock& stock);
 
 }  // namespace lathesim::sim

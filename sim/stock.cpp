@@ -4,6 +4,7 @@
 
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/VolumeToMesh.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <unistd.h>
 
@@ -128,6 +129,8 @@ Stock::~Stock() = default;
 double Stock::voxelMm() const { return impl_->voxel; }
 
 double Stock::remove(const RevolvedRegion& region) { return writeRegion(*impl_, region, RegionWrite::Remove); }
+double Stock::remove(const HelicalSweep& sweep) { return writeRegion(*impl_, sweep, RegionWrite::Remove); }
+double Stock::remove(const StraightSlot& slot) { return writeRegion(*impl_, slot, RegionWrite::Remove); }
 
 double Stock::volumeMm3() const {
   const Tree& tree = impl_->grid->tree();
@@ -153,6 +156,19 @@ double Stock::volumeMm3() const {
 double Stock::signedDistanceAt(const RZ& point) const {
   const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
   return sampler.wsSample(openvdb::Vec3d(point.x(), 0.0, point.y()));
+}
+
+double Stock::signedDistanceAt(double xMm, double yMm, double zMm) const {
+  const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
+  return sampler.wsSample(openvdb::Vec3d(xMm, yMm, zMm));
+}
+
+void Stock::signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256), [&](const auto& range) {
+    const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
+    for (std::size_t i = range.begin(); i != range.end(); ++i)
+      out[i] = sampler.wsSample(openvdb::Vec3d(points[i].x(), points[i].y(), points[i].z()));
+  });
 }
 
 TriangleMesh Stock::mesh(double adaptivity) const {

@@ -6,10 +6,15 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
+
+#include <Eigen/Core>
 #include <string>
 
+#include "geometry/helical_sweep.hpp"
 #include "geometry/meridian_profile.hpp"
 #include "geometry/revolved_region.hpp"
+#include "geometry/straight_slot.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock_spec.hpp"
 
@@ -51,11 +56,17 @@ class Stock {
   /// region's boundary and the material are visited. Returns the volume removed (mm³),
   /// measured on the level set before and after.
   double remove(const RevolvedRegion& region);
+  /// The same for a thread pass (helical_sweep.hpp) and for a cut made with the spindle
+  /// stopped (straight_slot.hpp): written voxel by voxel with their own 3D distance, over the
+  /// leaves near their revolved hull's boundary and the material.
+  double remove(const HelicalSweep& sweep);
+  double remove(const StraightSlot& slot);
 
   /// Volume (mm³) of material lying deeper than `marginMm` inside the revolved `region`,
-  /// measured without changing anything. The stock is a solid of revolution (every cut is),
-  /// so it is integrated over the meridian half-plane: each voxel (ρ, 0, z) stands for its
-  /// ring. See stock_probe.cpp.
+  /// measured without changing anything. It is integrated over the meridian half-plane: each
+  /// voxel (ρ, 0, z) stands for its ring. Exact while the stock is a solid of revolution; a
+  /// thread's grooves or a slot (cuts that are not) count as they lie at azimuth 0, an
+  /// estimate of the holder's collision volume, which is all it serves. See stock_probe.cpp.
   double materialInside(const RevolvedRegion& region, double marginMm) const;
 
   /// Volume enclosed by the zero level set (mm³): each voxel counts the fraction
@@ -65,6 +76,11 @@ class Stock {
   /// φ at the point at radius ρ = point.x(), Z = point.y() (mm), trilinearly sampled:
   /// negative inside the material, positive outside; beyond the narrow band it is ±3 voxels.
   double signedDistanceAt(const RZ& point) const;
+  /// φ at the point (x, y, z) of the part's frame (mm), trilinearly sampled: for what is not
+  /// a solid of revolution (threads, slots cut with the spindle stopped).
+  double signedDistanceAt(double xMm, double yMm, double zMm) const;
+  /// The same at many points at once (one accessor for all): out[i] for points[i].
+  void signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const;
 
   /// Closed surface just inside φ = 0 (0.16 % of a voxel: see stock.cpp), outward normals,
   /// vertices merged by position as an STL reader merges them. adaptivity 0 keeps every

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 
+#include "geometry/helical_sweep.hpp"
 #include "geometry/revolved_region.hpp"
+#include "geometry/straight_slot.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::sim {
@@ -47,5 +49,7 @@ enum class RegionWrite {
 /// Writes `region` into the stock's grid; returns the volume that stopped being material
 /// (mm³; negative when material was added). See region_writer.cpp.
 double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how);
+double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how);
+double writeRegion(StockGrid& stock, const StraightSlot& slot, RegionWrite how);
 
 }  // namespace lathesim::sim

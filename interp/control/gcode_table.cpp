@@ -24,7 +24,7 @@ constexpr std::array kGCodes{
     GCodeInfo{20, GGroup::Units, true, "inch input"},
     GCodeInfo{21, GGroup::Units, true, "metric input"},
     GCodeInfo{28, GGroup::NonModal, true, "reference point return"},
-    GCodeInfo{32, GGroup::Motion, false, "thread cutting"},
+    GCodeInfo{32, GGroup::Motion, true, "thread cutting"},
     GCodeInfo{40, GGroup::NoseRadius, true, "nose radius compensation cancel"},
     GCodeInfo{41, GGroup::NoseRadius, true, "nose radius compensation left"},
     GCodeInfo{42, GGroup::NoseRadius, true, "nose radius compensation right"},
@@ -43,13 +43,13 @@ constexpr std::array kGCodes{
     GCodeInfo{73, GGroup::NonModal, true, "pattern repeating cycle"},
     GCodeInfo{74, GGroup::NonModal, true, "face peck drilling cycle"},
     GCodeInfo{75, GGroup::NonModal, true, "grooving cycle"},
-    GCodeInfo{76, GGroup::NonModal, false, "multiple threading cycle"},
+    GCodeInfo{76, GGroup::NonModal, true, "multiple threading cycle"},
     GCodeInfo{80, GGroup::DrillingCycle, true, "drilling cycle cancel"},
     GCodeInfo{87, GGroup::NonModal, false, "side drilling cycle", "live tooling (a driven tool drills radial holes)"},
     GCodeInfo{88, GGroup::NonModal, false, "side tapping cycle", "live tooling (a driven tool taps radial holes)"},
     GCodeInfo{89, GGroup::NonModal, false, "side boring cycle", "live tooling (a driven tool bores radial holes)"},
     GCodeInfo{90, GGroup::Motion, true, "axial cutting cycle"},
-    GCodeInfo{92, GGroup::Motion, false, "threading cycle"},
+    GCodeInfo{92, GGroup::Motion, true, "threading cycle"},
     GCodeInfo{94, GGroup::Motion, true, "face cutting cycle"},
     GCodeInfo{96, GGroup::SpindleMode, true, "constant surface speed"},
     GCodeInfo{97, GGroup::SpindleMode, true, "constant spindle speed"},
@@ -102,7 +102,8 @@ constexpr std::array kHncOwnCompoundCycles{
     GCodeInfo{73, GGroup::NonModal, false, "pattern repeating cycle in hnc's one-block form"},
     GCodeInfo{74, GGroup::NonModal, false, "face peck drilling cycle in hnc's form"},
     GCodeInfo{75, GGroup::NonModal, false, "grooving cycle in hnc's form"},
-    GCodeInfo{76, GGroup::NonModal, false, "multiple threading cycle in hnc's form"},
+    GCodeInfo{76, GGroup::NonModal, false,
+              "multiple threading cycle in hnc's one-block form, which no source at hand describes"},
 };
 
 // A code a dialect writes differently from system A. `meaning` is the system-A number,
@@ -175,7 +176,7 @@ std::string writtenGCode(int number, GGroup group, Dialect dialect) {
 
 char cycleTaperLetter(int cycle, Dialect dialect) {
   if (dialect != Dialect::Hnc) return 'R';
-  return cycle == 90 ? 'I' : 'K';
+  return cycle == 94 ? 'K' : 'I';
 }
 
 std::string supportedGCodes(Dialect dialect) {

@@ -60,8 +60,8 @@ const GCodeInfo* findGCode(int written, Dialect dialect = Dialect::FanucA);
 /// How `dialect` writes the system-A code `number` of `group`, e.g. G77 for G90 in fanuc-b.
 std::string writtenGCode(int number, GGroup group, Dialect dialect);
 
-/// The word that gives a single cycle's taper: R on Fanuc and GSK, I (axial) or K (face) on
-/// HNC. `cycle` is the system-A code, 90 or 94.
+/// The word that gives a single cycle's taper: R on Fanuc and GSK, I (axial: G80, G82) or K
+/// (face: G81) on HNC. `cycle` is the system-A code, 90, 92 or 94.
 char cycleTaperLetter(int cycle, Dialect dialect);
 
 /// The codes `dialect` reads, for error messages: "G00 G01 …".

@@ -9,6 +9,8 @@
 
 #include "interp/cycles/contour_blocks.hpp"
 #include "interp/cycles/g73_cycle.hpp"
+#include "interp/cycles/g76_cycle.hpp"
+#include "interp/cycles/thread_words.hpp"
 #include "interp/compensation/nose_compensation.hpp"
 #include "interp/cycles/peck_cycle.hpp"
 #include "interp/text/label_number.hpp"
@@ -21,8 +23,8 @@ namespace {
 class CompoundCycle {
  public:
   CompoundCycle(const Code& code, ParsedBlock& block, ModalState& state,
-                const InterpreterOptions& options, const BlockPlace* place)
-      : code_(code), block_(block), state_(state), options_(options), place_(place) {}
+                const InterpreterOptions& options, const BlockPlace* place, bool feedGiven)
+      : code_(code), block_(block), state_(state), options_(options), place_(place), feedGiven_(feedGiven) {}
 
   Result<CompoundOutcome> run();
 
@@ -57,13 +59,17 @@ class CompoundCycle {
   Status roughing();   // G71, G72
   Status patternRepeat();  // G73
   Status peck(const PeckCycle& cycle);  // G74, G75
+  Status multipleThreading();  // G76
+  Status threadingParameters();  // G76's first block
 
   const Code& code_;
   ParsedBlock& block_;
   ModalState& state_;
   const InterpreterOptions& options_;
   const BlockPlace* place_;
+  bool feedGiven_;
   CompoundOutcome outcome_;
+  std::vector<Error>& warnings_ = outcome_.warnings;
 };
 
 Result<CompoundOutcome> CompoundCycle::run() {
@@ -79,7 +85,8 @@ Result<CompoundOutcome> CompoundCycle::run() {
     case 72: status = roughing(); break;
     case 73: status = patternRepeat(); break;
     case 74: status = peck(kFacePeckCycle); break;
-    default: status = peck(kGroovePeckCycle); break;
+    case 75: status = peck(kGroovePeckCycle); break;
+    default: status = multipleThreading(); break;
   }
   if (!status.ok()) return status.error();
   return std::move(outcome_);
@@ -362,14 +369,129 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
   return success();
 }
 
+// G76 P(m)(r)(a) Q(Δdmin) R(d) [J K]: modal values for the second blocks that follow.
+Status CompoundCycle::threadingParameters() {
+  const ThreadingWords words = threadingWords(options_.dialect);
+  const auto p = block_.take('P');
+  const auto q = block_.take('Q');
+  const auto r = block_.take('R');
+  CompoundCycleParams& kept = state_.compound;
+  if (p) {
+    // m, r and a, two digits each: six digits give all three; GSK reads one or two digits as a
+    // alone and three or four as r and a (lathe-cycles.md §6).
+    const bool integral = p->number.find_first_not_of("0123456789") == std::string::npos;
+    if (!integral || p->number.size() > 6) {
+      return errorAt(p->column, fmt::format("G76 {} is not P(m)(r)(a): expected up to six digits, two each for "
+                                            "the finishing passes m, the run-out r (in 0.1 lead) and the tool "
+                                            "angle a, e.g. P020560",
+                                            p->text()));
+    }
+    const long digits = std::stol(p->number);
+    const int a = static_cast<int>(digits % 100);
+    const std::vector<int> fanucAngles{80, 60, 55, 30, 29, 0};
+    if (words.fanucToolAngles && std::find(fanucAngles.begin(), fanucAngles.end(), a) == fanucAngles.end()) {
+      return errorAt(p->column, fmt::format("G76 {}: the tool angle a = {} is not one this control takes (80, 60, "
+                                            "55, 30, 29 or 0)",
+                                            p->text(), a));
+    }
+    kept.threadToolAngleDeg = a;
+    if (p->number.size() >= 3) kept.threadRunoutLeads = static_cast<double>((digits / 100) % 100) / 10.0;
+    if (p->number.size() >= 5) kept.threadFinishingPasses = static_cast<int>(digits / 10000);
+  }
+  if (q) {
+    if (q->value < 0) return errorAt(q->column, fmt::format("G76 {} is not a minimum depth Δdmin: expected a number ≥ 0", q->text()));
+    kept.threadMinDepthMm = incrementLengthMm(*q, NumberReading::of(options_.control, state_.inch));
+  }
+  if (auto s = notNegative(r, "a finishing allowance d"); !s.ok()) return s;
+  if (r) kept.threadAllowanceMm = length(*r);
+  auto runout = takeRunoutWords(block_, NumberReading::of(options_.control, state_.inch), words, {}, false, code_.text);
+  if (!runout.ok()) return runout.error();
+  kept.threadRunoutAcrossMm = runout.value().acrossMm;
+  kept.threadRunoutAlongMm = runout.value().alongMm;
+  return success();
+}
+
+// G76 X(U) Z(W) R(i) P(k) Q(Δd) F(L): the passes (g76_cycle.hpp).
+Status CompoundCycle::multipleThreading() {
+  if (!block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W')) return threadingParameters();
+  const ThreadingWords words = threadingWords(options_.dialect);
+  const auto x = block_.take('X');
+  const auto u = block_.take('U');
+  const auto z = block_.take('Z');
+  const auto w = block_.take('W');
+  const auto i = block_.take('R');
+  const auto k = block_.take('P');
+  const auto firstDepth = block_.take('Q');
+  if (auto s = oneOf(x, u, "X"); !s.ok()) return s;
+  if (auto s = oneOf(z, w, "Z"); !s.ok()) return s;
+  auto lead = takeLeadMm(block_, state_, words, code_.text, code_.column, feedGiven_);
+  if (!lead.ok()) return lead.error();
+  const RZ start = state_.position;
+  RZ end = start;
+  if (x) end.x() = length(*x) / 2.0;
+  if (u) end.x() += length(*u) / 2.0;
+  if (z) end.y() = length(*z);
+  if (w) end.y() += length(*w);
+  if (end.y() == start.y()) {
+    return errorAt(z ? z->column : w ? w->column : code_.column,
+                   fmt::format("G76 cannot cut a face thread: its end Z must differ from the start point's Z{:g}",
+                               start.y()));
+  }
+  for (const auto& [word, meaning] : {std::pair{&k, "the thread height k"}, std::pair{&firstDepth, "the first depth of cut Δd"}}) {
+    if (!*word) {
+      return errorAt(code_.column, fmt::format("G76 needs {}({}): {} (without a decimal point in least increments, 0.001 mm at IS-B)",
+                                               word == &k ? 'P' : 'Q', meaning, meaning));
+    }
+    if (!((*word)->value > 0)) {
+      return errorAt((*word)->column, fmt::format("G76 {} is not {}: expected a number > 0", (*word)->text(), meaning));
+    }
+  }
+  const CompoundCycleParams& kept = state_.compound;
+  MultipleThreadingParams params;
+  params.finishingPasses = kept.threadFinishingPasses;
+  params.toolAngleDeg = kept.threadToolAngleDeg;
+  params.minDepthStepMm = kept.threadMinDepthMm;
+  params.finishAllowanceMm = kept.threadAllowanceMm;
+  params.taperMm = i ? length(*i) : 0.0;
+  params.heightMm = incrementLengthMm(*k, NumberReading::of(options_.control, state_.inch));
+  params.firstDepthMm = incrementLengthMm(*firstDepth, NumberReading::of(options_.control, state_.inch));
+  params.leadMm = lead.value();
+  if (params.finishAllowanceMm >= params.heightMm) {
+    return errorAt(k->column, fmt::format("G76 {}: the thread height k = {:g} mm must exceed the finishing "
+                                             "allowance d = {:g} mm of the first block",
+                                             k->text(), params.heightMm, params.finishAllowanceMm));
+  }
+  const RunoutWords runoutWords{kept.threadRunoutAcrossMm, kept.threadRunoutAlongMm};
+  const double defaultLeads = kept.threadRunoutLeads.value_or(options_.threadRunoutLeads);
+  const ThreadRunout runout = cycleRunout(runoutWords, defaultLeads * params.leadMm);
+  params.runoutAlongMm = runout.alongMm;
+  params.runoutAcrossMm = std::abs(runout.acrossMm);
+  state_.compound.threadRunoutAcrossMm.reset();  // GSK's J and K hold for one cycle
+  state_.compound.threadRunoutAlongMm.reset();
+
+  constexpr int kMaxPasses = 1000;
+  const auto depths = roughPassDepths(params.firstDepthMm, params.minDepthStepMm,
+                                      params.heightMm - params.finishAllowanceMm, kMaxPasses);
+  if (!depths) {
+    return errorAt(firstDepth->column,
+                   fmt::format("G76 {} with Δdmin {:g} mm would take more than {} rough passes to reach k − d = {:g} "
+                               "mm; give a larger Q(Δd) or Δdmin",
+                               firstDepth->text(), params.minDepthStepMm, kMaxPasses,
+                               params.heightMm - params.finishAllowanceMm));
+  }
+  threadStateWarnings(state_, block_.line, code_.column, code_.text, warnings_);
+  outcome_.legs = multipleThreadingLegs(start, end, params, *depths);
+  return success();
+}
+
 }  // namespace
 
-bool isCompoundCycle(const Code& code) { return code.number >= 70 && code.number <= 75; }
+bool isCompoundCycle(const Code& code) { return code.number >= 70 && code.number <= 76; }
 
 Result<CompoundOutcome> runCompoundCycle(const Code& code, ParsedBlock& block, ModalState& state,
                                          const InterpreterOptions& options,
-                                         const BlockPlace* place) {
-  return CompoundCycle(code, block, state, options, place).run();
+                                         const BlockPlace* place, bool feedGiven) {
+  return CompoundCycle(code, block, state, options, place, feedGiven).run();
 }
 
 }  // namespace lathesim::interp

@@ -1,7 +1,7 @@
 #pragma once
-// G70–G75, the one-shot compound cycles: their words read (first block or second block), the
+// G70–G76, the one-shot compound cycles: their words read (first block or second block), the
 // modal first-block values kept, the contour found for G70–G73, and the legs made by
-// g73_cycle, peck_cycle and roughing_cycle. The executor stamps the legs like any move.
+// g73_cycle, peck_cycle, roughing_cycle and g76_cycle. The executor stamps the legs like any move.
 
 #include <cstddef>
 #include <optional>
@@ -23,14 +23,15 @@ struct CompoundOutcome {
   std::vector<Error> warnings;               // G70's contour blocks', and the cycle's own
 };
 
-/// G70 to G75.
+/// G70 to G76.
 bool isCompoundCycle(const Code& code);
 
 /// Runs compound cycle `code` of `block`, taking the words it uses. `state` (its F, S, T
 /// already set from the block) is updated: the first-block values, and for G70 what the
 /// contour blocks set. `place` locates the block in the program (needed by G70–G73).
+/// `feedGiven`: the block gave F (G76 may not give I as well).
 Result<CompoundOutcome> runCompoundCycle(const Code& code, ParsedBlock& block, ModalState& state,
                                          const InterpreterOptions& options,
-                                         const BlockPlace* place);
+                                         const BlockPlace* place, bool feedGiven = false);
 
 }  // namespace lathesim::interp

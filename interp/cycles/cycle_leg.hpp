@@ -17,6 +17,7 @@ struct CycleLeg {
   RZ to{0, 0};
   int step = 0;       // the cycle's own step number (1–4 for G90/G94); 0 when it has none
   RZ center{0, 0};    // arcs only
+  ThreadMotion thread{};  // Thread legs only
 };
 
 /// The legs in order, the zero-length ones left out.

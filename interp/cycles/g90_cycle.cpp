@@ -28,13 +28,13 @@ std::vector<CycleLeg> axialCycleLegs(const RZ& start, const RZ& end, double rMm)
   });
 }
 
-std::optional<std::string> axialCycleTaperProblem(double uDiameterMm, double rMm) {
+std::optional<std::string> axialCycleTaperProblem(double uDiameterMm, double rMm, std::string_view name) {
   const bool opposite = (rMm > 0 && uDiameterMm < 0) || (rMm < 0 && uDiameterMm > 0);
   if (!opposite || std::abs(rMm) <= std::abs(uDiameterMm) / 2.0) return std::nullopt;
   return fmt::format(
-      "R{} and U{} have opposite signs and |R| > |U/2|; G90 needs |R| ≤ |U/2| (U is the end X "
+      "R{} and U{} have opposite signs and |R| > |U/2|; {} needs |R| ≤ |U/2| (U is the end X "
       "minus the start X, a diameter; R is a radius)",
-      rMm, uDiameterMm);
+      rMm, uDiameterMm, name);
 }
 
 }  // namespace lathesim::interp

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/rz.hpp"
@@ -16,7 +17,11 @@ namespace lathesim::interp {
 std::vector<CycleLeg> axialCycleLegs(const RZ& start, const RZ& end, double rMm);
 
 /// Why this taper is not allowed, or nullopt when it is: when R and U (= X_C − X_A, a
-/// diameter) have opposite signs, |R| must not exceed |U/2|.
-std::optional<std::string> axialCycleTaperProblem(double uDiameterMm, double rMm);
+/// diameter) have opposite signs, |R| must not exceed |U/2|. G92 has the same rule;
+/// `name` is the code as the program writes it.
+std::optional<std::string> axialCycleTaperProblem(double uDiameterMm, double rMm, std::string_view name);
+inline std::optional<std::string> axialCycleTaperProblem(double uDiameterMm, double rMm) {
+  return axialCycleTaperProblem(uDiameterMm, rMm, "G90");
+}
 
 }  // namespace lathesim::interp

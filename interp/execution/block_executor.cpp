@@ -1,6 +1,7 @@
 #include "interp/execution/block_executor.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,7 +18,10 @@
 #include "interp/motion/g28_return.hpp"
 #include "interp/compensation/cycle_nose_compensation.hpp"
 #include "interp/cycles/g90_cycle.hpp"
+#include "interp/cycles/g92_cycle.hpp"
 #include "interp/cycles/g94_cycle.hpp"
+#include "interp/cycles/thread_cut.hpp"
+#include "interp/cycles/thread_words.hpp"
 #include "interp/motion/spindle_speed.hpp"
 #include "interp/execution/data_setting.hpp"
 #include "interp/execution/subprogram_call.hpp"
@@ -101,11 +105,15 @@ class Executor {
   double angleDegrees(const Word& angle) const;
   std::optional<ArcWord> arcWord(char letter);
   Status applySingleCycle(const SingleCycle& cycle, const std::optional<Code>& code);
+  Status applyThreadCut(const std::optional<Code>& code);
+  Status applyThreadCycle(const std::optional<Code>& code);
+  void warnIfThreadTooFast(const std::vector<CycleLeg>& legs, int column);
   Status applyCompoundCycle(const Code& code);
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
   std::optional<std::string> missingMachineryOf(const Word& word) const;
-  void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0));
+  void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0),
+            const ThreadMotion& thread = {});
   void warnIfSurfaceSpeedUnclamped();
   void warnIfFeedImplausible();
   void emitLegs(const std::vector<CycleLeg>& legs);
@@ -119,6 +127,8 @@ class Executor {
   ProgramFlow flow_;
   std::vector<Error> warnings_;
   std::vector<CycleStart> cycleStarts_;
+  bool chainedThread_ = false;  // this block continued (or began) a chain of G32 cuts
+  bool feedGivenHere_ = false;  // the block gave F
 };
 
 Result<BlockOutcome> Executor::run() {
@@ -158,12 +168,19 @@ Result<BlockOutcome> Executor::run() {
   // M03/M04/M08 act before the block's motion, M05/M09 after it (as on the controls).
   const auto spindle = block_.mCode(MGroup::Spindle);
   const auto coolant = block_.mCode(MGroup::Coolant);
-  if (spindle && spindle->number != 5) state_.spindleOn = true;
+  if (spindle && spindle->number != 5) {
+    state_.spindleOn = true;
+    state_.spindleDirection = spindle->number == 3 ? SpindleDirection::Clockwise : SpindleDirection::CounterClockwise;
+  }
   if (coolant && coolant->number == 8) state_.coolantOn = true;
 
   const Status moved = compound ? applyCompoundCycle(*oneShot) : oneShot ? success() : applyMotion();
   if (!moved.ok()) return moved.error();
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
+  if (!chainedThread_) {  // any other block ends a chain of G32 cuts
+    state_.threadChainAngleDeg.reset();
+    state_.threadChainRunout = {};
+  }
 
   if (spindle && spindle->number == 5) state_.spindleOn = false;
   if (coolant && coolant->number == 9) state_.coolantOn = false;
@@ -229,6 +246,7 @@ Status Executor::applyFeed() {
   }
   state_.feed = reading().mm(f->value);  // mm (inch) per minute or revolution
   state_.feedWord = f->text();
+  feedGivenHere_ = true;
   return success();
 }
 
@@ -307,6 +325,7 @@ Status Executor::applyOneShot(const Code& code) {
   if (code.number == 4) return applyDwell(code);
   // Every other one-shot code ends a G90/G94 cycle's retained values (GSK 3.21.2 note 2).
   state_.cycle = {};
+  state_.threadCycle = {};
   if (code.number == 50) return applyCoordinateSetting(code);
   if (code.number == 28) return applyReferenceReturn(code);
   if (code.number == 53) return applyMachineCoordinateMove(code);
@@ -400,13 +419,16 @@ void Executor::selectMotion(const Code& code) {
                           : code.number == 1  ? MotionMode::Linear
                           : code.number == 2  ? MotionMode::ArcCW
                           : code.number == 3  ? MotionMode::ArcCCW
+                          : code.number == 32 ? MotionMode::Thread
                           : code.number == 90 ? MotionMode::AxialCycle
+                          : code.number == 92 ? MotionMode::ThreadCycle
                                               : MotionMode::FaceCycle;
   // Another group-01 code ends the cycle's retained values (GSK 3.21.2 note 2); G90 and
   // G94 are two such codes, so switching between them clears them too. Only a cycle
   // retains values, so naming the current mode again keeps them.
   if (mode != state_.motion) {
     state_.cycle = {};
+    state_.threadCycle = {};
     state_.drillCancelWithCycle.reset();
   }
   state_.motion = mode;
@@ -442,7 +464,8 @@ void Executor::applyWorkSystem(const std::optional<Code>& oneShot) {
 void Executor::noteDrillingCycleCancel() {
   const auto code = block_.gCode(GGroup::DrillingCycle);
   if (!code) return;
-  if (state_.motion == MotionMode::AxialCycle || state_.motion == MotionMode::FaceCycle)
+  if (state_.motion == MotionMode::AxialCycle || state_.motion == MotionMode::FaceCycle ||
+      state_.motion == MotionMode::ThreadCycle)
     state_.drillCancelWithCycle = std::pair{block_.line, code->column};
 }
 
@@ -463,6 +486,8 @@ Status Executor::applyMotion() {
   switch (state_.motion) {
     case MotionMode::AxialCycle: return applySingleCycle(kAxialCycle, code);
     case MotionMode::FaceCycle: return applySingleCycle(kFaceCycle, code);
+    case MotionMode::Thread: return applyThreadCut(code);
+    case MotionMode::ThreadCycle: return applyThreadCycle(code);
     case MotionMode::ArcCW:
     case MotionMode::ArcCCW: return applyArc(code);
     case MotionMode::Rapid:
@@ -667,11 +692,160 @@ Status Executor::applySingleCycle(const SingleCycle& cycle, const std::optional<
   return success();  // the cycle ends at A: the position is unchanged
 }
 
+// G32 (lathe-cycles.md §2, interp/cycles/thread_cut.hpp): a cut synchronised with the
+// spindle, from here to the end point. The first G32 of a chain waits for the spindle to
+// reach Q; a G32 block right after another starts where that one's cut ended, its Q
+// ignored. No move without axis words.
+Status Executor::applyThreadCut(const std::optional<Code>& code) {
+  const ThreadingWords words = threadingWords(options_.dialect);
+  const std::string name = writtenGCode(32, GGroup::Motion, options_.dialect);
+  const int anchor = code ? code->column : block_.column;
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  if (state_.plane != Plane::ZX) {
+    return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a thread needs the ZX "
+                                       "plane; select it with G18",
+                                       name, state_.plane == Plane::XY ? "G17" : "G19"));
+  }
+  auto lead = takeLeadMm(block_, state_, words, name, anchor, feedGivenHere_);
+  if (!lead.ok()) return lead.error();
+  auto angle = takeStartAngleDeg(block_, name, warnings_);
+  if (!angle.ok()) return angle.error();
+  auto runoutWords = takeRunoutWords(block_, reading(), words, state_.threadChainRunout, true, name);
+  if (!runoutWords.ok()) return runoutWords.error();
+  if (!axes.value().any()) return success();  // a block that cuts nothing ends the chain
+  state_.threadChainRunout = runoutWords.value();
+  chainedThread_ = true;
+
+  threadStateWarnings(state_, block_.line, anchor, name, warnings_);
+  const RZ from = state_.position;
+  const RZ to = endPoint(axes.value());
+  ThreadMotion motion;
+  motion.leadMm = lead.value();
+  motion.startAngleDeg = state_.threadChainAngleDeg.value_or(angle.value());
+  const std::vector<CycleLeg> legs = threadCutLegs(from, to, chainRunout(state_.threadChainRunout), motion, 0);
+  warnIfThreadTooFast(legs, anchor);
+  emitLegs(legs);
+  const CycleLeg& last = legs.back();
+  state_.threadChainAngleDeg = angleAfter(last.thread.startAngleDeg, last.thread.revolutions(last.from, last.to));
+  state_.position = last.to;
+  return success();
+}
+
+// G92 (lathe-cycles.md §1, interp/cycles/g92_cycle.hpp): G90's words and modal repetition,
+// the cut a thread with a run-out, and the starts of a multi-start thread.
+Status Executor::applyThreadCycle(const std::optional<Code>& code) {
+  const ThreadingWords words = threadingWords(options_.dialect);
+  const char taperLetter = cycleTaperLetter(92, options_.dialect);
+  // As G90: the code alone makes it the modal motion and moves nothing.
+  if (!block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W') && !block_.has(taperLetter)) {
+    return success();
+  }
+  const int anchor = code ? code->column : block_.column;
+  const std::string name = writtenGCode(92, GGroup::Motion, options_.dialect);
+  warnIfCycleRepeatsAfterG80(code, name);
+  if (state_.plane != Plane::ZX) {
+    return errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
+                                       "needs the ZX plane; select it with G18",
+                                       name, state_.plane == Plane::XY ? "G17" : "G19"));
+  }
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  const auto r = block_.take(taperLetter);
+  auto lead = takeLeadMm(block_, state_, words, name, anchor, feedGivenHere_);
+  if (!lead.ok()) return lead.error();
+  ThreadCycleRetained& threadKept = state_.threadCycle;
+  auto runoutWords = takeRunoutWords(block_, reading(), words, threadKept.runout, words.hncRunoutRE, name);
+  if (!runoutWords.ok()) return runoutWords.error();
+  int starts = threadKept.starts;
+  double firstStartDeg = threadKept.firstStartDeg;
+  const auto startsWord = words.startsL ? block_.take('L') : words.hncStartsCP ? block_.take('C') : std::nullopt;
+  if (startsWord) {
+    if (startsWord->value < 0 || startsWord->value > 99 || std::floor(startsWord->value) != startsWord->value) {
+      return errorAt(startsWord->column, fmt::format("{} {} is not a number of starts: expected a whole number 1 "
+                                                     "to 99",
+                                                     name, startsWord->text()));
+    }
+    starts = std::max(1, static_cast<int>(startsWord->value));  // HNC: C0 is one start
+  }
+  if (words.hncStartsCP) {
+    if (const auto p = block_.take('P')) firstStartDeg = std::fmod(std::abs(p->value), 360.0);
+  }
+
+  const RZ start = state_.position;  // A
+  CycleRetained& kept = state_.cycle;
+  std::optional<double> xDiameterMm = kept.xDiameterMm;
+  if (a.x) xDiameterMm = length(*a.x);
+  if (a.u) xDiameterMm = diameterOf(start) + length(*a.u);
+  std::optional<double> zMm = kept.zMm;
+  if (a.z) zMm = length(*a.z);
+  if (a.w) zMm = start.y() + length(*a.w);
+  if (!xDiameterMm || !zMm) {
+    return errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
+                                       "in this block nor kept from an earlier {0} block",
+                                       name, !xDiameterMm ? "X(U)" : "Z(W)"));
+  }
+  if (*zMm == start.y()) {
+    return errorAt(a.z ? a.z->column : a.w ? a.w->column : anchor,
+                   fmt::format("{} cannot cut a face thread: its end Z must differ from the start point's Z{:g} "
+                               "(use G32 for a face thread)",
+                               name, start.y()));
+  }
+  const double rMm = r ? length(*r) : kept.rMm.value_or(0.0);
+  if (auto problem = axialCycleTaperProblem(*xDiameterMm - diameterOf(start), rMm, name)) {
+    return errorAt(r ? r->column : a.x ? a.x->column : a.u ? a.u->column : anchor,
+                   *problem);
+  }
+  kept = CycleRetained{xDiameterMm, zMm, rMm};
+  threadKept = {runoutWords.value(), starts, firstStartDeg};
+
+  threadStateWarnings(state_, block_.line, anchor, name, warnings_);
+  cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), name});
+  ThreadCycleParams params;
+  params.leadMm = lead.value();
+  // Without run-out words the control's parameter decides (GSK No.19, Fanuc No.5130).
+  const ThreadRunout runout =
+      words.hncRunoutRE ? ThreadRunout{runoutWords.value().alongMm.value_or(0.0), std::abs(runoutWords.value().acrossMm.value_or(0.0))}
+                        : cycleRunout(runoutWords.value(), options_.threadRunoutLeads * params.leadMm);
+  params.runoutAlongMm = runout.alongMm;
+  params.runoutAcrossMm = std::abs(runout.acrossMm);
+  params.starts = starts;
+  params.firstStartDeg = firstStartDeg;
+  const std::vector<CycleLeg> legs = threadCycleLegs(start, RZ(*xDiameterMm / 2.0, *zMm), rMm, params);
+  warnIfThreadTooFast(legs, anchor);
+  emitLegs(legs);
+  return success();  // the cycle ends at A
+}
+
+// The control cannot keep the lead when lead × rpm exceeds the lead axis's fastest motion
+// (the setup's rapid rate for that axis): one warning per block.
+void Executor::warnIfThreadTooFast(const std::vector<CycleLeg>& legs, int column) {
+  for (const CycleLeg& leg : legs) {
+    if (leg.kind != MoveKind::Thread || !state_.spindleOn) continue;
+    const double nearAxis = std::min(std::abs(leg.from.x()), std::abs(leg.to.x()));
+    const double rpm = state_.spindleMode == SpindleMode::Rpm
+                           ? constantRpm(state_.spindleSpeed, options_.machine)
+                           : surfaceSpeedRpm(state_.surfaceSpeedMPerMin, nearAxis, state_.spindleLimitRpm,
+                                             options_.machine);
+    const double axisMmPerMin = leg.thread.leadAlongZ ? options_.machine.rapidZMmPerMin : options_.machine.rapidXMmPerMin;
+    const double needed = leg.thread.leadMm * rpm;
+    if (needed <= axisMmPerMin) continue;
+    warnings_.push_back({block_.line, column,
+                         fmt::format("a lead of {:g} mm at {:g} rpm needs {:g} mm/min along {}, more than that axis's "
+                                     "fastest motion ({:g} mm/min, the setup's rapid rate): the control cannot keep "
+                                     "the lead; lower the spindle speed",
+                                     leg.thread.leadMm, rpm, needed, leg.thread.leadAlongZ ? "Z" : "X",
+                                     axisMmPerMin)});
+    return;
+  }
+}
+
 // G70–G75 (interp/cycles/compound_cycle.hpp) in place of the block's motion.
 Status Executor::applyCompoundCycle(const Code& code) {
   state_.cycle = {};  // a one-shot code ends G90/G94's retained values
   const RZ start = state_.position;  // A
-  auto outcome = runCompoundCycle(code, block_, state_, options_, place_);
+  auto outcome = runCompoundCycle(code, block_, state_, options_, place_, feedGivenHere_);
   if (!outcome.ok()) return outcome.error();
   const CompoundOutcome& done = outcome.value();
   // The parameter block of a two-block cycle (G71 U R; …) moves nothing and starts nothing.
@@ -679,6 +853,7 @@ Status Executor::applyCompoundCycle(const Code& code) {
     cycleStarts_.push_back({ordinal_, block_.line, block_.column, start + state_.frame.shift(), code.text});
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
   warnings_.insert(warnings_.end(), done.warnings.begin(), done.warnings.end());
+  if (code.number == 76) warnIfThreadTooFast(done.legs, code.column);
   emitLegs(done.legs);
   flow_.continueAfter = done.continueAfter;
   return success();
@@ -720,11 +895,12 @@ Status Executor::checkAllWordsUsed() const {
                                             first->text(), first->letter));
 }
 
-void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center) {
+void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center,
+                    const ThreadMotion& thread) {
   // An arc back to its start is a full circle, a dwell stands still: both are kept.
   if (from == to && !isArc(kind) && kind != MoveKind::Dwell) return;
   warnIfSurfaceSpeedUnclamped();
-  if (isCutting(kind)) warnIfFeedImplausible();
+  if (isCutting(kind) && kind != MoveKind::Thread) warnIfFeedImplausible();  // a thread's F is its lead
   Move move;
   move.kind = kind;
   move.from = from;
@@ -732,12 +908,18 @@ void Executor::emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, 
   move.center = center;
   move.feed = isCutting(kind) ? *state_.feed : 0.0;
   move.feedMode = state_.feedMode;
+  if (kind == MoveKind::Thread) {  // the lead, per revolution whatever G98/G99 says
+    move.feed = thread.leadMm;
+    move.feedMode = FeedMode::PerRevolution;
+    move.thread = thread;
+  }
   move.tool = state_.tool;
   move.toolOffset = state_.toolOffset;
   move.offsetShift = offsetShift(state_.offset);
   move.workShift = state_.frame.shift();
   move.noseComp = noseCompWith(state_.noseSide, state_.offset);
   move.spindleOn = state_.spindleOn;
+  move.spindleDirection = state_.spindleDirection;
   move.spindleMode = state_.spindleMode;
   const bool surfaceSpeed = state_.spindleMode == SpindleMode::SurfaceSpeed;
   move.spindleS = surfaceSpeed ? state_.surfaceSpeedMPerMin : state_.spindleSpeed;
@@ -773,10 +955,11 @@ void Executor::warnIfSurfaceSpeedUnclamped() {
 
 // A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough
 // against a contour already offset, G90/G94 are offset by their tip number
-// (cycle_nose_compensation.hpp), G74/G75 get none; an open chain ends at the first leg.
+// (cycle_nose_compensation.hpp), G74/G75 and the thread codes get none; an open chain ends
+// at the first leg.
 void Executor::emitLegs(const std::vector<CycleLeg>& legs) {
   const std::size_t first = moves_.size();
-  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center);
+  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center, leg.thread);
   for (std::size_t i = first; i < moves_.size(); ++i) moves_[i].noseComp = {};
 }
 

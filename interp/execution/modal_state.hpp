@@ -16,8 +16,8 @@
 
 namespace lathesim::interp {
 
-// group 01: G00 G01 G02 G03 G90 G94
-enum class MotionMode { Rapid, Linear, ArcCW, ArcCCW, AxialCycle, FaceCycle };
+// group 01: G00 G01 G02 G03 G90 G94 G32 G92
+enum class MotionMode { Rapid, Linear, ArcCW, ArcCCW, AxialCycle, FaceCycle, Thread, ThreadCycle };
 enum class Plane { XY, ZX, YZ };                                  // G17, G18, G19
 
 /// The end point and taper of the last G90 or G94 block, reused by a following block of the
@@ -28,6 +28,21 @@ struct CycleRetained {
   std::optional<double> zMm;          // absolute end Z (C)
   std::optional<double> rMm;          // taper: G90 radius at the cut's start minus at its end;
                                       // G94 Z at the cut's start minus Z at its end
+};
+
+/// The run-out words of the thread codes (GSK J and K, HNC R and E), as read: modal while
+/// blocks of one thread code follow each other (interp/cycles/thread_block.hpp).
+struct RunoutWords {
+  std::optional<double> acrossMm;  // J (GSK) / E (HNC): along the short axis (X as a radius)
+  std::optional<double> alongMm;   // K (GSK) / R (HNC): along the long axis
+};
+
+/// What G92 keeps besides G90's values: its run-out words and its starts (GSK L, HNC C
+/// and P). Cleared with CycleRetained.
+struct ThreadCycleRetained {
+  RunoutWords runout;
+  int starts = 1;
+  double firstStartDeg = 0;
 };
 
 /// F0 (GSK §3.26: the feed becomes 0) is legal, but a cut at it never ends on a machine: the
@@ -53,6 +68,7 @@ struct ModalState {
   std::optional<std::pair<int, int>> surfaceSpeedAwaitingMove;  // (line, column) of a G96
                                                                 // that has made no move yet
   bool spindleOn = false;
+  SpindleDirection spindleDirection = SpindleDirection::Clockwise;  // the last M03/M04
   bool coolantOn = false;
   int tool = 0;
   int toolOffset = 0;
@@ -66,6 +82,12 @@ struct ModalState {
   std::optional<std::pair<int, int>> drillCancelWithCycle;  // (line, column) of a G80 read while
                                                             // G90/G92/G94 stayed modal
   CycleRetained cycle;
+  ThreadCycleRetained threadCycle;  // G92's own retained words
+  // G32 (lathe-cycles.md §2): a G32 block right after another does not wait for the spindle's
+  // one-revolution signal; it starts at the angle where the last one's cut ended. Set by a
+  // G32 block that cuts, cleared by every other block.
+  std::optional<double> threadChainAngleDeg;
+  RunoutWords threadChainRunout;  // GSK J/K of G32: kept along a chain of G32 blocks
   CompoundCycleParams compound;  // G71–G75 first-block values
   LengthWriting lengthWriting;   // lengths read with and without a decimal point
   bool ended = false;  // M02/M30 read: nothing after it runs

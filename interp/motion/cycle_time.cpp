@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "interp/motion/spindle_angle.hpp"
 #include "interp/motion/spindle_speed.hpp"
 
 namespace lathesim::interp {
@@ -128,6 +129,15 @@ std::optional<double> moveTimeS(const Move& move, const MachineLimits& machine) 
       const RZ d = (move.to - move.from).cwiseAbs();
       return std::max(d.x() / machine.rapidXMmPerMin, d.y() / machine.rapidZMmPerMin) * kSecondsPerMinute;
     }
+    case MoveKind::Thread: {
+      // One revolution per lead of long-axis travel: the per-revolution time of a feed
+      // whose feed along the path is the lead scaled by path length / long-axis travel.
+      const double revolutions = move.thread.revolutions(move.from, move.to);
+      if (revolutions == 0.0) return 0.0;
+      Move alongPath = move;
+      alongPath.feed = pathLengthMm(move) / revolutions;
+      return perRevolutionTimeS(alongPath, machine);
+    }
     case MoveKind::Feed:
     case MoveKind::ArcCW:
     case MoveKind::ArcCCW: break;
@@ -146,10 +156,12 @@ std::vector<Error> assignMoveTimes(Toolpath& toolpath, const MachineLimits& mach
     lastWarnedBlock = move.block;
     const char* why = move.spindleOn ? (move.spindleMode == SpindleMode::Rpm ? "at S0" : "at G96 S0")
                                      : "with the spindle stopped (M05, or no M03/M04 yet)";
+    const char* what = move.kind == MoveKind::Thread ? "a thread cut (one lead per revolution) "
+                                                     : "a feed in mm per revolution (G99) ";
     warnings.push_back({move.line, move.column,
-                        std::string("a feed in mm per revolution (G99) ") + why +
-                            " never moves on a machine; its time is counted as 0 s"});
+                        std::string(what) + why + " never moves on a machine; its time is counted as 0 s"});
   }
+  assignSpindleAngles(toolpath, machine);  // the angles follow from the times
   return warnings;
 }
 

@@ -8,6 +8,8 @@
 // - feed under G99 and G96: ∫ ds / (F · rpm(r)), rpm(r) = min(1000·V / (2π·r), G50 S,
 //   max_rpm) varying along the move; integrated exactly (piecewise closed form) over lines
 //   and arcs alike;
+// - thread (G32, G92, G76): one revolution per lead of long-axis travel, at the rpm above
+//   (G97: revolutions / rpm; under G96 the same integral as a G99 feed);
 // - dwell: its own time.
 // A G99 feed with the spindle stopped (M05, no M03, or S0) would wait forever on a machine;
 // it is counted as 0 s and reported as a warning.
@@ -24,8 +26,9 @@ namespace lathesim::interp {
 /// The time of one move, in seconds; nullopt for a G99 feed that never moves (spindle stopped).
 std::optional<double> moveTimeS(const Move& move, const MachineLimits& machine);
 
-/// Fills every move's timeS. Returns a warning per block whose G99 feeds stand still for
-/// want of spindle revolutions (those moves get timeS = 0).
+/// Fills every move's timeS, and then its spindleAngleDeg (spindle_angle.hpp). Returns a
+/// warning per block whose G99 feeds or thread cuts stand still for want of spindle
+/// revolutions (those moves get timeS = 0).
 std::vector<Error> assignMoveTimes(Toolpath& toolpath, const MachineLimits& machine);
 
 /// The sum of the moves' times (s).

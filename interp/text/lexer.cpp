@@ -60,10 +60,10 @@ bool readsAsProse(std::string_view tail) {
 
 // The address letters of lathe G-code (system A). Others are unknown letters, except in a
 // G65 block, where every letter but G L N O P passes an argument.
-// B and C are read as words so that a code taking them (G10's C) can; left over, they are
-// refused as the axes this lathe lacks (block_executor.cpp). A is a direct drawing
-// dimension's angle, D the GSK's corner radius.
-constexpr std::string_view kKnownLetters = "ABCDFGIJKLMNOPQRSTUWXZ";
+// B and C are read as words so that a code taking them (G10's C, HNC G82's C) can; left
+// over, they are refused as the axes this lathe lacks (block_executor.cpp). A is a direct
+// drawing dimension's angle, D the GSK's corner radius, E HNC G82's run-out.
+constexpr std::string_view kKnownLetters = "ABCDEFGIJKLMNOPQRSTUWXZ";
 // The letters Fanuc writes after a comma (",A" angle, ",C" chamfer, ",R" corner radius).
 constexpr std::string_view kCommaLetters = "ACR";
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -67,8 +68,8 @@ TEST(CheckSeed001, CorrectTaperPassesAtTwoVoxels) {
   // The same output files as `run`, and the two deviation pictures.
   std::set<std::string> names;
   for (const auto& entry : fs::directory_iterator(dir.path() / "out")) names.insert(entry.path().filename().string());
-  const std::set<std::string> expected{"part.stl",  "part.png",    "toolpath.csv",  "toolpath.vtp",
-                                       "stock.vdb", "report.json", "deviation.png", "section.png"};
+  const std::set<std::string> expected{"part.stl",  "part.png",    "toolpath.csv",  "toolpath.vtp", "stock.vdb",
+                                       "report.json", "report.html", "deviation.png", "section.png"};
   EXPECT_EQ(names, expected);
 }
 
@@ -105,6 +106,14 @@ TEST(CheckSeed001, WrongTaperFailsWithTheHandWorkedExcess) {
   EXPECT_NEAR(region.at("z_range")[1].get<double>(), -5.59, 2 * kVoxelMm);
   EXPECT_LT(region.at("z_range")[0].get<double>(), -18.88 + 2 * kVoxelMm);
   EXPECT_GT(region.at("z_range")[0].get<double>(), -20.0 - kVoxelMm);
+  // report.html carries the deviation pictures and the region, flagged, with its largest excess.
+  const std::string html = test::readFile(dir.path() / "out" / "report.html");
+  EXPECT_NE(html.find("deviation.png: the part coloured by its deviation"), std::string::npos);
+  EXPECT_NE(html.find("section.png: the half-section against the drawing"), std::string::npos);
+  char row[96];
+  std::snprintf(row, sizeof row, "<tr class=\"problem-warning\"><td>excess</td><td class=\"num\">%.3f</td>",
+                region.at("max_mm").get<double>());
+  EXPECT_NE(html.find(row), std::string::npos) << row;
 }
 
 // The drawing may be another program's part, simulated with the same setup: R-20 against
@@ -193,6 +202,50 @@ TEST(CheckGouge, HalfMillimetreUnderADiameterIsFoundOnItsLine) {
   EXPECT_NEAR(region.at("diameter_range")[1].get<double>(), 40.0, 2 * voxelMm);
   EXPECT_EQ(region.at("lines"), nlohmann::json::array({3}));
   EXPECT_NE(run.outcome.out.find("cut by line 3"), std::string::npos) << run.outcome.out;
+}
+
+std::vector<std::string> g76(double voxel) {
+  const fs::path dir = kPartsDir / "g76-m30x2";
+  return {(dir / "program.nc").string(), "--setup", (dir / "setup.toml").string(), "--voxel", std::to_string(voxel)};
+}
+
+// The M30×2 part against its drawing (parts/g76-m30x2/drawing.toml): the profile outside the
+// thread's zone exactly as cut, the thread as called out (pitch 2, one start, right-hand,
+// major Φ30, minor Φ27.4…28.0 around the programmed root Φ27.546: a sharp V's root reads up to a
+// voxel shallow at 0.25 mm).
+TEST(CheckThread, CalloutAsCutPasses) {
+  ScratchDir dir("check-thread");
+  const auto target = (kPartsDir / "g76-m30x2" / "drawing.toml").string();
+  const CheckRun run = check(dir, g76(0.25) + std::vector<std::string>{"--target", target});
+  EXPECT_EQ(run.outcome.status, 0) << run.outcome.out << run.outcome.err;
+  ASSERT_TRUE(run.check.contains("threads"));
+  ASSERT_EQ(run.check.at("threads").size(), 1u);
+  const auto& thread = run.check.at("threads")[0];
+  EXPECT_EQ(thread.at("line"), 13);
+  EXPECT_TRUE(thread.at("within").get<bool>());
+  EXPECT_EQ(thread.at("items").size(), 5u);  // pitch, starts, hand, major, minor
+  EXPECT_NEAR(run.check.at("max_gouge_mm").get<double>(), 0.0, 0.125);  // the thread's zone is not the outline's
+  EXPECT_NE(run.outcome.out.find("thread Z-30.000..Z0.000 (line 13): as called out"), std::string::npos) << run.outcome.out;
+}
+
+// The same part against a callout of a left-hand thread of pitch 1.5: out of tolerance (exit
+// 3), each item saying what it found.
+TEST(CheckThread, WrongHandAndPitchFail) {
+  ScratchDir dir("check-thread-wrong");
+  test::writeFile(dir.path() / "drawing.toml",
+                  "profile = [{x = 30, z = 0}, {x = 30, z = -30}, {x = 27, z = -30}, {x = 27, z = -35.5}, {x = 30, z = "
+                  "-35.5}, {x = 30, z = -50}]\n[[thread]]\nz_range = [-30, 0]\npitch = 1.5\nhand = \"left\"\n");
+  const CheckRun run = check(dir, g76(0.25) + std::vector<std::string>{"--target", (dir.path() / "drawing.toml").string()});
+  EXPECT_EQ(run.outcome.status, 3) << run.outcome.out << run.outcome.err;
+  const auto& items = run.check.at("threads")[0].at("items");
+  ASSERT_EQ(items.size(), 3u);
+  EXPECT_EQ(items[0].at("name"), "pitch");
+  EXPECT_FALSE(items[0].at("within").get<bool>());
+  EXPECT_EQ(items[2].at("name"), "hand");
+  EXPECT_EQ(items[2].at("measured"), "right");
+  EXPECT_FALSE(items[2].at("within").get<bool>());
+  EXPECT_FALSE(run.check.at("within_tolerance").get<bool>());
+  EXPECT_NE(run.outcome.out.find("hand right (expected left)"), std::string::npos) << run.outcome.out;
 }
 
 TEST(CheckCommand, BadDrawingIsAnErrorWithItsLine) {

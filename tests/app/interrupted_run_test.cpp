@@ -27,7 +27,7 @@ using test::readFile;
 const fs::path kBinary = LATHESIM_BINARY;
 const fs::path kPartsDir = LATHESIM_PARTS_DIR;
 const std::set<std::string> kRunOutputs{"part.stl", "part.png", "toolpath.csv", "toolpath.vtp", "stock.vdb",
-                                        "report.json"};
+                                        "report.json", "report.html"};
 
 std::vector<std::string> runArgs(const std::string& part, const fs::path& out, const std::string& voxel) {
   return {"run", (kPartsDir / part / "program.nc").string(), "--setup", (kPartsDir / part / "setup.toml").string(),
@@ -153,7 +153,7 @@ TEST(OutputFailure, FullDiskStopsEveryWriterAndLeavesNothing) {
   ASSERT_EQ(full.status, 0) << full.err;
   constexpr std::uintmax_t kPage = 4096;  // tmpfs gives files whole pages
   const std::vector<std::string> writeOrder = {"part.stl", "toolpath.csv", "toolpath.vtp", "stock.vdb", "part.png",
-                                               "report.json"};
+                                               "report.json", "report.html"};
   const fs::path disk = scratch.path() / "disk";
   fs::create_directories(disk);
   std::string script;

@@ -422,7 +422,7 @@ TEST(InterpreterErrors, UnknownAndUnsupportedCodes) {
   expectError(run("G05 X20\n"), 1, 1, "unknown G code G05");
   expectError(run("G1.5 X20\n"), 1, 1, "unknown G code G1.5");
   expectError(run("M07\n"), 1, 1, "unknown M code M07");
-  expectError(run("G76 P010060 Q100 R0.1\n"), 1, 1, "G76 (multiple threading cycle) is not supported");
+  expectError(run("G112\n"), 1, 1, "G112 (polar coordinate interpolation) needs a C axis");
 }
 
 TEST(InterpreterErrors, LeftoverWord) {

@@ -83,3 +83,39 @@ inline void expectLegs(const std::vector<CycleLeg>& legs, const std::vector<Expe
 }
 
 }  // namespace lathesim::interp::test
+
+namespace lathesim::interp::test {
+
+/// A move of a thread code as worked out by hand: `feed` is the lead for thread moves (0 for
+/// rapids), `angleDeg` the spindle angle a thread move starts at.
+struct ExpectedThread {
+  MoveKind kind;
+  double r0, z0, r1, z1;
+  double feed;
+  int cycleStep;
+  double angleDeg = 0;
+};
+
+constexpr MoveKind kThread = MoveKind::Thread;
+
+inline void expectThreadMoves(const std::vector<Move>& actual, const std::vector<ExpectedThread>& expected) {
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(testing::Message() << "move " << i);
+    const Move& m = actual[i];
+    const ExpectedThread& e = expected[i];
+    EXPECT_EQ(m.kind, e.kind);
+    EXPECT_NEAR(m.from.x(), e.r0, 1e-9);
+    EXPECT_NEAR(m.from.y(), e.z0, 1e-9);
+    EXPECT_NEAR(m.to.x(), e.r1, 1e-9);
+    EXPECT_NEAR(m.to.y(), e.z1, 1e-9);
+    EXPECT_NEAR(m.feed, e.feed, 1e-9);
+    EXPECT_EQ(m.cycleStep, e.cycleStep);
+    if (m.kind == MoveKind::Thread) {
+      EXPECT_NEAR(m.thread.leadMm, e.feed, 1e-9);
+      EXPECT_NEAR(m.thread.startAngleDeg, e.angleDeg, 1e-9);
+    }
+  }
+}
+
+}  // namespace lathesim::interp::test

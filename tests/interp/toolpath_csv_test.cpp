@@ -27,12 +27,12 @@ TEST(ToolpathCsv, WritesDiametersOneRowPerMove) {
   std::ostringstream out;
   writeToolpathCsv(result.toolpath, out);
   EXPECT_EQ(out.str(),
-            "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s\n"
-            "1,rapid,200,200,130,5,0,,,0\n"
-            "2,rapid,130,5,130,-110,0,,,0\n"
-            "2,feed,130,-110,120,-110,300,,,0\n"
-            "2,feed,120,-110,120,5,300,,,0\n"
-            "2,rapid,120,5,130,5,0,,,0\n");
+            "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s,thread_deg,spindle\n"
+            "1,rapid,200,200,130,5,0,,,0,,\n"
+            "2,rapid,130,5,130,-110,0,,,0,,\n"
+            "2,feed,130,-110,120,-110,300,,,0,,\n"
+            "2,feed,120,-110,120,5,300,,,0,,\n"
+            "2,rapid,120,5,130,5,0,,,0,,\n");
 }
 
 TEST(ToolpathCsv, WritesArcKindsAndTheirCentresAsDiameters) {
@@ -44,10 +44,33 @@ TEST(ToolpathCsv, WritesArcKindsAndTheirCentresAsDiameters) {
   std::ostringstream out;
   writeToolpathCsv(result.toolpath, out);
   EXPECT_EQ(out.str(),
-            "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s\n"
-            "1,rapid,200,200,20,0,0,,,0\n"
-            "2,cw,20,0,20,-8,0.1,26,-4,0\n"
-            "3,ccw,20,-8,20,0,0.1,26,-4,0\n");
+            "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s,thread_deg,spindle\n"
+            "1,rapid,200,200,20,0,0,,,0,,\n"
+            "2,cw,20,0,20,-8,0.1,26,-4,0,,\n"
+            "3,ccw,20,-8,20,0,0.1,26,-4,0,,\n");
+}
+
+// A thread move: its lead in feed, then its start angle and the spindle's direction (M04) at
+// the end. G32 Z-20.5 F2 Q90000 from Z5 is 12.75 turns from 90°, so the chained G32 starts at
+// 90 + 4590 ≡ 0°.
+TEST(ToolpathCsv, WritesThreadMovesWithTheirStartAngleAndSpindleDirection) {
+  const auto result = test::run("M04\nG00 X30 Z5\nG32 Z-20.5 F2 Q90000\nG32 X32 Z-21\n");
+  ASSERT_TRUE(result.ok());
+  std::ostringstream out;
+  writeToolpathCsv(result.toolpath, out);
+  EXPECT_EQ(out.str(),
+            "line,kind,x0,z0,x1,z1,feed,xc,zc,time_s,thread_deg,spindle\n"
+            "2,rapid,200,200,30,5,0,,,0,,\n"
+            "3,thread,30,5,30,-20.5,2,,,0,90,ccw\n"
+            "4,thread,30,-20.5,32,-21,2,,,0,0,ccw\n");
+  std::istringstream in(out.str());
+  const auto rows = readToolpathCsv(in);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[2].kind, "thread");
+  ASSERT_TRUE(rows[2].threadDeg && rows[2].spindle);
+  EXPECT_DOUBLE_EQ(*rows[2].threadDeg, 0);
+  EXPECT_EQ(*rows[2].spindle, "ccw");
+  EXPECT_FALSE(rows[0].threadDeg);
 }
 
 TEST(ToolpathCsv, ReadsWhatItWrote) {

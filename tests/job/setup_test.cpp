@@ -1,6 +1,7 @@
 // The setup file: defaults, a full valid file, and each error with its message and position.
 
 #include "job/setup.hpp"
+#include "job/job.hpp"
 
 #include <gtest/gtest.h>
 
@@ -232,6 +233,17 @@ TEST(ParseSetupErrors, DialectAndFeedModeAreNamedChoices) {
             "machine.initial_feed_mode must be one of \"per_revolution\", \"per_minute\", got 99");
 }
 
+TEST(ParseSetup, ThreadRunoutInLeads) {
+  EXPECT_EQ(parse("").setup->threadRunoutLeads, 0.0);
+  const SetupResult result = parse("[machine]\nthread_runout = 1.5\n");
+  ASSERT_TRUE(result.setup.has_value());
+  EXPECT_EQ(result.setup->threadRunoutLeads, 1.5);
+  EXPECT_EQ(interpreterOptionsOf(*result.setup).threadRunoutLeads, 1.5);
+  EXPECT_EQ(onlyError("[machine]\nthread_runout = -1\n").message,
+            "machine.thread_runout must be a number of leads from 0 to 9.9 (the control's G92/G76 run-out parameter, "
+            "GSK No.19 and Fanuc No.5130 in 0.1 lead), got -1");
+}
+
 TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
   EXPECT_EQ(onlyError("[machine]\nreference = [200]\n").message,
             "machine.reference must be [X diameter, Z] in mm, got [200]");
@@ -243,7 +255,7 @@ TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
   const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
   EXPECT_EQ(d.message,
             "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, travel_x, travel_z, dialect, "
-            "initial_feed_mode or zero)");
+            "initial_feed_mode, thread_runout or zero)");
 }
 
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
@@ -286,8 +298,8 @@ TEST(ParseSetupErrors, UnknownTopLevelKey) {
 
 TEST(ParseSetupErrors, UnknownKeyInATool) {
   const Diagnostic d = onlyError("[[tool]]\nnumber = 1\n[[tool]]\nnumber = 2\nradius = 0.4\n");
-  EXPECT_EQ(d.message, "unknown key 'tool[2].radius' (expected number, polygon, kind, insert, holder, tip, width, "
-                       "corner_radius, depth, angle, pitch, nose_radius, diameter, point_angle or length)");
+  EXPECT_EQ(d.message, "unknown key 'tool[2].radius' (expected number, polygon, kind, thickness, insert, holder, tip, "
+                       "width, corner_radius, depth, angle, pitch, nose_radius, diameter, point_angle or length)");
   EXPECT_EQ(d.line, 5);
 }
 

@@ -120,6 +120,43 @@ TEST(ToolSetup, GrooveCornersMayDiffer) {
             "tool[1].corner_radius must be a radius or [−Z corner, +Z corner], non-negative mm");
 }
 
+// The insert's thickness, for cuts made with the spindle stopped: an ISO insert's own
+// (TBHG120408: 04 = 4.76 mm, iso-tools.md §1.6), or the thickness key of any tool.
+TEST(ToolSetup, InsertThickness) {
+  EXPECT_DOUBLE_EQ(*onlyTool(parse("[[tool]]\nnumber = 1\ninsert = \"TBHG120408\"\nholder = \"STFCR2525M11\"\n")).thicknessMm,
+                   4.76);
+  EXPECT_DOUBLE_EQ(*onlyTool(parse("[[tool]]\nnumber = 1\npolygon = [[0, 0], [4, 0], [4, 4]]\nthickness = 3\n")).thicknessMm,
+                   3.0);
+  EXPECT_DOUBLE_EQ(*onlyTool(parse("[[tool]]\nnumber = 1\nkind = \"groove\"\nwidth = 3\ndepth = 10\nthickness = 5\n"))
+                        .thicknessMm,
+                   5.0);
+  EXPECT_FALSE(onlyTool(parse("[[tool]]\nnumber = 1\npolygon = [[0, 0], [4, 0], [4, 4]]\n")).thicknessMm);
+  EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\nthickness = -2\n").message,
+            "tool[1].thickness must be a positive number of mm, got -2");
+}
+
+// A laydown threading insert by its code alone: the thread kind, its pitch's fundamental
+// triangle (2 mm wide at the top), the 0.125·P root radius, tip 8; an internal one tip 6.
+TEST(ToolSetup, LaydownThreadingInsert) {
+  const SetupResult external = parse("[[tool]]\nnumber = 1\ninsert = \"16ER200ISO\"\n");
+  const ToolDefinition& tool = onlyTool(external);
+  EXPECT_EQ(tool.tipNumber, 8);
+  EXPECT_DOUBLE_EQ(tool.noseRadiusMm, 0.25);
+  EXPECT_NEAR(tool.outline.upperBound().y() - tool.outline.lowerBound().y(), 2.0, 1e-12);
+  EXPECT_NEAR(tool.outline.lowerBound().x(), 0.0, 1e-12);
+  const SetupResult internalResult =
+      parse("[[tool]]\nnumber = 1\nkind = \"thread\"\ninsert = \"16IR1.5ISO\"\nnose_radius = 0.1\n");
+  const ToolDefinition& internal = onlyTool(internalResult);
+  EXPECT_EQ(internal.tipNumber, 6);
+  EXPECT_DOUBLE_EQ(internal.noseRadiusMm, 0.1);
+  EXPECT_NEAR(internal.outline.upperBound().x(), 0.0, 1e-12);
+  const Diagnostic bad = onlyError("[[tool]]\nnumber = 1\ninsert = \"16ER2TR\"\n");
+  EXPECT_NE(bad.message.find("tool[1].insert: threading insert 16ER2TR: the thread standard is not one"), std::string::npos)
+      << bad.message;
+  EXPECT_EQ(onlyError("[[tool]]\nnumber = 1\ninsert = \"16ER200ISO\"\npitch = 2\n").message,
+            "tool[1].pitch comes from the insert code; give one or the other");
+}
+
 TEST(ToolSetupErrors, BadInsertCodePointsAtTheCharacter) {
   const Diagnostic d = onlyError("[[tool]]\nnumber = 1\ninsert = \"TBXG120408\"\nholder = \"STFCR2525M11\"\n");
   EXPECT_EQ(d.message, "tool[1].insert: insert TBXG120408: position 3 'X' is not a tolerance class; "

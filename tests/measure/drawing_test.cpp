@@ -116,7 +116,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\", radius = -1e9}]\n", 1,
                    "is too large for a turned part"},
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\", center = [inf, 0]}]\n", 1,
-                   "center must be [x diameter, z]"}));
+                   "center must be [x diameter, z]"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\npitch = 2\n", 2, "needs z_range"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [0, -9]\npitch = 2\n", 3,
+                   "z_range must be [least, greatest]"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [-9, 0]\npitch = 0\n", 4,
+                   "pitch must be a number > 0"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [-9, 0]\npitch = 2\nhand = \"up\"\n",
+                   5, "hand must be \"right\" or \"left\""},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [-9, 0]\npitch = 2\nmajor = 30\n", 5,
+                   "major must be [least, greatest]"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [-9, 0]\npitch = 2\nlead = 2\n", 5,
+                   "unknown thread key 'lead'"}));
 
 // A nearly straight arc (a CAD export's radius of ten kilometres) is drawn, as one chord.
 TEST(Drawing, ArcOfAHugeRadiusOverAShortSpanIsOneChord) {
@@ -124,6 +135,28 @@ TEST(Drawing, ArcOfAHugeRadiusOverAShortSpanIsOneChord) {
       parseDrawing("profile = [{x = 30, z = 0}, {x = 30, z = -10, arc = \"cw\", radius = 1e7}]\n", "d.toml");
   ASSERT_TRUE(r.outline) << firstMessage(r);
   EXPECT_EQ(r.outline->size(), 2u);
+}
+
+// A thread callout: its zone, pitch, starts, hand and diameter limits.
+TEST(Drawing, ThreadCallout) {
+  const DrawingResult r = parseDrawing(
+      "profile = [{x = 30, z = 0}, {x = 30, z = -40}]\n[[thread]]\nz_range = [-30, 0]\npitch = 2\nstarts = 2\n"
+      "hand = \"left\"\nmajor = [29.7, 30]\nminor = [27.4, 27.7]\n",
+      "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  ASSERT_EQ(r.threads.size(), 1u);
+  const ThreadCallout& t = r.threads[0];
+  EXPECT_EQ(t.line, 2);
+  EXPECT_EQ(t.zLowMm, -30);
+  EXPECT_EQ(t.zHighMm, 0);
+  EXPECT_EQ(t.pitchMm, 2);
+  EXPECT_EQ(t.starts, 2);
+  ASSERT_TRUE(t.rightHand);
+  EXPECT_FALSE(*t.rightHand);
+  ASSERT_TRUE(t.major && t.minor);
+  EXPECT_EQ(t.major->least, 29.7);
+  EXPECT_EQ(t.minor->greatest, 27.7);
+  EXPECT_FALSE(t.pitchDiameter);
 }
 
 }  // namespace

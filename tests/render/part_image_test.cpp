@@ -13,6 +13,7 @@ using test::Rgb;
 
 bool blue(const Rgb& c) { return c.b > 150 && c.b > c.r + 80 && c.b > c.g + 60; }
 bool red(const Rgb& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
+bool green(const Rgb& c) { return c.g > 110 && c.g > c.r + 60 && c.g > c.b + 40; }
 // The insert's gold: strong red and green, little blue.
 bool gold(const Rgb& c) { return c.r > 170 && c.g > 120 && c.b < 90 && c.r > c.b + 110; }
 // The holder's dark steel grey: dark, and nearly neutral.
@@ -45,6 +46,40 @@ TEST(PartImagePng, ShadedPartWithBlueFeedAndRedRapidWithoutDisplay) {
   EXPECT_GT(png.count(400, 1600, 0, 1200, red), 100);
 }
 
+// Thread moves are drawn green (with their legend line); none are without them.
+TEST(PartImagePng, ThreadMovesAreGreen) {
+  ::unsetenv("DISPLAY");
+  interp::Toolpath path = test::rapidThenFeed();
+  interp::Move thread = path.moves.back();
+  thread.kind = interp::MoveKind::Thread;
+  thread.thread = {2.0, true, 0.0, 1};
+  thread.from = RZ(28, 10);
+  thread.to = RZ(28, -50);
+  path.moves.push_back(thread);
+  test::TempDir dir;
+  writePartImagePng(TriangleMesh{}, path, PartImageOptions{800, 600, "t", {}, {}}, dir.path() / "thread.png");
+  EXPECT_GT(Png(dir.path() / "thread.png").count(200, 800, 0, 600, green), 200);
+  writePartImagePng(TriangleMesh{}, test::rapidThenFeed(), PartImageOptions{800, 600, "t", {}, {}}, dir.path() / "none.png");
+  EXPECT_EQ(Png(dir.path() / "none.png").count(0, 800, 0, 600, green), 0);
+}
+
+// A close-up frames its box, straight from the side, without the toolpath: the box Z-10…10,
+// r 20…40 of a Φ60 cylinder fills the picture's width, the cylinder's top edge (r 30) across
+// its middle, and no path colour shows.
+TEST(PartImagePng, CloseUpFramesItsBoxWithoutTheToolpath) {
+  ::unsetenv("DISPLAY");
+  test::TempDir dir;
+  PartImageOptions options{800, 600, "close", {}};
+  options.view = PartView::Front;
+  options.closeUp = CloseUp{-10, 10, 20, 40};
+  writePartImagePng(test::cylinder(30.0, 60.0, 96, 8), test::rapidThenFeed(), options, dir.path() / "close.png");
+  Png png(dir.path() / "close.png");
+  EXPECT_EQ(png.count(0, 800, 0, 600, blue) + png.count(0, 800, 0, 600, red), 0);
+  // The part below the edge, background above it.
+  const Rgb below = png.at(400, 150), above = png.at(400, 450);
+  EXPECT_GT(distance(below, above), 40);
+}
+
 TEST(PartImagePng, EmptyMeshStillShowsTheToolpath) {
   ::unsetenv("DISPLAY");
   test::TempDir dir;
@@ -74,15 +109,16 @@ TEST(PartImagePng, ArcsAreDrawnRoundInTheFeedColour) {
 }
 
 // A Φ60 × 60 cylinder (z 0..60) and a 10 mm square insert at r 40, Z 70 (so r 40..50,
-// Z 70..80), no toolpath, 800 × 600 px. By hand, in the view's axes (22° turn about X):
+// Z 70..80), no toolpath, no bar, 800 × 600 px. By hand, in the view's axes (22° turn about X):
 //   right = −y·sin22° + z·cos22°: the cylinder gives −30·0.3746 = −11.24 (y = 30, z = 0) to
-//   60·0.9272 + 11.24 = 66.87; the insert reaches 80·0.9272 = 74.17. So right ∈ [−11.24, 74.17],
-//   centre 31.47, half-width 42.71.
-//   up = r: −30 (the cylinder's underside) to 50 (the insert), centre 10, half-height 40.
-//   Parallel scale = 1.05·max(40, 42.71·600/800) = 42 mm for 300 px: 7.143 px/mm.
+//   60·0.9272 + 11.24 = 66.87; the insert, standing within a quarter of that of the part, is
+//   framed too and reaches 80·0.9272 = 74.17. So right ∈ [−11.24, 74.17], centre 31.465.
+//   up = r: −30 (the cylinder's underside) to 50 (the insert), centre 10.
+//   6 % margins and 15 % more on top leave 704 × 438 px: 438 / 80 = 5.475 px/mm (< 704/85.41);
+//   the extent's middle sits at 255 px, so the picture's centre (300 px) is up = 10 + 45/5.475.
 // The insert's centre (r 45, y 0, Z 75): right = 75·0.9272 = 69.54, so
-//   x = 400 + (69.54 − 31.47)·7.143 = 671.9 px; y = 300 + (45 − 10)·7.143 = 550 px (from below).
-// The insert spans ±5 mm = ±36 px up and ±5·0.9272 mm = ±33 px across there.
+//   x = 400 + (69.54 − 31.465)·5.475 = 608.4 px; y = 300 + (45 − 18.22)·5.475 = 446.6 px (from below).
+// The insert spans ±5 mm = ±27 px up and ±5·0.9272 mm = ±25 px across there.
 TEST(PartImagePng, ToolIsDrawnGoldWhereItStandsAndNotWithoutOne) {
   ::unsetenv("DISPLAY");
   const TriangleMesh part = test::cylinder(30.0, 60.0, 96, 8);
@@ -97,11 +133,11 @@ TEST(PartImagePng, ToolIsDrawnGoldWhereItStandsAndNotWithoutOne) {
   writePartImagePng(part, none, options, dir.path() / "tool.png");
   Png withTool(dir.path() / "tool.png");
   // A 31 × 31 px window about the insert's centre is gold (its edge lines lie outside it).
-  EXPECT_GT(withTool.count(657, 688, 535, 566, gold), 31 * 31 * 9 / 10);
-  // Gold only there: nothing below the insert (y < 550 − 36 − 10 px, the part and background).
-  EXPECT_EQ(withTool.count(0, 800, 0, 500, gold), 0);
+  EXPECT_GT(withTool.count(593, 624, 431, 462, gold), 31 * 31 * 9 / 10);
+  // Gold only there: nothing below the insert (y < 447 − 27 − 10 px, the part and background).
+  EXPECT_EQ(withTool.count(0, 800, 0, 405, gold), 0);
   // The holder's shank runs on to Z 130, to the right of the insert and out of the picture.
-  EXPECT_GT(withTool.count(700, 800, 535, 566, steel), 200);
+  EXPECT_GT(withTool.count(650, 800, 437, 457, steel), 200);
 
   PartImageOptions plain{800, 600, "t", {}};
   writePartImagePng(part, none, plain, dir.path() / "plain.png");

@@ -25,6 +25,7 @@ interp::Move move(interp::MoveKind kind, RZ from, RZ to, RZ center = RZ(0, 0)) {
   m.line = 1;
   m.column = 1;
   m.spindleOn = true;
+  m.spindleS = 500;  // turning (S0 would be a stopped spindle)
   return m;
 }
 

@@ -25,6 +25,7 @@ interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int line) {
   m.line = line;
   m.column = 1;
   m.spindleOn = true;
+  m.spindleS = 500;  // turning (S0 would be a stopped spindle)
   return m;
 }
 

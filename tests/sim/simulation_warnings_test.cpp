@@ -21,6 +21,7 @@ interp::Move feedMove(RZ from, RZ to, bool spindleOn) {
   m.line = 4;
   m.column = 2;
   m.spindleOn = spindleOn;
+  m.spindleS = 500;
   return m;
 }
 
@@ -44,15 +45,18 @@ TEST(SimulationWarnings, CuttingWithTheSpindleStopped) {
   Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
   interp::Toolpath path;
   path.blockCount = 1;
-  // A face cut to the axis at Z-2 (removes π·20²·2 ≈ 2513 mm³), with the spindle stopped.
+  // A face cut to the axis at Z-2 with the spindle stopped at 0°: a straight slot 4 mm thick
+  // (the default insert) along +x, |y| ≤ 2, Z-2…0: 2·∫ √(400 − y²) dy over |y| ≤ 2 = 159.7 mm³.
   path.moves.push_back(feedMove({25, -2}, {0, -2}, false));
   path.moves.push_back(feedMove({0, -2}, {0, 5}, false));
   const SimulationResult result = simulate(path, squareTool(), stock);
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_EQ(result.warnings[0].line, 4);
   EXPECT_EQ(result.warnings[0].column, 2);
-  EXPECT_NE(result.warnings[0].message.find("cutting with the spindle stopped: this block removes 25"),
+  EXPECT_NE(result.warnings[0].message.find("cutting with the spindle stopped: this block cuts a straight slot of 15"),
             std::string::npos)
+      << result.warnings[0].message;
+  EXPECT_NE(result.warnings[0].message.find("at spindle angle 0°) with no M03/M04 in force"), std::string::npos)
       << result.warnings[0].message;
 }
 

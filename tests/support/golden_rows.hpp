@@ -28,6 +28,10 @@ inline std::vector<interp::CsvRow> rowsOf(const interp::Toolpath& toolpath) {
       row.zc = m.center.y();
     }
     row.timeS = m.timeS;
+    if (m.kind == interp::MoveKind::Thread) {
+      row.threadDeg = m.thread.startAngleDeg;
+      row.spindle = m.spindleDirection == interp::SpindleDirection::Clockwise ? "cw" : "ccw";
+    }
     rows.push_back(row);
   }
   return rows;
@@ -53,6 +57,11 @@ inline void expectSameRows(const std::vector<interp::CsvRow>& actual, const std:
     if (actual[i].xc && golden[i].xc) {
       EXPECT_NEAR(*actual[i].xc, *golden[i].xc, tolerance);
       EXPECT_NEAR(*actual[i].zc, *golden[i].zc, tolerance);
+    }
+    if (golden[i].threadDeg) {  // a golden file with the thread columns: a thread row's angle and spindle
+      ASSERT_TRUE(actual[i].threadDeg.has_value());
+      EXPECT_NEAR(*actual[i].threadDeg, *golden[i].threadDeg, 1e-4);  // the CSV's rounding
+      EXPECT_EQ(actual[i].spindle, golden[i].spindle);
     }
     if (actual[i].timeS && golden[i].timeS) {
       EXPECT_NEAR(*actual[i].timeS, *golden[i].timeS, relativeTimeTolerance * *golden[i].timeS + 1e-4);

@@ -3,6 +3,7 @@
 
 #include "interp/motion/cycle_time.hpp"
 #include "interp/motion/spindle_speed.hpp"
+#include "../test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -236,6 +237,37 @@ TEST(CycleTime, FeedPerRevolutionAtS0Warns) {
   const std::vector<Error> warnings = assignMoveTimes(path, kMachine);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].message.find("(G99) at S0 never moves"), std::string::npos) << warnings[0].message;
+}
+
+// A thread move turns one revolution per lead of long-axis travel, whatever its path's length
+// and whatever G98/G99 says: Z5 → Z-20 at lead 2 is 12.5 revolutions, at 500 rpm 1.5 s; the
+// taper X30 Z-20 → X34 Z-25 (Z the long axis) 2.5 revolutions, 0.3 s.
+TEST(CycleTime, ThreadIsRevolutionsOverRpm) {
+  const auto result = test::run("G98 M03 S500\nG00 X30 Z5\nG32 Z-20 F2\nG32 X34 Z-25\n");
+  ASSERT_TRUE(result.ok());
+  Toolpath path = result.toolpath;
+  EXPECT_TRUE(assignMoveTimes(path, kMachine).empty());
+  EXPECT_NEAR(path.moves[1].timeS, 1.5, 1e-12);
+  EXPECT_NEAR(path.moves[2].timeS, 0.3, 1e-12);
+}
+
+// Under G96 S100 with G50 S1000 at radius 15: 1000·100/(2π·15) = 1061 rpm, clamped to 1000:
+// 12.5 revolutions take 0.75 s.
+TEST(CycleTime, ThreadUnderG96FollowsTheClampedRpm) {
+  const auto result = test::run("G50 S1000\nG96 S100 M03\nG00 X30 Z5\nG32 Z-20 F2\n");
+  ASSERT_TRUE(result.ok());
+  Toolpath path = result.toolpath;
+  EXPECT_TRUE(assignMoveTimes(path, kMachine).empty());
+  EXPECT_NEAR(path.moves[1].timeS, 0.75, 1e-12);
+}
+
+TEST(CycleTime, ThreadWithTheSpindleStoppedWarns) {
+  const auto result = test::run("G00 X30 Z5\nG32 Z-20 F2\n");
+  Toolpath path = result.toolpath;
+  const std::vector<Error> warnings = assignMoveTimes(path, kMachine);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].message.find("a thread cut (one lead per revolution) with the spindle stopped"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,90 @@
+#include "app/cut_recording.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "app/part_pictures.hpp"
+#include "app/tool_picture.hpp"
+#include "geometry/profile_polylines.hpp"
+#include "geometry/revolved_mesh.hpp"
+
+namespace lathesim::app {
+namespace {
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+std::string clockText(double clock, interp::Pace pace) {
+  char text[32];
+  if (pace == interp::Pace::Travel) std::snprintf(text, sizeof text, "%.0f mm", clock);
+  else std::snprintf(text, sizeof text, "%d:%04.1f", static_cast<int>(clock / 60), clock - 60 * static_cast<int>(clock / 60));
+  return text;
+}
+
+}  // namespace
+
+CutRecording::CutRecording(const job::Job& job, const AnimationRequest& request, const std::string& title,
+                           StagedOutput& out)
+    : job_(job) {
+  const render::PartImageOptions picture =
+      partPictureOptions(job.setup, job.toolpath, title, request.widthPx, request.heightPx);
+  const sim::StockSpec& bar = job.setup.stock;
+  // About half a pixel: the picture spans a little more than the bar and its jaws.
+  toleranceMm_ = 0.5 * (bar.lengthMm + bar.diameterMm) / request.widthPx;
+  angularSteps_ = angularStepsFor(bar.diameterMm / 2, toleranceMm_);
+
+  render::AnimationOptions options;
+  options.frames = request.frames;
+  options.framesPerSecond = request.framesPerSecond;
+  options.pace = request.pace;
+  options.mp4 = out.stage("cut.mp4");
+  if (request.gif) options.gif = out.stage("cut.gif");
+
+  const auto lines = std::make_shared<std::vector<std::string>>(linesOf(job.programText));
+  const double total = interp::ToolpathClock(job.toolpath, request.pace).total();
+  const interp::Pace pace = request.pace;
+  auto caption = [this, lines, total, pace](const interp::ToolpathInstant& instant, double clock) {
+    const auto& moves = job_.toolpath.moves;
+    std::string text = clockText(clock, pace) + " of " + clockText(total, pace);
+    if (moves.empty()) return text;
+    const int line = moves[std::min(instant.move, moves.size() - 1)].line;
+    text += "   line " + std::to_string(line);
+    if (line >= 1 && line <= static_cast<int>(lines->size())) text += ":  " + (*lines)[line - 1];
+    return text;
+  };
+  auto tool = [this](const interp::ToolpathInstant& instant) -> std::optional<render::ToolPicture> {
+    const auto& moves = job_.toolpath.moves;
+    const int number = moves.empty() ? 0 : moves[std::min(instant.move, moves.size() - 1)].tool;
+    return toolPicture(job_.setup, number, instant.position);
+  };
+  animation_ = std::make_unique<render::CutAnimation>(picture, job.toolpath, options, caption, tool);
+}
+
+TriangleMesh CutRecording::partMesh(const sim::Stock& stock) const {
+  const MeridianProfile profile = MeridianProfile::fromSection(stock.meridianSection());
+  return revolvedMesh(profilePolylines(profile, toleranceMm_), angularSteps_);
+}
+
+sim::CutObserver CutRecording::observer() {
+  return [this](std::size_t, std::size_t endMove, const sim::Stock& stock) {
+    const auto start = std::chrono::steady_clock::now();
+    animation_->drawFramesBefore(animation_->clockAtEndOf(endMove - 1), [&] { return partMesh(stock); });
+    secondsSpent_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+}
+
+void CutRecording::finish(const sim::Stock& stock) {
+  const auto start = std::chrono::steady_clock::now();
+  animation_->finish([&] { return partMesh(stock); });
+  secondsSpent_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace lathesim::app

@@ -1,0 +1,25 @@
+#pragma once
+// What the part pictures of a run show: the bar as the setup gives it, the chuck as it places
+// it, the tool at the end, and the main dimensions measured on the part's section.
+
+#include <string>
+
+#include "geometry/meridian_profile.hpp"
+#include "job/setup.hpp"
+#include "render/part_image.hpp"
+
+namespace lathesim::app {
+
+/// What every picture of the run shows whatever the part (the view left at Iso): the title,
+/// the bar, the chuck, the tool at the end; widthPx × heightPx.
+render::PartImageOptions partPictureOptions(const job::Setup& setup, const interp::Toolpath& toolpath,
+                                            const std::string& title, int widthPx, int heightPx);
+
+/// Adds what the finished part's `section` (sampled at `voxelMm`) shows: its main dimensions
+/// and its cut face.
+void addPartSection(render::PartImageOptions& options, const SampledSection& section, double voxelMm);
+
+/// part.png, part-front.png, part-section.png.
+std::string pictureFileName(render::PartView view);
+
+}  // namespace lathesim::app

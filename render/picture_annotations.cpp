@@ -1,0 +1,191 @@
+#include "render/picture_annotations.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/move_points.hpp"
+#include "render/scene_actors.hpp"
+
+namespace lathesim::render {
+namespace {
+
+constexpr double kArrowPx = 14.0;
+
+std::string number(double value, int decimals) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+/// Shortest text for a coordinate: up to three decimals, no trailing zeros.
+std::string coordinate(double value) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.3f", std::round(value * 1000.0) / 1000.0);
+  std::string s = text;
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+/// A label beside a point on the clip rectangle's edge, moved inside and justified so that
+/// it stays in the picture.
+Label edgeLabel(const Pixel& at, const ClipRectangle& clip, std::string text, const Rgb& colour) {
+  const double inset = 10.0, line = 18.0;
+  Label label{at, std::move(text), colour, Justify::Centre, true};
+  const double toLeft = at.x() - clip.x0, toRight = clip.x1 - at.x(), toBottom = at.y() - clip.y0, toTop = clip.y1 - at.y();
+  const double nearest = std::min({toLeft, toRight, toBottom, toTop});
+  if (nearest == toRight) label.justify = Justify::Right, label.at += Pixel(-inset - kArrowPx, inset);
+  else if (nearest == toLeft) label.justify = Justify::Left, label.at += Pixel(inset + kArrowPx, inset);
+  else if (nearest == toTop) label.at += Pixel(0, -line - kArrowPx);
+  else label.at += Pixel(0, inset + kArrowPx);
+  if (label.at.x() < clip.x0 + 120) label.justify = Justify::Left, label.at.x() = std::max(label.at.x(), clip.x0);
+  if (label.at.x() > clip.x1 - 120) label.justify = Justify::Right, label.at.x() = std::min(label.at.x(), clip.x1);
+  return label;
+}
+
+/// Adds `label` unless one with the same text is there already; moved down a line while it
+/// would sit on another.
+void place(std::vector<Label>& labels, Label label) {
+  if (std::any_of(labels.begin(), labels.end(), [&](const Label& l) { return l.text == label.text; })) return;
+  for (int tries = 0; tries < 8; ++tries) {
+    const bool crowded = std::any_of(labels.begin(), labels.end(), [&](const Label& l) {
+      return std::abs(l.at.y() - label.at.y()) < 18.0 && std::abs(l.at.x() - label.at.x()) < 160.0;
+    });
+    if (!crowded) break;
+    label.at.y() -= 20.0;
+  }
+  labels.push_back(std::move(label));
+}
+
+void dimensionArrows(const Pixel& a, const Pixel& b, Overlay2D& lines, Overlay2D& marks) {
+  lines.line(a, b, kDimensionColour);
+  const Eigen::Vector2d d = b - a;
+  if (d.norm() < 2.5 * kArrowPx) return;  // too short for arrows inside
+  marks.arrowhead(a, -d, 0.8 * kArrowPx, kDimensionColour);
+  marks.arrowhead(b, d, 0.8 * kArrowPx, kDimensionColour);
+}
+
+}  // namespace
+
+ClipRectangle clipRectangleOf(const PictureFrame& frame) {
+  const double inset = 0.012 * std::min(frame.widthPx, frame.heightPx);
+  return {inset, inset, frame.widthPx - inset, frame.heightPx - inset};
+}
+
+std::string programPoint(const RZ& p) {
+  // Appended rather than "X" + …: GCC 12 warns falsely (-Wrestrict) on a literal plus a temporary.
+  std::string text = "X";
+  text += coordinate(diameterOf(p));
+  text += " Z";
+  text += coordinate(p.y());
+  return text;
+}
+
+void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::ToolpathInstant>& shown,
+                  const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& lines, Overlay2D& marks,
+                  std::vector<Label>& labels) {
+  const double dashPx = std::max(6.0, 0.008 * frame.widthPx);
+  for (std::size_t i = 0; i < toolpath.moves.size(); ++i) {
+    interp::Move move = toolpath.moves[i];
+    if (shown && i > shown->move) break;
+    if (shown && i == shown->move) {
+      if (shown->fraction <= 0.0) break;
+      move.to = shown->position;  // the move so far (an arc keeps its centre)
+    }
+    const bool rapid = !interp::isCutting(move.kind);
+    const Rgb& colour = rapid ? kRapidColour : move.kind == interp::MoveKind::Thread ? kThreadColour : kFeedColour;
+    const std::vector<RZ> points = movePoints(move);
+    double phase = 0;
+    for (std::size_t k = 1; k < points.size(); ++k) {
+      const Pixel a = frame.pixelOf(points[k - 1]), b = frame.pixelOf(points[k]);
+      const auto span = clipToRectangle(a, b, clip.x0, clip.y0, clip.x1, clip.y1);
+      if (!span) continue;
+      const Pixel from = a + span->t0 * (b - a), to = a + span->t1 * (b - a);
+      if (rapid) phase = lines.dashed(from, to, colour, dashPx, phase);
+      else lines.line(from, to, colour);
+      if (span->t0 > 0) {  // comes in from outside
+        marks.arrowhead(from + (b - a).normalized() * kArrowPx, b - a, kArrowPx, colour);
+        place(labels, edgeLabel(from, clip, "from " + programPoint(move.from), colour));
+      }
+      if (span->t1 < 1) {  // goes out
+        marks.arrowhead(to, b - a, kArrowPx, colour);
+        place(labels, edgeLabel(to, clip, "to " + programPoint(move.to), colour));
+      }
+    }
+  }
+}
+
+void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks,
+                     std::vector<Label>& labels) {
+  const Pixel centre(frame.widthPx / 2.0, frame.heightPx / 2.0), at = frame.pixelOf(position);
+  const auto span = clipToRectangle(centre, at, clip.x0, clip.y0, clip.x1, clip.y1);
+  if (!span || span->t1 >= 1) return;
+  const Pixel edge = centre + span->t1 * (at - centre);
+  marks.arrowhead(edge, at - centre, 1.4 * kArrowPx, kToolMarkColour);
+  place(labels, edgeLabel(edge, clip, "tool at " + programPoint(position), kInkColour));
+}
+
+void drawBarOutline(const BarOutline& bar, PartView view, const PictureFrame& frame, Overlay2D& lines) {
+  const double r = bar.radiusMm;
+  for (double side : {-1.0, 1.0})
+    lines.line(frame.pixelOf(RZ(side * r, bar.zLowMm)), frame.pixelOf(RZ(side * r, bar.zHighMm)), kGhostLineColour);
+  if (view != PartView::Iso) {
+    for (double z : {bar.zLowMm, bar.zHighMm}) lines.line(frame.pixelOf(RZ(-r, z)), frame.pixelOf(RZ(r, z)), kGhostLineColour);
+    return;
+  }
+  // The right-hand end face's circle, seen at an angle: an ellipse.
+  constexpr int kSteps = 96;
+  for (int k = 0; k < kSteps; ++k) {
+    const double a0 = 2 * M_PI * k / kSteps, a1 = 2 * M_PI * (k + 1) / kSteps;
+    lines.line(frame.pixelOf(Eigen::Vector3d(r * std::cos(a0), r * std::sin(a0), bar.zHighMm)),
+               frame.pixelOf(Eigen::Vector3d(r * std::cos(a1), r * std::sin(a1), bar.zHighMm)), kGhostLineColour);
+  }
+}
+
+void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame& frame, double topPx,
+                    Overlay2D& lines, Overlay2D& marks, std::vector<Label>& labels) {
+  // Diameters: across the part at the middle of their face, the text in the middle, staggered
+  // so that neighbours do not collide.
+  for (std::size_t n = 0; n < dims.diameters.size(); ++n) {
+    const DiameterDimension& d = dims.diameters[n];
+    const double z = 0.5 * (d.zLowMm + d.zHighMm), r = d.diameterMm / 2;
+    const Pixel top = frame.pixelOf(RZ(r, z)), bottom = frame.pixelOf(RZ(-r, z));
+    dimensionArrows(bottom, top, lines, marks);
+    const double up = (n % 2 == 0 ? 0.15 : -0.25) * (top.y() - bottom.y());
+    labels.push_back({0.5 * (top + bottom) + Pixel(0, up), "Ø" + number(d.diameterMm, decimals), kDimensionColour,
+                      Justify::Centre, true});
+  }
+  // Lengths: stacked upwards, the shortest lowest; extension lines from each face's outer
+  // corner up past the dimension line.
+  const double spacing = std::max(22.0, 0.045 * frame.heightPx);
+  for (std::size_t n = 0; n < dims.lengths.size(); ++n) {
+    const LengthDimension& l = dims.lengths[n];
+    const double y = topPx + spacing * (static_cast<double>(n) + 0.8);
+    const Pixel low = frame.pixelOf(RZ(l.radiusLowMm, l.zLowMm)), high = frame.pixelOf(RZ(l.radiusHighMm, l.zHighMm));
+    lines.line(low + Pixel(0, 4), Pixel(low.x(), y + 6), kDimensionColour);
+    lines.line(high + Pixel(0, 4), Pixel(high.x(), y + 6), kDimensionColour);
+    dimensionArrows(Pixel(low.x(), y), Pixel(high.x(), y), lines, marks);
+    labels.push_back({Pixel(0.5 * (low.x() + high.x()), y + 5), number(l.zHighMm - l.zLowMm, decimals),
+                      kDimensionColour, Justify::Centre, true});
+  }
+}
+
+void drawScaleBar(const PictureFrame& frame, Overlay2D& lines, std::vector<Label>& labels) {
+  const double mostMm = 0.2 * frame.widthPx / frame.pxPerMm;
+  double length = std::pow(10.0, std::floor(std::log10(mostMm)));
+  for (double step : {5.0, 2.0})
+    if (length * step <= mostMm) {
+      length *= step;
+      break;
+    }
+  const double px = length * frame.pxPerMm, margin = 0.03 * frame.widthPx;
+  const Pixel right(frame.widthPx - margin, 0.045 * frame.heightPx), left = right - Pixel(px, 0);
+  lines.line(left, right, kInkColour);
+  for (const Pixel& end : {left, right}) lines.line(end - Pixel(0, 6), end + Pixel(0, 6), kInkColour);
+  lines.line(0.5 * (left + right) - Pixel(0, 4), 0.5 * (left + right) + Pixel(0, 4), kInkColour);
+  labels.push_back({0.5 * (left + right) + Pixel(0, 10), number(length, length < 1 ? 1 : 0) + " mm", kInkColour,
+                    Justify::Centre, false});
+}
+
+}  // namespace lathesim::render

@@ -1,0 +1,98 @@
+// The part's exports besides STL: glTF, GLB, PLY, OBJ.
+
+#include "render/scene_export.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/render/test_meshes.hpp"
+
+namespace lathesim::render {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string readAll(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+std::uint32_t word(const std::string& bytes, std::size_t at) {
+  std::uint32_t v;
+  std::memcpy(&v, bytes.data() + at, 4);
+  return v;
+}
+
+TEST(SceneExport, GlbHoldsThePartAndTheToolpathInMetresWithYUp) {
+  ::unsetenv("DISPLAY");
+  const TriangleMesh part = test::cylinder(30.0, 60.0, 48, 2);
+  const std::string glb = gltfToGlb(partGltf(part, test::rapidThenFeed()));
+  ASSERT_GT(glb.size(), 20u);
+  EXPECT_EQ(word(glb, 0), 0x46546C67u);  // "glTF"
+  EXPECT_EQ(word(glb, 4), 2u);
+  EXPECT_EQ(word(glb, 8), glb.size());
+  const std::uint32_t jsonLength = word(glb, 12);
+  EXPECT_EQ(word(glb, 16), 0x4E4F534Au);  // "JSON"
+  const Json gltf = Json::parse(glb.substr(20, jsonLength));
+  const std::size_t binAt = 20 + jsonLength;
+  EXPECT_EQ(word(glb, binAt + 4), 0x004E4942u);  // "BIN"
+  EXPECT_EQ(word(glb, binAt), gltf["buffers"][0]["byteLength"].get<std::uint32_t>());
+  EXPECT_EQ(gltf["buffers"].size(), 1u);
+  EXPECT_FALSE(gltf["buffers"][0].contains("uri"));
+  for (const Json& view : gltf["bufferViews"]) {
+    EXPECT_EQ(view["buffer"], 0);
+    EXPECT_LE(view["byteOffset"].get<std::size_t>() + view["byteLength"].get<std::size_t>(), word(glb, binAt));
+  }
+  // Three meshes: the part (triangles) and the feeds and rapids (lines, mode 1).
+  ASSERT_EQ(gltf["meshes"].size(), 3u);
+  EXPECT_EQ(gltf["meshes"][0]["primitives"][0]["mode"], 4);
+  EXPECT_EQ(gltf["meshes"][1]["primitives"][0]["mode"], 1);
+  // The part's positions in mm, (±30, ±30, 0..60); the root scales them to metres and turns
+  // the spindle axis (Z) onto glTF's X and the part's X onto glTF's Y.
+  const Json& positions = gltf["accessors"][gltf["meshes"][0]["primitives"][0]["attributes"]["POSITION"].get<int>()];
+  EXPECT_NEAR(positions["min"][0].get<double>(), -30, 1e-3);
+  EXPECT_NEAR(positions["max"][2].get<double>(), 60, 1e-3);
+  const Json& root = gltf["nodes"][gltf["scenes"][0]["nodes"][0].get<int>()];
+  const std::vector<double> matrix = root["matrix"];
+  // Column-major: part x → glTF y, part y → glTF z, part z → glTF x.
+  EXPECT_EQ(matrix, (std::vector<double>{0, 0.001, 0, 0, 0, 0, 0.001, 0, 0.001, 0, 0, 0, 0, 0, 0, 1}));
+  EXPECT_FALSE(gltf.contains("cameras"));
+}
+
+TEST(SceneExport, GltfCarriesItsBuffersInline) {
+  ::unsetenv("DISPLAY");
+  test::TempDir dir;
+  writePartGltf(test::cylinder(10.0, 20.0, 16), interp::Toolpath{}, dir.path() / "part.gltf");
+  const Json gltf = Json::parse(readAll(dir.path() / "part.gltf"));
+  ASSERT_EQ(gltf["meshes"].size(), 1u);  // no toolpath, no lines
+  for (const Json& buffer : gltf["buffers"])
+    EXPECT_EQ(buffer["uri"].get<std::string>().rfind("data:application/octet-stream;base64,", 0), 0u);
+}
+
+TEST(SceneExport, PlyAndObjHoldEveryVertexAndTriangle) {
+  const TriangleMesh part = test::cylinder(30.0, 60.0, 48, 2);
+  test::TempDir dir;
+  writePartPly(part, dir.path() / "part.ply");
+  const std::string ply = readAll(dir.path() / "part.ply");
+  EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+  EXPECT_NE(ply.find("element vertex " + std::to_string(part.vertices.size()) + "\n"), std::string::npos);
+  EXPECT_NE(ply.find("element face " + std::to_string(part.triangles.size()) + "\n"), std::string::npos);
+
+  writePartObj(part, dir.path() / "part.obj");
+  std::istringstream obj(readAll(dir.path() / "part.obj"));
+  std::size_t vertices = 0, faces = 0;
+  for (std::string line; std::getline(obj, line);) vertices += line.rfind("v ", 0) == 0, faces += line.rfind("f ", 0) == 0;
+  EXPECT_EQ(vertices, part.vertices.size());
+  EXPECT_EQ(faces, part.triangles.size());
+  EXPECT_THROW(writePartObj(part, dir.path() / "no" / "part.obj"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace lathesim::render
