@@ -5,6 +5,8 @@
 #include "batch/merge.hpp"
 #include "batch/shard.hpp"
 #include "batch/summary.hpp"
+#include "interp/printable_text.hpp"
+#include "job/exit_status.hpp"
 
 namespace lathesim::app {
 
@@ -18,13 +20,19 @@ BatchCli::BatchCli(CLI::App& cli) {
       ->check(CLI::PositiveNumber);
   command_->add_option("--memory-mb", memoryMb_, "memory the jobs may fill together (default: 80 % of what is free)")
       ->check(CLI::PositiveNumber);
-  command_->add_option("--setup", options_.defaults.setup, "setup for jobs that have none");
-  command_->add_option("--target", options_.defaults.drawing, "drawing to check jobs against that have none");
+  command_->add_option("--setup", options_.defaults.setup, "setup for jobs that have none")->check(CLI::ExistingFile);
+  command_->add_option("--target", options_.defaults.drawing, "drawing to check jobs against that have none")
+      ->check(CLI::ExistingFile);
   command_->add_option("--tol", options_.defaults.toleranceMm, "check tolerance in mm (default: two voxels)")
       ->check(CLI::NonNegativeNumber);
   command_->add_option("--voxel", options_.defaults.voxelMm, "voxel size in mm for jobs that set none")
       ->check(CLI::PositiveNumber);
+  command_->footer(
+      "Example:\n  lathesim batch parts --out out/parts --voxel 0.25\n"
+      "runs every program under parts/ (with the setup.toml and drawing.toml beside it) and writes\n"
+      "out/parts/summary.html, .csv and .json; run it again to resume.");
   merge_ = command_->add_subcommand("merge", "join the summaries of a batch's shards into one");
+  merge_->footer("Example:\n  lathesim batch merge out/parts/summary-1-of-2.json out/parts/summary-2-of-2.json");
   merge_->add_option("summaries", summaries_, "the shards' summary-I-of-N.json files")->required()->check(CLI::ExistingFile);
   merge_->add_option("--out", mergeOut_, "where summary.* go (default: the first summary's folder)");
 }
@@ -32,15 +40,15 @@ BatchCli::BatchCli(CLI::App& cli) {
 int BatchCli::run() {
   if (merge_->parsed()) return batch::mergeSummaries(summaries_, mergeOut_);
   if (source_.empty()) {
-    std::cerr << "lathesim batch: give a manifest (.toml, .csv) or a folder of programs\n";
-    return batch::kExitSomeFailed;
+    std::cerr << "lathesim batch: give a manifest (.toml, .csv) or a folder of programs (see lathesim batch --help)\n";
+    return job::kExitBadCommandLine;
   }
   options_.source = source_;
   if (!shard_.empty()) {
     const auto shard = batch::parseShard(shard_);
     if (!shard) {
-      std::cerr << "lathesim batch: --shard " << shard_ << ": expected I/N with 1 ≤ I ≤ N, e.g. 2/8\n";
-      return batch::kExitSomeFailed;
+      std::cerr << "lathesim batch: --shard " << interp::printable(shard_) << ": expected I/N with 1 ≤ I ≤ N, e.g. 2/8\n";
+      return job::kExitBadCommandLine;
     }
     options_.shard = *shard;
   }

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "interp/printable_text.hpp"
 #include "measure/deviation.hpp"
 #include "measure/drawing.hpp"
 #include "measure/gouge_causes.hpp"
@@ -38,12 +39,12 @@ std::optional<MeridianProfile> loadProfile(const std::filesystem::path& file, st
 std::optional<MeridianProfile> loadStl(const std::filesystem::path& file) {
   render::StlRead read = render::readStl(file);
   if (!read.mesh) {
-    std::cerr << file.string() << ": error: " << read.problem << '\n';
+    std::cerr << interp::printable(file.string()) << ": error: " << interp::printable(read.problem) << '\n';
     return std::nullopt;
   }
   std::vector<Segment> slice = meridianSlice(*read.mesh);
   if (slice.empty()) {
-    std::cerr << file.string() << ": error: the design does not cross the half-plane y = 0, x ≥ 0; a turned part's "
+    std::cerr << interp::printable(file.string()) << ": error: the design does not cross the half-plane y = 0, x ≥ 0; a turned part's "
               << "STL must have its axis along Z through the origin\n";
     return std::nullopt;
   }
@@ -138,7 +139,7 @@ std::string where(const RZ& p) {
 void printSummary(const CheckOptions& options, const measure::DeviationReport& d,
                   const std::vector<measure::ThreadCheck>& threads) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
-  std::cout << options.run.program.string() << " against " << target << ": "
+  std::cout << interp::printable(options.run.program.string()) << " against " << interp::printable(target) << ": "
             << (allWithin(d, threads) ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm\n";
   for (const auto& t : threads) {
     std::cout << "  thread Z" << fixed(t.callout.zLowMm, 3) << "..Z" << fixed(t.callout.zHighMm, 3);
@@ -165,7 +166,7 @@ void printSummary(const CheckOptions& options, const measure::DeviationReport& d
     }
     std::cout << '\n';
   }
-  std::cout << "  outputs in " << options.run.out.string() << "/\n";
+  std::cout << "  outputs in " << interp::printable(options.run.out.string()) << "/\n";
 }
 
 bool inZones(const std::vector<measure::ZRange>& zones, double z) {
@@ -228,33 +229,32 @@ void stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh,
   image.toleranceMm = d.toleranceMm;
   image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
                   " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
-  render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing, threadZones), image, out.stage("deviation.png"));
-  pictures.push_back({"deviation.png: the part coloured by its deviation from the drawing", out.staged("deviation.png")});
+  const auto deviationPng = out.write("deviation.png", [&](const std::filesystem::path& file) {
+    render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing, threadZones), image, file);
+  });
+  pictures.push_back({"deviation.png: the part coloured by its deviation from the drawing", deviationPng});
   render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d, threadZones);
   half.caption = image.caption;
-  render::writeSectionImagePng(half, out.stage("section.png"));
-  pictures.push_back({"section.png: the half-section against the drawing", out.staged("section.png")});
+  const auto sectionPng =
+      out.write("section.png", [&](const std::filesystem::path& file) { render::writeSectionImagePng(half, file); });
+  pictures.push_back({"section.png: the half-section against the drawing", sectionPng});
 }
 
 }  // namespace
 
 int checkCommand(const CheckOptions& options) {
-  if (options.toleranceMm && !(*options.toleranceMm >= 0)) {
-    std::cerr << "lathesim: error: the tolerance must be a number of mm, zero or more\n";
-    return 1;
-  }
   std::optional<MeridianProfile> drawing;
   std::vector<measure::ThreadCallout> callouts;
   if (options.drawing &&
       !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing, callouts)))
-    return 1;  // before the long part
+    return job::kExitBadInput;  // before the long part
   Stopwatch clock;
   StagedOutput out(options.run.out);
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
-  if (!run) return 1;
+  if (!run) return job::kExitBadInput;
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
-  if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return 1;
+  if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return job::kExitBadInput;
   const double tolerance = options.toleranceMm.value_or(2 * voxel);
 
   run->progress->stage("measuring against the drawing");
@@ -285,7 +285,7 @@ int checkCommand(const CheckOptions& options) {
   run->progress->finish();
 
   printSummary(options, deviation, threadChecks);
-  return allWithin(deviation, threadChecks) ? 0 : kExitOutOfTolerance;
+  return allWithin(deviation, threadChecks) ? job::kExitOk : job::kExitOutOfTolerance;
 }
 
 }  // namespace lathesim::app

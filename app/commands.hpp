@@ -1,5 +1,5 @@
 #pragma once
-// The lathesim subcommands. Each returns the process exit status:
+// The lathesim subcommands. Each returns the process exit status (job/exit_status.hpp):
 // 0 done, 1 bad input (diagnostics printed, no output written).
 
 #include <filesystem>
@@ -8,6 +8,7 @@
 
 #include "interp/control/dialect.hpp"
 #include "interp/motion/toolpath_clock.hpp"
+#include "job/exit_status.hpp"
 #include "job/job.hpp"
 #include "job/setup.hpp"
 #include "render/part_image.hpp"
@@ -62,9 +63,9 @@ struct CheckOptions {
   std::optional<double> toleranceMm;                   // default: two voxels
 };
 
-/// Exit status 0 when every deviation is within the tolerance, 3 when not, 1 on bad input.
+/// Exit status 0 when every deviation is within the tolerance, 3 when not, 1 on bad input
+/// (job/exit_status.hpp).
 int checkCommand(const CheckOptions& options);
-inline constexpr int kExitOutOfTolerance = 3;
 
 int expandCommand(const job::JobRequest& request);
 

@@ -6,42 +6,82 @@
 
 #include "app/batch_cli.hpp"
 #include "app/commands.hpp"
+#include "app/interrupts.hpp"
 #include "app/picture_cli.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
+#include "interp/printable_text.hpp"
+#include "job/exit_status.hpp"
+#include "job/stock_option.hpp"
+
+namespace {
+
+constexpr const char* kExitStatuses =
+    "Exit status: 0 done; 1 a bad program, setup, drawing or manifest, or the outputs could not be\n"
+    "written (nothing is written then); 2 a bad command line; 3 check: out of tolerance;\n"
+    "130 or 143 stopped by Ctrl-C or SIGTERM (nothing half-written is left).";
+
+// A bad command line says what is wrong (with any control character in it escaped) and exits
+// 2; CLI11's own statuses (105, 106, 109 …) mean nothing to a script.
+std::string badCommandLine(const CLI::App* app, const CLI::Error& error) {
+  std::string command = app->get_name();
+  for (auto chosen = app->get_subcommands(); !chosen.empty(); chosen = chosen.front()->get_subcommands())
+    command += " " + chosen.front()->get_name();
+  return "lathesim: " + lathesim::interp::printable(error.what()) + "\nRun '" + command + " --help' for more.\n";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App cli{"lathesim — simulates a lathe program on a bar and shows the part it makes"};
+  CLI::App cli{"lathesim — simulates a lathe program on a bar and shows the part it makes", "lathesim"};
   cli.require_subcommand(1);
+  cli.set_version_flag("--version", "lathesim " LATHESIM_VERSION);
+  cli.failure_message(badCommandLine);
+  cli.footer(kExitStatuses);
 
   lathesim::app::RunOptions run;
   std::string runSetup;
   auto* runCmd = cli.add_subcommand("run", "simulate a program: STL, PNG, toolpath, stock.vdb and report.json");
   runCmd->add_option("program", run.program, "the G-code program")->required()->check(CLI::ExistingFile);
-  runCmd->add_option("--setup", runSetup, "setup file (TOML): stock, machine, tools");
+  runCmd->add_option("--setup", runSetup, "setup file (TOML): stock, machine, tools")->check(CLI::ExistingFile);
   runCmd->add_option("--out", run.out, "output folder")->capture_default_str();
-  runCmd->add_option("--voxel", run.voxelMm, "voxel size in mm (overrides [sim] voxel)");  // checked with the stock
-  runCmd->add_option("--at-line", run.atLine, "simulate only up to the moves of this source line; show the part then");
+  runCmd->add_option("--voxel", run.voxelMm, "voxel size in mm (overrides [sim] voxel)")
+      ->check(CLI::PositiveNumber);  // and with the stock, for the memory it needs
+  runCmd->add_option("--at-line", run.atLine, "simulate only up to the moves of this source line; show the part then")
+      ->check(CLI::PositiveNumber);
+  runCmd->footer(
+      "Example:\n  lathesim run parts/seed000-face-taper/program.nc --setup parts/seed000-face-taper/setup.toml "
+      "--out out/seed000\nwrites part.stl, part.png, toolpath.csv, toolpath.vtp, stock.vdb and report.json into out/seed000/.\n" +
+      std::string(kExitStatuses));
 
   lathesim::app::CheckOptions check;
   std::string checkSetup;
   auto* checkCmd = cli.add_subcommand(
       "check", "simulate a program and measure the part against its drawing; exit 3 if out of tolerance");
   checkCmd->add_option("program", check.run.program, "the G-code program")->required()->check(CLI::ExistingFile);
-  checkCmd->add_option("--setup", checkSetup, "setup file (TOML): stock, machine, tools");
+  checkCmd->add_option("--setup", checkSetup, "setup file (TOML): stock, machine, tools")->check(CLI::ExistingFile);
   auto* checkTarget = checkCmd->add_option("--target", check.drawing, "the drawing: a profile (.toml) or an STL of the design (.stl)")
                           ->check(CLI::ExistingFile);
   checkCmd->add_option("--target-program", check.targetProgram, "a program whose part is the drawing (same setup)")
       ->check(CLI::ExistingFile)
       ->excludes(checkTarget);
-  checkCmd->add_option("--tol", check.toleranceMm, "tolerance in mm (default: two voxels)");
+  checkCmd->add_option("--tol", check.toleranceMm, "tolerance in mm (default: two voxels)")->check(CLI::NonNegativeNumber);
   checkCmd->add_option("--out", check.run.out, "output folder")->capture_default_str();
-  checkCmd->add_option("--voxel", check.run.voxelMm, "voxel size in mm (overrides [sim] voxel)");
+  checkCmd->add_option("--voxel", check.run.voxelMm, "voxel size in mm (overrides [sim] voxel)")->check(CLI::PositiveNumber);
+  checkCmd->footer(
+      "Example:\n  lathesim check parts/seed001-taper-r20/program.nc --setup parts/seed001-taper-r20/setup.toml "
+      "--target parts/seed001-taper-r20/drawing.toml --tol 0.1\nprints the largest excess and gouge and exits 3 when "
+      "the part is out of tolerance (this one is: R-20 leaves a wrong taper).\n" +
+      std::string(kExitStatuses));
 
   lathesim::app::RunOptions expand;
   std::string expandSetup;
   auto* expandCmd = cli.add_subcommand("expand", "print the toolpath as CSV; simulates nothing");
   expandCmd->add_option("program", expand.program, "the G-code program")->required()->check(CLI::ExistingFile);
+  expandCmd->footer(
+      "Example:\n  lathesim expand parts/g71-g70-shaft/program.nc --setup parts/g71-g70-shaft/setup.toml > toolpath.csv\n"
+      "one row per move: line,kind,x0,z0,x1,z1,feed,xc,zc,time_s (X as a diameter).\n" +
+      std::string(kExitStatuses));
   for (auto* command : {runCmd, checkCmd, expandCmd}) {
     auto& directories = command == runCmd ? run.programDirectories
                         : command == checkCmd ? check.run.programDirectories
@@ -52,16 +92,22 @@ int main(int argc, char** argv) {
     auto& stock = command == runCmd ? run.stock : command == checkCmd ? check.run.stock : expand.stock;
     command->add_option("--stock", stock,
                         "the bar: D<diameter>[xd<bore>]xL<length>[xZ<face>], e.g. D40xL80 or the tube D60xd40xL80 "
-                        "(over the setup's)");
+                        "(over the setup's)")
+        ->check([](const std::string& text) {
+          const auto bar = lathesim::job::parseStockOption(text);
+          const auto* problem = std::get_if<std::string>(&bar);
+          return problem ? *problem : std::string();
+        });
   }
-  expandCmd->add_option("--setup", expandSetup, "setup file (TOML)");
+  expandCmd->add_option("--setup", expandSetup, "setup file (TOML)")->check(CLI::ExistingFile);
   lathesim::app::addPictureOptions(*runCmd, run);
   lathesim::app::addPictureOptions(*checkCmd, check.run);
 
-  // --dialect, --control, --block-skip and --max-steps on every command that reads a program.
+  // --dialect, --control, --block-skip, --max-steps and --max-moves on every command that reads a program.
   struct OverrideArguments {
     std::string dialect, control, blockSkip;
     std::optional<long long> maxSteps;
+    std::optional<std::size_t> maxMoves;
   };
   OverrideArguments runArgs, checkArgs, expandArgs;
   std::vector<std::string> dialects;
@@ -79,24 +125,42 @@ int main(int argc, char** argv) {
                         "blocks the program may run again before it is stopped as an endless loop (overrides "
                         "[macro] max_steps)")
         ->check(CLI::PositiveNumber);
+    command->add_option("--max-moves", args->maxMoves,
+                        "moves the program may make before it is refused (overrides [sim] max_moves; default " +
+                            std::to_string(lathesim::interp::kDefaultMaxMoves) + ")")
+        ->check(CLI::PositiveNumber);
   }
 
   lathesim::app::BatchCli batch(cli);
 
-  CLI11_PARSE(cli, argc, argv);
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    const bool unknownCommand = argc > 1 && argv[1][0] != '-' && cli.get_subcommands().empty();
+    if (unknownCommand)  // CLI11 would only say that a subcommand is required
+      std::cerr << "lathesim: unknown command '" << lathesim::interp::printable(argv[1])
+                << "': expected run, check, expand or batch\nRun 'lathesim --help' for more.\n";
+    else
+      cli.exit(e);
+    return lathesim::job::kExitBadCommandLine;
+  }
   const auto overridesOf = [](const OverrideArguments& args) {
     lathesim::job::SetupOverrides overrides;
     if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
     if (!args.control.empty()) overrides.controlPreset = args.control;
     if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
     overrides.maxSteps = args.maxSteps;
+    overrides.maxMoves = args.maxMoves;
     return overrides;
   };
   const auto optionalPath = [](const std::string& s) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
   };
   try {
-    if (batch.chosen()) return batch.run();
+    if (batch.chosen()) return batch.run();  // it stops its jobs on a signal itself
+    lathesim::app::removeOutputsOnInterrupt();
     if (*runCmd) {
       run.setup = optionalPath(runSetup);
       run.overrides = overridesOf(runArgs);
@@ -104,8 +168,8 @@ int main(int argc, char** argv) {
     }
     if (*checkCmd) {
       if (!check.drawing && !check.targetProgram) {
-        std::cerr << "lathesim check: give the drawing with --target or --target-program\n";
-        return 1;
+        std::cerr << "lathesim check: give the drawing with --target or --target-program (see lathesim check --help)\n";
+        return lathesim::job::kExitBadCommandLine;
       }
       check.run.setup = optionalPath(checkSetup);
       check.run.overrides = overridesOf(checkArgs);
@@ -114,8 +178,8 @@ int main(int argc, char** argv) {
     expand.setup = optionalPath(expandSetup);
     expand.overrides = overridesOf(expandArgs);
     return lathesim::app::expandCommand(lathesim::app::jobRequestOf(expand));
-  } catch (const std::exception& e) {  // I/O failures and broken invariants
-    std::cerr << "lathesim: error: " << e.what() << '\n';
-    return 1;
+  } catch (const std::exception& e) {  // outputs that cannot be written, broken invariants
+    std::cerr << "lathesim: error: " << lathesim::interp::printable(e.what()) << '\n';
+    return lathesim::job::kExitBadInput;
   }
 }

@@ -4,10 +4,12 @@
 
 #include <cstdio>
 
+#include "interp/printable_text.hpp"
+
 namespace lathesim::app {
 
 Progress::Progress(std::string what)
-    : what_(std::move(what)), start_(std::chrono::steady_clock::now()), lastShown_(start_),
+    : what_(interp::printable(what)), start_(std::chrono::steady_clock::now()), lastShown_(start_),
       enabled_(isatty(STDERR_FILENO) == 1) {}
 
 Progress::~Progress() { finish(); }

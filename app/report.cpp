@@ -1,5 +1,7 @@
 #include "app/report.hpp"
 
+#include "app/staged_output.hpp"
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <cstdio>
@@ -152,9 +154,9 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
 
 
 void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file) {
-  std::ofstream out(file);
-  out << report.dump(2) << '\n';
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  // Text a program quoted (a comment in a note) need not be UTF-8: such bytes become U+FFFD.
+  const std::string text = report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  writeTextFile(file, [&](std::ostream& out) { out << text << '\n'; });
 }
 
 }  // namespace lathesim::app

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/staged_output.hpp"
 #include "batch/html_text.hpp"
 #include "viewer/viewer_script.hpp"
 
@@ -273,10 +274,7 @@ void writeReportHtml(const Json& report, const std::string& programText, const s
     page += "</script>\n";
   }
   page += "</body>\n</html>\n";
-  std::ofstream out(html, std::ios::binary | std::ios::trunc);
-  out << page;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + html.string());
+  writeTextFile(html, [&](std::ostream& out) { out << page; });
 }
 
 }  // namespace lathesim::app

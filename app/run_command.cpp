@@ -2,6 +2,7 @@
 
 #include "app/commands.hpp"
 #include "app/run_pipeline.hpp"
+#include "interp/printable_text.hpp"
 #include "interp/toolpath_csv.hpp"
 
 namespace lathesim::app {
@@ -10,7 +11,7 @@ int runCommand(const RunOptions& options) {
   Stopwatch clock;
   StagedOutput out(options.out);
   std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
-  if (!run) return 1;
+  if (!run) return job::kExitBadInput;
   meshPart(*run, clock);
   stageRunFiles(*run, options, out, clock);
   RunFigures& figures = run->figures;
@@ -20,10 +21,10 @@ int runCommand(const RunOptions& options) {
   run->progress->stage("done");
   run->progress->finish();
 
-  std::cout << figures.program << " (control " << figures.control.preset << "): " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
+  std::cout << interp::printable(figures.program) << " (control " << figures.control.preset << "): " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
-            << options.out.string() << "/\n";
+            << interp::printable(options.out.string()) << "/\n";
   if (!figures.simulation.partOffs.empty()) {
     const sim::PartOff& off = figures.simulation.partOffs.front();
     std::cout << "  parted off at line " << off.line << ", Z" << off.zMm << ": the part " << off.volumeMm3
@@ -32,7 +33,7 @@ int runCommand(const RunOptions& options) {
   for (const auto& c : figures.simulation.collisions)
     std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
   for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';
-  return 0;
+  return job::kExitOk;
 }
 
 job::JobRequest jobRequestOf(const RunOptions& options) {
@@ -41,9 +42,9 @@ job::JobRequest jobRequestOf(const RunOptions& options) {
 
 int expandCommand(const job::JobRequest& request) {
   const std::optional<job::Job> loaded = job::loadJob(request);
-  if (!loaded) return 1;
+  if (!loaded) return job::kExitBadInput;
   interp::writeToolpathCsv(loaded->toolpath, std::cout);
-  return 0;
+  return job::kExitOk;
 }
 
 }  // namespace lathesim::app

@@ -130,14 +130,14 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock) {
   const PictureRequest& pictures = options.pictures;
   run.progress->stage("writing STL, VDB, the pictures and the report");
-  render::writeBinaryStl(run.part, out.stage("part.stl"));
-  if (run.partedOff()) render::writeBinaryStl(run.stub, out.stage("stub.stl"));
-  {
-    std::ofstream csv(out.stage("toolpath.csv"));
-    interp::writeToolpathCsv(run.job.toolpath, csv);
-  }
-  render::writeToolpathVtp(run.job.toolpath, out.stage("toolpath.vtp"));
-  run.stock->writeVdb(out.stage("stock.vdb"), run.figures.simulation.part.get());
+  using Path = std::filesystem::path;
+  out.write("part.stl", [&](const Path& file) { render::writeBinaryStl(run.part, file); });
+  if (run.partedOff()) out.write("stub.stl", [&](const Path& file) { render::writeBinaryStl(run.stub, file); });
+  out.write("toolpath.csv", [&](const Path& file) {
+    writeTextFile(file, [&](std::ostream& csv) { interp::writeToolpathCsv(run.job.toolpath, csv); });
+  });
+  out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
+  out.write("stock.vdb", [&](const Path& file) { run.stock->writeVdb(file, run.figures.simulation.part.get()); });
   render::PartImageOptions image =
       partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
   addPartSection(image, run.partStock().meridianSection(), run.figures.voxelMm);
@@ -146,8 +146,8 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
     if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);
   for (const render::PartView view : views) {
     image.view = view;
-    const auto png = out.stage(pictureFileName(view));
-    render::writePartImagePng(run.part, run.job.toolpath, image, png);
+    const auto png = out.write(pictureFileName(view),
+                               [&](const Path& file) { render::writePartImagePng(run.part, run.job.toolpath, image, file); });
     run.pictures.push_back({pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view", png});
   }
   // A close-up of the first thread measured: six pitches around the middle of its grooves,
@@ -165,25 +165,28 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
     closeUp.view = render::PartView::Front;
     closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
     closeUp.closeUp = render::CloseUp{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
-    const auto png = out.stage("thread.png");
-    render::writePartImagePng(run.part, run.job.toolpath, closeUp, png);
+    const auto png = out.write("thread.png",
+                               [&](const Path& file) { render::writePartImagePng(run.part, run.job.toolpath, closeUp, file); });
     run.pictures.push_back({"thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line), png});
     break;
   }
   run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
   for (const std::string& format : options.exports) {
-    const auto file = out.stage("part." + format);
-    if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
-    if (format == "glb") render::writeFileBytes(run.modelGlb, file);
-    if (format == "ply") render::writePartPly(run.part, file);
-    if (format == "obj") render::writePartObj(run.part, file);
+    out.write("part." + format, [&](const Path& file) {
+      if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
+      if (format == "glb") render::writeFileBytes(run.modelGlb, file);
+      if (format == "ply") render::writePartPly(run.part, file);
+      if (format == "obj") render::writePartObj(run.part, file);
+    });
   }
   run.figures.timing.renderS = clock.lap();
 }
 
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
-  writeJson(report, out.stage("report.json"));
-  writeReportHtml(report, run.job.programText, run.pictures, run.modelGlb, out.stage("report.html"));
+  using Path = std::filesystem::path;
+  out.write("report.json", [&](const Path& file) { writeJson(report, file); });
+  out.write("report.html",
+            [&](const Path& file) { writeReportHtml(report, run.job.programText, run.pictures, run.modelGlb, file); });
 }
 
 double peakMemoryMb() {

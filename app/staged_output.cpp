@@ -1,38 +1,127 @@
 #include "app/staged_output.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <stdexcept>
 
-namespace lathesim::app {
+#include "app/interrupts.hpp"
+#include "interp/printable_text.hpp"
 
-StagedOutput::StagedOutput(std::filesystem::path folder) : folder_(std::move(folder)) {}
+namespace lathesim::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& path) { return "'" + interp::printable(path.string()) + "'"; }
+
+// The folders create_directories(folder) would make, outermost first.
+std::vector<fs::path> missingFolders(const fs::path& folder) {
+  std::vector<fs::path> missing;
+  std::error_code ignored;
+  for (fs::path at = fs::absolute(folder, ignored).lexically_normal(); !at.empty() && !fs::exists(at, ignored);
+       at = at.parent_path()) {
+    missing.insert(missing.begin(), at);
+    if (at == at.parent_path()) break;
+  }
+  return missing;
+}
+
+// Data a file system accepted into its cache may still fail to reach the disk (a full disk
+// found at write-back, a quota): fsync reports it while the file is still a temporary.
+void syncFile(const fs::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error(std::strerror(errno));
+  const int synced = ::fsync(fd);
+  const int err = errno;
+  ::close(fd);
+  if (synced != 0) throw std::runtime_error(std::strerror(err));
+}
+
+}  // namespace
+
+StagedOutput::StagedOutput(fs::path folder) : folder_(std::move(folder)) {
+  const std::vector<fs::path> missing = missingFolders(folder_);
+  std::error_code error;
+  fs::create_directories(folder_, error);
+  for (const fs::path& made : missing)
+    if (fs::is_directory(made)) {
+      madeFolders_.push_back(made);
+      InterruptCleanup::addFolder(made);
+    }
+  if (!error && !fs::is_directory(folder_)) error = std::make_error_code(std::errc::not_a_directory);
+  if (!error) {  // a folder may exist and still refuse files (read-only, no permission)
+    const fs::path probe = folder_ / (".tmp-" + std::to_string(::getpid()) + "-probe");
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) error = std::error_code(errno, std::generic_category());
+    else ::close(fd), ::unlink(probe.c_str());
+  }
+  if (error) {
+    for (auto it = madeFolders_.rbegin(); it != madeFolders_.rend(); ++it) fs::remove(*it, error);
+    throw std::runtime_error("cannot write the outputs into " + quoted(folder_) + ": " + error.message());
+  }
+}
 
 StagedOutput::~StagedOutput() {
   std::error_code ignored;
-  for (const auto& [temp, final] : staged_) std::filesystem::remove(temp, ignored);
-  // A run that failed after its first file (ffmpeg missing, a disk full) leaves no empty folder.
-  if (madeFolder_ && std::filesystem::is_empty(folder_, ignored)) std::filesystem::remove(folder_, ignored);
+  for (const auto& [temp, final] : staged_) {
+    fs::remove(temp, ignored);
+    InterruptCleanup::forget(temp);
+  }
+  for (auto it = madeFolders_.rbegin(); it != madeFolders_.rend(); ++it) {
+    fs::remove(*it, ignored);  // only if empty: it holds no output then
+    InterruptCleanup::forget(*it);
+  }
 }
 
-std::filesystem::path StagedOutput::stage(const std::string& name) {
-  // At the first file: a run that fails before writes nothing.
-  if (!std::filesystem::exists(folder_)) madeFolder_ = std::filesystem::create_directories(folder_);
+fs::path StagedOutput::stage(const std::string& name) {
   // The temporary keeps the real extension: some writers choose their format by it.
   const auto temp = folder_ / (".tmp-" + std::to_string(getpid()) + "-" + name);
+  InterruptCleanup::addFile(temp);
   staged_.emplace_back(temp, folder_ / name);
   return temp;
 }
 
-std::filesystem::path StagedOutput::staged(const std::string& name) const {
-  for (const auto& [temp, final] : staged_)
-    if (final.filename() == name) return temp;
-  throw std::out_of_range(name + " was not staged");
+fs::path StagedOutput::write(const std::string& name, const std::function<void(const fs::path&)>& writer) {
+  const fs::path temp = stage(name);
+  try {
+    writer(temp);
+    syncFile(temp);
+    return temp;
+  } catch (const std::exception& e) {
+    // The writers name the file they were given: name the one the user will look for.
+    const fs::path final = folder_ / name;
+    std::string reason = e.what();
+    for (std::size_t at; (at = reason.find(temp.string())) != std::string::npos;)
+      reason.replace(at, temp.string().size(), final.string());
+    if (reason.find(final.string()) == std::string::npos) reason = "cannot write " + final.string() + ": " + reason;
+    throw std::runtime_error(reason + "; no output was written");
+  }
 }
 
 void StagedOutput::commit() {
-  for (const auto& [temp, final] : staged_) std::filesystem::rename(temp, final);
-  staged_.clear();
+  struct Committing {  // a signal meanwhile waits until every file is in place
+    Committing() { InterruptCleanup::beginCommit(); }
+    ~Committing() { InterruptCleanup::endCommit(); }
+  } committing;
+  for (auto it = staged_.begin(); it != staged_.end(); it = staged_.erase(it)) {
+    fs::rename(it->first, it->second);
+    InterruptCleanup::forget(it->first);
+  }
+  for (const fs::path& made : madeFolders_) InterruptCleanup::forget(made);
+  madeFolders_.clear();  // they hold the outputs now
+}
+
+void writeTextFile(const fs::path& file, const std::function<void(std::ostream&)>& write) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot create " + file.string() + ": " + std::strerror(errno));
+  errno = 0;
+  write(out);
+  out.close();  // the last buffer is written here
+  if (!out) throw std::runtime_error(errno != 0 ? std::strerror(errno) : "the write failed");
 }
 
 }  // namespace lathesim::app

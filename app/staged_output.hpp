@@ -1,30 +1,44 @@
 #pragma once
 // Output files appear whole or not at all: each is written under a temporary name in the
-// output folder and renamed into place only when every file of the run is complete.
+// output folder and renamed into place only when every file of the run is complete. A
+// failed write, an exception or an interrupt (app/interrupts.hpp) leaves nothing behind:
+// not the temporaries, nor the folders made for them.
 
 #include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
 #include <vector>
 
 namespace lathesim::app {
 
 class StagedOutput {
  public:
+  /// Makes the folder (and its missing parents) and checks that a file can be made in it;
+  /// throws std::runtime_error saying why not ("cannot write the outputs into …").
   explicit StagedOutput(std::filesystem::path folder);
-  ~StagedOutput();  // removes whatever was staged but not committed, and the folder if it made it
+  ~StagedOutput();  // removes whatever was staged but not committed, and the folders made
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
 
-  /// Where to write the file that will become `folder/name` (the folder is made at the first).
+  /// Writes `folder/name` through `writer`, given the temporary path, and returns that path;
+  /// a failure (an exception, a full disk found when the file is synced) throws
+  /// std::runtime_error naming the final file.
+  std::filesystem::path write(const std::string& name, const std::function<void(const std::filesystem::path&)>& writer);
+  /// Where to write the file that will become `folder/name`, for a writer that another
+  /// process runs (ffmpeg); write() when lathesim writes it.
   std::filesystem::path stage(const std::string& name);
-  /// Where the file that will become `folder/name` was staged (std::out_of_range if it was not).
-  std::filesystem::path staged(const std::string& name) const;
   /// Renames every staged file into place.
   void commit();
 
  private:
   std::filesystem::path folder_;
-  bool madeFolder_ = false;
+  std::vector<std::filesystem::path> madeFolders_;  // outermost first
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temp, final
 };
+
+/// Writes `file` through a stream; throws std::runtime_error with the system's reason (a
+/// full disk: "No space left on device") if any of it could not be written.
+void writeTextFile(const std::filesystem::path& file, const std::function<void(std::ostream&)>& write);
 
 }  // namespace lathesim::app

@@ -56,7 +56,7 @@ void writeStamp(const std::filesystem::path& folder, const std::string& inputs, 
   const auto temporary = folder / (std::string(kStampFileName) + ".tmp");
   {
     std::ofstream out(temporary);
-    out << stamp.dump(2) << '\n';
+    out << stamp.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n';
     if (!out) throw std::runtime_error("cannot write " + temporary.string());
   }
   std::filesystem::rename(temporary, folder / kStampFileName);

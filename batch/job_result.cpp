@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "batch/number_text.hpp"
+#include "job/exit_status.hpp"
 
 namespace lathesim::batch {
 namespace {
@@ -20,9 +21,6 @@ constexpr std::array<std::pair<JobStatus, std::string_view>, 6> kStatusNames{{{J
                                                                               {JobStatus::Timeout, "timeout"},
                                                                               {JobStatus::Crashed, "crashed"},
                                                                               {JobStatus::NotRun, "not_run"}}};
-
-// `lathesim check` exits 3 when the part is out of tolerance (app/commands.hpp).
-constexpr int kExitOutOfTolerance = 3;
 
 template <class T>
 std::optional<T> optionalAt(const Json& object, const char* key) {
@@ -130,7 +128,7 @@ JobResult resultOf(const BatchJob& job, const std::string& folder, const ChildOu
   const int code = outcome.exitCode.value_or(-1);
   if (code == 0 && report) {
     result.status = JobStatus::Ok;
-  } else if (code == kExitOutOfTolerance && result.check && !result.check->withinTolerance) {
+  } else if (code == job::kExitOutOfTolerance && result.check && !result.check->withinTolerance) {
     result.status = JobStatus::OutOfTolerance;
   } else {
     result.status = JobStatus::Failed;

@@ -121,7 +121,9 @@ std::string summaryStem(const Shard& shard) { return shard.whole() ? "summary" :
 
 void writeSummaryFiles(const BatchSummary& summary, const std::filesystem::path& folder) {
   const std::string stem = summaryStem(summary.shard);
-  writeWhole(folder / (stem + ".json"), [&](std::ostream& out) { out << toJson(summary).dump(2) << '\n'; });
+  // A job's message quotes its program, which need not be UTF-8: such bytes become U+FFFD.
+  const std::string json = toJson(summary).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+  writeWhole(folder / (stem + ".json"), [&](std::ostream& out) { out << json << '\n'; });
   writeWhole(folder / (stem + ".csv"), [&](std::ostream& out) { writeSummaryCsv(summary, out); });
   writeWhole(folder / (stem + ".html"), [&](std::ostream& out) { writeSummaryHtml(summary, folder, out); });
 }

@@ -12,14 +12,15 @@
 
 #include "batch/job_result.hpp"
 #include "batch/shard.hpp"
+#include "job/exit_status.hpp"
 
 namespace lathesim::batch {
 
 // The batch's exit status: every job passed; some failed (or timed out, crashed, did not
 // run) — this wins over —; some parts were out of tolerance.
-inline constexpr int kExitAllPassed = 0;
-inline constexpr int kExitSomeFailed = 1;
-inline constexpr int kExitOutOfTolerance = 3;
+inline constexpr int kExitAllPassed = job::kExitOk;
+inline constexpr int kExitSomeFailed = job::kExitBadInput;
+using job::kExitOutOfTolerance;
 
 struct BatchSummary {
   std::string version;  // lathesim's version and build ID

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "interp/printable_text.hpp"
 #include "interp/text/utf8.hpp"
 
 namespace lathesim::interp {
@@ -12,18 +13,39 @@ std::string format(const Diagnostic& diagnostic) {
   const char* severity = diagnostic.severity == Severity::Error     ? "error"
                          : diagnostic.severity == Severity::Warning ? "warning"
                                                                     : "note";
-  if (diagnostic.line <= 0) {
-    return fmt::format("{}: {}: {}", diagnostic.file, severity, diagnostic.message);
-  }
-  std::string text = fmt::format("{}:{}:{}: {}: {}\n", diagnostic.file, diagnostic.line,
-                                 diagnostic.column, severity, diagnostic.message);
-  text += diagnostic.sourceLine;
+  const std::string file = printable(diagnostic.file);
+  const std::string message = printable(diagnostic.message);
+  if (diagnostic.line <= 0) return fmt::format("{}: {}: {}", file, severity, message);
+  std::string text = fmt::format("{}:{}:{}: {}: {}\n", file, diagnostic.line, diagnostic.column, severity, message);
+  text += printable(diagnostic.sourceLine);
   text += '\n';
-  // The column counts code points, so one space per code point before it keeps the
-  // caret under the right character even after multi-byte (e.g. Chinese) text.
-  text.append(static_cast<std::size_t>(std::max(diagnostic.column - 1, 0)), ' ');
+  // The column counts code points, so one space per code point before it keeps the caret
+  // under the right character even after multi-byte (e.g. Chinese) text — counted in the
+  // line as shown, where an escaped control character takes four.
+  const std::string_view line = diagnostic.sourceLine;
+  std::size_t before = 0;
+  int column = 1;
+  for (; column < diagnostic.column && before < line.size(); ++column) before += codePointLength(line, before);
+  const int width = codePointCount(printable(line.substr(0, before))) + std::max(diagnostic.column - column, 0);
+  text.append(static_cast<std::size_t>(width), ' ');
   text += '^';
   return text;
+}
+
+LineStarts::LineStarts(std::string_view text) {
+  starts_.push_back(0);
+  for (std::size_t at = text.find('\n'); at != std::string_view::npos; at = text.find('\n', at + 1))
+    starts_.push_back(at + 1);
+}
+
+std::string LineStarts::lineOf(std::string_view text, int line) const {
+  if (line <= 0 || static_cast<std::size_t>(line) > starts_.size()) return {};
+  const std::size_t begin = starts_[static_cast<std::size_t>(line) - 1];
+  if (begin > text.size()) return {};
+  std::size_t end = text.find('\n', begin);
+  if (end == std::string_view::npos) end = text.size();
+  if (end > begin && text[end - 1] == '\r') --end;
+  return std::string(text.substr(begin, end - begin));
 }
 
 std::string lineOf(std::string_view text, int line) {

@@ -26,6 +26,17 @@ void placeInSetupFrame(std::vector<Move>& moves) {
   }
 }
 
+// A file with no block to run is the wrong file or a program cut short, not a part that
+// needs no machining: said as such rather than simulated as an untouched bar.
+Status refuseEmptyProgram(const Program& program, std::string_view programText) {
+  if (!program.blocks.empty()) return success();
+  const bool blank = programText.find_first_not_of(" \t\r\n") == std::string_view::npos;
+  return Error{0, 0,
+               blank ? "the program is empty: there is no block to run"
+                     : "the program holds only comments (and '%' or directive lines): there is no block to run; "
+                       "is it the right file, or was it cut short?"};
+}
+
 // A program of another control family is refused as a whole, naming the family.
 Status refuseForeignProgram(std::string_view programText) {
   const auto foreign = recogniseForeignProgram(programText);
@@ -54,6 +65,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   Program program = readProgram(programText, options.control.blockSkip, options.dialect);
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
+  if (status.ok()) status = refuseEmptyProgram(program, programText);
   if (status.ok()) status = runProgram(program, options, result.toolpath, warnings, notes);
   // The blocks are freed before compensation needs memory; the texts stay for the messages.
   program.blocks = {};
@@ -67,13 +79,19 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   if (status.ok()) status = compensateNoseRadius(moves);
   if (status.ok()) status = applyToolOffsets(moves);
   if (status.ok() && options.control.rapidPath == RapidPath::NonLinear) splitRapidsIntoAxisLegs(moves, options.machine);
+  if (status.ok())  // the dog-legs' second legs count too
+    if (moves.size() > options.maxMoves) {  // at the line of the move past the limit
+      const Move& past = moves[options.maxMoves];
+      status = *moveLimitError(moves.size(), options.maxMoves, past.line, past.column);
+    }
   if (status.ok() && options.machine.travel) status = checkTravel(moves, *options.machine.travel);
   // A diagnostic in the file it names: the program's own, or a subprogram's.
+  const LineStarts programLines(programText);
   const auto diagnostic = [&](Severity severity, const Error& e) {
-    std::string_view text = programText;
     for (const SourceText& source : program.sources)
-      if (!e.file.empty() && source.name == e.file) text = source.text;
-    return Diagnostic{severity, e.file.empty() ? fileName : e.file, e.line, e.column, e.message, lineOf(text, e.line)};
+      if (!e.file.empty() && source.name == e.file)
+        return Diagnostic{severity, e.file, e.line, e.column, e.message, lineOf(source.text, e.line)};
+    return Diagnostic{severity, fileName, e.line, e.column, e.message, programLines.lineOf(programText, e.line)};
   };
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.

@@ -20,6 +20,10 @@
 
 namespace lathesim::interp {
 
+/// Moves a program may make before it is refused (InterpreterOptions::maxMoves): a million
+/// blocks and their dog-leg rapids pass; nested repeats (M98 P9999… four deep) do not.
+inline constexpr std::size_t kDefaultMaxMoves = 2'000'000;
+
 struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
@@ -43,6 +47,7 @@ struct InterpreterOptions {
                                          // free): ends endless loops (execution/step_guard.hpp)
   std::map<int, double> macroVariables;  // common macro variables set before the run
                                          // (#100–#199, #500–#999)
+  std::size_t maxMoves = kDefaultMaxMoves;  // more is an error at the block that passes it
 };
 
 struct InterpretResult {

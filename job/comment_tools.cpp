@@ -7,6 +7,7 @@
 #include "geometry/iso_holder.hpp"
 #include "geometry/iso_insert.hpp"
 #include "geometry/tool_shape.hpp"
+#include "interp/text/regex_text.hpp"
 
 namespace lathesim::job {
 namespace {
@@ -68,7 +69,7 @@ std::optional<CommentTool> isoInsertTool(const std::string& comment, int number)
 std::optional<double> numberAfter(const std::string& text, const std::string& pattern) {
   std::smatch m;
   if (!std::regex_search(text, m, std::regex(pattern, icase))) return std::nullopt;
-  return std::stod(m[1]);
+  return interp::matchedNumber(m[1]);
 }
 
 std::optional<CommentTool> grooveBlade(const std::string& comment, int number, double barDiameterMm) {
@@ -109,7 +110,8 @@ std::optional<CommentTool> threadingTool(const std::string& comment, int number)
 
 }  // namespace
 
-std::optional<CommentTool> toolNamedIn(const std::string& comment, int number, double barDiameterMm) {
+std::optional<CommentTool> toolNamedIn(const std::string& written, int number, double barDiameterMm) {
+  const std::string comment = interp::regexText(written);
   if (auto tool = isoInsertTool(comment, number)) return tool;
   if (auto tool = grooveBlade(comment, number, barDiameterMm)) return tool;
   if (auto tool = drill(comment, number)) return tool;

@@ -14,6 +14,7 @@
 #include "job/comment_tools.hpp"
 #include "job/stock_option.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/printable_text.hpp"
 #include "job/control_setup.hpp"
 
 namespace lathesim::job {
@@ -89,13 +90,14 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.machineZero = setup.machineZero;
   options.maxSteps = setup.macro.maxSteps;
   options.macroVariables = setup.macro.variables;
+  options.maxMoves = setup.maxMoves;
   for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
   return options;
 }
 
 interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
   return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
-          interp::lineOf(programText, line)};
+          programLines.lineOf(programText, line)};
 }
 
 std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
@@ -105,12 +107,13 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
     if (!chosen) {
       std::string names;
       for (std::string_view n : interp::controlPresets()) names += (names.empty() ? "" : ", ") + std::string(n);
-      std::cerr << "lathesim: error: --control " << *overrides.controlPreset << ": no such control preset (expected "
+      std::cerr << "lathesim: error: --control " << interp::printable(*overrides.controlPreset) << ": no such control preset (expected "
                 << names << ")\n";
       return std::nullopt;
     }
     setup.control = std::move(*chosen);
   }
+  if (overrides.maxMoves) setup.maxMoves = *overrides.maxMoves;
   if (overrides.blockSkip)
     (void)setup.control.set("block_skip", std::string(*overrides.blockSkip ? "on" : "off"), "command line");
   if (overrides.maxSteps) setup.macro.maxSteps = *overrides.maxSteps;
@@ -120,7 +123,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
 std::optional<Job> loadJob(const JobRequest& request) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
-  Job job{defaultSetup(), {}, {}, {}, {}};
+  Job job{defaultSetup(), {}, {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     print(loaded.diagnostics);
@@ -135,17 +138,18 @@ std::optional<Job> loadJob(const JobRequest& request) {
 
   std::ifstream in(program, std::ios::binary);
   if (!in) {
-    std::cerr << program.string() << ": error: cannot read the program file\n";
+    std::cerr << interp::printable(program.string()) << ": error: cannot read the program file\n";
     return std::nullopt;
   }
   std::ostringstream text;
   text << in.rdbuf();
 
   job.programText = text.str();
+  job.programLines = interp::LineStarts(job.programText);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {
-      std::cerr << "lathesim: error: " << *problem << '\n';
+      std::cerr << "lathesim: error: " << interp::printable(*problem) << '\n';
       return std::nullopt;
     }
     job.setup.stock = std::get<sim::StockSpec>(stock);

@@ -20,6 +20,7 @@ struct Job {
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   std::string programText;
+  interp::LineStarts programLines;  // of programText: a warning per block stays linear
 
   /// A warning located in the program, ready to print and report.
   interp::Diagnostic warningAt(int line, int column, std::string message) const;
@@ -34,6 +35,7 @@ struct SetupOverrides {
   std::optional<std::string> controlPreset;  // --control: the preset; the setup's [control] keys still apply
   std::optional<bool> blockSkip;             // --block-skip on|off: control.block_skip
   std::optional<long long> maxSteps;         // --max-steps: [macro] max_steps
+  std::optional<std::size_t> maxMoves;       // --max-moves: [sim] max_moves
 };
 
 /// The setup with the command line's overrides; nullopt (the problem printed) for an unknown

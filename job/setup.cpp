@@ -314,10 +314,17 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   }
 }
 
-void readSim(const toml::table& table, std::optional<double>& voxelMm, Reporter& report) {
-  rejectUnknownKeys(table, "sim.", {"voxel"}, report);
+void readSim(const toml::table& table, Setup& setup, Reporter& report) {
+  rejectUnknownKeys(table, "sim.", {"voxel", "max_moves"}, report);
   if (const auto* node = table.get("voxel"))
-    if (auto v = positiveMm(*node, "sim.voxel", report)) voxelMm = *v;
+    if (auto v = positiveMm(*node, "sim.voxel", report)) setup.voxelMm = *v;
+  if (const auto* node = table.get("max_moves")) {
+    const auto* integer = node->as_integer();
+    if (!integer || integer->get() < 1)
+      report.at(node->source(), "sim.max_moves must be a whole number of moves, 1 or more, got " + describe(*node));
+    else
+      setup.maxMoves = static_cast<std::size_t>(integer->get());
+  }
 }
 
 void readChuck(const toml::table& table, sim::ChuckSpec& chuck, Reporter& report) {
@@ -481,7 +488,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   if (const auto* node = root.get("machine"))
     if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);
   if (const auto* node = root.get("sim"))
-    if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup.voxelMm, report);
+    if (const auto* table = tableAt(*node, "sim", report)) readSim(*table, setup, report);
   if (const auto* node = root.get("tool")) {
     setup.toolsGiven = true;
     readTools(*node, setup.tools, report);

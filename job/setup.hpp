@@ -13,6 +13,7 @@
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
+#include "interp/interpreter.hpp"
 #include "interp/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/execution/work_frame.hpp"
@@ -49,6 +50,7 @@ struct Setup {
   // (the control's parameter: GSK No.19, Fanuc No.5130, both in 0.1 lead). 0: none.
   double threadRunoutLeads = 0.0;
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
+  std::size_t maxMoves = interp::kDefaultMaxMoves;  // [sim] max_moves, --max-moves: more is an error
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end

@@ -39,9 +39,14 @@ std::optional<double> number(Reader& reader, const toml::table& row, const char*
   return std::nullopt;
 }
 
-/// Appends the arc from `from` to `to` (radius, Z) as chords, excluding `from`.
+/// More chords than this for one arc is no turned part's arc (a full circle of radius 100 m
+/// needs 70 000): refused rather than filling the memory.
+constexpr double kMaxArcChords = 100000;
+
+/// Appends the arc from `from` to `to` (radius, Z) as chords, excluding `from`; false (and
+/// nothing appended) when it would need more than kMaxArcChords.
 /// In the drawing view u = Z is to the right and v = r is up; clockwise is as seen there.
-void appendArc(std::vector<RZ>& out, const RZ& from, const RZ& to, const RZ& centre, bool clockwise) {
+bool appendArc(std::vector<RZ>& out, const RZ& from, const RZ& to, const RZ& centre, bool clockwise) {
   const auto angle = [&](const RZ& p) { return std::atan2(p.x() - centre.x(), p.y() - centre.y()); };
   const double radius = (from - centre).norm();
   double sweep = angle(to) - angle(from);
@@ -49,14 +54,19 @@ void appendArc(std::vector<RZ>& out, const RZ& from, const RZ& to, const RZ& cen
     while (sweep >= 0) sweep -= 2 * M_PI;
   else
     while (sweep <= 0) sweep += 2 * M_PI;
-  const double maxStep = 2 * std::acos(std::max(-1.0, 1 - kDrawingChordErrorMm / radius));
-  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / maxStep)));
+  // The angle whose chord strays e from the arc: 2·acos(1 − e/r), written as 4·asin(√(e/2r)),
+  // which stays exact where 1 − e/r would round to 1 (a radius of a kilometre or more).
+  const double maxStep = 4 * std::asin(std::min(1.0, std::sqrt(kDrawingChordErrorMm / (2 * radius))));
+  const double needed = std::ceil(std::abs(sweep) / maxStep);
+  if (!(needed <= kMaxArcChords)) return false;
+  const int steps = std::max(1, static_cast<int>(needed));
   const double start = angle(from);
   for (int s = 1; s < steps; ++s) {
     const double a = start + sweep * s / steps;
     out.emplace_back(centre.x() + radius * std::sin(a), centre.y() + radius * std::cos(a));
   }
   out.push_back(to);
+  return true;
 }
 
 /// The centre of an arc of signed radius R from a to b (R < 0: the longer arc), or nullopt.
@@ -195,7 +205,7 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
     if (const toml::array* c = row->get_as<toml::array>("center")) {
       const auto cx = c->size() == 2 ? c->get(0)->value<double>() : std::nullopt;
       const auto cz = c->size() == 2 ? c->get(1)->value<double>() : std::nullopt;
-      if (!cx || !cz) {
+      if (!cx || !cz || !std::isfinite(*cx) || !std::isfinite(*cz)) {
         reader.error(c->source(), "center must be [x diameter, z]");
         continue;
       }
@@ -215,7 +225,12 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
       if (!row->get("radius")) reader.error(row->source(), "an arc needs radius or center");
       continue;
     }
-    appendArc(outline, outline.back(), point, *centre, clockwise);
+    if (!appendArc(outline, outline.back(), point, *centre, clockwise)) {
+      std::ostringstream message;
+      message << "the arc's radius, " << (point - *centre).norm() << " mm, is too large for a turned part: drawn "
+              << "within " << kDrawingChordErrorMm << " mm it would take more than " << kMaxArcChords << " chords";
+      reader.error(row->source(), message.str());
+    }
   }
   result.diagnostics = std::move(reader.diagnostics);
   if (result.diagnostics.empty()) result.outline = std::move(outline);

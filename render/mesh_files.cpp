@@ -2,6 +2,7 @@
 
 #include <array>
 #include <bit>
+#include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -49,7 +50,7 @@ void writeBinaryStl(const TriangleMesh& mesh, const std::filesystem::path& stl) 
                              " triangles exceed binary STL's 32-bit count");
   }
   std::ofstream out(stl, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot open " + stl.string() + " for writing");
+  if (!out) throw std::runtime_error("cannot write " + stl.string() + ": " + std::strerror(errno));
 
   // The header must not begin with "solid": some readers would take the file for ASCII STL.
   std::array<char, kHeaderBytes> header{};
@@ -92,8 +93,8 @@ void writeBinaryStl(const TriangleMesh& mesh, const std::filesystem::path& stl) 
     out.write(buffer.data(), static_cast<std::streamsize>(n * kFacetBytes));
     done += n;
   }
-  out.flush();
-  if (!out) throw std::runtime_error("cannot write " + stl.string() + " (disk full?)");
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + stl.string() + ": " + std::strerror(errno));
 }
 
 // The `kind` cell value: 0 rapid, 1 feed, 2 clockwise arc (G02), 3 counter-clockwise arc
@@ -148,7 +149,15 @@ void writeToolpathVtp(const interp::Toolpath& toolpath, const std::filesystem::p
   writer->SetFileName(path.c_str());
   writer->SetInputData(polyData);
   writer->SetDataModeToBinary();  // base64 inside the XML; zlib-compressed (small data)
-  if (writer->Write() != 1) throw std::runtime_error("cannot write " + path);
+  // Written to memory and then to the file here: VTK's own file writing reports a full disk
+  // only on stderr and leaves the file short.
+  writer->WriteToOutputStringOn();
+  if (writer->Write() != 1) throw std::runtime_error("cannot write " + path + ": VTK could not encode the toolpath");
+  const std::string xml = writer->GetOutputString();
+  std::ofstream out(vtp, std::ios::binary | std::ios::trunc);
+  out << xml;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
 }
 
 }  // namespace lathesim::render

@@ -3,7 +3,9 @@
 #include "render/vtk_scene.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -134,7 +136,7 @@ void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png) {
   out.write(reinterpret_cast<const char*>(bytes->GetPointer(0)),
             static_cast<std::streamsize>(bytes->GetNumberOfValues()));
   out.close();
-  if (!out) throw std::runtime_error("cannot write " + png.string());
+  if (!out) throw std::runtime_error("cannot write " + png.string() + ": " + std::strerror(errno));
 }
 
 }  // namespace lathesim::render

@@ -8,10 +8,13 @@
 #include <tbb/parallel_reduce.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <mutex>
+#include <stdexcept>
 #include <numbers>
 
 #include "sim/stock_grid.hpp"
@@ -210,18 +213,33 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   return mesh;
 }
 
+namespace {
+
+// io::File::write opens its own stream and never looks at it again, so a full disk would
+// leave a truncated .vdb unnoticed. This writes the same archive (seekable, as File writes
+// it) into a stream whose state is checked.
+class CheckedVdbFile : public openvdb::io::File {
+ public:
+  using File::File;
+  void writeTo(std::ostream& out, const openvdb::GridCPtrVec& grids) const { Archive::write(out, grids, true); }
+};
+
+}  // namespace
+
 Stock::Stock(std::unique_ptr<StockGrid> grid) : impl_(std::move(grid)) {}
 
 void Stock::writeVdb(const std::filesystem::path& file, const Stock* part) const {
-  openvdb::GridPtrVec grids{impl_->grid};
+  openvdb::GridCPtrVec grids{impl_->grid};
   if (part) {
     openvdb::GridBase::Ptr piece = part->impl_->grid->copyGrid();  // shares the tree; only the name differs
     piece->setName("part");
     grids.push_back(piece);
   }
-  openvdb::io::File out(file.string());
-  out.write(grids);
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
+  CheckedVdbFile(file.string()).writeTo(out, grids);
   out.close();
+  if (!out) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
 }
 
 std::uint64_t Stock::activeVoxelCount() const { return impl_->grid->activeVoxelCount(); }

@@ -1,5 +1,6 @@
 #include "interp/control/gcode_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <span>
 
@@ -182,12 +183,19 @@ char cycleTaperLetter(int cycle, Dialect dialect) {
 }
 
 std::string supportedGCodes(Dialect dialect) {
-  std::string list;
-  for (int written = 0; written <= 999; ++written) {
-    const GCodeInfo* info = findGCode(written, dialect);
-    if (info != nullptr && info->supported) list += fmt::format("{}G{:02}", list.empty() ? "" : " ", written);
-  }
-  return list;
+  // Listed once per dialect: a list walks every number a G word can have, and every unknown
+  // G code of a program asks for it.
+  static const std::array<std::string, kDialects.size()> lists = [] {
+    std::array<std::string, kDialects.size()> listed;
+    for (std::size_t d = 0; d < kDialects.size(); ++d)
+      for (int written = 0; written <= 999; ++written) {
+        const GCodeInfo* info = findGCode(written, kDialects[d]);
+        if (info != nullptr && info->supported)
+          listed[d] += fmt::format("{}G{:02}", listed[d].empty() ? "" : " ", written);
+      }
+    return listed;
+  }();
+  return lists[static_cast<std::size_t>(std::find(kDialects.begin(), kDialects.end(), dialect) - kDialects.begin())];
 }
 
 std::string supportedMCodes() {

@@ -13,6 +13,7 @@
 #include "interp/cycles/thread_words.hpp"
 #include "interp/compensation/nose_compensation.hpp"
 #include "interp/cycles/peck_cycle.hpp"
+#include "interp/text/label_number.hpp"
 #include "interp/cycles/roughing_cycle.hpp"
 #include "interp/text/word_units.hpp"
 
@@ -259,6 +260,8 @@ Status CompoundCycle::patternRepeat() {
     const auto u = block_.take('U');
     const auto w = block_.take('W');
     const auto r = block_.take('R');
+    if (r && r->value >= 1 && std::floor(r->value) != r->value)  // R2. is read as 2, R2.5 is no count
+      return errorAt(r->column, fmt::format("G73 {} is not a number of passes d: {}", r->text(), decimalPointSlip(*r)));
     if (r && (r->value < 1 || std::floor(r->value) != r->value)) {
       return errorAt(r->column, fmt::format("G73 {} is not a number of passes d: expected a "
                                             "whole number ≥ 1",

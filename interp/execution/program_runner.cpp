@@ -193,6 +193,8 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   state_ = std::move(done.state);
   listPartsCatcher(index, words);  // before the block's moves: it acts before them
   toolpath_.moves.insert(toolpath_.moves.end(), done.moves.begin(), done.moves.end());
+  const ProgramBlock& made = program_.blocks[index];
+  if (auto tooMany = moveLimitError(toolpath_.moves.size(), options_.maxMoves, made.line, made.column)) return *tooMany;
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
   listStop(index, words);
   if (flow.call) {
@@ -299,6 +301,15 @@ Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int 
 }
 
 }  // namespace
+
+std::optional<Error> moveLimitError(std::size_t moves, std::size_t maxMoves, int line, int column) {
+  if (moves <= maxMoves) return std::nullopt;
+  return Error{line, column,
+               fmt::format("the program makes more than {} moves (the limit) by this block: a toolpath that long takes "
+                           "hours to simulate, and nested repeats can ask for billions; if it is meant, raise the "
+                           "limit with --max-moves or [sim] max_moves",
+                           maxMoves)};
+}
 
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
                   std::vector<Error>& warnings, std::vector<Error>& notes) {

@@ -9,6 +9,7 @@
 // moves carry the line of the call in the main program that led there, so every line of the
 // toolpath is a line of the program.
 
+#include <optional>
 #include <vector>
 
 #include "interp/interpreter.hpp"
@@ -22,5 +23,9 @@ namespace lathesim::interp {
 /// read error is reported when execution reaches it.
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
                   std::vector<Error>& warnings, std::vector<Error>& notes);
+
+/// When `moves` passes `maxMoves` (InterpreterOptions::maxMoves), the error at `line`,
+/// `column` (the block that made the move past the limit) that names the limit.
+std::optional<Error> moveLimitError(std::size_t moves, std::size_t maxMoves, int line, int column);
 
 }  // namespace lathesim::interp

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "interp/text/label_number.hpp"
+
 namespace lathesim::interp {
 namespace {
 
@@ -23,6 +25,8 @@ Result<SubprogramCall> takeSubprogramCall(ParsedBlock& block, const Code& m98) {
     return Error{block.line, m98.column,
                  "M98 needs P: the program number (P1000 calls O1000; P31000 calls it 3 times)"};
   }
+  if (const std::string slip = decimalPointSlip(*p); !slip.empty())
+    return Error{block.line, p->column, fmt::format("{} is not a program number: {}", p->text(), slip)};
   if (!isPlainInteger(*p)) {
     return Error{block.line, p->column,
                  fmt::format("{} is not a program number: expected digits only, e.g. P1000 "
@@ -50,6 +54,8 @@ Result<SubprogramCall> takeSubprogramCall(ParsedBlock& block, const Code& m98) {
                    fmt::format("{} and {} both give the repeat count; give it once", p->text(),
                                l->text())};
     }
+    if (const std::string slip = decimalPointSlip(*l); !slip.empty())
+      return Error{block.line, l->column, fmt::format("{} is not a repeat count: {}", l->text(), slip)};
     if (!isPlainInteger(*l) || l->value < 1 || l->value > kMaxRepeats) {
       return Error{block.line, l->column,
                    fmt::format("{} is not a repeat count: expected a whole number from 1 to {}",

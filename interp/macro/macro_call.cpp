@@ -67,6 +67,12 @@ Result<MacroCall> readMacroCall(const std::vector<Word>& words, int line) {
       }
       default: break;
     }
+    if (word.letter < 'A' || word.letter > 'Z') {  // a comma word (",A30."): its letter is kept in lower case
+      return Error{line, word.column,
+                   fmt::format("'{}' in a G65 block: a macro call's arguments are letters and numbers one after "
+                               "another, with no comma between them (D40 A30.)",
+                               word.text())};
+    }
     const int letterIndex = word.letter - 'A';
     if (word.letter == 'I' || word.letter == 'J' || word.letter == 'K') {
       const int position = word.letter - 'I';

@@ -5,6 +5,7 @@
 #include <regex>
 #include <string>
 
+#include "interp/text/regex_text.hpp"
 #include "interp/text/utf8.hpp"
 
 namespace lathesim::interp {
@@ -52,7 +53,7 @@ std::optional<ForeignProgram> recogniseForeignProgram(std::string_view text) {
     std::size_t end = text.find('\n', begin);
     if (end == std::string_view::npos) end = text.size();
     ++lineNumber;
-    const std::string line = withoutComments(text.substr(begin, end - begin));
+    const std::string line = regexText(withoutComments(text.substr(begin, end - begin)));
     const std::size_t first = line.find_first_not_of(" \t\r");
     if (first != std::string::npos) {
       if (firstLine && line[first] == '$') {

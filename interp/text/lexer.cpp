@@ -311,7 +311,11 @@ Result<std::optional<RawBlock>> BlockReader::next() {
                        "comment opened here is not closed: expected ')' before the end of the "
                        "line"};
         }
-        comments.emplace_back(text_.substr(at_ + 1, end - at_ - 1));
+        const std::string_view body = text_.substr(at_ + 1, end - at_ - 1);
+        if (const std::size_t inner = body.find('('); inner != std::string_view::npos && !block.parenInComment)
+          block.parenInComment = RawBlock::ParenInComment{column_, column_ + 1 + codePointCount(body.substr(0, inner)),
+                                                          column_ + 1 + codePointCount(body)};
+        comments.emplace_back(body);
         advance(end + 1 - at_);
         continue;
       }
@@ -411,6 +415,21 @@ std::optional<Error> strangeCharacter(const RawBlock& block) {
   return std::nullopt;
 }
 
+// A ')' outside a comment: most often the end of a comment that was meant to hold another.
+std::optional<Error> strayClosingParenthesis(const RawBlock& block) {
+  const auto stray = std::find_if(block.chars.begin(), block.chars.end(), [](const SourceChar& c) { return c.text == ")"; });
+  if (stray == block.chars.end()) return std::nullopt;
+  const auto& nested = block.parenInComment;
+  if (nested && nested->closeColumn < stray->column) {
+    return Error{block.line, stray->column,
+                 fmt::format("')' closes no comment: comments do not nest, so the '(' at column {} is text of the "
+                             "comment opened at column {}, which the ')' at column {} closed; write the inner "
+                             "parentheses another way or close the first comment before opening another",
+                             nested->innerColumn, nested->openColumn, nested->closeColumn)};
+  }
+  return Error{block.line, stray->column, "')' closes no comment: a comment opens with '(' on the same line"};
+}
+
 bool isLetterO(const SourceChar& c) { return c.text == "O" || c.text == "o"; }
 
 // The letter O typed for a zero: right after an address letter (`GO`) or inside a number
@@ -435,6 +454,7 @@ std::optional<Error> letterOForZero(const RawBlock& block, std::size_t at, char 
 
 Result<std::vector<Token>> lexBlock(const RawBlock& block) {
   if (auto strange = strangeCharacter(block)) return *strange;
+  if (auto paren = strayClosingParenthesis(block)) return *paren;
   std::vector<Token> tokens;
   const auto& chars = block.chars;
   const bool macroCall = holdsMacroCall(chars);

@@ -57,6 +57,14 @@ struct RawBlock {
   std::vector<std::string> commentsAbove;  // comment-only lines directly above it
   std::optional<std::size_t> skipFrom;     // a '/' inside the block: the index into chars where
                                            // the words it skips start
+  /// The first of its comments that holds a '(' (comments do not nest: the first ')' closes
+  /// the comment, and a ')' meant for the outer one is then left over in the block).
+  struct ParenInComment {
+    int openColumn = 0;   // the comment's '('
+    int innerColumn = 0;  // the '(' inside it
+    int closeColumn = 0;  // the ')' that closed it
+  };
+  std::optional<ParenInComment> parenInComment;
 };
 
 /// Something the reader skipped that the user should know of, located like an error.

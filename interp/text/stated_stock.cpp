@@ -3,6 +3,7 @@
 #include <regex>
 #include <string>
 
+#include "interp/text/regex_text.hpp"
 #include "interp/text/utf8.hpp"
 
 namespace lathesim::interp {
@@ -12,11 +13,19 @@ using std::regex_constants::icase;
 
 const std::string kNumber = R"(([0-9]+\.?[0-9]*|\.[0-9]+))";
 
+// The bar the two matched numbers give, or nullopt when either is too long to be a number.
+std::optional<StatedStock> stated(const std::string& diameter, const std::string& length) {
+  const auto d = matchedNumber(diameter);
+  const auto l = matchedNumber(length);
+  if (!d || !l) return std::nullopt;
+  return StatedStock{*d, *l, 0, 0, {}};
+}
+
 std::optional<StatedStock> billet(const std::string& line) {
   static const std::regex pattern(R"(^\s*\[\s*BILLET\s+X\s*)" + kNumber + R"(\s+Z\s*)" + kNumber, icase);
   std::smatch m;
   if (!std::regex_search(line, m, pattern)) return std::nullopt;
-  return StatedStock{std::stod(m[1]), std::stod(m[2]), 0, 0, {}};
+  return stated(m[1], m[2]);
 }
 
 std::optional<StatedStock> stockComment(const std::string& comment) {
@@ -26,9 +35,8 @@ std::optional<StatedStock> stockComment(const std::string& comment) {
   static const std::regex length(R"((?:\bLENGTH|\bLG|\bL)\s*[=:]?\s*)" + kNumber, icase);
   static const std::regex byTimes(R"((?:Ø|Φ|⌀|\bD|\bDIA)?\s*)" + kNumber + R"(\s*(?:X|×|\*)\s*)" + kNumber, icase);
   std::smatch d, l, t;
-  if (std::regex_search(comment, d, diameter) && std::regex_search(comment, l, length))
-    return StatedStock{std::stod(d[1]), std::stod(l[1]), 0, 0, {}};
-  if (std::regex_search(comment, t, byTimes)) return StatedStock{std::stod(t[1]), std::stod(t[2]), 0, 0, {}};
+  if (std::regex_search(comment, d, diameter) && std::regex_search(comment, l, length)) return stated(d[1], l[1]);
+  if (std::regex_search(comment, t, byTimes)) return stated(t[1], t[2]);
   return std::nullopt;
 }
 
@@ -41,7 +49,7 @@ std::optional<StatedStock> stockStatedIn(std::string_view programText) {
     std::size_t end = programText.find('\n', begin);
     if (end == std::string_view::npos) end = programText.size();
     ++lineNumber;
-    std::string line(programText.substr(begin, end - begin));
+    std::string line = regexText(programText.substr(begin, end - begin));
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::optional<StatedStock> found = billet(line);
     std::size_t at = found ? line.find('[') : std::string::npos;

@@ -27,6 +27,18 @@ TEST(Diagnostic, WarningAndWholeFileForms) {
             "a.nc: error: cannot read");
 }
 
+// A line holding ESC (and a C1 CSI) is shown with them written out; the caret stays under
+// the character its column names, however wide the escapes before it.
+TEST(Diagnostic, ControlCharactersAreWrittenOutAndTheCaretFollows) {
+  const Diagnostic d{Severity::Error, "t\x1b.nc", 1, 11, "bad \x07 here", "\x1b[2J X1\xc2\x9b" "5 @"};
+  EXPECT_EQ(format(d),
+            "t\\x1b.nc:1:11: error: bad \\x07 here\n"
+            "\\x1b[2J X1\\u009b5 @\n" +
+                std::string(18, ' ') + "^");
+  // A column past the end of the line still counts its own spaces.
+  EXPECT_EQ(format({Severity::Error, "a.nc", 1, 5, "m", "\tX"}), "a.nc:1:5: error: m\n\tX\n    ^");
+}
+
 TEST(Diagnostic, LineOfStripsLineEndings) {
   const std::string_view text = "first\r\nsecond\nthird";
   EXPECT_EQ(lineOf(text, 1), "first");
@@ -34,6 +46,15 @@ TEST(Diagnostic, LineOfStripsLineEndings) {
   EXPECT_EQ(lineOf(text, 3), "third");
   EXPECT_EQ(lineOf(text, 4), "");
   EXPECT_EQ(lineOf(text, 0), "");
+}
+
+// The lines found once (LineStarts: a warning on every block of a long program made the
+// quoting quadratic, 40 000 blocks in 8 s, now 1.6 s) are the lines lineOf finds.
+TEST(Diagnostic, LineStartsQuoteTheSameLinesAsLineOf) {
+  for (const std::string_view text : {"first\r\nsecond\nthird", "", "\n\n", "a\nb\n"}) {
+    const LineStarts lines(text);
+    for (int line = -1; line <= 5; ++line) EXPECT_EQ(lines.lineOf(text, line), lineOf(text, line)) << line;
+  }
 }
 
 }  // namespace

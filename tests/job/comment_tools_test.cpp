@@ -73,3 +73,21 @@ TEST(CommentTools, CommentsThatNameNoToolMountNothing) {
 
 }  // namespace
 }  // namespace lathesim::job
+
+namespace lathesim::job {
+namespace {
+
+// A comment of 300 000 characters overflowed the stack in std::regex (a crash); a drill of
+// 400 digits made std::stod throw. Neither names a drill; a pitch of 400 digits is no pitch
+// (the partial-profile insert); the usual comment still names its tool.
+TEST(CommentTools, VeryLongCommentsAndNumbersAreReadWithoutHarm) {
+  EXPECT_FALSE(toolNamedIn("DRILL " + std::string(300000, '1'), 5, kBarMm));
+  EXPECT_FALSE(toolNamedIn("DRILL " + std::string(400, '9'), 5, kBarMm));
+  const auto thread = toolNamedIn("THREAD 60 DEG P" + std::string(400, '9'), 5, kBarMm);
+  ASSERT_TRUE(thread);
+  EXPECT_NE(thread->description.find("partial-profile"), std::string::npos) << thread->description;
+  EXPECT_TRUE(toolNamedIn("DRILL 12" + std::string(300000, ' '), 5, kBarMm));
+}
+
+}  // namespace
+}  // namespace lathesim::job

@@ -350,6 +350,18 @@ TEST(ParseSetupErrors, NonPositiveVoxel) {
   EXPECT_EQ(d.line, 3);
 }
 
+TEST(ParseSetupErrors, MaxMovesIsAWholePositiveNumber) {
+  for (const char* value : {"0", "-5", "2.5", "\"many\""}) {
+    const Diagnostic d = onlyError(std::string("[sim]\nmax_moves = ") + value + "\n");
+    EXPECT_EQ(d.message, std::string("sim.max_moves must be a whole number of moves, 1 or more, got ") + value);
+    EXPECT_EQ(d.line, 2);
+  }
+  const SetupResult result = parse("[sim]\nmax_moves = 5000000\n");
+  ASSERT_TRUE(result.setup);
+  EXPECT_EQ(result.setup->maxMoves, 5'000'000u);
+  EXPECT_EQ(parse("").setup->maxMoves, interp::kDefaultMaxMoves);
+}
+
 TEST(ParseSetupErrors, WrongTypeForANumber) {
   const Diagnostic d = onlyError("[stock]\nface_z = \"2\"\n");
   EXPECT_EQ(d.message, "stock.face_z must be a number of mm, got \"2\"");

@@ -107,6 +107,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, radius = 10}]\n", 1, "need arc"},
         BadDrawing{"[part]\n[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 50\nz = 1\n", 1, "unknown key 'part'"},
         BadDrawing{"[[profile]]\nx = 30\nz = = 0\n", 3, ""},
+        // Beside the fuzz harness (whose million runs missed them): the long way round a
+        // radius no part has needs billions of chords (and a step that 1 − e/r rounded to 0
+        // gave an infinite count, cast to int); a centre at infinity made every distance NaN.
+        BadDrawing{"profile = [{x = 0, z = 0}, {x = 2, z = 0},\n"
+                   "  {x = 2, z = -2, arc = \"ccw\", center = [2e13, -1]}]\n",
+                   2, "is too large for a turned part"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\", radius = -1e9}]\n", 1,
+                   "is too large for a turned part"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = -10, arc = \"cw\", center = [inf, 0]}]\n", 1,
+                   "center must be [x diameter, z]"},
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\npitch = 2\n", 2, "needs z_range"},
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [0, -9]\npitch = 2\n", 3,
                    "z_range must be [least, greatest]"},
@@ -118,6 +128,14 @@ INSTANTIATE_TEST_SUITE_P(
                    "major must be [least, greatest]"},
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [-9, 0]\npitch = 2\nlead = 2\n", 5,
                    "unknown thread key 'lead'"}));
+
+// A nearly straight arc (a CAD export's radius of ten kilometres) is drawn, as one chord.
+TEST(Drawing, ArcOfAHugeRadiusOverAShortSpanIsOneChord) {
+  const DrawingResult r =
+      parseDrawing("profile = [{x = 30, z = 0}, {x = 30, z = -10, arc = \"cw\", radius = 1e7}]\n", "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  EXPECT_EQ(r.outline->size(), 2u);
+}
 
 // A thread callout: its zone, pitch, starts, hand and diameter limits.
 TEST(Drawing, ThreadCallout) {

@@ -45,3 +45,18 @@ TEST(ControlFamily, FanucProgramsAreNotMistaken) {
 
 }  // namespace
 }  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// A line of 300 000 characters overflowed the stack in std::regex (a crash): the signs are
+// looked for in a line's first thousand characters.
+TEST(ControlFamily, VeryLongLinesAreReadWithoutHarm) {
+  EXPECT_FALSE(recogniseForeignProgram("G00 X1 Z1\no<" + std::string(300000, 'x') + "\nM30\n"));
+  const auto siemens = recogniseForeignProgram(std::string(300000, ' ') + "\nDIAMON\n");
+  ASSERT_TRUE(siemens);
+  EXPECT_EQ(siemens->line, 2);
+}
+
+}  // namespace
+}  // namespace lathesim::interp

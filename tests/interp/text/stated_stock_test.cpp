@@ -44,3 +44,21 @@ TEST(StatedStock, StatementsWithoutBothNumbersOrKeywordDoNotCount) {
 
 }  // namespace
 }  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// Hostile lines: std::regex recursed once per character and overflowed the stack on a line of
+// 300 000 characters (a crash); a number of 400 digits made std::stod throw.
+TEST(StatedStock, VeryLongLinesAndNumbersAreReadWithoutHarm) {
+  EXPECT_FALSE(stockStatedIn("G00 X1 Z1\n(STOCK D" + std::string(300000, '1') + ")\nM30\n"));
+  EXPECT_FALSE(stockStatedIn("(STOCK D" + std::string(400, '9') + " L80)\n"));
+  EXPECT_FALSE(stockStatedIn("[BILLET X" + std::string(400, '9') + " Z80\n"));
+  EXPECT_FALSE(stockStatedIn(std::string(100000, '(') + ")\n"));
+  const auto stated = stockStatedIn(std::string(200000, ' ') + "\n(STOCK D40 L80)\n");
+  ASSERT_TRUE(stated);
+  EXPECT_EQ(stated->line, 2);
+}
+
+}  // namespace
+}  // namespace lathesim::interp

@@ -1,0 +1,36 @@
+#pragma once
+// What the std::regex patterns that read a program's lines and comments (other control
+// families, a stated bar, tools named in comments) may be given. libstdc++'s regex recurses
+// once per character it tries, so a long enough text overflows the stack: a line of 300 000
+// characters crashed lathesim. They look at a line's or comment's first kRegexTextChars
+// characters only, far past any real block or comment.
+
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "interp/text/utf8.hpp"
+
+namespace lathesim::interp {
+
+inline constexpr std::size_t kRegexTextChars = 1000;
+
+/// `text` cut after kRegexTextChars bytes (at the start of a code point).
+inline std::string regexText(std::string_view text) {
+  if (text.size() <= kRegexTextChars) return std::string(text);
+  std::size_t end = kRegexTextChars;
+  while (end > 0 && !startsCodePoint(text[end])) --end;
+  return std::string(text.substr(0, end));
+}
+
+/// The value of digits a pattern matched (`[0-9]+\.?[0-9]*`), or nullopt when they are too
+/// many to be a finite number (std::stod would throw).
+inline std::optional<double> matchedNumber(const std::string& digits) {
+  const double value = std::strtod(digits.c_str(), nullptr);
+  if (!std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+}  // namespace lathesim::interp

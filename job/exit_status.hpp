@@ -1,0 +1,14 @@
+#pragma once
+// The lathesim command's exit statuses, the same for every subcommand (batch sums its jobs'
+// up the same way), so that a script can tell a bad program from a bad command line.
+
+namespace lathesim::job {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;        // a bad program, setup, drawing or manifest, or outputs not written
+inline constexpr int kExitBadCommandLine = 2;  // an unknown option, a missing or malformed argument
+inline constexpr int kExitOutOfTolerance = 3;  // check: the part is not within the drawing's tolerance
+/// Ended by a signal it caught (SIGINT 130, SIGTERM 143), as a shell reports it.
+inline constexpr int exitOnSignal(int signal) { return 128 + signal; }
+
+}  // namespace lathesim::job

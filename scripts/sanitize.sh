@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer (gcc's) in
+# build-asan/, and run: an invalid access, a leak or undefined behaviour fails the test it
+# happens in. Leaks inside system libraries are suppressed by scripts/lsan.supp, each entry
+# saying why; nothing of lathesim's own is.
+#
+#   scripts/sanitize.sh          the whole suite (ctest)
+#   scripts/sanitize.sh ci       what the test command runs (scripts/test.sh), within CI's
+#                                time: every geometry, interp, job and measure test, and the
+#                                command's bad-input, exit-status and output-safety tests
+#
+# SANITIZE_JOBS sets the build's parallelism (default: the CPUs).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scope=${1:-all}
+build=build-asan
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLATHESIM_BENCHMARKS=OFF \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" >/dev/null
+
+export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_init_order=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
+jobs=${SANITIZE_JOBS:-$(nproc)}
+
+if [[ $scope == all ]]; then
+  cmake --build "$build" --parallel "$jobs"
+  exec ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --timeout 900
+fi
+
+# The command's tests that feed it bad input or stop it, and need no long simulation.
+app_filter='ExitStatus.*:CommandLine.*:TerminalSafety.*:OutputFolder.*:OutputFailure.FileSize*:InterruptedRun.*'
+app_filter+=':Cli.BadNumber*:Cli.O0006*:Cli.UnknownSetupKey*:Cli.VoxelTooFine*:Cli.AtLineThatDoesNotExist*'
+app_filter+=':CheckCommand.*'
+cmake --build "$build" --parallel "$jobs" --target geometry_tests interp_tests job_tests measure_tests app_tests lathesim
+status=0
+for suite in geometry interp job measure; do
+  echo "sanitize: ${suite}_tests"
+  "$build/tests/$suite/${suite}_tests" --gtest_brief=1 || status=1
+done
+echo "sanitize: app_tests ($app_filter)"
+"$build/tests/app/app_tests" --gtest_brief=1 --gtest_filter="$app_filter" || status=1
+exit $status
