@@ -36,8 +36,6 @@ struct InterpreterOptions {
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
-  double threadRunoutLeads = 0.0;  // G92/G76 run-out when the program gives none, in leads
-                                   // (GSK No.19 and Fanuc No.5130 count it in 0.1 lead)
   WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)
   std::vector<std::filesystem::path> programDirectories;  // where M98 finds programs the text
                                                          // lacks, in order (program_library.hpp)

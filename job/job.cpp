@@ -85,7 +85,6 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.dialect = setup.dialect;
   options.control = setup.control.parameters;
   options.offsets = setup.offsets;
-  options.threadRunoutLeads = setup.threadRunoutLeads;
   options.workOffsets = setup.workOffsets;
   options.machineZero = setup.machineZero;
   options.maxSteps = setup.macro.maxSteps;

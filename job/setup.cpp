@@ -303,14 +303,20 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   if (const auto* node = table.get("rapid")) readRapid(*node, setup.machine, report);
   if (const auto* node = table.get("max_rpm"))
     if (auto v = positiveRate(*node, "machine.max_rpm", "rpm", report)) setup.machine.maxRpm = *v;
+  // The older spelling of control.thread_runout.
   if (const auto* node = table.get("thread_runout")) {
+    const auto given = std::find_if(setup.control.settings.begin(), setup.control.settings.end(),
+                                    [](const interp::ControlSetting& s) { return s.key == "thread_runout"; });
     const auto leads = numberOf(*node);
-    if (!leads || !(*leads >= 0.0) || !(*leads <= 9.9))
+    if (given != setup.control.settings.end() && given->source != "preset")
+      report.at(node->source(), "machine.thread_runout and control.thread_runout both set the thread run-out; give "
+                                "control.thread_runout alone");
+    else if (!leads || !(*leads >= 0.0) || !(*leads <= 9.9))
       report.at(node->source(), "machine.thread_runout must be a number of leads from 0 to 9.9 (the control's "
                                 "G92/G76 run-out parameter, GSK No.19 and Fanuc No.5130 in 0.1 lead), got " +
                                     describe(*node));
     else
-      setup.threadRunoutLeads = *leads;
+      (void)setup.control.set("thread_runout", *leads, "setup");
   }
 }
 

@@ -45,10 +45,8 @@ struct Setup {
   std::optional<std::pair<double, double>> travelZMm;          // [machine] travel_z = [min, max]
   interp::Dialect dialect = interp::Dialect::FanucA;  // [machine] dialect: how codes are written
   interp::Control control;  // [control]: the preset and its parameters, how the machine behaves
-                            // ([machine] initial_feed_mode is control.power_on_feed_mode)
-  // [machine] thread_runout: the run-out G92 and G76 make when the program gives none, in leads
-  // (the control's parameter: GSK No.19, Fanuc No.5130, both in 0.1 lead). 0: none.
-  double threadRunoutLeads = 0.0;
+                            // ([machine] initial_feed_mode is control.power_on_feed_mode,
+                            // [machine] thread_runout control.thread_runout)
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::size_t maxMoves = interp::kDefaultMaxMoves;  // [sim] max_moves, --max-moves: more is an error
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start

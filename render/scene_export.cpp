@@ -4,6 +4,7 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 #include <vtkActor.h>
@@ -52,12 +53,20 @@ std::string decodeBase64(const std::string& text) {
   return out;
 }
 
-/// The cutting moves (or the others) as polylines at (r, 0, z).
-vtkSmartPointer<vtkPolyData> toolpathPolyData(const interp::Toolpath& toolpath, bool cutting) {
+/// How a move is drawn, each in its own colour as in the pictures (picture_annotations.hpp).
+enum class DrawnAs { Feed, Thread, Rapid };
+
+DrawnAs drawnAs(const interp::Move& move) {
+  if (move.kind == interp::MoveKind::Thread) return DrawnAs::Thread;
+  return interp::isCutting(move.kind) ? DrawnAs::Feed : DrawnAs::Rapid;
+}
+
+/// The moves drawn as `kind` as polylines at (r, 0, z).
+vtkSmartPointer<vtkPolyData> toolpathPolyData(const interp::Toolpath& toolpath, DrawnAs kind) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
   for (const interp::Move& move : toolpath.moves) {
-    if (interp::isCutting(move.kind) != cutting || move.kind == interp::MoveKind::Dwell) continue;
+    if (drawnAs(move) != kind || move.kind == interp::MoveKind::Dwell) continue;
     const std::vector<RZ> drawn = movePoints(move);
     lines->InsertNextCell(static_cast<vtkIdType>(drawn.size()));
     for (const RZ& p : drawn) lines->InsertCellPoint(points->InsertNextPoint(p.x(), 0.0, p.y()));
@@ -85,9 +94,10 @@ std::string partGltf(const TriangleMesh& part, const interp::Toolpath& toolpath)
   ensureDisplay();  // a VTK window, though nothing is drawn
   vtkNew<vtkRenderer> renderer;
   if (!part.triangles.empty()) renderer->AddActor(colouredActor(toPolyData(part), kMetalColour));
-  for (bool cutting : {true, false}) {
-    const auto lines = toolpathPolyData(toolpath, cutting);
-    if (lines->GetNumberOfCells() > 0) renderer->AddActor(colouredActor(lines, cutting ? kFeedColour : kRapidColour));
+  for (const auto& [kind, colour] : {std::pair{DrawnAs::Feed, kFeedColour}, std::pair{DrawnAs::Thread, kThreadColour},
+                                      std::pair{DrawnAs::Rapid, kRapidColour}}) {
+    const auto lines = toolpathPolyData(toolpath, kind);
+    if (lines->GetNumberOfCells() > 0) renderer->AddActor(colouredActor(lines, colour));
   }
   // The exporter puts the scene under a node holding the camera's view matrix: an identity
   // camera (at the origin, looking down −Z) leaves the coordinates as they are.

@@ -49,6 +49,11 @@ enum class CornerWords { LD, CommaCR };
 /// from the corner along each line (Fanuc's ,C always measures that).
 enum class ChamferSize { Length, FromCorner };
 
+/// What an E word in a thread block (G32, G92, G76) gives, on a dialect where E is not the
+/// run-out (hnc): not a thread word (GSK), the lead like F but with more digits (Fanuc ⚠),
+/// or threads per inch.
+enum class ThreadEWord { None, Lead, ThreadsPerInch };
+
 /// The defaults are the gsk980tdi preset's values (control_preset.cpp; a test keeps them equal).
 struct ControlParameters {
   RapidPath rapidPath{};
@@ -76,6 +81,14 @@ struct ControlParameters {
   double patternReliefZMm = 0.0;    // G73 Δk
   int patternPasses = 1;            // G73 d
   double peckRetractMm = 0.5;       // G74/G75 e
+  int threadFinishingPasses = 1;    // G76 m
+  int threadToolAngleDeg = 60;      // G76 a
+  double threadMinDepthMm = 0.0;    // G76 Δdmin, a radius
+  double threadAllowanceMm = 0.0;   // G76 d, a radius
+  // The thread run-out of G92 and G76 when the program gives none, in leads (GSK No.19 and
+  // Fanuc No.5130 count it in 0.1 lead): as long along the axis as it pulls out.
+  double threadRunoutLeads = 0.0;
+  ThreadEWord threadEWord{};
 };
 
 }  // namespace lathesim::interp

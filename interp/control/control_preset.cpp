@@ -105,6 +105,12 @@ const std::vector<ParameterDefinition>& parameterTable() {
       number<&P::patternReliefZMm>("g73_relief_z", -1000.0, 1000.0),
       number<&P::patternPasses>("g73_passes", 1.0, 9999.0, true),
       number<&P::peckRetractMm>("g74_retract", 0.0, 1000.0),
+      number<&P::threadFinishingPasses>("g76_finishing_passes", 0.0, 99.0, true),
+      number<&P::threadToolAngleDeg>("g76_tool_angle", 0.0, 99.0, true),
+      number<&P::threadMinDepthMm>("g76_min_depth", 0.0, 1000.0),
+      number<&P::threadAllowanceMm>("g76_allowance", 0.0, 1000.0),
+      number<&P::threadRunoutLeads>("thread_runout", 0.0, 9.9),
+      choice<&P::threadEWord>("thread_e_word", {"none", "lead", "threads_per_inch"}),
   };
   return table;
 }
@@ -159,6 +165,12 @@ const std::vector<PresetDefinition>& presetTable() {
            {"g73_relief_z", 0.0, "GSK No.54; its factory value assumed", false},
            {"g73_passes", 1.0, "GSK No.55; its factory value assumed", false},
            {"g74_retract", 0.5, "GSK No.56; its factory value assumed", false},
+           {"g76_finishing_passes", 1.0, "GSK No.57; its factory value assumed", false},
+           {"g76_tool_angle", 60.0, "GSK No.58; its factory value assumed", false},
+           {"g76_min_depth", 0.0, "GSK No.59; its factory value assumed", false},
+           {"g76_allowance", 0.0, "GSK No.60; its factory value assumed", false},
+           {"thread_runout", 0.0, "GSK No.19 (in 0.1 lead); its factory value assumed", false},
+           {"thread_e_word", "none", "§3.24.1, §3.24.9, §3.24.12: the lead is F, or I in threads per inch; no E", true},
        }},
       {"fanuc-0i-t",
        std::nullopt,
@@ -187,6 +199,12 @@ const std::vector<PresetDefinition>& presetTable() {
            {"g73_relief_z", 0.0, "Fanuc 5136; its value assumed", false},
            {"g73_passes", 1.0, "Fanuc 5137; its value assumed", false},
            {"g74_retract", 0.5, "Fanuc 5139; its value assumed", false},
+           {"g76_finishing_passes", 1.0, "Fanuc 5142; its value assumed", false},
+           {"g76_tool_angle", 60.0, "Fanuc 5143; its value assumed", false},
+           {"g76_min_depth", 0.0, "Fanuc 5140; its value assumed", false},
+           {"g76_allowance", 0.0, "Fanuc 5141; its value assumed", false},
+           {"thread_runout", 0.0, "Fanuc 5130 (in 0.1 lead); its value assumed", false},
+           {"thread_e_word", "lead", "E the lead with more digits for inch threads (Fanuc 0-TD G34; 0i-T unchecked)", false},
        }},
   };
   return table;

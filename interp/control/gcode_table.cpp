@@ -97,7 +97,8 @@ constexpr std::array kDistanceCodes{
 };
 
 // HNC writes the compound cycles in a one-block form of its own (e.g. G71 U R P Q X Z F):
-// the same numbers as system A with other words, which lathesim does not read yet.
+// the same numbers as system A with other words, which lathesim does not read yet (its G76 it
+// reads: interp/cycles/compound_cycle.cpp).
 constexpr std::array kHncOwnCompoundCycles{
     GCodeInfo{70, GGroup::NonModal, false, "finishing cycle; hnc's form is not read yet"},
     GCodeInfo{71, GGroup::NonModal, false, "OD/ID roughing cycle in hnc's one-block form"},
@@ -105,8 +106,6 @@ constexpr std::array kHncOwnCompoundCycles{
     GCodeInfo{73, GGroup::NonModal, false, "pattern repeating cycle in hnc's one-block form"},
     GCodeInfo{74, GGroup::NonModal, false, "face peck drilling cycle in hnc's form"},
     GCodeInfo{75, GGroup::NonModal, false, "grooving cycle in hnc's form"},
-    GCodeInfo{76, GGroup::NonModal, false,
-              "multiple threading cycle in hnc's one-block form, which no source at hand describes"},
 };
 
 // A code a dialect writes differently from system A. `meaning` is the system-A number,
@@ -134,7 +133,7 @@ constexpr std::array kHnc{
     Renumbered{94, 98}, Renumbered{95, 99}, Renumbered{90, kAbsolute}, Renumbered{91, kIncremental},
     Renumbered{50, kNoSuchCode}, Renumbered{98, kNoSuchCode}, Renumbered{99, kNoSuchCode},
     Renumbered{70, kHncOwn}, Renumbered{71, kHncOwn}, Renumbered{72, kHncOwn}, Renumbered{73, kHncOwn},
-    Renumbered{74, kHncOwn}, Renumbered{75, kHncOwn}, Renumbered{76, kHncOwn},
+    Renumbered{74, kHncOwn}, Renumbered{75, kHncOwn},
 };
 
 std::span<const Renumbered> renumberingOf(Dialect dialect) {

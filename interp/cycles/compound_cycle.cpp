@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -61,6 +62,17 @@ class CompoundCycle {
   Status peck(const PeckCycle& cycle);  // G74, G75
   Status multipleThreading();  // G76
   Status threadingParameters();  // G76's first block
+  Status hncMultipleThreading();  // HNC's one-block G76
+  // The words of a G76 that the checks point at.
+  struct ThreadPassWords {
+    const std::optional<Word>& height;      // k
+    const std::optional<Word>& firstDepth;  // Δd
+    const std::optional<Word>& endZ;        // Z or W
+  };
+  Status checkThreadPassWords(const ThreadPassWords& words, const RZ& start, const RZ& end, char heightLetter,
+                              char depthLetter) const;
+  Status threadPasses(const RZ& start, const RZ& end, const MultipleThreadingParams& params,
+                      const ThreadPassWords& words);
 
   const Code& code_;
   ParsedBlock& block_;
@@ -413,6 +425,7 @@ Status CompoundCycle::threadingParameters() {
 
 // G76 X(U) Z(W) R(i) P(k) Q(Δd) F(L): the passes (g76_cycle.hpp).
 Status CompoundCycle::multipleThreading() {
+  if (options_.dialect == Dialect::Hnc) return hncMultipleThreading();
   if (!block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W')) return threadingParameters();
   const ThreadingWords words = threadingWords(options_.dialect);
   const auto x = block_.take('X');
@@ -424,7 +437,7 @@ Status CompoundCycle::multipleThreading() {
   const auto firstDepth = block_.take('Q');
   if (auto s = oneOf(x, u, "X"); !s.ok()) return s;
   if (auto s = oneOf(z, w, "Z"); !s.ok()) return s;
-  auto lead = takeLeadMm(block_, state_, words, code_.text, code_.column, feedGiven_);
+  auto lead = takeLeadMm(block_, state_, words, options_.control, code_.text, code_.column, feedGiven_);
   if (!lead.ok()) return lead.error();
   const RZ start = state_.position;
   RZ end = start;
@@ -432,56 +445,160 @@ Status CompoundCycle::multipleThreading() {
   if (u) end.x() += length(*u) / 2.0;
   if (z) end.y() = length(*z);
   if (w) end.y() += length(*w);
-  if (end.y() == start.y()) {
-    return errorAt(z ? z->column : w ? w->column : code_.column,
-                   fmt::format("G76 cannot cut a face thread: its end Z must differ from the start point's Z{:g}",
-                               start.y()));
-  }
-  for (const auto& [word, meaning] : {std::pair{&k, "the thread height k"}, std::pair{&firstDepth, "the first depth of cut Δd"}}) {
-    if (!*word) {
-      return errorAt(code_.column, fmt::format("G76 needs {}({}): {} (without a decimal point in least increments, 0.001 mm at IS-B)",
-                                               word == &k ? 'P' : 'Q', meaning, meaning));
-    }
-    if (!((*word)->value > 0)) {
-      return errorAt((*word)->column, fmt::format("G76 {} is not {}: expected a number > 0", (*word)->text(), meaning));
-    }
-  }
+  const NumberReading reading = NumberReading::of(options_.control, state_.inch);
   const CompoundCycleParams& kept = state_.compound;
+  const std::optional<Word> endZ = z ? z : w;
+  const ThreadPassWords passWords{k, firstDepth, endZ};
   MultipleThreadingParams params;
   params.finishingPasses = kept.threadFinishingPasses;
   params.toolAngleDeg = kept.threadToolAngleDeg;
   params.minDepthStepMm = kept.threadMinDepthMm;
   params.finishAllowanceMm = kept.threadAllowanceMm;
   params.taperMm = i ? length(*i) : 0.0;
-  params.heightMm = incrementLengthMm(*k, NumberReading::of(options_.control, state_.inch));
-  params.firstDepthMm = incrementLengthMm(*firstDepth, NumberReading::of(options_.control, state_.inch));
   params.leadMm = lead.value();
-  if (params.finishAllowanceMm >= params.heightMm) {
-    return errorAt(k->column, fmt::format("G76 {}: the thread height k = {:g} mm must exceed the finishing "
-                                             "allowance d = {:g} mm of the first block",
-                                             k->text(), params.heightMm, params.finishAllowanceMm));
-  }
+  if (auto s = checkThreadPassWords(passWords, start, end, 'P', 'Q'); !s.ok()) return s;
+  params.heightMm = incrementLengthMm(*k, reading);
+  params.firstDepthMm = incrementLengthMm(*firstDepth, reading);
   const RunoutWords runoutWords{kept.threadRunoutAcrossMm, kept.threadRunoutAlongMm};
-  const double defaultLeads = kept.threadRunoutLeads.value_or(options_.threadRunoutLeads);
+  const double defaultLeads = kept.threadRunoutLeads.value_or(options_.control.threadRunoutLeads);
   const ThreadRunout runout = cycleRunout(runoutWords, defaultLeads * params.leadMm);
   params.runoutAlongMm = runout.alongMm;
   params.runoutAcrossMm = std::abs(runout.acrossMm);
   state_.compound.threadRunoutAcrossMm.reset();  // GSK's J and K hold for one cycle
   state_.compound.threadRunoutAlongMm.reset();
+  return threadPasses(start, end, params, passWords);
+}
 
+// The checks every G76 form makes on the end point and on k and Δd before they are read.
+Status CompoundCycle::checkThreadPassWords(const ThreadPassWords& words, const RZ& start, const RZ& end,
+                                           char heightLetter, char depthLetter) const {
+  if (end.y() == start.y()) {
+    return errorAt(words.endZ ? words.endZ->column : code_.column,
+                   fmt::format("{} cannot cut a face thread: its end Z must differ from the start point's Z{:g}",
+                               code_.text, start.y()));
+  }
+  for (const auto& [word, letter, meaning] : {std::tuple{&words.height, heightLetter, "the thread height k"},
+                                              std::tuple{&words.firstDepth, depthLetter, "the first depth of cut Δd"}}) {
+    if (!*word) {
+      const bool increments = options_.dialect != Dialect::Hnc;
+      return errorAt(code_.column, fmt::format("{} needs {}({}): {}{}", code_.text, letter, meaning, meaning,
+                                               increments ? " (without a decimal point in least increments, 0.001 "
+                                                            "mm at IS-B)"
+                                                          : ", a radius in mm"));
+    }
+    if (!((*word)->value > 0)) {
+      return errorAt((*word)->column,
+                     fmt::format("{} {} is not {}: expected a number > 0", code_.text, (*word)->text(), meaning));
+    }
+  }
+  return success();
+}
+
+// The passes from A = `start` to D = `end` once every value is read (g76_cycle.hpp).
+Status CompoundCycle::threadPasses(const RZ& start, const RZ& end, const MultipleThreadingParams& params,
+                                   const ThreadPassWords& words) {
+  if (params.finishAllowanceMm >= params.heightMm) {
+    return errorAt(words.height->column, fmt::format("{} {}: the thread height k = {:g} mm must exceed the finishing "
+                                                     "allowance d = {:g} mm{}",
+                                                     code_.text, words.height->text(), params.heightMm,
+                                                     params.finishAllowanceMm,
+                                                     options_.dialect == Dialect::Hnc ? "" : " of the first block"));
+  }
   constexpr int kMaxPasses = 1000;
   const auto depths = roughPassDepths(params.firstDepthMm, params.minDepthStepMm,
                                       params.heightMm - params.finishAllowanceMm, kMaxPasses);
   if (!depths) {
-    return errorAt(firstDepth->column,
-                   fmt::format("G76 {} with Δdmin {:g} mm would take more than {} rough passes to reach k − d = {:g} "
+    return errorAt(words.firstDepth->column,
+                   fmt::format("{} {} with Δdmin {:g} mm would take more than {} rough passes to reach k − d = {:g} "
                                "mm; give a larger Q(Δd) or Δdmin",
-                               firstDepth->text(), params.minDepthStepMm, kMaxPasses,
+                               code_.text, words.firstDepth->text(), params.minDepthStepMm, kMaxPasses,
                                params.heightMm - params.finishAllowanceMm));
   }
   threadStateWarnings(state_, block_.line, code_.column, code_.text, warnings_);
   outcome_.legs = multipleThreadingLegs(start, end, params, *depths);
   return success();
+}
+
+// HNC's one-block G76 C(c) R(r) E(e) A(a) X(x) Z(z) I(i) K(k) U(d) V(Δdmin) Q(Δd) P(p) F(L)
+// (the HNC-21T/18iT programming manual's G76, as copied by Chinese course notes: c the finishing
+// passes 1–99, r and e the run-out along Z and X as increments, a the tool angle 80/60/55/30/29/0
+// — those four modal —, x z the end point C (distances under G91), i the taper (radius at the
+// start minus at the end), k the thread height, d the finishing allowance, Δdmin the smallest
+// depth step, Δd the first depth, all radii in mm; p the spindle angle the passes start at; L
+// the lead). Its passes are Fanuc's: one flank, Δd·√n clamped by Δdmin, d, c finishing passes.
+// U/V given: this block's d/Δdmin; else the control's g76_allowance/g76_min_depth.
+Status CompoundCycle::hncMultipleThreading() {
+  const ThreadingWords words = threadingWords(options_.dialect);
+  const auto c = block_.take('C');
+  const auto a = block_.take('A');
+  const auto x = block_.take('X');
+  const auto z = block_.take('Z');
+  const auto i = block_.take('I');
+  const auto k = block_.take('K');
+  const auto allowance = block_.take('U');
+  const auto minDepth = block_.take('V');
+  const auto firstDepth = block_.take('Q');
+  const auto angle = block_.take('P');
+  CompoundCycleParams& kept = state_.compound;
+  if (c) {
+    if (c->value < 1 || c->value > 99 || std::floor(c->value) != c->value) {
+      return errorAt(c->column, fmt::format("{} {} is not a number of finishing passes: expected a whole number 1 "
+                                            "to 99",
+                                            code_.text, c->text()));
+    }
+    kept.threadFinishingPasses = static_cast<int>(c->value);
+  }
+  if (a) {
+    const std::vector<double> angles{80, 60, 55, 30, 29, 0};
+    if (std::find(angles.begin(), angles.end(), a->value) == angles.end()) {
+      return errorAt(a->column, fmt::format("{} {}: the tool angle is not one this control takes (80, 60, 55, 30, "
+                                            "29 or 0)",
+                                            code_.text, a->text()));
+    }
+    kept.threadToolAngleDeg = a->value;
+  }
+  const NumberReading reading = NumberReading::of(options_.control, state_.inch);
+  // R and E, the run-out: increments along Z and X (E a radius ⚠), signed as vectors; their
+  // sizes are used, the cycle points them away from the cut.
+  if (const auto r = block_.take('R')) kept.threadRunoutAlongMm = std::abs(lengthMm(*r, reading));
+  if (const auto e = block_.take('E')) kept.threadRunoutAcrossMm = std::abs(lengthMm(*e, reading));
+  for (const auto* word : {&allowance, &minDepth}) {
+    if (auto s = notNegative(*word, word == &allowance ? "a finishing allowance d" : "a minimum depth Δdmin"); !s.ok())
+      return s;
+  }
+  auto lead = takeLeadMm(block_, state_, words, options_.control, code_.text, code_.column, feedGiven_);
+  if (!lead.ok()) return lead.error();
+  if (!x && !z) {
+    return errorAt(code_.column, fmt::format("{} needs X and Z: the end point C of the thread ({} in this dialect is "
+                                             "one block, no parameter block)",
+                                             code_.text, code_.text));
+  }
+  const RZ start = state_.position;
+  RZ end = start;
+  if (x) end.x() = (state_.incremental ? start.x() : 0.0) + length(*x) / 2.0;
+  if (z) end.y() = (state_.incremental ? start.y() : 0.0) + length(*z);
+  const ThreadPassWords passWords{k, firstDepth, z};
+  if (auto s = checkThreadPassWords(passWords, start, end, 'K', 'Q'); !s.ok()) return s;
+  MultipleThreadingParams params;
+  params.finishingPasses = kept.threadFinishingPasses;
+  params.toolAngleDeg = kept.threadToolAngleDeg;
+  params.minDepthStepMm = minDepth ? lengthMm(*minDepth, reading) : options_.control.threadMinDepthMm;
+  params.finishAllowanceMm = allowance ? lengthMm(*allowance, reading) : options_.control.threadAllowanceMm;
+  params.taperMm = i ? length(*i) : 0.0;
+  params.heightMm = lengthMm(*k, reading);
+  params.firstDepthMm = lengthMm(*firstDepth, reading);
+  params.leadMm = lead.value();
+  params.startAngleDeg = angle ? std::fmod(std::abs(angle->value), 360.0) : 0.0;
+  const double across = kept.threadRunoutAcrossMm.value_or(0.0);
+  const double along = kept.threadRunoutAlongMm.value_or(0.0);
+  if (across != 0.0 && along == 0.0) {
+    return errorAt(code_.column, fmt::format("{}: a run-out E of {:g} mm along X needs its length along Z, R (the "
+                                             "run-out's R and E are kept from the {} blocks before)",
+                                             code_.text, across, code_.text));
+  }
+  params.runoutAlongMm = across == 0.0 ? 0.0 : along;
+  params.runoutAcrossMm = across;
+  return threadPasses(start, end, params, passWords);
 }
 
 }  // namespace

@@ -2,20 +2,13 @@
 // The first-block values of the compound cycles (G71 U R, G72 W R, G73 U W R, G74/G75 R,
 // G76 P Q R):
 // modal, kept until a first block changes them. Before any is given the control uses its
-// parameters (control_parameters.hpp: GSK No.51–56, Fanuc 5132–5139). Lengths in mm.
+// parameters (control_parameters.hpp: GSK No.19, No.51–60, Fanuc 5130, 5132–5143). Lengths in mm.
 
 #include <optional>
 
 #include "interp/control/control_parameters.hpp"
 
 namespace lathesim::interp {
-
-// G76's first-block values before a program gives them (GSK No.57–60; Fanuc No.5142, 5143,
-// 5140, 5141 ⚠): not yet among the control's parameters; the values are assumed.
-constexpr int kDefaultThreadFinishingPasses = 1;     // GSK No.57: m
-constexpr double kDefaultThreadToolAngleDeg = 60.0;  // GSK No.58: a
-constexpr double kDefaultThreadMinDepthMm = 0.0;     // GSK No.59: Δdmin
-constexpr double kDefaultThreadAllowanceMm = 0.0;    // GSK No.60: d
 
 struct CompoundCycleParams {
   double roughingDepthMm = 0;    // G71 U / G72 W, first block
@@ -27,11 +20,11 @@ struct CompoundCycleParams {
   bool roughingGiven = false;    // a G71/G72 first block was read (or its absence warned)
   bool patternGiven = false;     // a G73 first block was read (or its absence warned)
   // G76 P(m)(r)(a) Q(Δdmin) R(d) [J K] (first block)
-  int threadFinishingPasses = kDefaultThreadFinishingPasses;
-  std::optional<double> threadRunoutLeads;  // r/10: the run-out in leads; unset: the machine's
-  double threadToolAngleDeg = kDefaultThreadToolAngleDeg;
-  double threadMinDepthMm = kDefaultThreadMinDepthMm;
-  double threadAllowanceMm = kDefaultThreadAllowanceMm;
+  int threadFinishingPasses = 1;
+  std::optional<double> threadRunoutLeads;  // r/10: the run-out in leads; unset: the control's
+  double threadToolAngleDeg = 60;
+  double threadMinDepthMm = 0;
+  double threadAllowanceMm = 0;
   std::optional<double> threadRunoutAcrossMm;  // GSK J, K: for the next second block only
   std::optional<double> threadRunoutAlongMm;
 
@@ -44,6 +37,10 @@ struct CompoundCycleParams {
     params.patternReliefZMm = control.patternReliefZMm;
     params.patternPasses = control.patternPasses;
     params.peckRetractMm = control.peckRetractMm;
+    params.threadFinishingPasses = control.threadFinishingPasses;
+    params.threadToolAngleDeg = control.threadToolAngleDeg;
+    params.threadMinDepthMm = control.threadMinDepthMm;
+    params.threadAllowanceMm = control.threadAllowanceMm;
     return params;
   }
 };

@@ -13,7 +13,7 @@
 //   step 2  thread  B_n → the pass's end at Z_D, with the run-out as in G92 (thread_cut.cpp)
 //   step 3  rapid   → E′ = (X_A, Z of the run-out's end): X back to A's X
 //   step 4  rapid   E′ → A   Z back to A
-// Every pass starts at spindle angle 0 (G76 has no start angle); the cycle ends at A.
+// Every pass starts at the same spindle angle (0 on Fanuc/GSK, HNC's P); the cycle ends at A.
 
 #include "interp/cycles/g76_cycle.hpp"
 
@@ -76,6 +76,7 @@ std::vector<CycleLeg> multipleThreadingLegs(const RZ& start, const RZ& end, cons
     const double across = (alongZ ? sigma : -zeta) * params.runoutAcrossMm;
     ThreadMotion motion;
     motion.leadMm = params.leadMm;
+    motion.startAngleDeg = params.startAngleDeg;
     add({MoveKind::Rapid, start, b, 1});
     const std::vector<CycleLeg> cut = threadCutLegs(b, passEnd, {params.runoutAlongMm, across}, motion, 2);
     for (const CycleLeg& leg : cut) add(leg);

@@ -22,6 +22,7 @@ struct MultipleThreadingParams {
   double leadMm = 0;
   double runoutAlongMm = 0;      // the run-out, as in G92 (r·L/10 when J/K are not given)
   double runoutAcrossMm = 0;
+  double startAngleDeg = 0;      // the spindle angle every pass starts at (HNC P; Fanuc: 0)
 };
 
 /// The cumulative depths of the rough passes (lathe-cycles.md §6, GSK 3.24.12): Δd·√n

@@ -9,7 +9,8 @@
 //   step 3  rapid   C′ → D  D = (X_A, Z_C): back along X (the short axis) to A's X
 //   step 4  rapid   D → A   back along Z; the cycle ends where it began
 // A multi-start thread (GSK L, HNC C: n starts) repeats steps 1–4 for each start k = 0…n−1,
-// each waiting for the spindle at firstStartDeg + 360k/n, so the grooves lie a turn/n apart.
+// each waiting for the spindle at firstStartDeg + 360k/n, so the grooves lie a turn/n apart;
+// firstStartDeg is Fanuc's Q (0.001°, not modal) or HNC's P (°, kept).
 // The taper alarm is G90's (R and U of opposite signs with |R| > |U/2|), checked by the caller.
 
 #include "interp/cycles/g92_cycle.hpp"

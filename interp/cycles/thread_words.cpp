@@ -1,6 +1,7 @@
 #include "interp/cycles/thread_words.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -12,8 +13,42 @@ namespace lathesim::interp {
 constexpr double kMaxStartAngleThousandths = 360000.0;
 constexpr double kThousandthsPerDegree = 1000.0;
 
-Result<double> takeLeadMm(ParsedBlock& block, ModalState& state, const ThreadingWords& words, std::string_view name,
-                          int anchor, bool fHere) {
+namespace {
+
+// E as the control reads it in a thread block of a dialect whose E is not the run-out: sets
+// the lead in `state`, or says why it cannot.
+std::optional<Error> takeLeadE(ParsedBlock& block, ModalState& state, const ControlParameters& control,
+                               const ThreadingWords& words, std::string_view name, bool leadGivenHere) {
+  const auto e = block.take('E');
+  if (!e) return std::nullopt;
+  if (control.threadEWord == ThreadEWord::None) {
+    return Error{block.line, e->column,
+                 fmt::format("{} is not a word of {} on this control: give the lead as F (mm, or inch under G20, "
+                             "per revolution){} (control.thread_e_word = \"lead\" or \"threads_per_inch\" "
+                             "reads E)",
+                             e->text(), name, words.threadsPerInchI ? " or I (threads per inch)" : "")};
+  }
+  const bool perInch = control.threadEWord == ThreadEWord::ThreadsPerInch;
+  if (leadGivenHere) {
+    return Error{block.line, e->column,
+                 fmt::format("{} takes the lead once: F or E ({}), not both", name,
+                             perInch ? "threads per inch" : "the lead with more digits")};
+  }
+  if (!(e->value > 0)) {
+    return Error{block.line, e->column,
+                 fmt::format("{} is not {}: expected a number > 0", e->text(),
+                             perInch ? "a number of threads per inch" : "a lead")};
+  }
+  // Threads per inch whatever G20/G21 says; a lead in the unit in force.
+  state.feed = perInch ? kMmPerInch / e->value : NumberReading::of(control, state.inch).mm(e->value);
+  return std::nullopt;
+}
+
+}  // namespace
+
+Result<double> takeLeadMm(ParsedBlock& block, ModalState& state, const ThreadingWords& words,
+                          const ControlParameters& control, std::string_view name, int anchor, bool fHere) {
+  bool leadGivenHere = fHere;
   if (words.threadsPerInchI) {
     if (const auto tpi = block.take('I')) {
       if (fHere) {
@@ -27,7 +62,11 @@ Result<double> takeLeadMm(ParsedBlock& block, ModalState& state, const Threading
                      fmt::format("{} is not a number of threads per inch: expected a number > 0", tpi->text())};
       }
       state.feed = kMmPerInch / tpi->value;  // threads per inch, whatever G20/G21 says
+      leadGivenHere = true;
     }
+  }
+  if (!words.hncRunoutRE) {  // HNC's E is the run-out (takeRunoutWords)
+    if (auto problem = takeLeadE(block, state, control, words, name, leadGivenHere)) return *problem;
   }
   if (!state.feed) {
     return Error{block.line, anchor,
@@ -70,12 +109,13 @@ Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& rea
     const double mm = lengthMm(*across, reading);
     kept.acrossMm = signedAcross ? mm : std::abs(mm);
   }
-  if (const auto along = block.take(alongLetter)) {
-    if (words.hncRunoutRE && along->value < 0) {
-      return Error{block.line, along->column,
-                   fmt::format("{} {} is not a run-out length: expected a number ≥ 0", name, along->text())};
-    }
-    kept.alongMm = std::abs(lengthMm(*along, reading));
+  // HNC's R is a vector along Z (R-3 on a cut toward −Z): its size is the length.
+  if (const auto along = block.take(alongLetter)) kept.alongMm = std::abs(lengthMm(*along, reading));
+  if (words.hncRunoutRE && kept.acrossMm.value_or(0.0) != 0.0 && kept.alongMm.value_or(0.0) == 0.0) {
+    return Error{block.line, block.column,
+                 fmt::format("{}: a run-out E of {:g} mm along X needs its length along Z, R (R and E are kept "
+                             "from the {} blocks before)",
+                             name, *kept.acrossMm, name)};
   }
   return kept;
 }

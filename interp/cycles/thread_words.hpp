@@ -1,6 +1,6 @@
 #pragma once
-// Reading what the thread codes G32, G92 and G76 share: the lead (F, or GSK's I in threads
-// per inch), the start angle Q, the run-out words, and the warnings a thread block earns
+// Reading what the thread codes G32, G92 and G76 share: the lead (F, GSK's I in threads
+// per inch, Fanuc's E), the start angle Q, the run-out words, and the warnings a thread block earns
 // from the state it runs in (G41/G42, G96). Lengths in mm, X ones as radii.
 
 #include <optional>
@@ -18,10 +18,12 @@
 namespace lathesim::interp {
 
 /// The lead in force for thread code `name` at `anchor`: GSK's I (threads per inch, metric
-/// or inch input alike) sets it to 25.4/I mm when the dialect has it; otherwise the F in
-/// force (applied before, G20 converted). An error when neither is set or both are given.
-Result<double> takeLeadMm(ParsedBlock& block, ModalState& state, const ThreadingWords& words, std::string_view name,
-                          int anchor, bool fHere);
+/// or inch input alike) sets it to 25.4/I mm when the dialect has it; E sets it as the control
+/// reads E (control.thread_e_word: the lead in the unit in force, or threads per inch; an error
+/// on a control without it), except in hnc, whose E is the run-out; otherwise the F in force
+/// (applied before, G20 converted). An error when none is set or two are given.
+Result<double> takeLeadMm(ParsedBlock& block, ModalState& state, const ThreadingWords& words,
+                          const ControlParameters& control, std::string_view name, int anchor, bool fHere);
 
 /// Q, the start angle (lathe-cycles.md §2): 0.001° without a decimal point, 0–360000, not
 /// modal (0 when absent). With a decimal point it is still read in 0.001° (GSK), with a
@@ -32,7 +34,8 @@ Result<double> takeStartAngleDeg(ParsedBlock& block, std::string_view name, std:
 /// as `reading` says), over
 /// `kept` (the values retained from the blocks before): a word given replaces the kept one.
 /// GSK's J and K of G92/G76 are unsigned (negative values count by their size); G32's J is
-/// signed. HNC's E is signed, a radius ⚠; R a length along Z.
+/// signed. HNC's E is signed, a radius ⚠; R a length along Z, either sign (its size counts);
+/// E without R is an error (where the run-out starts is not given).
 Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& reading, const ThreadingWords& words,
                                     RunoutWords kept, bool signedAcross, std::string_view name);
 

@@ -707,7 +707,7 @@ Status Executor::applyThreadCut(const std::optional<Code>& code) {
                                        "plane; select it with G18",
                                        name, state_.plane == Plane::XY ? "G17" : "G19"));
   }
-  auto lead = takeLeadMm(block_, state_, words, name, anchor, feedGivenHere_);
+  auto lead = takeLeadMm(block_, state_, words, options_.control, name, anchor, feedGivenHere_);
   if (!lead.ok()) return lead.error();
   auto angle = takeStartAngleDeg(block_, name, warnings_);
   if (!angle.ok()) return angle.error();
@@ -753,7 +753,7 @@ Status Executor::applyThreadCycle(const std::optional<Code>& code) {
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
   const auto r = block_.take(taperLetter);
-  auto lead = takeLeadMm(block_, state_, words, name, anchor, feedGivenHere_);
+  auto lead = takeLeadMm(block_, state_, words, options_.control, name, anchor, feedGivenHere_);
   if (!lead.ok()) return lead.error();
   ThreadCycleRetained& threadKept = state_.threadCycle;
   auto runoutWords = takeRunoutWords(block_, reading(), words, threadKept.runout, words.hncRunoutRE, name);
@@ -771,6 +771,11 @@ Status Executor::applyThreadCycle(const std::optional<Code>& code) {
   }
   if (words.hncStartsCP) {
     if (const auto p = block_.take('P')) firstStartDeg = std::fmod(std::abs(p->value), 360.0);
+  } else {
+    // Fanuc's G92 Q: the start angle in 0.001°, not modal (B-63944EN §4.1.2; as G32's Q).
+    auto angle = takeStartAngleDeg(block_, name, warnings_);
+    if (!angle.ok()) return angle.error();
+    firstStartDeg = angle.value();
   }
 
   const RZ start = state_.position;  // A
@@ -807,7 +812,7 @@ Status Executor::applyThreadCycle(const std::optional<Code>& code) {
   // Without run-out words the control's parameter decides (GSK No.19, Fanuc No.5130).
   const ThreadRunout runout =
       words.hncRunoutRE ? ThreadRunout{runoutWords.value().alongMm.value_or(0.0), std::abs(runoutWords.value().acrossMm.value_or(0.0))}
-                        : cycleRunout(runoutWords.value(), options_.threadRunoutLeads * params.leadMm);
+                        : cycleRunout(runoutWords.value(), options_.control.threadRunoutLeads * params.leadMm);
   params.runoutAlongMm = runout.alongMm;
   params.runoutAcrossMm = std::abs(runout.acrossMm);
   params.starts = starts;

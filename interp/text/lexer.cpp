@@ -62,7 +62,8 @@ bool readsAsProse(std::string_view tail) {
 // G65 block, where every letter but G L N O P passes an argument.
 // B and C are read as words so that a code taking them (G10's C, HNC G82's C) can; left
 // over, they are refused as the axes this lathe lacks (block_executor.cpp). A is a direct
-// drawing dimension's angle, D the GSK's corner radius, E HNC G82's run-out.
+// drawing dimension's angle, D the GSK's corner radius, E HNC G82's run-out. V is known only in
+// a G76 block (HNC G76's Δdmin).
 constexpr std::string_view kKnownLetters = "ABCDEFGIJKLMNOPQRSTUWXZ";
 // The letters Fanuc writes after a comma (",A" angle, ",C" chamfer, ",R" corner radius).
 constexpr std::string_view kCommaLetters = "ACR";
@@ -123,20 +124,21 @@ std::string numberAt(const std::vector<SourceChar>& chars, std::size_t from, std
   return number;
 }
 
-// Whether the block holds the word G65 written as a plain number (G65, g065).
-bool holdsMacroCall(const std::vector<SourceChar>& chars) {
+// Whether the block holds the word G`code` written as a plain number (G65, g065).
+bool holdsGCode(const std::vector<SourceChar>& chars, double code) {
   for (std::size_t i = 0; i < chars.size(); ++i) {
     if (!isLetter(chars[i]) || std::toupper(static_cast<unsigned char>(chars[i].text[0])) != 'G') continue;
     std::size_t end = 0;
     const std::string number = numberAt(chars, i + 1, end);
-    if (isWellFormedNumber(number) && readNumber(number) == 65.0) return true;
+    if (isWellFormedNumber(number) && readNumber(number) == code) return true;
   }
   return false;
 }
 
 // Why `letter` (upper case) cannot start a word here, if it cannot.
-std::optional<std::string> letterProblem(char letter, const std::string& written, bool macroCall) {
+std::optional<std::string> letterProblem(char letter, const std::string& written, bool macroCall, bool threading) {
   if (macroCall) return std::nullopt;  // G65's arguments: A–Z (G L N O P are its own words)
+  if (letter == 'V' && threading) return std::nullopt;  // HNC G76's V(Δdmin); left over elsewhere
   if (letter == 'Y') return std::string("Y: this machine has no Y axis; a lathe moves in X (diameter) and Z only");
   if (kKnownLetters.find(letter) == std::string_view::npos) {
     return fmt::format("unknown letter '{}': lathe G-code words start with one of {}", written, kKnownLetters);
@@ -457,7 +459,8 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
   if (auto paren = strayClosingParenthesis(block)) return *paren;
   std::vector<Token> tokens;
   const auto& chars = block.chars;
-  const bool macroCall = holdsMacroCall(chars);
+  const bool macroCall = holdsGCode(chars, 65);
+  const bool threading = holdsGCode(chars, 76);
   std::size_t i = 0;
   int bracketDepth = 0;
   while (i < chars.size()) {
@@ -490,7 +493,7 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
         continue;
       }
       const char letter = colon ? 'O' : run[0];
-      if (auto problem = letterProblem(letter, head.text, macroCall || colon)) {
+      if (auto problem = letterProblem(letter, head.text, macroCall || colon, threading)) {
         return Error{block.line, head.column, *problem};
       }
       Word word;

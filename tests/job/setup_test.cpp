@@ -233,12 +233,19 @@ TEST(ParseSetupErrors, DialectAndFeedModeAreNamedChoices) {
             "machine.initial_feed_mode must be one of \"per_revolution\", \"per_minute\", got 99");
 }
 
+// [machine] thread_runout is the older spelling of control.thread_runout; both at once is an error.
 TEST(ParseSetup, ThreadRunoutInLeads) {
-  EXPECT_EQ(parse("").setup->threadRunoutLeads, 0.0);
-  const SetupResult result = parse("[machine]\nthread_runout = 1.5\n");
-  ASSERT_TRUE(result.setup.has_value());
-  EXPECT_EQ(result.setup->threadRunoutLeads, 1.5);
-  EXPECT_EQ(interpreterOptionsOf(*result.setup).threadRunoutLeads, 1.5);
+  EXPECT_EQ(parse("").setup->control.parameters.threadRunoutLeads, 0.0);
+  for (const char* text : {"[machine]\nthread_runout = 1.5\n", "[control]\nthread_runout = 1.5\n"}) {
+    const SetupResult result = parse(text);
+    ASSERT_TRUE(result.setup.has_value()) << text;
+    EXPECT_EQ(interpreterOptionsOf(*result.setup).control.threadRunoutLeads, 1.5) << text;
+  }
+  EXPECT_EQ(onlyError("[control]\nthread_runout = 1.5\n[machine]\nthread_runout = 1.0\n").message,
+            "machine.thread_runout and control.thread_runout both set the thread run-out; give control.thread_runout "
+            "alone");
+  EXPECT_EQ(onlyError("[control]\nthread_runout = 10\n").message,
+            "control.thread_runout must be a number from 0 to 9.9, got 10");
   EXPECT_EQ(onlyError("[machine]\nthread_runout = -1\n").message,
             "machine.thread_runout must be a number of leads from 0 to 9.9 (the control's G92/G76 run-out parameter, "
             "GSK No.19 and Fanuc No.5130 in 0.1 lead), got -1");

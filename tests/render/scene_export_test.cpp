@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "render/picture_annotations.hpp"
 #include "tests/render/test_meshes.hpp"
 
 namespace lathesim::render {
@@ -64,6 +65,27 @@ TEST(SceneExport, GlbHoldsThePartAndTheToolpathInMetresWithYUp) {
   // Column-major: part x → glTF y, part y → glTF z, part z → glTF x.
   EXPECT_EQ(matrix, (std::vector<double>{0, 0.001, 0, 0, 0, 0, 0.001, 0, 0.001, 0, 0, 0, 0, 0, 0, 1}));
   EXPECT_FALSE(gltf.contains("cameras"));
+}
+
+// Each kind of move in its own mesh and colour, as the pictures draw them: feeds blue, thread
+// passes green, rapids red (picture_annotations.hpp).
+TEST(SceneExport, ThreadMovesAreGreenAsInThePictures) {
+  ::unsetenv("DISPLAY");
+  interp::Toolpath path = test::rapidThenFeed();
+  path.moves.push_back(test::move(interp::MoveKind::Thread, 29, 10, 29, -20, 5, 1.5));
+  const Json gltf = Json::parse(partGltf(test::cylinder(30.0, 60.0, 16), path));
+  ASSERT_EQ(gltf["meshes"].size(), 4u);  // the part, feeds, threads, rapids
+  std::vector<std::vector<double>> colours;
+  for (const Json& mesh : gltf["meshes"]) {
+    const Json& material = gltf["materials"][mesh["primitives"][0]["material"].get<int>()];
+    const std::vector<double> rgba = material["pbrMetallicRoughness"]["baseColorFactor"];
+    colours.push_back({rgba[0], rgba[1], rgba[2]});
+  }
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(colours[1][c], kFeedColour[c], 1e-6);
+    EXPECT_NEAR(colours[2][c], kThreadColour[c], 1e-6);
+    EXPECT_NEAR(colours[3][c], kRapidColour[c], 1e-6);
+  }
 }
 
 TEST(SceneExport, GltfCarriesItsBuffersInline) {

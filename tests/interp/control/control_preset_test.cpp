@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
+#include <tuple>
 
 namespace lathesim::interp {
 namespace {
@@ -62,6 +64,37 @@ TEST(ControlPreset, TheDefaultParametersAreTheGsk980tdiPresets) {
   EXPECT_EQ(defaults.patternReliefZMm, gsk.patternReliefZMm);
   EXPECT_EQ(defaults.patternPasses, gsk.patternPasses);
   EXPECT_EQ(defaults.peckRetractMm, gsk.peckRetractMm);
+  EXPECT_EQ(defaults.threadFinishingPasses, gsk.threadFinishingPasses);
+  EXPECT_EQ(defaults.threadToolAngleDeg, gsk.threadToolAngleDeg);
+  EXPECT_EQ(defaults.threadMinDepthMm, gsk.threadMinDepthMm);
+  EXPECT_EQ(defaults.threadAllowanceMm, gsk.threadAllowanceMm);
+  EXPECT_EQ(defaults.threadRunoutLeads, gsk.threadRunoutLeads);
+  EXPECT_EQ(defaults.threadEWord, gsk.threadEWord);
+}
+
+// The thread parameters: G76's first-block values and the run-out, each the control's own
+// parameter (GSK No.57–60 and No.19; Fanuc 5142, 5143, 5140, 5141 and 5130, ⚠ values), and E,
+// which the GSK980TDi's thread formats do not have.
+TEST(ControlPreset, ThreadParametersNameTheirManualParameters) {
+  const Control gsk = *controlPreset("gsk980tdi");
+  const Control fanuc = *controlPreset("fanuc-0i-t");
+  for (const auto& [key, gskNumber, fanucNumber] :
+       {std::tuple{"g76_finishing_passes", "No.57", "5142"}, {"g76_tool_angle", "No.58", "5143"},
+        {"g76_min_depth", "No.59", "5140"}, {"g76_allowance", "No.60", "5141"}, {"thread_runout", "No.19", "5130"}}) {
+    EXPECT_NE(settingOf(gsk, key).manual.find(gskNumber), std::string::npos) << key;
+    EXPECT_NE(settingOf(fanuc, key).manual.find(fanucNumber), std::string::npos) << key;
+  }
+  EXPECT_EQ(gsk.parameters.threadEWord, ThreadEWord::None);
+  EXPECT_TRUE(settingOf(gsk, "thread_e_word").verified);
+  EXPECT_EQ(fanuc.parameters.threadEWord, ThreadEWord::Lead);
+  EXPECT_FALSE(settingOf(fanuc, "thread_e_word").verified);
+  Control control = gsk;
+  EXPECT_EQ(control.set("g76_tool_angle", 29.5, "setup"),
+            "control.g76_tool_angle must be a whole number from 0 to 99, got 29.5");
+  EXPECT_EQ(control.set("thread_e_word", std::string("tpi"), "setup"),
+            "control.thread_e_word must be one of \"none\", \"lead\", \"threads_per_inch\", got \"tpi\"");
+  EXPECT_EQ(control.set("g76_finishing_passes", 3.0, "setup"), std::nullopt);
+  EXPECT_EQ(control.parameters.threadFinishingPasses, 3);
 }
 
 // lathe-cycles.md §10: what the two controls do differently.

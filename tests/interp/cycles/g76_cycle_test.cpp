@@ -52,22 +52,111 @@ TEST(RoughPassDepths, TooManyPassesIsNoAnswer) {
 // adds 0.094 < 0.1, so 0.9, then 1.0, 1.1, and 1.2 would pass k − d = 1.177: 1.177. Then two
 // finishing passes at 1.227. Pass at D: B = (13.773 + 1.227 − D, 5 − D·tan 30°) = (15 − D,
 // 5 − D/√3), its cut to (15 − D, −30), out to (16, −30), back to A.
-TEST(MultipleThreading, MetricThirtyByTwo) {
-  const auto result = run("G00 X32 Z5\nG76 P020060 Q100 R0.05\nG76 X27.546 Z-30 P1227 Q400 F2\n");
-  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+std::vector<ExpectedThread> metricThirtyByTwoMoves(double startAngleDeg = 0) {
   std::vector<ExpectedThread> expected{{kRapid, 100, 200, 16, 5, 0, 0}};
   const double depths[] = {0.4, 0.4 * std::sqrt(2.0), 0.4 * std::sqrt(3.0), 0.8, 0.9, 1.0, 1.1, 1.177, 1.227, 1.227};
   for (const double d : depths) {
     const double r = 15.0 - d;
     const double z = 5.0 - d / std::sqrt(3.0);
     expected.push_back({kRapid, 16, 5, r, z, 0, 1});
-    expected.push_back({kThread, r, z, r, -30, 2, 2, 0});
+    expected.push_back({kThread, r, z, r, -30, 2, 2, startAngleDeg});
     expected.push_back({kRapid, r, -30, 16, -30, 0, 3});
     expected.push_back({kRapid, 16, -30, 16, 5, 0, 4});
   }
-  expectThreadMoves(result.toolpath.moves, expected);
+  return expected;
+}
+
+TEST(MultipleThreading, MetricThirtyByTwo) {
+  const auto result = run("G00 X32 Z5\nG76 P020060 Q100 R0.05\nG76 X27.546 Z-30 P1227 Q400 F2\n");
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectThreadMoves(result.toolpath.moves, metricThirtyByTwoMoves());
   ASSERT_EQ(result.toolpath.cycleStarts.size(), 1u);
   EXPECT_EQ(result.toolpath.cycleStarts[0].line, 3);
+}
+
+// Without a first block the control's parameters give m, a, Δdmin and d (GSK No.57–60, Fanuc
+// 5140–5143): set to 2, 60°, 0.1 and 0.05 they make the same thread.
+TEST(MultipleThreading, FirstBlockOmittedTakesTheControlsParameters) {
+  InterpreterOptions options = defaultOptions();
+  options.control.threadFinishingPasses = 2;
+  options.control.threadToolAngleDeg = 60;
+  options.control.threadMinDepthMm = 0.1;
+  options.control.threadAllowanceMm = 0.05;
+  const auto result = run("G00 X32 Z5\nG76 X27.546 Z-30 P1227 Q400 F2\n", options);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectThreadMoves(result.toolpath.moves, metricThirtyByTwoMoves());
+  // A first block that gives only Q and R keeps the parameters' m and a.
+  const auto partial = run("G00 X32 Z5\nG76 Q100 R0.05\nG76 X27.546 Z-30 P1227 Q400 F2\n", options);
+  ASSERT_TRUE(partial.ok()) << partial.diagnostics[0].message;
+  expectThreadMoves(partial.toolpath.moves, metricThirtyByTwoMoves());
+}
+
+// HNC's one-block G76 C(m) A(a) X Z K(k) U(d) V(Δdmin) Q(Δd) F, all in mm: the same thread as
+// Fanuc's two blocks, by the same hand expansion.
+TEST(HncMultipleThreading, MetricThirtyByTwoInOneBlock) {
+  InterpreterOptions hnc = defaultOptions();
+  hnc.dialect = Dialect::Hnc;
+  const auto result = run("G00 X32 Z5\nG76 C2 A60 X27.546 Z-30 K1.227 U0.05 V0.1 Q0.4 F2\n", hnc);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectThreadMoves(result.toolpath.moves, metricThirtyByTwoMoves());
+  // U and V left out: the control's g76_allowance and g76_min_depth; P the start angle (°).
+  hnc.control.threadAllowanceMm = 0.05;
+  hnc.control.threadMinDepthMm = 0.1;
+  const auto defaults = run("G00 X32 Z5\nG76 C2 A60 X27.546 Z-30 K1.227 Q0.4 P120 F2\n", hnc);
+  ASSERT_TRUE(defaults.ok()) << defaults.diagnostics[0].message;
+  expectThreadMoves(defaults.toolpath.moves, metricThirtyByTwoMoves(120));
+}
+
+// Under G91 X and Z are distances: from A = X32 Z5 (radius 16), X-4 Z-25 ends at D = (14, −20).
+// I-1: the root runs from C = (13, 5). A0: radial infeed; k = Δd = 1, d 0: one rough pass at
+// depth 1 and C1 one finishing pass, both on the root line. R-2 E1 (a vector along −Z, its size
+// counts): the run-out starts 2 mm before Z-20, at (13 + 23/25, −18), 11.5 turns after the
+// start at P90, so at 270°, and ends 1 mm out at (15, −20).
+// The next G76 keeps C, A, R and E: X-5 Z-25 from A is D = (13.5, −20), no taper.
+TEST(HncMultipleThreading, IncrementalTaperRunoutAndModalWords) {
+  InterpreterOptions hnc = defaultOptions();
+  hnc.dialect = Dialect::Hnc;
+  const auto result =
+      run("G00 X32 Z5\nG91\nG76 C1 A0 R-2 E1 X-4 Z-25 I-1 K1 U0 Q1 P90 F2\nG76 X-5 Z-25 K1 Q1 F2\n", hnc);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  std::vector<ExpectedThread> expected{{kRapid, 100, 200, 16, 5, 0, 0}};
+  for (int pass = 0; pass < 2; ++pass) {
+    expected.push_back({kRapid, 16, 5, 13, 5, 0, 1});
+    expected.push_back({kThread, 13, 5, 13.92, -18, 2, 2, 90});
+    expected.push_back({kThread, 13.92, -18, 15, -20, 2, 2, 270});
+    expected.push_back({kRapid, 15, -20, 16, -20, 0, 3});
+    expected.push_back({kRapid, 16, -20, 16, 5, 0, 4});
+  }
+  // Second block: from (13.5, 5) straight to Z-18 (11.5 turns from 0°: 180°), out to (14.5, −20).
+  for (int pass = 0; pass < 2; ++pass) {
+    expected.push_back({kRapid, 16, 5, 13.5, 5, 0, 1});
+    expected.push_back({kThread, 13.5, 5, 13.5, -18, 2, 2, 0});
+    expected.push_back({kThread, 13.5, -18, 14.5, -20, 2, 2, 180});
+    expected.push_back({kRapid, 14.5, -20, 16, -20, 0, 3});
+    expected.push_back({kRapid, 16, -20, 16, 5, 0, 4});
+  }
+  expectThreadMoves(result.toolpath.moves, expected);
+}
+
+TEST(HncMultipleThreading, Alarms) {
+  InterpreterOptions hnc = defaultOptions();
+  hnc.dialect = Dialect::Hnc;
+  expectError(run("G00 X32 Z5\nG76 C2 A60 X27.546 Z-30 Q0.4 F2\n", hnc), 2, 1,
+              "G76 needs K(the thread height k): the thread height k, a radius in mm");
+  expectError(run("G00 X32 Z5\nG76 C2 A60 X27.546 Z-30 K1.227 F2\n", hnc), 2, 1, "G76 needs Q(the first depth");
+  expectError(run("G00 X32 Z5\nG76 C2 A45 X27.546 Z-30 K1.227 Q0.4 F2\n", hnc), 2, 8,
+              "G76 A45: the tool angle is not one this control takes");
+  expectError(run("G00 X32 Z5\nG76 C0 X27.546 Z-30 K1.227 Q0.4 F2\n", hnc), 2, 5,
+              "G76 C0 is not a number of finishing passes");
+  expectError(run("G00 X32 Z5\nG76 E1 X27.546 Z-30 K1.227 Q0.4 F2\n", hnc), 2, 1,
+              "a run-out E of 1 mm along X needs its length along Z, R");
+  expectError(run("G00 X32 Z5\nG76 C2 A60 K1.227 Q0.4 F2\n", hnc), 2, 1, "G76 needs X and Z");
+  expectError(run("G00 X32 Z5\nG76 X27.546 Z-30 K0.05 U0.05 Q0.4 F2\n", hnc), 2, 18,
+              "the thread height k = 0.05 mm must exceed the finishing allowance d = 0.05 mm");
+  expectError(run("G00 X32 Z5\nG76 X27.546 Z5 K1.227 Q0.4 F2\n", hnc), 2, 13, "G76 cannot cut a face thread");
+  expectError(run("G00 X32 Z5\nG76 X27.546 Z-30 K1.227 U-1 Q0.4 F2\n", hnc), 2, 25,
+              "G76 U-1 is not a finishing allowance d");
+  expectError(run("G00 X32 Z5\nG76 X27.546 Z-30 K1.227 Q0.4\n", hnc), 2, 1, "the lead is not set: G76 needs F");
 }
 
 // P010560: m 1, r 05 = half a lead (1 mm of F2) both along Z and out, a 60°. k 0.5 with
@@ -132,13 +221,13 @@ TEST(MultipleThreading, Alarms) {
   expectError(run("G00 X32 Z5\nG76 P1234567\n"), 2, 5, "G76 P1234567 is not P(m)(r)(a)");
   expectError(run("G00 X32 Z5\nG76 X27.546 Z-30 P1227 Q400\n"), 2, 1, "the lead is not set: G76 needs F");
   expectError(run("G00 X32 Z5\nG76 X27.546 Z-30 P5000 Q1 F2\n"), 2, 24, "more than 1000 rough passes");
+  // V is HNC's Δdmin: in a Fanuc G76 it is a word nothing takes (elsewhere an unknown letter).
+  expectError(run("G00 X32 Z5\nG76 X27.546 Z-30 P1227 Q400 F2 V1\n"), 2, 32, "V1 is not used by any code");
+  expectError(run("G00 X32 Z5 V1\n"), 1, 12, "unknown letter 'V'");
   InterpreterOptions fanucB = defaultOptions();
   fanucB.dialect = Dialect::FanucB;
   expectError(run("G00 X32 Z5\nG76 P010045\n", fanucB), 2, 5, "the tool angle a = 45 is not one this control takes");
   EXPECT_TRUE(run("G00 X32 Z5\nG76 P010045\n").ok());  // GSK takes 00–99
-  InterpreterOptions hnc = defaultOptions();
-  hnc.dialect = Dialect::Hnc;
-  expectError(run("G00 X32 Z5\nG76 X27.546 Z-30 P1227 Q400 F2\n", hnc), 2, 1, "hnc's one-block form");
 }
 
 }  // namespace

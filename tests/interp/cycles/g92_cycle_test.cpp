@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "../test_support.hpp"
 
 namespace lathesim::interp {
@@ -68,7 +70,7 @@ TEST(ThreadCycle, TaperWithoutRunout) {
 // radius 13 + 2·20.5/22; 20.5 mm is 13⅔ turns, so it starts at 240°; it ends at (16.5, -20).
 TEST(ThreadCycle, RunoutFromTheMachineParameter) {
   InterpreterOptions options = defaultOptions();
-  options.threadRunoutLeads = 1.0;
+  options.control.threadRunoutLeads = 1.0;
   const auto result = run("G00 X40 Z2\nG92 X30 Z-20 R-2 F1.5\n", options);
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
   const double r = 13.0 + 2.0 * 20.5 / 22.0;
@@ -110,11 +112,31 @@ TEST(ThreadCycle, TwoStartsHalfATurnApart) {
   EXPECT_EQ(result.toolpath.moves[2].thread.starts, 2);
 }
 
+// Fanuc's G92 Q shifts the start angle (0.001°, B-63944EN §4.1.2) and is not modal: Q90000
+// starts this pass at 90°, the repetition X27.4 at 0° again. In fanuc-b's G78 alike.
+TEST(ThreadCycle, QShiftsTheStartAngleOfThisBlockOnly) {
+  for (const auto& [dialect, code] : {std::pair{Dialect::FanucA, "G92"}, std::pair{Dialect::FanucB, "G78"}}) {
+    InterpreterOptions options = defaultOptions();
+    options.dialect = dialect;
+    const auto result = run(fmt::format("G00 X32 Z3\n{} X28 Z-20 F2 Q90000\nX27.4\n", code), options);
+    ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+    std::vector<ExpectedThread> expected{{kRapid, 100, 200, 16, 3, 0, 0}};
+    for (const auto& [r, angle] : {std::pair{14.0, 90.0}, std::pair{13.7, 0.0}}) {
+      expected.push_back({kRapid, 16, 3, r, 3, 0, 1});
+      expected.push_back({kThread, r, 3, r, -20, 2, 2, angle});
+      expected.push_back({kRapid, r, -20, 16, -20, 0, 3});
+      expected.push_back({kRapid, 16, -20, 16, 3, 0, 4});
+    }
+    expectThreadMoves(result.toolpath.moves, expected);
+  }
+  expectError(run("G00 X32 Z3\nG92 X28 Z-20 F2 Q400000\n"), 2, 17, "G92 Q400000 is not a start angle");
+}
+
 // Fanuc system B writes G92 as G78; its run-out is the machine's chamfer parameter alone.
 TEST(ThreadCycle, FanucBWritesItG78) {
   InterpreterOptions options = defaultOptions();
   options.dialect = Dialect::FanucB;
-  options.threadRunoutLeads = 0.5;
+  options.control.threadRunoutLeads = 0.5;
   const auto result = run("G00 X32 Z3\nG78 X28 Z-20 F2\n", options);
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
   expectThreadMoves(result.toolpath.moves, {{kRapid, 100, 200, 16, 3, 0, 0},
