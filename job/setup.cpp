@@ -280,7 +280,9 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   if (const auto* node = table.get("dialect")) {
     using interp::kDialects, interp::dialectName;
     if (auto i = choiceOf(*node, "machine.dialect",
-                          {dialectName(kDialects[0]), dialectName(kDialects[1]), dialectName(kDialects[2])}, report))
+                          {dialectName(kDialects[0]), dialectName(kDialects[1]), dialectName(kDialects[2]),
+                           dialectName(kDialects[3])},
+                          report))
       setup.dialect = kDialects[*i];
   }
   // The older spelling of control.power_on_feed_mode.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "interp/control/machine_m_codes.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -49,6 +50,10 @@ enum class CornerWords { LD, CommaCR };
 /// from the corner along each line (Fanuc's ,C always measures that).
 enum class ChamferSize { Length, FromCorner };
 
+/// G04 P: always milliseconds (GSK, Fanuc), or seconds when P has a decimal point and
+/// milliseconds when not (Haas).
+enum class DwellPWord { Milliseconds, SecondsWithPoint };
+
 /// The defaults are the gsk980tdi preset's values (control_preset.cpp; a test keeps them equal).
 struct ControlParameters {
   RapidPath rapidPath{};
@@ -69,6 +74,8 @@ struct ControlParameters {
   CornerWords cornerWords{};
   ChamferSize chamferSize{};
   std::vector<std::string> toolWordForms{"2+2"};  // the T word's forms (tool_word.hpp)
+  MachineMCodes machineMCodes{};    // whose machine M codes are accepted and ignored
+  DwellPWord dwellPWord{};          // G04 P: milliseconds, or seconds when written with a point
   // The compound cycles' first-block values before a program gives them:
   double roughingDepthMm = 1.0;     // G71/G72 Δd
   double roughingRetractMm = 0.5;   // G71/G72 e
@@ -76,6 +83,10 @@ struct ControlParameters {
   double patternReliefZMm = 0.0;    // G73 Δk
   int patternPasses = 1;            // G73 d
   double peckRetractMm = 0.5;       // G74/G75 e
+  // The Haas one-block G76 (Settings 99 and 86): the least depth a pass adds, and what the
+  // last pass removes at the full height.
+  double threadMinimumCutMm = 0.0;
+  double threadFinishAllowanceMm = 0.0;
 };
 
 }  // namespace lathesim::interp
