@@ -88,6 +88,7 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.threadRunoutLeads = setup.threadRunoutLeads;
   options.workOffsets = setup.workOffsets;
   options.machineZero = setup.machineZero;
+  options.secondReferencePosition = setup.secondReferencePosition;
   options.maxSteps = setup.macro.maxSteps;
   options.macroVariables = setup.macro.variables;
   options.maxMoves = setup.maxMoves;

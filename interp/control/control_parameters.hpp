@@ -62,6 +62,7 @@ struct ControlParameters {
   IncrementWordInput incrementWordInput{};
   bool blockSkip = true;                // the operator's block skip switch: '/' blocks skipped
   FeedMode powerOnFeedMode{};           // G98 or G99 before the program names one
+  bool powerOnMetric = true;            // G21 (mm) or G20 (inch) before the program names one
   bool roughingRetractAtFeed = true;    // G71/G72 step 4, the 45° retract: at F, or rapid
   bool peckXWordsAreDiameters = true;   // G74/G75 P(Δi) and G74 R(Δd): diameters or radii
   PeckReliefWithoutShift peckReliefWithoutShift{};

@@ -24,6 +24,7 @@ constexpr std::array kGCodes{
     GCodeInfo{20, GGroup::Units, true, "inch input"},
     GCodeInfo{21, GGroup::Units, true, "metric input"},
     GCodeInfo{28, GGroup::NonModal, true, "reference point return"},
+    GCodeInfo{30, GGroup::NonModal, true, "second reference point return"},
     GCodeInfo{32, GGroup::Motion, true, "thread cutting"},
     GCodeInfo{40, GGroup::NoseRadius, true, "nose radius compensation cancel"},
     GCodeInfo{41, GGroup::NoseRadius, true, "nose radius compensation left"},

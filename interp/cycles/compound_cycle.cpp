@@ -60,6 +60,8 @@ class CompoundCycle {
   Status roughing();   // G71, G72
   Status haasRoughing();  // G71, G72 in the Haas one-block form
   Status patternRepeat();  // G73
+  Status patternValues(const std::optional<Word>& reliefX, const std::optional<Word>& reliefZ,
+                       const std::optional<Word>& passes);
   Status peck(const PeckCycle& cycle);  // G74, G75
   Status multipleThreading();  // G76
   Status threadingParameters();  // G76's first block
@@ -300,24 +302,31 @@ Result<CompoundCycle::ContourBlock> CompoundCycle::contourBlock() {
                       w ? length(*w) : 0.0};
 }
 
-// G73 U(Δi) W(Δk) R(d); then G73 P Q U(Δu) W(Δw).
+// G73's relief Δi (X, a radius), Δk and passes d, kept for the blocks after.
+Status CompoundCycle::patternValues(const std::optional<Word>& reliefX, const std::optional<Word>& reliefZ,
+                                    const std::optional<Word>& passes) {
+  if (passes && passes->value >= 1 && std::floor(passes->value) != passes->value)  // R2. is read as 2, R2.5 is no count
+    return errorAt(passes->column,
+                   fmt::format("G73 {} is not a number of passes d: {}", passes->text(), decimalPointSlip(*passes)));
+  if (passes && (passes->value < 1 || std::floor(passes->value) != passes->value)) {
+    return errorAt(passes->column, fmt::format("G73 {} is not a number of passes d: expected a "
+                                               "whole number ≥ 1",
+                                               passes->text()));
+  }
+  if (reliefX) state_.compound.patternReliefXMm = length(*reliefX);
+  if (reliefZ) state_.compound.patternReliefZMm = length(*reliefZ);
+  if (passes) state_.compound.patternPasses = static_cast<int>(passes->value);
+  state_.compound.patternGiven = true;
+  return success();
+}
+
+// G73 U(Δi) W(Δk) R(d); then G73 P Q U(Δu) W(Δw). Haas writes one block, G73 P Q I(Δi) K(Δk)
+// D(d) U W F.
 Status CompoundCycle::patternRepeat() {
-  if (!block_.has('P') && !block_.has('Q')) {
-    const auto u = block_.take('U');
-    const auto w = block_.take('W');
-    const auto r = block_.take('R');
-    if (r && r->value >= 1 && std::floor(r->value) != r->value)  // R2. is read as 2, R2.5 is no count
-      return errorAt(r->column, fmt::format("G73 {} is not a number of passes d: {}", r->text(), decimalPointSlip(*r)));
-    if (r && (r->value < 1 || std::floor(r->value) != r->value)) {
-      return errorAt(r->column, fmt::format("G73 {} is not a number of passes d: expected a "
-                                            "whole number ≥ 1",
-                                            r->text()));
-    }
-    if (u) state_.compound.patternReliefXMm = length(*u);
-    if (w) state_.compound.patternReliefZMm = length(*w);
-    if (r) state_.compound.patternPasses = static_cast<int>(r->value);
-    state_.compound.patternGiven = true;
-    return success();
+  if (options_.dialect == Dialect::Haas) {
+    if (auto s = patternValues(block_.take('I'), block_.take('K'), block_.take('D')); !s.ok()) return s;
+  } else if (!block_.has('P') && !block_.has('Q')) {
+    return patternValues(block_.take('U'), block_.take('W'), block_.take('R'));
   }
   auto read = contourBlock();
   if (!read.ok()) return read.error();

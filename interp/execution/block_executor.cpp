@@ -344,7 +344,7 @@ Status Executor::applyOneShot(const Code& code) {
   state_.cycle = {};
   state_.threadCycle = {};
   if (code.number == 50) return applyCoordinateSetting(code);
-  if (code.number == 28) return applyReferenceReturn(code);
+  if (code.number == 28 || code.number == 30) return applyReferenceReturn(code);
   if (code.number == 53) return applyMachineCoordinateMove(code);
   if (code.number == 10) return applyDataSetting(block_, code, state_, options_);
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
@@ -401,11 +401,25 @@ Status Executor::applyReferenceReturn(const Code& code) {
   auto axes = takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
+  // G30 goes to the second reference point (P2, the default; the setup's second_reference).
+  const bool second = code.number == 30;
+  if (second) {
+    if (const auto p = block_.take('P'); p && p->value != 2) {
+      return errorAt(p->column, fmt::format("G30 {}: only the second reference point (P2) is known; a third or "
+                                            "fourth is not in the setup",
+                                            p->text()));
+    }
+    if (!options_.secondReferencePosition) {
+      return errorAt(code.column, "G30 returns to the second reference point, which the setup does not give: add "
+                                  "[machine] second_reference = [X, Z]");
+    }
+  }
   // Haas: G28 with no axis word sends every axis home, straight from where it stands.
   const bool everyAxis = !a.any() && options_.dialect == Dialect::Haas;
   if (!a.any() && !everyAxis) {
-    return errorAt(code.column, "G28 needs X(U) and/or Z(W): the intermediate point of the axes "
-                                "to return (G28 U0 W0 returns both straight from here)");
+    return errorAt(code.column, fmt::format("{} needs X(U) and/or Z(W): the intermediate point of the axes "
+                                            "to return ({} U0 W0 returns both straight from here)",
+                                            code.text, code.text));
   }
   const RZ& p = state_.position;
   std::optional<double> radiusMm, zMm;
@@ -418,7 +432,9 @@ Status Executor::applyReferenceReturn(const Code& code) {
   if (a.z) zMm = length(*a.z);
   if (a.w) zMm = p.y() + length(*a.w);
   // The reference point is the machine's: in the program's frame it moves with G54–G59 and G50.
-  const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.frame.shift();
+  const RZ machinePoint = second ? *options_.secondReferencePosition
+                                 : options_.referencePosition.value_or(options_.startPosition);
+  const RZ reference = machinePoint - state_.frame.shift();
   const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
   // Under G41/G42 the compensation is suspended at the intermediate point (lathe-cycles.md §10):
   // the legs are no part of the chain, which ends with the move before them and resumes with a

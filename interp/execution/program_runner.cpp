@@ -39,6 +39,7 @@ class ProgramRunner {
     state_.frame.offsets = options.workOffsets;
     state_.position = options.startPosition - state_.frame.shift();
     state_.feedMode = options.control.powerOnFeedMode;
+    state_.inch = !options.control.powerOnMetric;
     state_.compound = CompoundCycleParams::of(options.control);
     if (!options.toolNumbers.empty()) state_.tool = options.toolNumbers.front();
   }

@@ -175,3 +175,45 @@ TEST(HaasLocalSubprogram, BadCalls) {
 
 }  // namespace
 }  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// A program with neither G20 nor G21 runs in the control's power-on unit (power_on_units).
+TEST(PowerOnUnits, AProgramWithoutG20OrG21RunsInTheControlsUnit) {
+  InterpreterOptions options = test::defaultOptions();
+  const auto metric = run("G00 X2. Z1.\n", options);
+  ASSERT_TRUE(metric.ok());
+  EXPECT_NEAR(metric.toolpath.moves.back().to.x(), 1.0, 1e-12);
+  auto control = *controlPreset("haas");
+  ASSERT_FALSE(control.set("power_on_units", std::string("G20"), "setup"));
+  options.control = control.parameters;
+  options.control.rapidPath = RapidPath::Linear;
+  const auto inch = run("G00 X2. Z1.\nG21 G00 X2. Z1.\n", options);
+  ASSERT_TRUE(inch.ok()) << inch.diagnostics[0].message;
+  EXPECT_NEAR(inch.toolpath.moves[0].to.x(), 25.4, 1e-12);  // X2. inch: Φ50.8, radius 25.4
+  EXPECT_NEAR(inch.toolpath.moves[0].to.y(), 25.4, 1e-12);
+  EXPECT_NEAR(inch.toolpath.moves.back().to.x(), 1.0, 1e-12);  // after G21, mm
+}
+
+}  // namespace
+}  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// G30: to the second reference point the setup gives, through the intermediate point, as G28.
+TEST(SecondReference, G30GoesToTheSetupsSecondReferencePoint) {
+  InterpreterOptions options = test::defaultOptions();
+  options.secondReferencePosition = RZ(60.0, 150.0);
+  const auto result = run("G00 X40 Z5\nG30 U0 W0\n", options);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  ASSERT_EQ(result.toolpath.moves.size(), 2u);
+  EXPECT_NEAR(result.toolpath.moves[1].to.x(), 60.0, 1e-12);
+  EXPECT_NEAR(result.toolpath.moves[1].to.y(), 150.0, 1e-12);
+  expectError(run("G00 X40 Z5\nG30 U0 W0\n"), 2, 1, "second_reference");
+  expectError(run("G30 P3 U0 W0\n", options), 1, 5, "only the second reference point");
+}
+
+}  // namespace
+}  // namespace lathesim::interp

@@ -303,3 +303,26 @@ TEST(DrillingCycles, OnlyOnTheAxis) {
 
 }  // namespace
 }  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// Haas's one-block G73 P Q I K D U W F is Fanuc's G73 U(Δi) W(Δk) R(d); G73 P Q U W F.
+TEST(HaasG73, OneBlockIsTheTwoBlockForm) {
+  const std::string contour = "N10 G00 X30.\nG01 Z-20.\nN20 X50. Z-30.\nM30\n";
+  const auto haasRun = run("G00 X52. Z2.\nG73 P10 Q20 U0.5 W0.1 I3. K1. D3 F0.2\n" + contour, haas());
+  InterpreterOptions fanuc = haas();
+  fanuc.dialect = Dialect::FanucA;
+  const auto fanucRun = run("G00 X52. Z2.\nG73 U3. W1. R3\nG73 P10 Q20 U0.5 W0.1 F0.2\n" + contour, fanuc);
+  ASSERT_TRUE(haasRun.ok()) << haasRun.diagnostics[0].message;
+  ASSERT_TRUE(fanucRun.ok()) << fanucRun.diagnostics[0].message;
+  EXPECT_TRUE(haasRun.diagnostics.empty());  // the relief is the program's, not the parameters'
+  ASSERT_EQ(haasRun.toolpath.moves.size(), fanucRun.toolpath.moves.size());
+  EXPECT_GT(haasRun.toolpath.moves.size(), 9u);
+  for (std::size_t i = 0; i < haasRun.toolpath.moves.size(); ++i)
+    EXPECT_NEAR((haasRun.toolpath.moves[i].to - fanucRun.toolpath.moves[i].to).norm(), 0.0, 1e-12) << i;
+  expectError(run("G00 X52. Z2.\nG73 P10 Q20 I3. K1. D2.5 F0.2\n" + contour, haas()), 2, 21, "not a number of passes");
+}
+
+}  // namespace
+}  // namespace lathesim::interp
