@@ -1,7 +1,5 @@
 #include "interp/execution/block_executor.hpp"
 
-#include "interp/cycles/drilling_cycle.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -161,11 +159,13 @@ Result<BlockOutcome> Executor::run() {
   applyWorkSystem(oneShot);
   noteDrillingCycleCancel();
   if (const auto motion = block_.gCode(GGroup::Motion); oneShot && motion) selectMotion(*motion);
-  // G81–G83 stay in force until G80 or a motion code; a block that gives Z(W) then drills again.
+  // G81–G83 stay in force until G80 or a motion code; a block that gives an axis word drills again
+  // (at X0 only: a hole elsewhere needs live tooling, and is refused rather than moved to).
   const auto drillCode = block_.gCode(GGroup::DrillingCycle);
   if ((drillCode && drillCode->number == 80) || block_.gCode(GGroup::Motion)) state_.drillingCycle = 0;
   const bool drills = !oneShot && ((drillCode && drillCode->number != 80) ||
-                                   (!drillCode && state_.drillingCycle != 0 && (block_.has('Z') || block_.has('W'))));
+                                   (!drillCode && state_.drillingCycle != 0 &&
+                                    (block_.has('X') || block_.has('U') || block_.has('Z') || block_.has('W'))));
   const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
   if (oneShot && !compound) {
     if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
@@ -997,10 +997,6 @@ void Executor::warnIfSurfaceSpeedUnclamped() {
                                    options_.machine.maxRpm)});
 }
 
-// A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough
-// against a contour already offset, G90/G94 are offset by their tip number
-// (cycle_nose_compensation.hpp), G74/G75 and the thread codes get none; an open chain ends
-// at the first leg.
 // G81 Z(W) R F, G82 … P (dwell at the bottom), G83 … Q (peck) [P]: drilling on the axis from
 // the tool's position (drilling_cycle.hpp). R is the R point's Z on a Haas (⚠) and its distance
 // from the start's Z on Fanuc T (⚠); without it the feed starts where the tool stands. Q is a
@@ -1023,8 +1019,10 @@ Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
                                "needs live tooling, which this lathe does not have (give X0)",
                                name, 2.0 * start.x()));
   }
-  if (!a.z && !a.w) return errorAt(anchor, fmt::format("{} needs Z(W): the hole's bottom", name));
-  const double bottomZ = a.z ? length(*a.z) : state_.position.y() + length(*a.w);
+  if (code && !a.z && !a.w) return errorAt(anchor, fmt::format("{} needs Z(W): the hole's bottom", name));
+  if (a.z) state_.drillingBottomZ = length(*a.z);
+  if (a.w) state_.drillingBottomZ = state_.position.y() + length(*a.w);
+  const double bottomZ = state_.drillingBottomZ;
   const auto r = block_.take('R');
   const auto q = block_.take('Q');
   const auto p = block_.take('P');
@@ -1073,6 +1071,10 @@ Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
   return success();
 }
 
+// A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough
+// against a contour already offset, G90/G94 are offset by their tip number
+// (cycle_nose_compensation.hpp), G74/G75 and the thread codes get none; an open chain ends
+// at the first leg.
 void Executor::emitLegs(const std::vector<CycleLeg>& legs) {
   const std::size_t first = moves_.size();
   for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center, leg.thread);

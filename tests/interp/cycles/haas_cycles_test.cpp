@@ -298,6 +298,8 @@ TEST(DrillingCycles, OnlyOnTheAxis) {
   expectError(run("G00 X10. Z5.\nG81 Z-10. R1. F0.1\n", haas()), 2, 1, "drills on the spindle's axis");
   expectError(run("G00 X0. Z5.\nG81 X5. Z-10. R1. F0.1\n", haas()), 2, 5, "needs live tooling");
   expectError(run("G00 X0. Z5.\nG81 R1. F0.1\n", haas()), 2, 1, "G81 needs Z(W)");
+  // While G81 is in force an X word asks for a hole there, never a plain move.
+  expectError(run("G00 X0. Z5.\nG81 Z-10. R1. F0.1\nX20.\n", haas()), 3, 1, "needs live tooling");
   expectError(run("G00 X0. Z5.\nG81 Z-3. Q1. F0.1\n", haas()), 2, 10, "only G83 pecks");
 }
 
@@ -322,6 +324,50 @@ TEST(HaasG73, OneBlockIsTheTwoBlockForm) {
   for (std::size_t i = 0; i < haasRun.toolpath.moves.size(); ++i)
     EXPECT_NEAR((haasRun.toolpath.moves[i].to - fanucRun.toolpath.moves[i].to).norm(), 0.0, 1e-12) << i;
   expectError(run("G00 X52. Z2.\nG73 P10 Q20 I3. K1. D2.5 F0.2\n" + contour, haas()), 2, 21, "not a number of passes");
+}
+
+}  // namespace
+}  // namespace lathesim::interp
+
+namespace lathesim::interp {
+namespace {
+
+// Swept over OD and ID, infeed methods, angles and a D that does or does not divide K: the
+// passes cut at the depths haasPassDepths gives, the last on the root (X/2), each pass starting
+// depth·tan(A/2) along Z toward the cut, the first at the crest side by K − D.
+TEST(HaasG76, SweepOfDepthsAnglesAndSides) {
+  for (const bool internal : {false, true}) {
+    for (const int method : {1, 3}) {
+      for (const int angle : {0, 29, 60}) {
+        for (const double d : {0.2, 0.35, 0.5}) {
+          const double k = 1.3;
+          SCOPED_TRACE(testing::Message() << (internal ? "ID" : "OD") << " P" << method << " A" << angle << " D" << d);
+          const double rootDiameter = internal ? 26.0 : 17.0;
+          const std::string program = std::string(internal ? "G00 X22. Z5.\n" : "G00 X22. Z5.\n") + "G76 X" +
+                                      std::to_string(rootDiameter) + " Z-20. K" + std::to_string(k) + " D" +
+                                      std::to_string(d) + " A" + std::to_string(angle) + " P" +
+                                      std::to_string(method) + " F1.5\n";
+          const auto result = run(program, haas());
+          ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+          const auto depths = haasPassDepths(method == 3, d, 0.0254, k, 1000);
+          ASSERT_TRUE(depths);
+          std::vector<const Move*> cuts;
+          for (const Move& m : result.toolpath.moves)
+            if (m.kind == MoveKind::Thread) cuts.push_back(&m);
+          ASSERT_EQ(cuts.size(), depths->size());
+          const double sigma = internal ? -1.0 : 1.0;  // the crest side
+          const double flank = std::tan(angle / 2.0 * M_PI / 180.0);
+          for (std::size_t i = 0; i < cuts.size(); ++i) {
+            const double depth = (*depths)[i];
+            EXPECT_NEAR(cuts[i]->from.x(), rootDiameter / 2.0 + sigma * (k - depth), 1e-9) << i;
+            EXPECT_NEAR(cuts[i]->from.y(), 5.0 - depth * flank, 1e-9) << i;
+            EXPECT_NEAR(cuts[i]->to.y(), -20.0, 1e-9) << i;
+          }
+          EXPECT_NEAR(cuts.back()->to.x(), rootDiameter / 2.0, 1e-9);
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
