@@ -17,20 +17,18 @@ using test::expectError;
 using test::run;
 
 InterpreterOptions withControl(std::string_view preset, Dialect dialect) {
-  InterpreterOptions options = test::defaultOptions();
-  options.control = controlPreset(preset)->parameters;
-  options.control.rapidPath = RapidPath::Linear;  // one move per rapid, as the lists below
+  InterpreterOptions options = test::under(preset);  // one move per rapid, as the lists below
   options.dialect = dialect;
   return options;
 }
 
 InterpreterOptions haas() { return withControl("haas", Dialect::Haas); }
 
-std::vector<Diagnostic> ofSeverity(const InterpretResult& result, Severity severity) {
-  std::vector<Diagnostic> found;
+std::vector<Diagnostic> notesOf(const InterpretResult& result) {
+  std::vector<Diagnostic> notes;
   for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == severity) found.push_back(d);
-  return found;
+    if (d.severity == Severity::Note) notes.push_back(d);
+  return notes;
 }
 
 TEST(HaasPreset, IsBasedOnFanucWithHaasValues) {
@@ -63,7 +61,7 @@ TEST(HaasDialect, HasItsNameAndReadsSystemACodes) {
 TEST(MachineMCodes, AcceptedOncePerCodeUnderTheirControl) {
   const auto result = run("M31\nG00 X40. Z5. M88\nM31\nM41\n", haas());
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
-  const auto notes = ofSeverity(result, Severity::Note);
+  const auto notes = notesOf(result);
   ASSERT_EQ(notes.size(), 3u);
   EXPECT_EQ(notes[0].line, 1);
   EXPECT_NE(notes[0].message.find("M31 (chip auger forward)"), std::string::npos) << notes[0].message;
@@ -102,7 +100,7 @@ TEST(HaasToolWord, ShortFormsNameTheTool) {
   ASSERT_TRUE(onePlusOne.ok()) << onePlusOne.diagnostics[0].message;
   const auto shortForm = run("T2\nG00 X40. Z5.\n", haas());
   ASSERT_TRUE(shortForm.ok()) << shortForm.diagnostics[0].message;
-  const auto warnings = ofSeverity(shortForm, Severity::Warning);
+  const auto warnings = test::warningsOf(shortForm);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].message.find("T2 is read as tool 2 with offset 2"), std::string::npos) << warnings[0].message;
   EXPECT_EQ(shortForm.toolpath.moves.back().tool, 2);

@@ -27,9 +27,7 @@ using test::kThread;
 using test::run;
 
 InterpreterOptions haas() {
-  InterpreterOptions options = test::defaultOptions();
-  options.control = controlPreset("haas")->parameters;
-  options.control.rapidPath = RapidPath::Linear;
+  InterpreterOptions options = test::under("haas");
   options.dialect = Dialect::Haas;
   return options;
 }
