@@ -255,7 +255,7 @@ TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
   const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
   EXPECT_EQ(d.message,
             "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, travel_x, travel_z, dialect, "
-            "initial_feed_mode, thread_runout or zero)");
+            "initial_feed_mode, thread_runout, zero or second_reference)");
 }
 
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
