@@ -22,7 +22,29 @@ std::vector<RZ> clipLeftOf(const std::vector<RZ>& polygon, const RZ& p, const RZ
   return out;
 }
 
+double twiceSignedArea(const std::vector<RZ>& polygon) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+  return twice;
+}
+
 }  // namespace
+
+std::vector<ConvexPolygon> differenceOf(const ConvexPolygon& a, const ConvexPolygon& b) {
+  if (a.vertices().size() < 3 || b.vertices().size() < 3) return {a};  // no area to cut, or none to cut by
+  std::vector<ConvexPolygon> pieces;
+  std::vector<RZ> remaining = a.vertices();
+  const auto& clipper = b.vertices();
+  for (std::size_t i = 0; i < clipper.size() && remaining.size() >= 3; ++i) {
+    const RZ& p = clipper[i];
+    const RZ& q = clipper[(i + 1) % clipper.size()];
+    // Outside this edge (right of p → q) the rest of a is not in b; inside, later edges decide.
+    const std::vector<RZ> outside = clipLeftOf(remaining, q, p);
+    if (outside.size() >= 3 && twiceSignedArea(outside) > 0.0) pieces.push_back(ConvexPolygon::hullOf(outside));
+    remaining = clipLeftOf(remaining, p, q);
+  }
+  return pieces;
+}
 
 Overlap overlapOf(const ConvexPolygon& a, const ConvexPolygon& b) {
   if (a.vertices().size() < 3 || b.vertices().size() < 3) return {};

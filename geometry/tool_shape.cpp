@@ -21,10 +21,17 @@ double rad(double deg) { return deg * kPi / 180.0; }
 ZX polar(double length, double angleRad) { return ZX(length * std::cos(angleRad), length * std::sin(angleRad)); }
 RZ toRZ(const ZX& p) { return RZ(p.y(), p.x()); }
 
+/// A nose arc's sagitta as a share of its radius, at most: beyond 4 m of radius the chords
+/// follow it and stop growing in number. Without it a tool a comment names with a pitch of
+/// 555 km (a 69 km nose) was drawn with 300 000 chords: seconds for one comment.
+constexpr double kNoseArcRelativeTolerance = 1e-6;
+
 /// Points on the arc of radius r about c from angle a0 to a1 (radians, a0 ≤ a1, ccw), with
-/// every axis direction in between as a vertex and chords of sagitta < kNoseArcToleranceMm.
+/// every axis direction in between as a vertex and chords of sagitta < kNoseArcToleranceMm
+/// (or r·kNoseArcRelativeTolerance for a radius no tool has).
 void appendArc(std::vector<ZX>& out, const ZX& c, double r, double a0, double a1) {
-  const double step = 2.0 * std::acos(std::max(1.0 - kNoseArcToleranceMm / r, 0.0));
+  const double sagitta = std::max(kNoseArcToleranceMm, r * kNoseArcRelativeTolerance);
+  const double step = 2.0 * std::acos(std::max(1.0 - sagitta / r, 0.0));
   std::vector<double> breaks{a0};
   for (int k = static_cast<int>(std::floor(a0 / (kPi / 2))) + 1; k * (kPi / 2) < a1; ++k) breaks.push_back(k * (kPi / 2));
   breaks.push_back(a1);

@@ -2,8 +2,6 @@
 
 #include <cstdint>
 
-#include <fmt/format.h>
-
 namespace lathesim::interp {
 namespace {
 
@@ -45,6 +43,14 @@ bool actsOnTerminal(std::uint32_t c) {
          (c >= 0x2066 && c <= 0x2069);
 }
 
+// Appends `prefix` and `value` as `digits` lower-case hex digits (\x1b, \u202e). By hand,
+// not through fmt: every diagnostic escapes its whole line, byte by byte for a binary file.
+void appendEscape(std::string& shown, const char* prefix, std::uint32_t value, int digits) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  shown += prefix;
+  for (int shift = 4 * (digits - 1); shift >= 0; shift -= 4) shown += kHex[(value >> shift) & 0xFU];
+}
+
 }  // namespace
 
 std::string printable(std::string_view text) {
@@ -53,16 +59,16 @@ std::string printable(std::string_view text) {
   for (std::size_t at = 0; at < text.size();) {
     const Decoded d = decode(text, at);
     if (d.length == 0) {
-      shown += fmt::format("\\x{:02x}", static_cast<std::uint8_t>(text[at]));
+      appendEscape(shown, "\\x", static_cast<std::uint8_t>(text[at]), 2);
       ++at;
       continue;
     }
     if (!actsOnTerminal(d.codePoint)) {
       shown.append(text.substr(at, d.length));
     } else if (d.codePoint < 0x80) {
-      shown += fmt::format("\\x{:02x}", d.codePoint);
+      appendEscape(shown, "\\x", d.codePoint, 2);
     } else {
-      shown += fmt::format("\\u{:04x}", d.codePoint);
+      appendEscape(shown, "\\u", d.codePoint, 4);
     }
     at += d.length;
   }

@@ -56,6 +56,28 @@ awk -F, -v passes="$passes" '
     printf "%-34s %10.3f %12.3f %14.5f %11.3f (%.3f)\n", "3,600 chained G32 of 0.1 mm", shortFloor, short, (short - shortFloor) / 3600, (short - shortFloor) / 3600 / shortFloor, (shortCpu - shortFloorCpu) / 3600 / shortFloorCpu
   }' "$tmp/threads.csv"
 
+echo
+echo "== long programs at 0.1 mm (Google Benchmark, same run): a Φ50×80 bar's floor against programs of short moves"
+build/lathesim_bench --benchmark_filter='BM_LongFloor|BM_Contour2000|BM_CamProgram' --benchmark_format=csv 2>/dev/null > "$tmp/long.csv"
+build/lathesim_bench --benchmark_filter='BM_MoveLength' --benchmark_format=csv 2>/dev/null > "$tmp/moves.csv"
+awk -F, '
+  FNR == 1 { delete column; for (i = 1; i <= NF; i++) column[$i] = i; next }
+  /^"BM_LongFloor/   { floor = $3; floorCpu = $4 }
+  /^"BM_Contour2000/ { contour = $3; contourCpu = $4; contourMoves = $column["\"moves\""] }
+  /^"BM_CamProgram/  { cam = $3; camCpu = $4; camMoves = $column["\"moves\""] }
+  /^"BM_MoveLength/  { split($1, a, "/"); n++; length_um[n] = a[2]; moves[n] = $column["\"moves\""]
+                       perMove[n] = $column["\"ms_per_move\""]; perMm[n] = $column["\"ms_per_mm\""] }
+  END {
+    # simulate includes building the bar once: per move is (simulate − floor) / moves.
+    printf "%-44s %8s %10s %12s %16s %12s %20s\n", "", "moves", "floor_s", "simulate_s", "simulate/floor", "ms per move", "cpu simulate/floor"
+    printf "%-44s %8d %10.3f %12.3f %16.2f %12.3f %20.2f\n", "2,000 G01 of 0.03 mm (wavy Φ44 on Φ50)", contourMoves, floor, contour, contour / floor, 1000 * (contour - floor) / contourMoves, contourCpu / floorCpu
+    printf "%-44s %8d %10.3f %12.3f %16.2f %12.3f %20.2f\n", "CAM: G71 at 0.2 mm depth, lines and arcs", camMoves, floor, cam, cam / floor, 1000 * (cam - floor) / camMoves, camCpu / floorCpu
+    print ""
+    print "what a move costs against its length (one 3 mm deep cut over 12 mm of Z posted as moves of that length):"
+    printf "%-10s %8s %14s %12s\n", "move_mm", "moves", "ms per move", "ms per mm"
+    for (i = 1; i <= n; i++) printf "%-10.3f %8d %14.3f %12.2f\n", length_um[i] / 1000, moves[i], perMove[i], perMm[i]
+  }' "$tmp/long.csv" "$tmp/moves.csv"
+
 # The cores the machine gives right now: a CPU-bound task alone, then two at once (2.00 on
 # a quiet 2-core machine; a shared one may give less, and no batch can beat that).
 capacity() {

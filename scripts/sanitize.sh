@@ -23,6 +23,16 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLATHESIM_BEN
 export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_init_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
+# Mesa's software GL driver (swrast_dri.so, which VTK's GLX window loads) is dlclose'd when the
+# window's display closes, and memory that only its globals point at then looks lost: LSan
+# reported two 56-byte callocs of the driver as leaks of an address no module holds any more
+# (shown as the test binary's). Loaded for the whole process, the driver's globals stay roots
+# and nothing is reported: no suppression, and a leak of ours in rendering is still caught.
+driver=$(compgen -G "/usr/lib/*/dri/swrast_dri.so" | head -n 1 || true)
+if [[ -n $driver ]]; then
+  export LD_PRELOAD="$driver${LD_PRELOAD:+ $LD_PRELOAD}"
+  ASAN_OPTIONS+=":verify_asan_link_order=0"  # the driver comes before libasan
+fi
 jobs=${SANITIZE_JOBS:-$(nproc)}
 
 if [[ $scope == all ]]; then

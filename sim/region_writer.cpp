@@ -99,8 +99,10 @@ Reach reachOf(double psi, double slope, double halfDiagonal, double band) {
 // A solid of revolution: distances are 2D, of (ρ, z); exact, so slope 1.
 struct RevolvedShape {
   const RevolvedRegion& region;
+  const RevolvedRegion* changes = nullptr;  // where the write can change anything (cut_history.hpp), or all of it
   using Local = RevolvedRegion;
 
+  const RevolvedRegion* changeBound() const { return changes; }
   const RevolvedRegion& bounds() const { return region; }
   const Local& whole() const { return region; }
   void nearInto(double x, double y, double z, double radius, Local& out) const {
@@ -133,6 +135,7 @@ struct SweptShape {
   };
 
   const RevolvedRegion& bounds() const { return sweep.hull(); }
+  static const RevolvedRegion* changeBound() { return nullptr; }
   Local whole() const { return {&sweep}; }
   void nearInto(double, double, double, double, Local& out) const { out.sweep = &sweep; }
   static bool empty(const Local& local) { return local.sweep == nullptr; }
@@ -180,6 +183,7 @@ class RegionWriter {
         sign_(how == RegionWrite::Add ? 1.0 : -1.0), removing_(how == RegionWrite::Remove),
         leafReach_(0.5 * std::sqrt(3.0) * (kLeafDim - 1) * h_ + bg_),
         blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_),
+        changeMargin_(bg_ + 2.0 * h_),
         // A change smaller than noChange is rounding between the stock's float values and the
         // region's double distance (a tool running along a face it cut before), not a cut.
         column_{sign_, bg_, 1e-5 * h_, 1.0 / h_, h_, notMaterial(), ghostCeiling()} {}
@@ -216,15 +220,31 @@ class RegionWriter {
     return local;
   }
 
+  // The index box of the revolved `bounds` grown by `marginMm`.
+  openvdb::CoordBBox boxAround(const RevolvedRegion& bounds, double marginMm) const {
+    const double rMax = bounds.maxRadius() + marginMm;
+    return openvdb::CoordBBox(Coord(stock_.toIndexFloor(-rMax), stock_.toIndexFloor(-rMax),
+                                    stock_.toIndexFloor(bounds.lowerBound().y() - marginMm)),
+                              Coord(stock_.toIndexCeil(rMax), stock_.toIndexCeil(rMax),
+                                    stock_.toIndexCeil(bounds.upperBound().y() + marginMm)));
+  }
+
   openvdb::CoordBBox candidateBox() const {
-    const RevolvedRegion& bounds = shape_.bounds();
-    const double rMax = bounds.maxRadius() + blockReach_;
-    openvdb::CoordBBox box(Coord(stock_.toIndexFloor(-rMax), stock_.toIndexFloor(-rMax),
-                                 stock_.toIndexFloor(bounds.lowerBound().y() - blockReach_)),
-                           Coord(stock_.toIndexCeil(rMax), stock_.toIndexCeil(rMax),
-                                 stock_.toIndexCeil(bounds.upperBound().y() + blockReach_)));
+    openvdb::CoordBBox box = boxAround(shape_.bounds(), blockReach_);
     if (removing_) box.intersect(stock_.materialBounds);  // nothing to remove outside it
+    if (const RevolvedRegion* changes = shape_.changeBound()) box.intersect(boxAround(*changes, changeMargin_ + h_));
     return box;
+  }
+
+  // Whether the cube of dim³ voxels at `origin` can hold a voxel this write changes, or a
+  // ghost beside one (a neighbour within √3 voxels): only near the shape's change bound.
+  bool mayChange(const Coord& origin, int dim) const {
+    const RevolvedRegion* changes = shape_.changeBound();
+    if (!changes) return true;
+    const double half = 0.5 * (dim - 1);
+    const double x = (origin.x() + half) * h_, y = (origin.y() + half) * h_, z = (origin.z() + half) * h_;
+    const double reach = 0.5 * std::sqrt(3.0) * (dim - 1) * h_ + changeMargin_;
+    return changes->signedDistance(std::sqrt(x * x + y * y), z, reach + h_) <= reach;
   }
 
   double node1InsideVoxels(const Node1* node, float tileValue) const {
@@ -252,7 +272,7 @@ class RegionWriter {
       for (std::size_t b = range.begin(); b != range.end(); ++b) {
         const Coord& block = blocks[b];
         const Reach reach = reachOfCube(shape_.whole(), block, kNode1Dim);
-        if (reach == Reach::None) continue;  // out of reach
+        if (reach == Reach::None || !mayChange(block, kNode1Dim)) continue;  // out of reach
         const Node1* node = accessor.template probeConstNode<Node1>(block);
         const float tile = accessor.getValue(block);
         if (!node && u(tile) <= -bg_) continue;  // already entirely in the region's state
@@ -282,7 +302,7 @@ class RegionWriter {
           // Wholly outside the region: nothing to do. Wholly inside: one task fills its
           // leaves, with no distance to take.
           const Reach reach = reachOfCube(shape_.whole(), sub, kSub);
-          if (reach == Reach::None) continue;
+          if (reach == Reach::None || !mayChange(sub, kSub)) continue;
           if (reach == Reach::Covers) {  // its 64 leaf slots are filled in restructure()
             tasks.push_back({sub, 1, Action::FillSub, nullptr, 0.0f, 0.0});
             continue;
@@ -311,7 +331,7 @@ class RegionWriter {
           const Coord origin(x, y, z);
           if (!box.hasOverlap(openvdb::CoordBBox(origin, origin.offsetBy(kLeafDim - 1)))) continue;
           const Reach leafReach = reachOfCube(local, origin, kLeafDim);
-          if (leafReach == Reach::None) continue;
+          if (leafReach == Reach::None || !mayChange(origin, kLeafDim)) continue;
           Leaf* leaf = accessor.probeLeaf(origin);
           const float tile = leaf ? 0.0f : accessor.getValue(origin);
           if (!leaf && u(tile) <= -bg_) continue;
@@ -596,6 +616,7 @@ class RegionWriter {
   const bool removing_;
   const double leafReach_;   // a leaf whose centre is farther than this from the boundary is untouched
   const double blockReach_;  // the same for a 128³ block
+  const double changeMargin_;  // a changed voxel lies within the band of the change bound; a new ghost within √3 h of one
   const ColumnWrite column_;
   double insideLostTotal_ = 0.0;
   std::vector<Leaf::NodeMaskType> ghostCandidates_;  // per leaf: voxels within a voxel of the boundary that could count
@@ -603,9 +624,9 @@ class RegionWriter {
 
 }  // namespace
 
-double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how) {
-  if (region.empty()) return 0.0;
-  const RevolvedShape shape{region};
+double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how, const RevolvedRegion* changes) {
+  if (region.empty() || (changes && changes->empty())) return 0.0;
+  const RevolvedShape shape{region, changes};
   return RegionWriter<RevolvedShape>(stock, shape, how).run();
 }
 

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sim/cut_history.hpp"
 #include "sim/move_sweep.hpp"
 #include "sim/part_off.hpp"
 #include "sim/simulation_warnings.hpp"
@@ -83,6 +84,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
   RZ frame(0, 0);               // the G50 frame of the moves so far
   PartOffWatch partOffs;
   bool checkShift = false;      // after G50 moved it: until the first cut, or a warning
+  CutHistory history;           // what turning writes removed: bounds where the next can change anything
 
   for (std::size_t first = 0; first < moves.size();) {
     const interp::Move& head = moves[first];
@@ -131,7 +133,8 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
       }
       revolved = RevolvedRegion(pieces);
       if (!pieces.empty()) {
-        removed = stock.remove(revolved);
+        const auto changes = history.changesOf(pieces);
+        removed = changes ? stock.remove(revolved, *changes) : stock.remove(revolved);
         changed = ChangedArea::of(revolved);
       }
     }

@@ -139,6 +139,9 @@ Stock::~Stock() = default;
 double Stock::voxelMm() const { return impl_->voxel; }
 
 double Stock::remove(const RevolvedRegion& region) { return writeRegion(*impl_, region, RegionWrite::Remove); }
+double Stock::remove(const RevolvedRegion& region, const RevolvedRegion& changes) {
+  return writeRegion(*impl_, region, RegionWrite::Remove, &changes);
+}
 double Stock::remove(const HelicalSweep& sweep) { return writeRegion(*impl_, sweep, RegionWrite::Remove); }
 double Stock::remove(const StraightSlot& slot) { return writeRegion(*impl_, slot, RegionWrite::Remove); }
 

@@ -74,6 +74,10 @@ class Stock {
   /// region's boundary and the material are visited. Returns the volume removed (mm³),
   /// measured on the level set before and after.
   double remove(const RevolvedRegion& region);
+  /// The same, visiting only leaves near `changes`, outside whose band the caller vouches that
+  /// this write changes nothing (CutHistory::changesOf): the same result, at the cost of what
+  /// changes rather than of the region's whole outline.
+  double remove(const RevolvedRegion& region, const RevolvedRegion& changes);
   /// The same for a thread pass (helical_sweep.hpp) and for a cut made with the spindle
   /// stopped (straight_slot.hpp): written voxel by voxel with their own 3D distance, over the
   /// leaves near their revolved hull's boundary and the material.

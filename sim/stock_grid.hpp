@@ -48,7 +48,10 @@ enum class RegionWrite {
 
 /// Writes `region` into the stock's grid; returns the volume that stopped being material
 /// (mm³; negative when material was added). See region_writer.cpp.
-double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how);
+/// `changes`, when given, bounds where the write can change anything (cut_history.hpp): only
+/// leaves near it are visited.
+double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how,
+                   const RevolvedRegion* changes = nullptr);
 double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how);
 double writeRegion(StockGrid& stock, const StraightSlot& slot, RegionWrite how);
 

@@ -5,6 +5,7 @@
 #include "geometry/imaginary_tip.hpp"
 #include "interp/compensation/nose_compensation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -365,7 +366,32 @@ Status PathCompensation::chain(std::size_t first, std::size_t end) {
 
 }  // namespace
 
+namespace {
+
+// What compensation does to a toolpath with no G41/G42 anywhere, done in place (a long CAM
+// program rarely compensates, and its moves are the largest thing the interpreter holds):
+// a dwell stands where the last move ended, a zero-length straight move is left out.
+void passUncompensated(std::vector<Move>& moves) {
+  std::optional<RZ> at;
+  std::size_t kept = 0;
+  for (Move& move : moves) {
+    if (move.kind == MoveKind::Dwell && at) move.from = move.to = *at;
+    at = move.to;
+    const ContourSegment segment{move.kind, move.from, move.to, move.center, move.line, move.column};
+    if (zeroLengthStraight(segment) && move.kind != MoveKind::Dwell) continue;
+    if (&moves[kept] != &move) moves[kept] = std::move(move);
+    ++kept;
+  }
+  moves.erase(moves.begin() + static_cast<std::ptrdiff_t>(kept), moves.end());
+}
+
+}  // namespace
+
 Status compensateNoseRadius(std::vector<Move>& moves) {
+  if (std::none_of(moves.begin(), moves.end(), [](const Move& m) { return m.noseComp.side != NoseSide::None; })) {
+    passUncompensated(moves);
+    return success();
+  }
   std::vector<ContourSegment> path;
   std::vector<NoseComp> comps;
   for (const Move& m : moves) {

@@ -1,9 +1,11 @@
 #include "interp/text/control_family.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "interp/text/regex_text.hpp"
 #include "interp/text/utf8.hpp"
@@ -24,21 +26,38 @@ std::string withoutComments(std::string_view line) {
   return text;
 }
 
+// A control family's sign: a pattern, and words one of which a line must hold (in any case)
+// for the pattern to match there. std::regex is slow (each of a million lines tried six
+// times took most of a long program's reading): a line that holds none is not searched.
 struct Sign {
   std::regex pattern;
   std::string_view family;
+  std::vector<std::string_view> needles;  // upper case
 };
+
+std::string upperCase(std::string_view text) {
+  std::string upper(text);
+  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return upper;
+}
+
+bool mayMatch(const Sign& sign, const std::string& upperLine) {
+  return std::any_of(sign.needles.begin(), sign.needles.end(),
+                     [&](std::string_view needle) { return upperLine.find(needle) != std::string::npos; });
+}
 
 const std::array<Sign, 6>& signs() {
   using std::regex_constants::icase;
   static const std::array<Sign, 6> table{
-      Sign{std::regex(R"(^\s*%PM\b)"), "Philips 432/532"},
+      Sign{std::regex(R"(^\s*%PM\b)"), "Philips 432/532", {"%PM"}},
       Sign{std::regex(R"(\bo(\d+|<[^>]*>)\s*(sub|endsub|call|if|elseif|else|endif|while|endwhile|do|repeat|endrepeat|return|break|continue)\b)", icase),
-           "LinuxCNC (O-word subroutines)"},
-      Sign{std::regex(R"(#<[A-Za-z_])"), "LinuxCNC (named parameters)"},
-      Sign{std::regex(R"(\bG0*64\s*P)", icase), "LinuxCNC (G64 path blending with a P tolerance)"},
-      Sign{std::regex(R"(\bBEGIN\s+PGM\b)", icase), "Heidenhain"},
-      Sign{std::regex(R"(\b(DIAMON|DIAMOF|DIAM90|CYCLE9[0-9]|LIMS\s*=)\b)", icase), "Siemens Sinumerik"},
+           "LinuxCNC (O-word subroutines)",
+           {"SUB", "CALL", "IF", "ELSE", "WHILE", "DO", "REPEAT", "RETURN", "BREAK", "CONTINUE"}},
+      Sign{std::regex(R"(#<[A-Za-z_])"), "LinuxCNC (named parameters)", {"#<"}},
+      Sign{std::regex(R"(\bG0*64\s*P)", icase), "LinuxCNC (G64 path blending with a P tolerance)", {"64"}},
+      Sign{std::regex(R"(\bBEGIN\s+PGM\b)", icase), "Heidenhain", {"BEGIN"}},
+      Sign{std::regex(R"(\b(DIAMON|DIAMOF|DIAM90|CYCLE9[0-9]|LIMS\s*=)\b)", icase), "Siemens Sinumerik",
+           {"DIAM", "CYCLE9", "LIMS"}},
   };
   return table;
 }
@@ -61,7 +80,9 @@ std::optional<ForeignProgram> recogniseForeignProgram(std::string_view text) {
                               "Okuma OSP", line.substr(first, line.find_last_not_of(" \t\r") + 1 - first)};
       }
       firstLine = false;
+      const std::string upperLine = upperCase(line);
       for (const Sign& sign : signs()) {
+        if (!mayMatch(sign, upperLine)) continue;
         std::smatch match;
         if (std::regex_search(line, match, sign.pattern)) {
           const auto at = static_cast<std::size_t>(match.position(0));

@@ -8,6 +8,8 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -151,6 +153,109 @@ void BM_ShortPasses(benchmark::State& state) {
   }
 }
 
+// Long programs on a Φ50 × 80 bar (the default tool): what a move costs against what it
+// changes. The floor is building that bar once.
+Part programPart(const std::string& program) {
+  Part p{*job::parseSetup("[stock]\ndiameter = 50\nlength = 80\nface_z = 0\n", "bench.toml").setup, {}, {}};
+  for (const auto& tool : p.setup.tools) p.tools.emplace(tool.number, tool.outline);
+  p.toolpath = interp::interpret(program, "bench.nc", job::interpreterOptionsOf(p.setup)).toolpath;
+  return p;
+}
+
+// The profile of the long programs: a wavy diameter (mm) at Z (0 ≥ z ≥ −60).
+double wavyDiameter(double baseMm, double slope, double amplitudeMm, double z) {
+  return baseMm + slope * -z + amplitudeMm * std::sin(2.0 * M_PI * z / 7.5);
+}
+
+// A finishing contour as CAM posts it: `moves` G01 segments of `stepMm` each, a wavy Φ44 from
+// Z0 leftwards, cut from the Φ50 bar.
+std::string contourProgram(int moves, double stepMm) {
+  std::ostringstream program;
+  program << "G99 M03 S1000\nG00 X44.2 Z1.\nG01 Z0 F0.1\n";
+  program.setf(std::ios::fixed);
+  program.precision(4);
+  for (int k = 1; k <= moves; ++k) {
+    const double z = -stepMm * k;
+    program << "G01 X" << wavyDiameter(44.0, 0.0, 0.2, z) << " Z" << z << "\n";
+  }
+  program << "G00 X52.\nZ1.\nM30\n";
+  return program.str();
+}
+
+const Part& contourPart() {
+  static const Part part = programPart(contourProgram(2000, 0.03));
+  return part;
+}
+
+// A CAM-style program of about 5,000 moves: G71 roughing with a 0.2 mm depth of cut to a
+// 150-block profile of short lines and arcs (Φ30 at Z0 rising to Φ48 at Z-60), then a
+// semi-finishing and a finishing pass as CAM posts them, 2,300 short lines and arcs each.
+const Part& camPart() {
+  static const Part part = [] {
+    std::ostringstream program;
+    program.setf(std::ios::fixed);
+    program.precision(4);
+    program << "G99 M03 S1200\nG00 X52. Z2.\nG71 U0.2 R0.1\nG71 P100 Q200 U0.2 W0.05 F0.25\nN100 G00 X30.\nG01 Z0\n";
+    for (int k = 1; k <= 150; ++k) {
+      const double z = -0.4 * k;
+      program << (k % 2 ? "G01 X" : "G02 X") << wavyDiameter(30.0, 0.3, 0.0, z) << " Z" << z << (k % 2 ? "\n" : " R3.\n");
+    }
+    program << "N200 G01 X52.\n";
+    for (const double allowance : {0.2, 0.0}) {
+      program << "G00 X" << 30.0 + allowance << " Z1.\nG01 Z0 F0.1\n";
+      for (int k = 1; k <= 2300; ++k) {
+        const double z = -0.026 * k;
+        program << (k % 4 ? "G01 X" : "G03 X") << wavyDiameter(30.0 + allowance, 0.3, 0.1, z) << " Z" << z
+                << (k % 4 ? "\n" : " R2.\n");
+      }
+      program << "G01 X52.\nG00 Z2.\n";
+    }
+    program << "G00 X60. Z10.\nM30\n";
+    return programPart(program.str());
+  }();
+  return part;
+}
+
+void BM_LongFloor(benchmark::State& state) {
+  for (auto _ : state) {
+    sim::Stock stock(contourPart().setup.stock, state.range(0) / 1000.0);
+    benchmark::DoNotOptimize(stock.activeVoxelCount());
+  }
+  state.counters["moves"] = 0;  // the same columns as the programs' (CSV has one header)
+}
+
+void simulatePart(benchmark::State& state, const Part& part) {
+  for (auto _ : state) {
+    sim::Stock stock(part.setup.stock, state.range(0) / 1000.0);
+    sim::simulate(part.toolpath, part.tools, stock);
+    benchmark::DoNotOptimize(stock.volumeMm3());
+  }
+  state.counters["moves"] = static_cast<double>(part.toolpath.moves.size());
+}
+
+void BM_Contour2000(benchmark::State& state) { simulatePart(state, contourPart()); }
+void BM_CamProgram(benchmark::State& state) { simulatePart(state, camPart()); }
+
+// What a move costs against the region it sweeps: the same 3 mm deep cut over 12 mm of Z
+// (Φ50 to a wavy Φ44) at 0.1 mm, posted as moves of the given length (µm). Per move, it should
+// follow the move's length, not the tool's outline or the bar.
+void BM_MoveLength(benchmark::State& state) {
+  const double stepMm = state.range(0) / 1000.0;
+  const int moves = static_cast<int>(std::lround(12.0 / stepMm));
+  const Part part = programPart(contourProgram(moves, stepMm));
+  double cutsS = 0.0;
+  for (auto _ : state) {
+    sim::Stock stock(part.setup.stock, 0.1);
+    const auto start = std::chrono::steady_clock::now();
+    sim::simulate(part.toolpath, part.tools, stock);
+    cutsS += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  const double perMoveS = cutsS / static_cast<double>(state.iterations()) / moves;
+  state.counters["moves"] = moves;
+  state.counters["ms_per_move"] = 1e3 * perMoveS;
+  state.counters["ms_per_mm"] = 1e3 * perMoveS / stepMm;
+}
+
 // Wall time decides; the CPU column is the whole process's (all threads), which is steadier
 // than wall time when other work shares the machine.
 BENCHMARK(BM_Floor)->Arg(200)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(3);
@@ -160,6 +265,10 @@ BENCHMARK(BM_G76Relief)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->Meas
 BENCHMARK(BM_G76Simulate)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(3);
 BENCHMARK(BM_ShortPassesFloor)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(1);
 BENCHMARK(BM_ShortPasses)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(1);
+BENCHMARK(BM_LongFloor)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(3);
+BENCHMARK(BM_Contour2000)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(1);
+BENCHMARK(BM_CamProgram)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(1);
+BENCHMARK(BM_MoveLength)->Arg(10)->Arg(30)->Arg(100)->Arg(300)->Arg(1000)->Arg(3000)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

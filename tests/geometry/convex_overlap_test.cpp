@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <random>
 #include <vector>
 
 namespace lathesim {
@@ -33,6 +34,47 @@ TEST(ConvexOverlap, TriangleClippedByASquare) {
 TEST(ConvexOverlap, DisjointOrTouchingIsEmpty) {
   EXPECT_EQ(overlapOf(box(0, 0, 1, 1), box(2, 2, 3, 3)).areaMm2, 0.0);
   EXPECT_EQ(overlapOf(box(0, 0, 1, 1), box(1, 0, 2, 1)).areaMm2, 0.0);
+}
+
+double areaOf(const std::vector<ConvexPolygon>& pieces) {
+  double area = 0.0;
+  for (const ConvexPolygon& piece : pieces) area += piece.area();
+  return area;
+}
+
+TEST(ConvexDifference, SquareMinusAnOverlappingSquare) {
+  // [0,2]² \ [1,3]²: an L of area 3, the two pieces not overlapping.
+  const auto pieces = differenceOf(box(0, 0, 2, 2), box(1, 1, 3, 3));
+  EXPECT_NEAR(areaOf(pieces), 3.0, 1e-12);
+}
+
+TEST(ConvexDifference, CoveredOrSharingOnlyABoundaryIsEmpty) {
+  EXPECT_TRUE(differenceOf(box(1, 1, 2, 2), box(0, 0, 3, 3)).empty());
+  EXPECT_TRUE(differenceOf(box(0, 0, 1, 1), box(0, 0, 1, 1)).empty());
+  // Disjoint: all of a is left.
+  EXPECT_NEAR(areaOf(differenceOf(box(0, 0, 1, 1), box(2, 2, 3, 3))), 1.0, 1e-12);
+}
+
+TEST(ConvexDifference, RandomPolygonsSplitIntoTheOverlapAndTheDifference) {
+  // Random hulls: the pieces and the overlap tile a (areas add up), every sample of a lies in
+  // b or in a piece, and no sample outside a lies in a piece.
+  std::mt19937 random(14);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<RZ> pa, pb;
+    for (int i = 0; i < 7; ++i) pa.emplace_back(coordinate(random), coordinate(random));
+    for (int i = 0; i < 5; ++i) pb.emplace_back(coordinate(random) + 0.5, coordinate(random));
+    const ConvexPolygon a = ConvexPolygon::hullOf(pa), b = ConvexPolygon::hullOf(pb);
+    const auto pieces = differenceOf(a, b);
+    EXPECT_NEAR(areaOf(pieces) + overlapOf(a, b).areaMm2, a.area(), 1e-9) << trial;
+    for (int s = 0; s < 200; ++s) {
+      const RZ p(coordinate(random), coordinate(random));
+      bool inPiece = false;
+      for (const ConvexPolygon& piece : pieces) inPiece |= piece.signedDistance(p) < -1e-9;
+      if (a.signedDistance(p) < -1e-9 && b.signedDistance(p) > 1e-9) EXPECT_TRUE(inPiece) << trial;
+      if (a.signedDistance(p) > 1e-9 || b.signedDistance(p) < -1e-9) EXPECT_FALSE(inPiece) << trial;
+    }
+  }
 }
 
 }  // namespace

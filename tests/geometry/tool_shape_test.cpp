@@ -225,5 +225,18 @@ TEST(ToolShape, Drill) {
   EXPECT_FALSE(drillTool(10.0, 118.0, 2.0).tool);
 }
 
+// A radius no tool has (a thread of pitch 555 555 552 mm, as the ISO code harness named it in
+// a comment: a 69 km nose) is drawn with a bounded number of chords, each within a millionth
+// of the radius; it was 300 000 chords and seconds for one comment. The V is still that
+// pitch wide at its top.
+TEST(ToolShape, ANoseOfKilometresTakesABoundedNumberOfChords) {
+  const double pitch = 555555552.0;
+  const BuiltTool built = threadTool(55.0, pitch, 0.125 * pitch, std::nullopt);
+  ASSERT_TRUE(built.tool) << built.problem;
+  EXPECT_LT(built.tool->cutter.vertices().size(), 3000u);
+  EXPECT_NEAR(built.tool->cutter.lowerBound().y(), -pitch / 2, 1e-6 * pitch);
+  EXPECT_NEAR(built.tool->cutter.upperBound().y(), pitch / 2, 1e-6 * pitch);
+}
+
 }  // namespace
 }  // namespace lathesim

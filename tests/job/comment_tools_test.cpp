@@ -89,5 +89,12 @@ TEST(CommentTools, VeryLongCommentsAndNumbersAreReadWithoutHarm) {
   EXPECT_TRUE(toolNamedIn("DRILL 12" + std::string(300000, ' '), 5, kBarMm));
 }
 
+// Found by the ISO code harness: this comment drew its 69 km nose with 300 000 chords.
+TEST(CommentTools, AThreadOfAbsurdPitchIsDrawnAtOnce) {
+  const auto thread = toolNamedIn("THREAD 55 DEG\xa0P555555552", 3, kBarMm);
+  ASSERT_TRUE(thread);
+  EXPECT_LT(thread->tool.outline.vertices().size(), 3000u);
+}
+
 }  // namespace
 }  // namespace lathesim::job

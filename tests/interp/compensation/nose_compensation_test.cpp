@@ -235,6 +235,19 @@ TEST(NoseCompensation, ZeroRadiusLeavesThePathAsProgrammed) {
                                      {kRapid, 15, -5, 20, -5}});
 }
 
+// With no G41/G42 anywhere the path is passed as it is, but for what compensation always does:
+// the zero-length G01 Z5 (the tool is at Z5 already) is left out, the dwell stays where the
+// tool stands.
+TEST(NoseCompensation, WithoutAnyCompensationZeroLengthMovesAreLeftOutAndDwellsStay) {
+  const auto result =
+      test::run("T0101 G99\nG00 X20 Z5\nG01 Z5 F0.1\nG04 X1.\nG01 X30 Z-5\nM30\n", compOptions());
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  expectPath(result.toolpath.moves, {{kRapid, 100, 200, 10, 5},
+                                     {MoveKind::Dwell, 10, 5, 10, 5},
+                                     {kFeed, 10, 5, 15, -5}});
+  EXPECT_EQ(result.toolpath.moves[1].line, 4);
+}
+
 TEST(NoseCompensation, ArcInTheStartUpBlockIsAnError) {
   test::expectError(test::run("T0101 G99\nG00 X20 Z5\nG42 G02 X30 Z0 R5 F0.1\nM30\n",
                               compOptions()),

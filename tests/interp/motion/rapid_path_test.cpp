@@ -170,5 +170,36 @@ TEST(RapidPath, TheRapidsOfACycleAreDogLegs) {
               {{kRapid, 26, 2, 26.75, 3, 0, 1}, {kRapid, 26.75, 3, 29, 3, 0, 1}});
 }
 
+// The legs are added in place: rapids that split, between moves that stay, each move keeping
+// its block and the path staying joined. A (r 10, Z0) → (r 30, Z-20): Z first (0.0025 min),
+// X +15: corner (25, -20). B (r 30, Z10) → (r 90, Z30): Z first (0.0025 min), X +15: corner
+// (45, 30). The feed, the Z-only rapid and the dwell stay as they are.
+TEST(RapidPath, LegsAreAddedInPlaceBetweenMovesThatStay) {
+  const auto move = [](MoveKind kind, RZ from, RZ to, int block) {
+    Move m;
+    m.kind = kind, m.from = from, m.to = to, m.block = block;
+    return m;
+  };
+  std::vector<Move> moves = {move(MoveKind::Rapid, {10, 0}, {30, -20}, 0),
+                             move(MoveKind::Feed, {30, -20}, {30, -40}, 1),
+                             move(MoveKind::Rapid, {30, -40}, {30, 10}, 2),
+                             move(MoveKind::Rapid, {30, 10}, {90, 30}, 3),
+                             move(MoveKind::Dwell, {90, 30}, {90, 30}, 4)};
+  splitRapidsIntoAxisLegs(moves, MachineLimits{});
+  const std::vector<std::pair<RZ, int>> ends = {{{25, -20}, 0}, {{30, -20}, 0}, {{30, -40}, 1}, {{30, 10}, 2},
+                                                {{45, 30}, 3},  {{90, 30}, 3},  {{90, 30}, 4}};
+  ASSERT_EQ(moves.size(), ends.size());
+  RZ at(10, 0);
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_NEAR((moves[i].from - at).norm(), 0, 1e-12);
+    EXPECT_NEAR((moves[i].to - ends[i].first).norm(), 0, 1e-12);
+    EXPECT_EQ(moves[i].block, ends[i].second);
+    at = moves[i].to;
+  }
+  EXPECT_EQ(moves[6].kind, MoveKind::Dwell);
+  EXPECT_EQ(moves[2].kind, MoveKind::Feed);
+}
+
 }  // namespace
 }  // namespace lathesim::interp
