@@ -62,7 +62,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
   std::vector<Error> notes;
-  Program program = readProgram(programText, options.control.blockSkip, options.dialect);
+  Program program = readProgram(programText, options.control.blockSkip, options.dialect, options.control.machineMCodes);
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
   if (status.ok()) status = refuseEmptyProgram(program, programText);

@@ -34,6 +34,7 @@ struct InterpreterOptions {
   ControlParameters control;          // how the control reads and runs it (control_preset.hpp);
                                       // gsk980tdi's parameters by default
   std::optional<RZ> referencePosition;  // G28's reference point (radius, Z); startPosition if unset
+  std::optional<RZ> secondReferencePosition;  // G30's (radius, Z); unset: G30 is an error
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
   WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)

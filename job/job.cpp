@@ -41,7 +41,7 @@ std::string toolDefinitionHint(int number) {
 // T words no setup defines, mounted from what their blocks' comments name (comment_tools.hpp).
 void mountToolsNamedInComments(Job& job, const std::string& programName) {
   const interp::Program program = interp::readProgram(job.programText, job.setup.control.parameters.blockSkip,
-                                                      job.setup.dialect);
+                                                      job.setup.dialect, job.setup.control.parameters.machineMCodes);
   Setup& setup = job.setup;
   std::vector<int> mounted;
   for (const interp::ProgramBlock& block : program.blocks) {
@@ -87,6 +87,7 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.offsets = setup.offsets;
   options.workOffsets = setup.workOffsets;
   options.machineZero = setup.machineZero;
+  options.secondReferencePosition = setup.secondReferencePosition;
   options.maxSteps = setup.macro.maxSteps;
   options.macroVariables = setup.macro.variables;
   options.maxMoves = setup.maxMoves;

@@ -273,14 +273,16 @@ std::optional<std::pair<double, double>> rangeOf(const toml::node& node, const s
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   rejectUnknownKeys(table, "machine.",
                     {"start", "rapid", "max_rpm", "reference", "travel_x", "travel_z", "dialect", "initial_feed_mode",
-                     "thread_runout", "zero"},
+                     "thread_runout", "zero", "second_reference"},
                     report);
   if (const auto* node = table.get("travel_x")) setup.travelXDiameterMm = rangeOf(*node, "machine.travel_x", report);
   if (const auto* node = table.get("travel_z")) setup.travelZMm = rangeOf(*node, "machine.travel_z", report);
   if (const auto* node = table.get("dialect")) {
     using interp::kDialects, interp::dialectName;
     if (auto i = choiceOf(*node, "machine.dialect",
-                          {dialectName(kDialects[0]), dialectName(kDialects[1]), dialectName(kDialects[2])}, report))
+                          {dialectName(kDialects[0]), dialectName(kDialects[1]), dialectName(kDialects[2]),
+                           dialectName(kDialects[3])},
+                          report))
       setup.dialect = kDialects[*i];
   }
   // The older spelling of control.power_on_feed_mode.
@@ -300,6 +302,8 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
     if (auto p = positionOf(*node, "machine.reference", report)) setup.referencePosition = *p;
   if (const auto* node = table.get("zero"))
     if (auto p = positionOf(*node, "machine.zero", report)) setup.machineZero = *p;
+  if (const auto* node = table.get("second_reference"))
+    if (auto p = positionOf(*node, "machine.second_reference", report)) setup.secondReferencePosition = *p;
   if (const auto* node = table.get("rapid")) readRapid(*node, setup.machine, report);
   if (const auto* node = table.get("max_rpm"))
     if (auto v = positiveRate(*node, "machine.max_rpm", "rpm", report)) setup.machine.maxRpm = *v;

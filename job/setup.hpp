@@ -55,6 +55,7 @@ struct Setup {
   interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
   interp::WorkOffsets workOffsets = interp::zeroWorkOffsets();  // [[work_offset]]: G54–G59
   std::optional<RZ> machineZero;      // [machine] zero: G53's zero (radius, Z); unset: the reference point
+  std::optional<RZ> secondReferencePosition;  // [machine] second_reference: G30's point (radius, Z)
   MacroSetup macro;                   // [macro] (job/macro_setup.hpp): step limit, variables
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "interp/control/machine_m_codes.hpp"
 #include "interp/move.hpp"
 
 namespace lathesim::interp {
@@ -54,6 +55,10 @@ enum class ChamferSize { Length, FromCorner };
 /// or threads per inch.
 enum class ThreadEWord { None, Lead, ThreadsPerInch };
 
+/// G04 P: always milliseconds (GSK, Fanuc), or seconds when P has a decimal point and
+/// milliseconds when not (Haas).
+enum class DwellPWord { Milliseconds, SecondsWithPoint };
+
 /// The defaults are the gsk980tdi preset's values (control_preset.cpp; a test keeps them equal).
 struct ControlParameters {
   RapidPath rapidPath{};
@@ -62,6 +67,7 @@ struct ControlParameters {
   IncrementWordInput incrementWordInput{};
   bool blockSkip = true;                // the operator's block skip switch: '/' blocks skipped
   FeedMode powerOnFeedMode{};           // G98 or G99 before the program names one
+  bool powerOnMetric = true;            // G21 (mm) or G20 (inch) before the program names one
   bool roughingRetractAtFeed = true;    // G71/G72 step 4, the 45° retract: at F, or rapid
   bool peckXWordsAreDiameters = true;   // G74/G75 P(Δi) and G74 R(Δd): diameters or radii
   PeckReliefWithoutShift peckReliefWithoutShift{};
@@ -74,6 +80,8 @@ struct ControlParameters {
   CornerWords cornerWords{};
   ChamferSize chamferSize{};
   std::vector<std::string> toolWordForms{"2+2"};  // the T word's forms (tool_word.hpp)
+  MachineMCodes machineMCodes{};    // whose machine M codes are accepted and ignored
+  DwellPWord dwellPWord{};          // G04 P: milliseconds, or seconds when written with a point
   // The compound cycles' first-block values before a program gives them:
   double roughingDepthMm = 1.0;     // G71/G72 Δd
   double roughingRetractMm = 0.5;   // G71/G72 e

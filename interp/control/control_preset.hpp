@@ -52,7 +52,7 @@ inline constexpr std::string_view kDefaultControlPreset = "gsk980tdi";
 /// The preset named `name`, or nullopt.
 std::optional<Control> controlPreset(std::string_view name);
 
-/// The presets' names: gsk980tdi, fanuc-0i-t.
+/// The presets' names: gsk980tdi, fanuc-0i-t, haas.
 std::vector<std::string_view> controlPresets();
 
 /// Every parameter's key, in the table's order.

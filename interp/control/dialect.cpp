@@ -13,6 +13,7 @@ std::string_view dialectName(Dialect dialect) {
     case Dialect::FanucA: return "fanuc-a";
     case Dialect::FanucB: return "fanuc-b";
     case Dialect::Hnc: return "hnc";
+    case Dialect::Haas: return "haas";
   }
   return "unknown";
 }

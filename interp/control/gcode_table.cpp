@@ -24,6 +24,7 @@ constexpr std::array kGCodes{
     GCodeInfo{20, GGroup::Units, true, "inch input"},
     GCodeInfo{21, GGroup::Units, true, "metric input"},
     GCodeInfo{28, GGroup::NonModal, true, "reference point return"},
+    GCodeInfo{30, GGroup::NonModal, true, "second reference point return"},
     GCodeInfo{32, GGroup::Motion, true, "thread cutting"},
     GCodeInfo{40, GGroup::NoseRadius, true, "nose radius compensation cancel"},
     GCodeInfo{41, GGroup::NoseRadius, true, "nose radius compensation left"},
@@ -45,6 +46,9 @@ constexpr std::array kGCodes{
     GCodeInfo{75, GGroup::NonModal, true, "grooving cycle"},
     GCodeInfo{76, GGroup::NonModal, true, "multiple threading cycle"},
     GCodeInfo{80, GGroup::DrillingCycle, true, "drilling cycle cancel"},
+    GCodeInfo{81, GGroup::DrillingCycle, true, "drilling cycle on the axis"},
+    GCodeInfo{82, GGroup::DrillingCycle, true, "spot drilling cycle on the axis (dwell at the bottom)"},
+    GCodeInfo{83, GGroup::DrillingCycle, true, "peck drilling cycle on the axis"},
     GCodeInfo{87, GGroup::NonModal, false, "side drilling cycle", "live tooling (a driven tool drills radial holes)"},
     GCodeInfo{88, GGroup::NonModal, false, "side tapping cycle", "live tooling (a driven tool taps radial holes)"},
     GCodeInfo{89, GGroup::NonModal, false, "side boring cycle", "live tooling (a driven tool bores radial holes)"},
@@ -78,6 +82,7 @@ constexpr std::array kMCodes{
     MCodeInfo{35, MGroup::PartsCatcher, true, "parts catcher to the part-off position (Haas)"},
     MCodeInfo{36, MGroup::PartsCatcher, true, "parts catcher on (Haas)"},
     MCodeInfo{37, MGroup::PartsCatcher, true, "parts catcher off (Haas)"},
+    MCodeInfo{97, MGroup::Subprogram, true, "local subprogram call (Haas)"},
     MCodeInfo{98, MGroup::Subprogram, true, "subprogram call"},
     MCodeInfo{99, MGroup::Subprogram, true, "subprogram return"},
     MCodeInfo{133, MGroup::Spindle, false, "live tool forward (Haas)", "live tooling (a driven tool spindle)"},
@@ -141,6 +146,8 @@ std::span<const Renumbered> renumberingOf(Dialect dialect) {
     case Dialect::FanucA: return {};
     case Dialect::FanucB: return kFanucB;
     case Dialect::Hnc: return kHnc;
+    case Dialect::Haas: return {};  // system A's numbers; the one-block cycle forms are read
+                                    // by the cycles (haas_roughing.cpp, haas_g76.cpp)
   }
   return {};
 }

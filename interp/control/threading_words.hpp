@@ -20,6 +20,7 @@ inline ThreadingWords threadingWords(Dialect dialect) {
     case Dialect::FanucA: return {true, true, true, false, false, false};  // GSK980TDi
     case Dialect::FanucB: return {false, false, false, false, false, true};
     case Dialect::Hnc: return {false, false, false, true, true, false};
+    case Dialect::Haas: return {false, false, false, false, false, false};  // G76 A: 0–120° (Haas)
   }
   return {};
 }

@@ -13,9 +13,12 @@ struct ToolWordForm {
   std::size_t toolDigits;
   std::size_t offsetDigits;
   std::string_view example;
+  bool shortIsTool = false;  // a word no longer than the offset digits names the tool and its
+                             // own offset (Haas: T1 is tool 1 with offset 1), not an offset
 };
 
-constexpr std::array kForms{ToolWordForm{"2+2", 2, 2, "T0101"}, ToolWordForm{"3+3", 3, 3, "T001001"}};
+constexpr std::array kForms{ToolWordForm{"2+2", 2, 2, "T0101"}, ToolWordForm{"3+3", 3, 3, "T001001"},
+                            ToolWordForm{"haas", 2, 2, "T101 or T1", true}};
 
 const ToolWordForm* formNamed(std::string_view name) {
   for (const ToolWordForm& form : kForms)
@@ -39,6 +42,13 @@ Result<ToolWord> readToolWord(const Word& word, const std::vector<std::string>& 
     ToolWord read;
     read.tool = split == 0 ? 0 : std::stoi(digits.substr(0, split));
     read.offset = std::stoi(digits.substr(split));
+    if (split == 0 && read.offset != 0 && form->shortIsTool) {
+      read.tool = read.offset;
+      read.note = fmt::format("{} is read as tool {} with offset {}, as a Haas control reads a short T word ({})",
+                              word.text(), read.tool, read.offset,
+                              fmt::format("T{}{:0{}}", read.tool, read.offset, form->offsetDigits));
+      return read;
+    }
     // T0 and T00 cancel the offset (common); T1 or T12 would pick an offset of the tool in place,
     // which a program meaning "tool 1" (as Haas reads T1) does not intend.
     if (split == 0 && read.offset != 0) {

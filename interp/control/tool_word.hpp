@@ -4,6 +4,7 @@
 //   "2+2"  up to four digits: the last two the offset, the rest the tool. T0101 and T101 are
 //          tool 1 with offset 1, T0 and T00 offset 0 (the offset cancelled) with no tool change
 //   "3+3"  up to six digits: the last three the offset, T001001
+//   "haas" as "2+2", but one or two digits name the tool with its own offset: T1 is T101
 // Tool 0 changes no tool: the one mounted stays. A word with a sign, a point or more digits than
 // every form holds (T01001 under "2+2") fits none and is an error, never a tool read wrongly.
 

@@ -11,6 +11,7 @@
 #include "interp/cycles/contour_blocks.hpp"
 #include "interp/cycles/g73_cycle.hpp"
 #include "interp/cycles/g76_cycle.hpp"
+#include "interp/cycles/haas_g76.hpp"
 #include "interp/cycles/thread_words.hpp"
 #include "interp/compensation/nose_compensation.hpp"
 #include "interp/cycles/peck_cycle.hpp"
@@ -58,7 +59,10 @@ class CompoundCycle {
 
   Status finishing();  // G70
   Status roughing();   // G71, G72
+  Status haasRoughing();  // G71, G72 in the Haas one-block form
   Status patternRepeat();  // G73
+  Status patternValues(const std::optional<Word>& reliefX, const std::optional<Word>& reliefZ,
+                       const std::optional<Word>& passes);
   Status peck(const PeckCycle& cycle);  // G74, G75
   Status multipleThreading();  // G76
   Status threadingParameters();  // G76's first block
@@ -205,6 +209,7 @@ Status CompoundCycle::finishing() {
 
 // G71 U(Δd) R(e) / G72 W(Δd) R(e); then G71/G72 P Q U(Δu) W(Δw).
 Status CompoundCycle::roughing() {
+  if (options_.dialect == Dialect::Haas) return haasRoughing();
   const bool turning = code_.number == 71;
   if (!block_.has('P') && !block_.has('Q')) {
     const auto depth = block_.take(turning ? 'U' : 'W');
@@ -254,6 +259,49 @@ Status CompoundCycle::roughing() {
   return success();
 }
 
+// Haas: one block, G71/G72 P Q [U W D I K F] (Haas lathe manual, "G71 O.D./I.D. Stock Removal
+// Cycle"): D the depth of each pass (a radius; Setting 72, control g71_depth, when left out),
+// the retract Setting 73 (g71_retract); U/W the finishing allowance left for G70 (as Fanuc's
+// second block), I/K the rough allowance (X as a radius, Z) that the roughing levels leave on
+// top of it. The levels rough against the contour shifted by (U/2 + I, W + K); the pass along
+// the contour that ends the cycle follows it shifted by (U/2, W) (stock_removal.cpp).
+Status CompoundCycle::haasRoughing() {
+  const bool turning = code_.number == 71;
+  if (!block_.has('P') || !block_.has('Q')) {
+    return errorAt(code_.column, fmt::format("{0} in the Haas form is one block, {0} P(first N) Q(last N) [U W D I K "
+                                             "F]: P and Q name the contour (the two-block form {0} {1} R; {0} P Q "
+                                             "is Fanuc's: --dialect fanuc-a)",
+                                             code_.text, turning ? 'U' : 'W'));
+  }
+  if (const auto r = block_.take('R')) {
+    return errorAt(r->column, fmt::format("{} {}: YASNAC's type II selection is not read; a contour whose first "
+                                          "block moves both X and Z is type II already",
+                                          code_.text, r->text()));
+  }
+  const auto depth = block_.take('D');
+  const auto roughX = block_.take('I');
+  const auto roughZ = block_.take('K');
+  if (auto s = positive(depth, "a depth of cut D"); !s.ok()) return s;
+  auto read = contourBlock();
+  if (!read.ok()) return read.error();
+  const ContourBlock& b = read.value();
+  RoughingParams params;
+  params.depthMm = depth ? length(*depth) : options_.control.roughingDepthMm;
+  params.retractMm = options_.control.roughingRetractMm;
+  params.allowanceXMm = b.allowanceXMm;
+  params.allowanceZMm = b.allowanceZMm;
+  params.roughAllowanceXMm = roughX ? length(*roughX) : 0.0;
+  params.roughAllowanceZMm = roughZ ? length(*roughZ) : 0.0;
+  params.typeII = b.contour.firstBlockHasX && b.contour.firstBlockHasZ;
+  params.retractAtFeed = options_.control.roughingRetractAtFeed;
+  auto legs = turning ? turningRoughingLegs(state_.position, b.contour.contour, params)
+                      : facingRoughingLegs(state_.position, b.contour.contour, params);
+  if (!legs.ok()) return legs.error();
+  outcome_.legs = std::move(legs.value());
+  continueAfter(b.span);
+  return success();
+}
+
 Result<CompoundCycle::ContourBlock> CompoundCycle::contourBlock() {
   auto span = contourSpan();
   if (!span.ok()) return span.error();
@@ -266,24 +314,31 @@ Result<CompoundCycle::ContourBlock> CompoundCycle::contourBlock() {
                       w ? length(*w) : 0.0};
 }
 
-// G73 U(Δi) W(Δk) R(d); then G73 P Q U(Δu) W(Δw).
+// G73's relief Δi (X, a radius), Δk and passes d, kept for the blocks after.
+Status CompoundCycle::patternValues(const std::optional<Word>& reliefX, const std::optional<Word>& reliefZ,
+                                    const std::optional<Word>& passes) {
+  if (passes && passes->value >= 1 && std::floor(passes->value) != passes->value)  // R2. is read as 2, R2.5 is no count
+    return errorAt(passes->column,
+                   fmt::format("G73 {} is not a number of passes d: {}", passes->text(), decimalPointSlip(*passes)));
+  if (passes && (passes->value < 1 || std::floor(passes->value) != passes->value)) {
+    return errorAt(passes->column, fmt::format("G73 {} is not a number of passes d: expected a "
+                                               "whole number ≥ 1",
+                                               passes->text()));
+  }
+  if (reliefX) state_.compound.patternReliefXMm = length(*reliefX);
+  if (reliefZ) state_.compound.patternReliefZMm = length(*reliefZ);
+  if (passes) state_.compound.patternPasses = static_cast<int>(passes->value);
+  state_.compound.patternGiven = true;
+  return success();
+}
+
+// G73 U(Δi) W(Δk) R(d); then G73 P Q U(Δu) W(Δw). Haas writes one block, G73 P Q I(Δi) K(Δk)
+// D(d) U W F.
 Status CompoundCycle::patternRepeat() {
-  if (!block_.has('P') && !block_.has('Q')) {
-    const auto u = block_.take('U');
-    const auto w = block_.take('W');
-    const auto r = block_.take('R');
-    if (r && r->value >= 1 && std::floor(r->value) != r->value)  // R2. is read as 2, R2.5 is no count
-      return errorAt(r->column, fmt::format("G73 {} is not a number of passes d: {}", r->text(), decimalPointSlip(*r)));
-    if (r && (r->value < 1 || std::floor(r->value) != r->value)) {
-      return errorAt(r->column, fmt::format("G73 {} is not a number of passes d: expected a "
-                                            "whole number ≥ 1",
-                                            r->text()));
-    }
-    if (u) state_.compound.patternReliefXMm = length(*u);
-    if (w) state_.compound.patternReliefZMm = length(*w);
-    if (r) state_.compound.patternPasses = static_cast<int>(r->value);
-    state_.compound.patternGiven = true;
-    return success();
+  if (options_.dialect == Dialect::Haas) {
+    if (auto s = patternValues(block_.take('I'), block_.take('K'), block_.take('D')); !s.ok()) return s;
+  } else if (!block_.has('P') && !block_.has('Q')) {
+    return patternValues(block_.take('U'), block_.take('W'), block_.take('R'));
   }
   auto read = contourBlock();
   if (!read.ok()) return read.error();
@@ -321,13 +376,16 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
     if (r) state_.compound.peckRetractMm = length(*r);
     return success();
   }
+  // Haas writes the pecks as lengths, I along X (a radius) and K along Z, and D for the relief
+  // at the bottom; the back-off after each peck is the control's (Setting 22: g74_retract).
+  const bool haas = options_.dialect == Dialect::Haas;
   const auto x = block_.take('X');
   const auto u = block_.take('U');
   const auto z = block_.take('Z');
   const auto w = block_.take('W');
-  const auto p = block_.take('P');
-  const auto q = block_.take('Q');
-  const auto r = block_.take('R');
+  const auto p = block_.take(haas ? 'I' : 'P');
+  const auto q = block_.take(haas ? 'K' : 'Q');
+  const auto r = block_.take(haas ? 'D' : 'R');
   if (auto s = oneOf(x, u, "X"); !s.ok()) return s;
   if (auto s = oneOf(z, w, "Z"); !s.ok()) return s;
   for (const auto* word : {&p, &q}) {
@@ -343,9 +401,10 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
 
   // GSK documents G74/G75's X-axis P and G74's R(Δd) as diameters, Fanuc figures as radii
   // (control parameter g74_x_words). G75's back-off e is a radius like every other retract.
-  const double xScale = options_.control.peckXWordsAreDiameters ? 0.5 : 1.0;
-  const auto increment = [this](const std::optional<Word>& word, double scale) {
-    return word ? incrementLengthMm(*word, NumberReading::of(options_.control, state_.inch)) * scale : 0.0;
+  const double xScale = options_.control.peckXWordsAreDiameters && !haas ? 0.5 : 1.0;
+  const auto increment = [this, haas](const std::optional<Word>& word, double scale) {
+    if (!word) return 0.0;
+    return (haas ? length(*word) : incrementLengthMm(*word, NumberReading::of(options_.control, state_.inch))) * scale;
   };
   // G74: Q pecks in Z, P steps in X; G75: P pecks in X, Q steps in Z.
   const std::optional<Word>& peckWord = g74 ? q : p;
@@ -363,8 +422,8 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
 
   const double peckTravel = g74 ? end.y() - start.y() : end.x() - start.x();
   const double shiftTravel = g74 ? end.x() - start.x() : end.y() - start.y();
-  const char peckLetter = g74 ? 'Q' : 'P';
-  const char shiftLetter = g74 ? 'P' : 'Q';
+  const char peckLetter = haas ? (g74 ? 'K' : 'I') : g74 ? 'Q' : 'P';
+  const char shiftLetter = haas ? (g74 ? 'I' : 'K') : g74 ? 'P' : 'Q';
   if (peckTravel != 0 && params.peckMm <= 0) {
     return errorAt(peckWord ? peckWord->column : code_.column,
                    fmt::format("{} needs {}(Δ{}) > 0, the depth of each peck along {}", code_.text,
@@ -425,6 +484,13 @@ Status CompoundCycle::threadingParameters() {
 
 // G76 X(U) Z(W) R(i) P(k) Q(Δd) F(L): the passes (g76_cycle.hpp).
 Status CompoundCycle::multipleThreading() {
+  if (options_.dialect == Dialect::Haas) {  // one block: G76 X(U) Z(W) K D F [A I P] (haas_g76.hpp)
+    auto legs = haasThreadingLegs(code_, block_, state_, options_, feedGiven_,
+                                  [this](const Word& word) { return length(word); }, warnings_);
+    if (!legs.ok()) return legs.error();
+    outcome_.legs = std::move(legs.value());
+    return success();
+  }
   if (options_.dialect == Dialect::Hnc) return hncMultipleThreading();
   if (!block_.has('X') && !block_.has('U') && !block_.has('Z') && !block_.has('W')) return threadingParameters();
   const ThreadingWords words = threadingWords(options_.dialect);

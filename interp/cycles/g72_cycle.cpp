@@ -18,6 +18,8 @@ Result<std::vector<CycleLeg>> facingRoughingLegs(const RZ& start, const Contour&
   RoughingParams mirroredParams = params;
   mirroredParams.allowanceXMm = params.allowanceZMm;
   mirroredParams.allowanceZMm = params.allowanceXMm;
+  mirroredParams.roughAllowanceXMm = params.roughAllowanceZMm;
+  mirroredParams.roughAllowanceZMm = params.roughAllowanceXMm;
   auto legs = stockRemovalLegs(swappedAxes(start), swappedAxes(contour), mirroredParams,
                                {"G72", "Z", "X"});
   if (!legs.ok()) return legs;

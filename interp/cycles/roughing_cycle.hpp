@@ -15,6 +15,8 @@ struct RoughingParams {
   double retractMm = 0;       // e: retract after each pass, ≥ 0
   double allowanceXMm = 0;    // Δu/2: finishing allowance in X as a RADIUS, signed
   double allowanceZMm = 0;    // Δw: finishing allowance in Z, signed
+  double roughAllowanceXMm = 0;  // Haas I: what the roughing levels leave on top of Δu/2 (a
+  double roughAllowanceZMm = 0;  // radius), and K on top of Δw; the closing contour pass does not
   bool retractAtFeed = true;  // GSK makes the 45° retract at cutting feed; Fanuc-style: rapid
   bool typeII = false;        // the ns block programs both axes (G71: X(U) and Z(W), W0
                               // included; G72: Z(W) and X(U)): pockets allowed

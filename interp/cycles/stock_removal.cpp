@@ -48,6 +48,9 @@
 // climb out take away the band between two levels next to the walls, so each band is cut
 // whole and every move stays on A′'s side of the rough contour.
 // The legs of zero length are left out.
+// Haas's one-block G71/G72 may add a rough allowance I (X, a radius) and K (Z): the levels then
+// rough against the contour translated by (Δu/2 + I, Δw + K) (A′ moves with it), and steps 6–7
+// go to and follow the contour translated by (Δu/2, Δw) alone. Without them both are the same.
 //
 // Errors, each at the contour block to blame (the ns block for Δd and e; line 0 for an
 // empty contour): empty contour; Δd ≤ 0; e < 0; ns block an arc; ns block not moving in X;
@@ -175,6 +178,8 @@ RZ typeOneLevelEnd(const Contour& rough, double levelMm) {
 struct Plan {
   RZ start;        // A
   Contour rough;   // the rough contour: front().from is A′, front().to is B′
+  Contour finish;  // the contour the closing pass follows: `rough`, or with Haas's I/K the
+                   // contour shifted by the finishing allowance alone
   double stepDir;  // +1/−1: the way the levels advance in X
   double cutDir;   // +1/−1: the way the passes run in Z
   MoveKind infeedKind;
@@ -183,9 +188,9 @@ struct Plan {
 };
 
 void semiFinishAndReturn(const Plan& plan, LegList& legs, int infeedStep) {
-  legs.straight(plan.infeedKind, plan.rough.front().to, infeedStep);
-  for (std::size_t i = 1; i < plan.rough.size(); ++i) {
-    legs.follow(plan.rough[i], plan.rough[i].to, 7);
+  legs.straight(plan.infeedKind, plan.finish.front().to, infeedStep);
+  for (std::size_t i = 1; i < plan.finish.size(); ++i) {
+    legs.follow(plan.finish[i], plan.finish[i].to, 7);
   }
   legs.straight(MoveKind::Rapid, plan.start, 8);
 }
@@ -472,8 +477,10 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
   const double stepDir = stepMm > 0 ? 1.0 : -1.0;
   const double cutDir = cuttingDirection(contour);
   if (auto problem = contourProblem(contour, params, stepDir, cutDir, names)) return *problem;
+  const RZ finishing(params.allowanceXMm, params.allowanceZMm);
   const Plan plan{start,
-                  translatedContour(contour, RZ(params.allowanceXMm, params.allowanceZMm)),
+                  translatedContour(contour, finishing + RZ(params.roughAllowanceXMm, params.roughAllowanceZMm)),
+                  translatedContour(contour, finishing),
                   stepDir,
                   cutDir,
                   ns.kind == MoveKind::Rapid ? MoveKind::Rapid : MoveKind::Feed,

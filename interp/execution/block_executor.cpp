@@ -15,6 +15,7 @@
 #include "interp/motion/feed_warnings.hpp"
 #include "interp/motion/drawing_angle.hpp"
 #include "interp/cycles/compound_cycle.hpp"
+#include "interp/cycles/drilling_cycle.hpp"
 #include "interp/motion/g28_return.hpp"
 #include "interp/compensation/cycle_nose_compensation.hpp"
 #include "interp/cycles/g90_cycle.hpp"
@@ -97,6 +98,7 @@ class Executor {
     return state_.offsetTable ? *state_.offsetTable : options_.offsets;
   }
   Status applyMotion();
+  Status applyDrillingCycle(const std::optional<Code>& code);
   Status applyStraightMove(const std::optional<Code>& code);
   Status applyArc(const std::optional<Code>& code);
   RZ endPoint(const AxisWords& axes);
@@ -157,6 +159,13 @@ Result<BlockOutcome> Executor::run() {
   applyWorkSystem(oneShot);
   noteDrillingCycleCancel();
   if (const auto motion = block_.gCode(GGroup::Motion); oneShot && motion) selectMotion(*motion);
+  // G81–G83 stay in force until G80 or a motion code; a block that gives an axis word drills again
+  // (at X0 only: a hole elsewhere needs live tooling, and is refused rather than moved to).
+  const auto drillCode = block_.gCode(GGroup::DrillingCycle);
+  if ((drillCode && drillCode->number == 80) || block_.gCode(GGroup::Motion)) state_.drillingCycle = 0;
+  const bool drills = !oneShot && ((drillCode && drillCode->number != 80) ||
+                                   (!drillCode && state_.drillingCycle != 0 &&
+                                    (block_.has('X') || block_.has('U') || block_.has('Z') || block_.has('W'))));
   const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
   if (oneShot && !compound) {
     if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
@@ -174,7 +183,10 @@ Result<BlockOutcome> Executor::run() {
   }
   if (coolant && coolant->number == 8) state_.coolantOn = true;
 
-  const Status moved = compound ? applyCompoundCycle(*oneShot) : oneShot ? success() : applyMotion();
+  const Status moved = compound   ? applyCompoundCycle(*oneShot)
+                       : oneShot  ? success()
+                       : drills   ? applyDrillingCycle(drillCode)
+                                  : applyMotion();
   if (!moved.ok()) return moved.error();
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
   if (!chainedThread_) {  // any other block ends a chain of G32 cuts
@@ -202,7 +214,12 @@ Status Executor::applySubprogramCode() {
     flow_.giveBack = giveBack;
     return success();
   }
-  auto call = takeSubprogramCall(block_, *code);
+  if (code->number == 97 && options_.dialect != Dialect::Haas) {
+    return errorAt(code->column, fmt::format("M97 is Haas's local subprogram call, not a code of dialect {}: choose "
+                                             "--dialect haas, or call an O program with M98",
+                                             dialectName(options_.dialect)));
+  }
+  auto call = code->number == 97 ? takeLocalSubprogramCall(block_, *code) : takeSubprogramCall(block_, *code);
   if (!call.ok()) return call.error();
   flow_.call = call.value();
   return success();
@@ -327,7 +344,7 @@ Status Executor::applyOneShot(const Code& code) {
   state_.cycle = {};
   state_.threadCycle = {};
   if (code.number == 50) return applyCoordinateSetting(code);
-  if (code.number == 28) return applyReferenceReturn(code);
+  if (code.number == 28 || code.number == 30) return applyReferenceReturn(code);
   if (code.number == 53) return applyMachineCoordinateMove(code);
   if (code.number == 10) return applyDataSetting(block_, code, state_, options_);
   return errorAt(code.column, fmt::format("{} is not supported by lathesim yet", code.text));
@@ -335,7 +352,8 @@ Status Executor::applyOneShot(const Code& code) {
 
 // G04 (GSK980TDi §3.14): X or U in seconds, P in milliseconds; with several, P wins over X and
 // X over U (the others are warned as ignored); none is an exact stop between blocks (no time);
-// a negative time dwells 0 s.
+// a negative time dwells 0 s. A Haas control (g04_p = "seconds_with_point") reads a P written
+// with a decimal point (or from a macro value) in seconds: G04 P1.5 is 1.5 s, G04 P1500 1.5 s.
 Status Executor::applyDwell(const Code&) {
   std::optional<Word> time;
   for (char letter : {'P', 'X', 'U'}) {
@@ -350,7 +368,11 @@ Status Executor::applyDwell(const Code&) {
     time = word;
   }
   if (!time) return success();
-  const double seconds = time->letter == 'P' ? time->value / kMsPerS : dwellSeconds(*time, reading());
+  const bool pInSeconds = options_.control.dwellPWord == DwellPWord::SecondsWithPoint &&
+                          (time->evaluated || hasDecimalPoint(*time));
+  const double seconds = time->letter != 'P' ? dwellSeconds(*time, reading())
+                         : pInSeconds        ? time->value
+                                             : time->value / kMsPerS;
   emit(MoveKind::Dwell, state_.position, state_.position, 0);
   moves_.back().dwellS = std::max(seconds, 0.0);
   return success();
@@ -379,18 +401,40 @@ Status Executor::applyReferenceReturn(const Code& code) {
   auto axes = takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
-  if (!a.any()) {
-    return errorAt(code.column, "G28 needs X(U) and/or Z(W): the intermediate point of the axes "
-                                "to return (G28 U0 W0 returns both straight from here)");
+  // G30 goes to the second reference point (P2, the default; the setup's second_reference).
+  const bool second = code.number == 30;
+  if (second) {
+    if (const auto p = block_.take('P'); p && p->value != 2) {
+      return errorAt(p->column, fmt::format("G30 {}: only the second reference point (P2) is known; a third or "
+                                            "fourth is not in the setup",
+                                            p->text()));
+    }
+    if (!options_.secondReferencePosition) {
+      return errorAt(code.column, "G30 returns to the second reference point, which the setup does not give: add "
+                                  "[machine] second_reference = [X, Z]");
+    }
+  }
+  // Haas: G28 with no axis word sends every axis home, straight from where it stands.
+  const bool everyAxis = !a.any() && options_.dialect == Dialect::Haas;
+  if (!a.any() && !everyAxis) {
+    return errorAt(code.column, fmt::format("{} needs X(U) and/or Z(W): the intermediate point of the axes "
+                                            "to return ({} U0 W0 returns both straight from here)",
+                                            code.text, code.text));
   }
   const RZ& p = state_.position;
   std::optional<double> radiusMm, zMm;
+  if (everyAxis) {
+    radiusMm = p.x();
+    zMm = p.y();
+  }
   if (a.x) radiusMm = length(*a.x) / 2.0;
   if (a.u) radiusMm = p.x() + length(*a.u) / 2.0;
   if (a.z) zMm = length(*a.z);
   if (a.w) zMm = p.y() + length(*a.w);
   // The reference point is the machine's: in the program's frame it moves with G54–G59 and G50.
-  const RZ reference = options_.referencePosition.value_or(options_.startPosition) - state_.frame.shift();
+  const RZ machinePoint = second ? *options_.secondReferencePosition
+                                 : options_.referencePosition.value_or(options_.startPosition);
+  const RZ reference = machinePoint - state_.frame.shift();
   const std::vector<CycleLeg> legs = referenceReturnLegs(p, radiusMm, zMm, reference);
   // Under G41/G42 the compensation is suspended at the intermediate point (lathe-cycles.md §10):
   // the legs are no part of the chain, which ends with the move before them and resumes with a
@@ -956,6 +1000,80 @@ void Executor::warnIfSurfaceSpeedUnclamped() {
                                    "limited only by the machine's max_rpm ({:g} rpm); give G50 S "
                                    "(the rpm limit) before G96",
                                    options_.machine.maxRpm)});
+}
+
+// G81 Z(W) R F, G82 … P (dwell at the bottom), G83 … Q (peck) [P]: drilling on the axis from
+// the tool's position (drilling_cycle.hpp). R is the R point's Z on a Haas (⚠) and its distance
+// from the start's Z on Fanuc T (⚠); without it the feed starts where the tool stands. Q is a
+// length (Haas) or least increments without a point (Fanuc's [LII]); P counts as G04's P. X may
+// only be X0 (U0): with no live tool a drill cuts on the axis alone.
+Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
+  const bool haas = options_.dialect == Dialect::Haas;
+  const int cycle = code ? code->number : state_.drillingCycle;
+  const std::string name = fmt::format("G{}", cycle);
+  const int anchor = code ? code->column : block_.column;
+  auto axes = takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  RZ start = state_.position;
+  if (a.x) start.x() = length(*a.x) / 2.0;
+  if (a.u) start.x() += length(*a.u) / 2.0;
+  if (std::abs(start.x()) > 1e-9) {
+    return errorAt(a.x ? a.x->column : a.u ? a.u->column : anchor,
+                   fmt::format("{} drills on the spindle's axis, but the tool would stand at X{:g}: a hole off the axis "
+                               "needs live tooling, which this lathe does not have (give X0)",
+                               name, 2.0 * start.x()));
+  }
+  if (code && !a.z && !a.w) return errorAt(anchor, fmt::format("{} needs Z(W): the hole's bottom", name));
+  if (a.z) state_.drillingBottomZ = length(*a.z);
+  if (a.w) state_.drillingBottomZ = state_.position.y() + length(*a.w);
+  const double bottomZ = state_.drillingBottomZ;
+  const auto r = block_.take('R');
+  const auto q = block_.take('Q');
+  const auto p = block_.take('P');
+  if (code) {  // a new cycle: its R point, peck and dwell are kept for the blocks that repeat it
+    state_.drillingCycle = cycle;
+    state_.drillingRPlaneZ = !r ? state_.position.y() : haas ? length(*r) : state_.position.y() + length(*r);
+    state_.drillingPeckMm = 0;
+    state_.drillingDwellS = 0;
+  } else if (r) {
+    state_.drillingRPlaneZ = haas ? length(*r) : state_.position.y() + length(*r);
+  }
+  if (q) {
+    if (cycle != 83) return errorAt(q->column, fmt::format("{} {}: only G83 pecks", name, q->text()));
+    const double peck = haas ? length(*q) : incrementLengthMm(*q, reading());
+    if (!(peck > 0)) return errorAt(q->column, fmt::format("G83 {} is not a peck depth: expected a number > 0", q->text()));
+    state_.drillingPeckMm = peck;
+  }
+  if (p) {
+    if (cycle == 81) return errorAt(p->column, fmt::format("G81 {}: G81 does not dwell; G82 dwells P at the bottom", p->text()));
+    const bool seconds = options_.control.dwellPWord == DwellPWord::SecondsWithPoint &&
+                         (p->evaluated || hasDecimalPoint(*p));
+    state_.drillingDwellS = std::max(seconds ? p->value : p->value / kMsPerS, 0.0);
+  }
+  if (!state_.feed) {
+    return errorAt(anchor, fmt::format("feed rate F is not set: {} drills at feed; give F in this block or before it",
+                                       name));
+  }
+  if (auto problem = zeroFeedProblem(state_.feed, name)) return errorAt(anchor, *problem);
+  const RZ from = state_.position;
+  DrillingParams params;
+  params.rPlaneZ = state_.drillingRPlaneZ;
+  params.bottomZ = bottomZ;
+  params.peckMm = state_.drillingPeckMm;
+  params.clearanceMm = options_.control.peckRetractMm;
+  // X0 in the block: the tool goes to the axis first, at rapid.
+  if (from.x() != start.x()) emit(MoveKind::Rapid, from, RZ(start.x(), from.y()), 0);
+  const DrillingLegs legs = drillingLegs(RZ(start.x(), from.y()), params);
+  emitLegs(legs.down);
+  if (state_.drillingDwellS > 0) {
+    const RZ bottom(start.x(), bottomZ);
+    emit(MoveKind::Dwell, bottom, bottom, 0);
+    moves_.back().dwellS = state_.drillingDwellS;
+  }
+  emitLegs(legs.up);
+  state_.position = RZ(start.x(), from.y());
+  return success();
 }
 
 // A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough

@@ -9,6 +9,7 @@ namespace lathesim::interp {
 namespace {
 
 std::string programName(int number) { return fmt::format("O{:04}", number); }
+std::string localName(int sequence) { return fmt::format("N{}", sequence); }
 
 }  // namespace
 
@@ -25,11 +26,25 @@ Result<std::size_t> CallStack::programStart(int programNumber, const char* code,
   return start->second;
 }
 
-std::string CallStack::chainTo(int programNumber) const {
+// M97's target: the one block N… of the program the call is in.
+Result<std::size_t> CallStack::localStart(const SubprogramCall& call, std::size_t index) const {
+  const std::vector<std::size_t> found = program_.findSequence(call.programNumber, index);
+  if (found.size() == 1) return found.front();
+  return Error{program_.blocks[index].line, call.column,
+               found.empty() ? fmt::format("M97 calls N{0} but this program has no block N{0}: a local subprogram "
+                                           "starts at its N number and ends with M99",
+                                           call.programNumber)
+                             : fmt::format("M97 calls N{0} but this program has {1} blocks N{0} (lines {2} and {3})",
+                                           call.programNumber, found.size(), program_.blocks[found[0]].line,
+                                           program_.blocks[found[1]].line)};
+}
+
+std::string CallStack::chainTo(const std::string& called) const {
   std::string shown;
   if (const auto main = program_.programNumberOf(0)) shown += programName(*main) + " → ";
-  for (const Frame& frame : frames_) shown += programName(frame.programNumber) + " → ";
-  return shown + programName(programNumber);
+  for (const Frame& frame : frames_)
+    shown += (frame.local ? localName(frame.programNumber) : programName(frame.programNumber)) + " → ";
+  return shown + called;
 }
 
 int CallStack::framesOfKind(bool macro) const {
@@ -39,27 +54,29 @@ int CallStack::framesOfKind(bool macro) const {
 
 Result<std::size_t> CallStack::call(const SubprogramCall& call, std::size_t index) {
   const int line = program_.blocks[index].line;
-  auto start = programStart(call.programNumber, "M98", call.column, index);
+  const char* code = call.local ? "M97" : "M98";
+  auto start = call.local ? localStart(call, index) : programStart(call.programNumber, code, call.column, index);
   if (!start.ok()) return start;
+  const std::string called = call.local ? localName(call.programNumber) : programName(call.programNumber);
   // The chain of programs running: the main program's own O number if it has one, then
   // every subprogram and macro called.
-  bool recursive = program_.programNumberOf(0) == call.programNumber;
-  for (const Frame& frame : frames_) recursive = recursive || frame.programNumber == call.programNumber;
+  bool recursive = !call.local && program_.programNumberOf(0) == call.programNumber;
+  for (const Frame& frame : frames_)
+    recursive = recursive || (call.local ? frame.start == start.value() : !frame.local && frame.programNumber == call.programNumber);
   if (recursive) {
     return Error{line, call.column,
-                 fmt::format("M98 calls {} while it is already running ({}): a subprogram "
+                 fmt::format("{} calls {} while it is already running ({}): a subprogram "
                              "may not call itself, directly or through others",
-                             programName(call.programNumber), chainTo(call.programNumber))};
+                             code, called, chainTo(called))};
   }
   const int levels = framesOfKind(false);
   if (levels >= kMaxSubprogramNesting) {
     return Error{line, call.column,
-                 fmt::format("M98 calls {} from {} levels of subprograms ({}): the control "
+                 fmt::format("{} calls {} from {} levels of subprograms ({}): the control "
                              "nests at most {} levels",
-                             programName(call.programNumber), levels, chainTo(call.programNumber),
-                             kMaxSubprogramNesting)};
+                             code, called, levels, chainTo(called), kMaxSubprogramNesting)};
   }
-  frames_.push_back({call.programNumber, false, start.value(), index, call.column, call.repeats - 1});
+  frames_.push_back({call.programNumber, false, call.local, start.value(), index, call.column, call.repeats - 1});
   return start;
 }
 
@@ -72,10 +89,10 @@ Result<std::size_t> CallStack::callMacro(const macro::MacroCall& call, std::size
     return Error{program_.blocks[index].line, call.column,
                  fmt::format("G65 calls {} from {} levels of macro calls ({}): the control nests at most {} "
                              "(local variable levels 0–{})",
-                             programName(call.programNumber), levels, chainTo(call.programNumber),
+                             programName(call.programNumber), levels, chainTo(programName(call.programNumber)),
                              kMaxMacroNesting, kMaxMacroNesting)};
   }
-  frames_.push_back({call.programNumber, true, start.value(), index, call.column, call.repeats - 1});
+  frames_.push_back({call.programNumber, true, false, start.value(), index, call.column, call.repeats - 1});
   return start;
 }
 
@@ -105,7 +122,7 @@ std::optional<Error> CallStack::unfinished() const {
   const Frame& frame = frames_.back();
   return Error{program_.blocks[frame.callFrom].line, frame.column,
                fmt::format("{} called here has no M99: the program text ends inside it",
-                           programName(frame.programNumber))};
+                           frame.local ? localName(frame.programNumber) : programName(frame.programNumber))};
 }
 
 }  // namespace lathesim::interp

@@ -2,6 +2,7 @@
 // M98/M99 and G65 in one file: the subprograms and macros that are running, innermost last.
 //   M98 P… in block i      → go to O<program>'s block; M99 comes back to block i + 1
 //                            after the last repeat, or to O<program> again before it
+//   M97 P… in block i      → (Haas) the same for the block N… of the calling program
 //   G65 P… L… in block i   → the same for a macro call, which also gets fresh local
 //                            variables (the caller keeps them: macro/variables.hpp)
 //   M99 P… in a subprogram → after the last repeat, to N… of the calling program
@@ -39,7 +40,7 @@ class CallStack {
   /// `program` must outlive the stack; the main program starts at block 0.
   explicit CallStack(const Program& program) : program_(program) {}
 
-  /// The block to run next for the M98 in block `index`.
+  /// The block to run next for the M98 (or M97: `call.local`) in block `index`.
   Result<std::size_t> call(const SubprogramCall& call, std::size_t index);
   /// The block to run next for the G65 in block `index`.
   Result<std::size_t> callMacro(const macro::MacroCall& call, std::size_t index);
@@ -57,8 +58,9 @@ class CallStack {
 
  private:
   struct Frame {
-    int programNumber = 0;
+    int programNumber = 0;     // for M97, the N number called
     bool macro = false;        // called by G65
+    bool local = false;        // called by M97
     std::size_t start = 0;     // the O block
     std::size_t callFrom = 0;  // the M98/G65 block
     int column = 0;            // of the calling block's P word
@@ -66,7 +68,8 @@ class CallStack {
   };
 
   Result<std::size_t> programStart(int programNumber, const char* code, int column, std::size_t index) const;
-  std::string chainTo(int programNumber) const;  // "O0001 → O1000 → " + the called program
+  Result<std::size_t> localStart(const SubprogramCall& call, std::size_t index) const;
+  std::string chainTo(const std::string& called) const;  // "O0001 → O1000 → " + `called`
   int framesOfKind(bool macro) const;
 
   const Program& program_;

@@ -54,6 +54,11 @@ inline std::optional<std::string> zeroFeedProblem(std::optional<double> feed, st
 
 struct ModalState {
   MotionMode motion = MotionMode::Rapid;
+  int drillingCycle = 0;            // G81–G83 in force (0: none): a later block with X(U) or Z(W)
+  double drillingRPlaneZ = 0;       // drills again, to the same R point and bottom, with the same
+  double drillingBottomZ = 0;       // peck and dwell, until G80 or a group 01 code
+  double drillingPeckMm = 0;
+  double drillingDwellS = 0;
   Plane plane = Plane::ZX;
   bool inch = false;  // G20; every length is converted to mm as it is read
   bool incremental = false;  // G91 in dialects that have it: X and Z words are distances

@@ -12,6 +12,7 @@ struct SubprogramCall {
   int programNumber = 0;
   int repeats = 1;
   int column = 0;  // of the P word, for diagnostics
+  bool local = false;  // Haas M97 P… L…: `programNumber` is the N of a block of this program
 };
 
 /// M99 [P…]: return from a subprogram, to the block after the call, or to N`sequence` of the

@@ -39,6 +39,7 @@ class ProgramRunner {
     state_.frame.offsets = options.workOffsets;
     state_.position = options.startPosition - state_.frame.shift();
     state_.feedMode = options.control.powerOnFeedMode;
+    state_.inch = !options.control.powerOnMetric;
     state_.compound = CompoundCycleParams::of(options.control);
     if (!options.toolNumbers.empty()) state_.tool = options.toolNumbers.front();
   }
@@ -167,7 +168,7 @@ Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro:
       if (!word.expression && macro::isLengthArgument(word.word.letter))
         state_.lengthWriting.note(word.word, line, program_.blocks[index].ordinal);
     after = callMacro(index, words.words);
-  } else if (auto parsed = parseBlock(words.words, line, column, options_.dialect); parsed.ok()) {
+  } else if (auto parsed = parseBlock(words.words, line, column, options_.dialect, options_.control.machineMCodes); parsed.ok()) {
     after = runWords(index, parsed.value());
   } else {
     after = parsed.error();
@@ -198,8 +199,9 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
   listStop(index, words);
   if (flow.call) {
-    if (auto loaded = loadProgram(flow.call->programNumber, "M98", flow.call->column, index); !loaded.ok()) {
-      return loaded.error();
+    if (!flow.call->local) {  // M97 calls a block of this program: nothing to load
+      if (auto loaded = loadProgram(flow.call->programNumber, "M98", flow.call->column, index); !loaded.ok())
+        return loaded.error();
     }
     auto target = calls_.call(*flow.call, index);
     if (!target.ok()) return target.error();
@@ -282,7 +284,7 @@ Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int 
   if (program_.programStart.count(programNumber) != 0) return success();
   if (const auto file = findProgramFile(programNumber, options_.programDirectories)) {
     appendProgramFile(program_, file->path.string(), file->text, programNumber, options_.control.blockSkip,
-                      options_.dialect);
+                      options_.dialect, options_.control.machineMCodes);
     guard_.programGrew(program_.blocks.size());
     flow_.programGrew();
     return success();

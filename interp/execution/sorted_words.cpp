@@ -15,7 +15,8 @@ Result<ParsedBlock> sortedWords(const ProgramBlock& block, const macro::Variable
   auto evaluated = macro::evaluateWords(macroBlock, variables != nullptr ? *variables : none, block.line,
                                         NumberReading::of(options.control, state.inch));
   if (!evaluated.ok()) return evaluated.error();
-  auto parsed = parseBlock(evaluated.value().words, block.line, block.column, options.dialect);
+  auto parsed = parseBlock(evaluated.value().words, block.line, block.column, options.dialect,
+                           options.control.machineMCodes);
   if (!parsed.ok()) return macro::withLeftOutNote(parsed.error(), evaluated.value().leftOut);
   return parsed;
 }

@@ -16,6 +16,18 @@ bool isPlainInteger(const Word& word) {
   return !word.number.empty() && word.number.find_first_not_of("0123456789") == std::string::npos;
 }
 
+// L, the repeat count: 1 when absent.
+Result<int> repeatsOf(const std::optional<Word>& l, int line) {
+  if (!l) return 1;
+  if (const std::string slip = decimalPointSlip(*l); !slip.empty())
+    return Error{line, l->column, fmt::format("{} is not a repeat count: {}", l->text(), slip)};
+  if (!isPlainInteger(*l) || l->value < 1 || l->value > kMaxRepeats) {
+    return Error{line, l->column,
+                 fmt::format("{} is not a repeat count: expected a whole number from 1 to {}", l->text(), kMaxRepeats)};
+  }
+  return static_cast<int>(l->value);
+}
+
 }  // namespace
 
 Result<SubprogramCall> takeSubprogramCall(ParsedBlock& block, const Code& m98) {
@@ -48,22 +60,24 @@ Result<SubprogramCall> takeSubprogramCall(ParsedBlock& block, const Code& m98) {
     }
     call.repeats = std::stoi(digits.substr(0, split));
   }
-  if (l) {
-    if (countInP) {
-      return Error{block.line, l->column,
-                   fmt::format("{} and {} both give the repeat count; give it once", p->text(),
-                               l->text())};
-    }
-    if (const std::string slip = decimalPointSlip(*l); !slip.empty())
-      return Error{block.line, l->column, fmt::format("{} is not a repeat count: {}", l->text(), slip)};
-    if (!isPlainInteger(*l) || l->value < 1 || l->value > kMaxRepeats) {
-      return Error{block.line, l->column,
-                   fmt::format("{} is not a repeat count: expected a whole number from 1 to {}",
-                               l->text(), kMaxRepeats)};
-    }
-    call.repeats = static_cast<int>(l->value);
+  if (l && countInP) {
+    return Error{block.line, l->column,
+                 fmt::format("{} and {} both give the repeat count; give it once", p->text(), l->text())};
   }
+  auto repeats = repeatsOf(l, block.line);
+  if (!repeats.ok()) return repeats.error();
+  if (l) call.repeats = repeats.value();
   return call;
+}
+
+Result<SubprogramCall> takeLocalSubprogramCall(ParsedBlock& block, const Code& m97) {
+  const auto p = block.take('P');
+  if (!p) return Error{block.line, m97.column, "M97 needs P: the N number where the local subprogram starts (M97 P100)"};
+  auto sequence = labelNumberOf(*p, block.line, kMaxSequenceDigits, "a sequence number to call");
+  if (!sequence.ok()) return sequence.error();
+  auto repeats = repeatsOf(block.take('L'), block.line);
+  if (!repeats.ok()) return repeats.error();
+  return SubprogramCall{sequence.value(), repeats.value(), p->column, true};
 }
 
 }  // namespace lathesim::interp

@@ -77,7 +77,8 @@ std::optional<Code> ParsedBlock::mCode(MGroup group) const {
   return found->second;
 }
 
-Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column, Dialect dialect) {
+Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column, Dialect dialect,
+                               MachineMCodes machine) {
   ParsedBlock block;
   block.line = line;
   block.column = column;
@@ -92,8 +93,14 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
       keepLast(block.gCodes, info->group, code.value(), block);
     } else if (word.letter == 'M') {
       const auto number = codeNumber(word);
+      if (const MachineMCode* own = number ? findMachineMCode(*number, machine) : nullptr) {
+        block.machineCodes.push_back(Code{own->number, codeText('M', *number), word.column});
+        continue;
+      }
       const MCodeInfo* info = number ? findMCode(*number) : nullptr;
-      auto code = checkedCode(word, number, line, info, supportedMCodes);
+      auto code = checkedCode(word, number, line, info, [machine] {
+        return fmt::format("{}, or a machine code of this control ({})", supportedMCodes(), machineMCodeList(machine));
+      });
       if (!code.ok()) return code.error();
       keepLast(block.mCodes, info->group, code.value(), block);
     } else {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "interp/control/gcode_table.hpp"
+#include "interp/control/machine_m_codes.hpp"
 #include "interp/text/lexer.hpp"
 #include "interp/result.hpp"
 
@@ -28,6 +29,7 @@ struct ParsedBlock {
   std::map<GGroup, Code> gCodes;
   std::map<MGroup, Code> mCodes;
   std::map<char, Word> words;  // every other word, at most one per letter
+  std::vector<Code> machineCodes;  // the control's machine M codes (machine_m_codes.hpp): ignored
   std::vector<Error> warnings;  // what the block was read with but may not mean
 
   /// Removes and returns the word for `letter`. Execution takes each word it uses;
@@ -38,9 +40,10 @@ struct ParsedBlock {
   std::optional<Code> mCode(MGroup group) const;
 };
 
-/// Sorts a tokenized block, reading its G codes as `dialect` writes them. `line` and
-/// `column` locate the block's start.
+/// Sorts a tokenized block, reading its G codes as `dialect` writes them and its machine M
+/// codes by `machine`'s list. `line` and `column` locate the block's start.
 Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int column,
-                               Dialect dialect = Dialect::FanucA);
+                               Dialect dialect = Dialect::FanucA,
+                               MachineMCodes machine = MachineMCodes::Gsk980tdi);
 
 }  // namespace lathesim::interp

@@ -1,5 +1,7 @@
 #include "interp/text/program.hpp"
 
+#include <set>
+
 #include <utility>
 
 #include <fmt/format.h>
@@ -29,7 +31,8 @@ Status readLabel(const std::vector<Token>& tokens, char letter, int line, std::o
   return success();
 }
 
-Result<BlockContent> contentOf(const std::vector<Token>& tokens, const RawBlock& raw, Dialect dialect) {
+Result<BlockContent> contentOf(const std::vector<Token>& tokens, const RawBlock& raw, Dialect dialect,
+                               MachineMCodes machine) {
   if (macro::needsMacroReader(tokens)) {
     auto macroBlock = macro::readMacroBlock(tokens, raw);
     if (!macroBlock.ok()) return macroBlock.error();
@@ -37,7 +40,7 @@ Result<BlockContent> contentOf(const std::vector<Token>& tokens, const RawBlock&
   }
   std::vector<Word> words;
   for (const Token& token : tokens) words.push_back(token.word);
-  auto parsed = parseBlock(words, raw.line, raw.column, dialect);
+  auto parsed = parseBlock(words, raw.line, raw.column, dialect, machine);
   if (!parsed.ok()) return parsed.error();
   return BlockContent{std::move(parsed).value()};
 }
@@ -63,9 +66,11 @@ std::optional<int> Program::programNumberOf(std::size_t index) const {
 namespace {
 
 // Appends the blocks of source `source` to `program`.
-void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialect) {
+void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialect, MachineMCodes machine) {
   BlockReader reader(program.sources[static_cast<std::size_t>(source)].text);
   int currentProgram = -1;
+  std::vector<ReadNote> machineNotes;  // each machine M code, where it first appears
+  std::set<int> noted;
   for (;;) {
     auto next = reader.next();
     ProgramBlock block;
@@ -95,7 +100,7 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
         const Status number = readLabel(tokens.value(), 'O', raw.line, block.programNumber);
         block.content = !sequence.ok() ? Result<BlockContent>(sequence.error())
                         : !number.ok() ? Result<BlockContent>(number.error())
-                                       : contentOf(tokens.value(), raw, dialect);
+                                       : contentOf(tokens.value(), raw, dialect, machine);
       } else {
         block.content = tokens.error();
       }
@@ -105,11 +110,21 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
       currentProgram = static_cast<int>(index);
       program.programStart.emplace(*block.programNumber, index);
     }
+    if (const ParsedBlock* words = block.plainWords()) {
+      for (const Code& code : words->machineCodes) {
+        if (!noted.insert(code.number).second) continue;
+        const MachineMCode* own = findMachineMCode(code.number, machine);
+        machineNotes.push_back({block.line, code.column,
+                                fmt::format("{} ({}) is a machine function that changes nothing simulated: ignored",
+                                            code.text, own ? own->meaning : "machine function")});
+      }
+    }
     program.programOf.push_back(currentProgram);
     program.blocks.push_back(std::move(block));
   }
   if (source != 0) return;
   program.notes = reader.notes();
+  program.notes.insert(program.notes.end(), machineNotes.begin(), machineNotes.end());
   if (const auto after = reader.textAfterClosing()) {
     program.textAfterEnd = Error{after->first, after->second,
                                  fmt::format("the program ends at the % on line {}: this text after it is not run",
@@ -119,18 +134,18 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
 
 }  // namespace
 
-Program readProgram(std::string_view text, bool blockDelete, Dialect dialect) {
+Program readProgram(std::string_view text, bool blockDelete, Dialect dialect, MachineMCodes machine) {
   Program program;
   program.sources.push_back({"", std::string(text)});
-  appendBlocks(program, 0, blockDelete, dialect);
+  appendBlocks(program, 0, blockDelete, dialect, machine);
   return program;
 }
 
 void appendProgramFile(Program& program, const std::string& name, std::string_view text, int number,
-                       bool blockDelete, Dialect dialect) {
+                       bool blockDelete, Dialect dialect, MachineMCodes machine) {
   const std::size_t first = program.blocks.size();
   program.sources.push_back({name, std::string(text)});
-  appendBlocks(program, static_cast<int>(program.sources.size()) - 1, blockDelete, dialect);
+  appendBlocks(program, static_cast<int>(program.sources.size()) - 1, blockDelete, dialect, machine);
   if (program.programStart.count(number) != 0 || first == program.blocks.size()) return;
   // No O line for it: the file is the program; its blocks before any O block belong to it.
   program.programStart.emplace(number, first);

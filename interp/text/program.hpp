@@ -75,12 +75,13 @@ struct Program {
 
 /// Splits, tokenizes and sorts every block of `text`. Never fails: a block that cannot be read
 /// carries its error; a comment left open ends the text with a block carrying that error.
-Program readProgram(std::string_view text, bool blockDelete, Dialect dialect);
+Program readProgram(std::string_view text, bool blockDelete, Dialect dialect,
+                    MachineMCodes machine = MachineMCodes::Gsk980tdi);
 
 /// Reads the file `name` holding subprogram O`number` into `program` after its blocks. The
 /// subprogram starts at the file's O`number` block, or at its first block when the file has
 /// none (a file named for its program often leaves the O line out).
 void appendProgramFile(Program& program, const std::string& name, std::string_view text, int number,
-                       bool blockDelete, Dialect dialect);
+                       bool blockDelete, Dialect dialect, MachineMCodes machine = MachineMCodes::Gsk980tdi);
 
 }  // namespace lathesim::interp

@@ -51,7 +51,7 @@ TEST(ExitStatus, BadCommandLinesExitTwo) {
       {{"run", program, "--voxel", "--out", out}, "--voxel"},
       {{"run", program, "--at-line", "0", "--out", out}, "--at-line"},
       {{"run", program, "--stock", "D40", "--out", out}, "--stock"},
-      {{"run", program, "--control", "haas", "--out", out}, "haas"},
+      {{"run", program, "--control", "okuma-osp", "--out", out}, "okuma-osp"},
       {{"run", program, "--dialect", "siemens", "--out", out}, "siemens"},
       {{"run", program, "--block-skip", "maybe", "--out", out}, "maybe"},
       {{"run", program, "--max-moves", "0", "--out", out}, "--max-moves"},

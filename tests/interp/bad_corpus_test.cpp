@@ -3,7 +3,7 @@
 // and interpreting it must give exactly that error, located in that file. The line is a
 // comment to the interpreter too, so the expected text cannot contain a parenthesis. A
 // second line "(control: PRESET; …)" names the control preset the program is bad on (else the
-// default preset's).
+// default preset's), and a line "(dialect: NAME; …)" the dialect (else fanuc-a).
 
 #include <gtest/gtest.h>
 
@@ -61,6 +61,12 @@ TEST(BadCorpus, EachProgramGivesItsExpectedDiagnostic) {
       const auto preset = controlPreset(control[1].str());
       ASSERT_TRUE(preset) << control[1];
       options.control = preset->parameters;
+    }
+    const std::regex dialectLine(R"(\n\(dialect: ([a-z0-9-]+);)");
+    if (std::smatch dialect; std::regex_search(text, dialect, dialectLine)) {
+      const auto named = dialectNamed(dialect[1].str());
+      ASSERT_TRUE(named) << dialect[1];
+      options.dialect = *named;
     }
     options.programDirectories = {path.parent_path()};  // subprograms kept beside the program
     const auto result = interpret(text, name, options);

@@ -184,7 +184,7 @@ TEST(ParseSetup, ControlKeysOverrideThePresetWhateverTheirOrder) {
 
 TEST(ParseSetupErrors, ControlNamesAndValuesAreChecked) {
   Diagnostic d = onlyError("[control]\nname = \"fanuc-0i-m\"\n");
-  EXPECT_EQ(d.message, "control.name must be one of \"gsk980tdi\", \"fanuc-0i-t\" (a control preset)");
+  EXPECT_EQ(d.message, "control.name must be one of \"gsk980tdi\", \"fanuc-0i-t\", \"haas\" (a control preset)");
   EXPECT_EQ(d.line, 2);
   d = onlyError("[control]\n\nrapid_positioning = \"straight\"\n");
   EXPECT_EQ(d.message, "control.rapid_positioning must be one of \"nonlinear\", \"linear\", got \"straight\"");
@@ -227,7 +227,7 @@ TEST(ParseSetup, TravelIsStatedOrDerivedFromTheReferenceTheStartAndTheBar) {
 
 TEST(ParseSetupErrors, DialectAndFeedModeAreNamedChoices) {
   const Diagnostic d = onlyError("[machine]\ndialect = \"fanuc-c\"\n");
-  EXPECT_EQ(d.message, "machine.dialect must be one of \"fanuc-a\", \"fanuc-b\", \"hnc\", got \"fanuc-c\"");
+  EXPECT_EQ(d.message, "machine.dialect must be one of \"fanuc-a\", \"fanuc-b\", \"hnc\", \"haas\", got \"fanuc-c\"");
   EXPECT_EQ(d.line, 2);
   EXPECT_EQ(onlyError("[machine]\ninitial_feed_mode = 99\n").message,
             "machine.initial_feed_mode must be one of \"per_revolution\", \"per_minute\", got 99");
@@ -262,7 +262,7 @@ TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
   const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
   EXPECT_EQ(d.message,
             "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, travel_x, travel_z, dialect, "
-            "initial_feed_mode, thread_runout or zero)");
+            "initial_feed_mode, thread_runout, zero or second_reference)");
 }
 
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {

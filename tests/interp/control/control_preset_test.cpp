@@ -20,7 +20,7 @@ const ControlSetting& settingOf(const Control& control, std::string_view key) {
 
 TEST(ControlPreset, EveryPresetGivesEveryParameterWithItsManualReference) {
   const std::vector<std::string_view> keys = controlParameterKeys();
-  ASSERT_EQ(controlPresets(), (std::vector<std::string_view>{"gsk980tdi", "fanuc-0i-t"}));
+  ASSERT_EQ(controlPresets(), (std::vector<std::string_view>{"gsk980tdi", "fanuc-0i-t", "haas"}));
   for (std::string_view name : controlPresets()) {
     SCOPED_TRACE(name);
     const std::optional<Control> control = controlPreset(name);  // throws on a gap in the table
@@ -151,7 +151,7 @@ TEST(ControlPreset, AWrongKeyOrValueIsNamedWithWhatWasExpected) {
   EXPECT_EQ(control.set("least_increment", 0.01, "setup"), "control.least_increment must be 0.001 or 0.0001, got 0.01");
   EXPECT_EQ(control.set("g73_passes", 2.5, "setup"), "control.g73_passes must be a whole number from 1 to 9999, got 2.5");
   EXPECT_EQ(control.set("tool_word", std::vector<std::string>{"2+3"}, "setup"),
-            "control.tool_word must be a list of one or more of \"2+2\", \"3+3\", got [\"2+3\"]");
+            "control.tool_word must be a list of one or more of \"2+2\", \"3+3\", \"haas\", got [\"2+3\"]");
   // Nothing changed.
   EXPECT_EQ(control.parameters.rapidPath, RapidPath::NonLinear);
   EXPECT_EQ(settingOf(control, "rapid_positioning").source, "preset");

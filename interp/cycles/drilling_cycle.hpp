@@ -1,0 +1,28 @@
+#pragma once
+// G81, G82 and G83: drilling on the spindle's axis with the part turning (a drill in the
+// turret at X0), from the tool's position. See drilling_cycle.cpp for the moves.
+
+#include <vector>
+
+#include "geometry/rz.hpp"
+#include "interp/cycles/cycle_leg.hpp"
+
+namespace lathesim::interp {
+
+struct DrillingParams {
+  double rPlaneZ = 0;    // Z of the R point, where the feed starts
+  double bottomZ = 0;    // Z of the hole's bottom
+  double peckMm = 0;     // G83 Q: the depth of each peck (0: one feed to the bottom)
+  double clearanceMm = 0;  // G83: how far short of the last depth the tool comes back down at rapid
+};
+
+/// The legs down to the bottom and, apart, the legs back up to `start`'s Z (the cycle dwells
+/// between them when it has a dwell).
+struct DrillingLegs {
+  std::vector<CycleLeg> down;
+  std::vector<CycleLeg> up;
+};
+
+DrillingLegs drillingLegs(const RZ& start, const DrillingParams& params);
+
+}  // namespace lathesim::interp
