@@ -252,6 +252,7 @@ int checkCommand(const CheckOptions& options) {
   StagedOutput out(options.run.out);
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
   if (!run) return job::kExitBadInput;
+  std::future<void> stockFile = stageStockFile(*run, out);
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
   if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return job::kExitBadInput;
@@ -274,7 +275,9 @@ int checkCommand(const CheckOptions& options) {
 
   meshPart(*run, clock);
   stageRunFiles(*run, options.run, out, clock);
-  stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
+  if (options.run.outputs.png)
+    stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
+  stockFile.get();
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);

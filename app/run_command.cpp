@@ -12,8 +12,10 @@ int runCommand(const RunOptions& options) {
   StagedOutput out(options.out);
   std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return job::kExitBadInput;
+  std::future<void> stockFile = stageStockFile(*run, out);
   meshPart(*run, clock);
   stageRunFiles(*run, options, out, clock);
+  stockFile.get();
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
   stageReports(*run, reportJson(figures), out);
