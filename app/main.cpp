@@ -96,7 +96,10 @@ int main(int argc, char** argv) {
         ->check([](const std::string& text) {
           const auto bar = lathesim::job::parseStockOption(text);
           const auto* problem = std::get_if<std::string>(&bar);
-          return problem ? *problem : std::string();
+          if (!problem) return std::string();
+          // CLI11 names the option itself; the message names it too, for the setup's callers.
+          const std::string named = "--stock ";
+          return problem->rfind(named, 0) == 0 ? problem->substr(named.size()) : *problem;
         });
   }
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)")->check(CLI::ExistingFile);

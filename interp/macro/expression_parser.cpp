@@ -187,16 +187,21 @@ Result<Expression> parsePrimary(TokenCursor& cursor) {
                            describe(token))};
 }
 
-Result<Expression> parseTerm(TokenCursor& cursor) {
-  auto left = parsePrimary(cursor);
+// One precedence level: operands joined left to right by the operators `levelOp` accepts
+// (Fanuc evaluates [1-2-3] as [[1-2]-3]).
+using OperandParser = Result<Expression> (*)(TokenCursor&);
+using OperatorAtLevel = std::optional<BinaryOp> (*)(const Token&);
+
+Result<Expression> parseLeftAssociative(TokenCursor& cursor, OperandParser parseOperand, OperatorAtLevel levelOp) {
+  auto left = parseOperand(cursor);
   if (!left.ok()) return left;
   Expression result = std::move(left).value();
   while (!cursor.atEnd()) {
-    const auto op = multiplicativeOp(*cursor.peek());
+    const auto op = levelOp(*cursor.peek());
     if (!op) break;
     const Token& token = cursor.take();
     if (auto counted = countOperation(cursor, token.column); !counted.ok()) return counted.error();
-    auto right = parsePrimary(cursor);
+    auto right = parseOperand(cursor);
     if (!right.ok()) return right;
     Expression binary = node(Expression::Kind::Binary, token.column, {std::move(result), std::move(right).value()});
     binary.op = *op;
@@ -205,6 +210,8 @@ Result<Expression> parseTerm(TokenCursor& cursor) {
   }
   return result;
 }
+
+Result<Expression> parseTerm(TokenCursor& cursor) { return parseLeftAssociative(cursor, parsePrimary, multiplicativeOp); }
 
 }  // namespace
 
@@ -232,22 +239,7 @@ Result<Expression> parseVariable(TokenCursor& cursor) {
 Result<Expression> parseAddressValue(TokenCursor& cursor) { return parsePrimary(cursor); }
 
 Result<Expression> parseExpression(TokenCursor& cursor) {
-  auto left = parseTerm(cursor);
-  if (!left.ok()) return left;
-  Expression result = std::move(left).value();
-  while (!cursor.atEnd()) {
-    const auto op = additiveOp(*cursor.peek());
-    if (!op) break;
-    const Token& token = cursor.take();
-    if (auto counted = countOperation(cursor, token.column); !counted.ok()) return counted.error();
-    auto right = parseTerm(cursor);
-    if (!right.ok()) return right;
-    Expression binary = node(Expression::Kind::Binary, token.column, {std::move(result), std::move(right).value()});
-    binary.op = *op;
-    binary.text = token.text;
-    result = std::move(binary);
-  }
-  return result;
+  return parseLeftAssociative(cursor, parseTerm, additiveOp);
 }
 
 Result<Condition> parseCondition(TokenCursor& cursor) {

@@ -101,14 +101,14 @@ TEST(PartOffCli, AGrooveThatDoesNotPartReportsNone) {
   EXPECT_NEAR(report["final_volume_mm3"].get<double>(), 15000 * M_PI - 279 * 3 * M_PI, tolerance(20, 10, 50));
 }
 
-// A bore as wide as the bar, on the command line or in the setup, stops the run with the place
-// and nothing written.
+// A bore as wide as the bar stops the run with nothing written: on the command line it is a bad
+// command line (exit 2), in the setup a bad setup (exit 1) with the place.
 TEST(PartOffCli, ABoreNotInsideTheBarIsRefused) {
   test::ScratchDir scratch("bore");
   const std::string program = "G00 X44. Z5.\nM30\n";
   const CommandRun option = lathesim(scratch, program, "D40xd40xL50");
-  EXPECT_EQ(option.outcome.status, 1);
-  EXPECT_NE(option.outcome.err.find("--stock D40xd40xL50: the bore d40 must be smaller than the diameter D40"),
+  EXPECT_EQ(option.outcome.status, 2);
+  EXPECT_NE(option.outcome.err.find("D40xd40xL50: the bore d40 must be smaller than the diameter D40"),
             std::string::npos)
       << option.outcome.err;
   EXPECT_FALSE(fs::exists(option.out));

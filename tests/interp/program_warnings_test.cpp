@@ -12,13 +12,7 @@ namespace lathesim::interp {
 namespace {
 
 using test::run;
-
-std::vector<Diagnostic> warningsOf(const InterpretResult& result) {
-  std::vector<Diagnostic> warnings;
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == Severity::Warning) warnings.push_back(d);
-  return warnings;
-}
+using test::warningsOf;
 
 void expectOneWarning(const InterpretResult& result, int line, int column, std::string_view part) {
   EXPECT_TRUE(result.ok());

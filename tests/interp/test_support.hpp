@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "interp/control/control_preset.hpp"
 #include "interp/cycles/cycle_leg.hpp"
 #include "interp/interpreter.hpp"
 
@@ -27,6 +29,34 @@ inline InterpreterOptions defaultOptions() {
 inline InterpretResult run(std::string_view program,
                            const InterpreterOptions& options = defaultOptions()) {
   return interpret(program, "test.nc", options);
+}
+
+/// The default options under a named control preset, rapids still one move each as the
+/// hand-made lists expect.
+inline InterpreterOptions under(std::string_view preset) {
+  InterpreterOptions options = defaultOptions();
+  options.control = controlPreset(preset)->parameters;
+  options.control.rapidPath = RapidPath::Linear;
+  return options;
+}
+
+/// The default options with Custom Macro B's step limit set to `maxSteps`.
+inline InterpreterOptions withMaxSteps(long long maxSteps) {
+  InterpreterOptions options = defaultOptions();
+  options.maxSteps = maxSteps;
+  return options;
+}
+
+/// The first diagnostic's message, for a failed assertion's output.
+inline std::string messageOf(const InterpretResult& result) {
+  return result.diagnostics.empty() ? std::string() : result.diagnostics[0].message;
+}
+
+inline std::vector<Diagnostic> warningsOf(const InterpretResult& result) {
+  std::vector<Diagnostic> warnings;
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == Severity::Warning) warnings.push_back(d);
+  return warnings;
 }
 
 /// A move as worked out by hand: positions are (radius, Z) in mm.

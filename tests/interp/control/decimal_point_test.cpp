@@ -14,20 +14,8 @@ namespace {
 using test::expectMoves;
 using test::kFeed;
 using test::kRapid;
-
-InterpreterOptions under(std::string_view preset) {
-  InterpreterOptions options = test::defaultOptions();
-  options.control = controlPreset(preset)->parameters;
-  options.control.rapidPath = RapidPath::Linear;  // one move per rapid, as the lists below
-  return options;
-}
-
-std::vector<Diagnostic> warningsOf(const InterpretResult& result) {
-  std::vector<Diagnostic> warnings;
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == Severity::Warning) warnings.push_back(d);
-  return warnings;
-}
+using test::under;
+using test::warningsOf;
 
 TEST(DecimalPoint, ABareLengthIsMillimetresOnTheGskAndIncrementsOnTheFanuc) {
   // X20 Z-10.: the GSK reads X20 as 20 mm (r 10); the Fanuc (DPI 0, IS-B) as 0.020 mm (r 0.01).

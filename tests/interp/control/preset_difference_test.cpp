@@ -15,13 +15,7 @@ namespace {
 using test::expectMoves;
 using test::kFeed;
 using test::kRapid;
-
-InterpreterOptions under(std::string_view preset) {
-  InterpreterOptions options = test::defaultOptions();
-  options.control = controlPreset(preset)->parameters;
-  options.control.rapidPath = RapidPath::Linear;
-  return options;
-}
+using test::under;
 
 TEST(PresetDifference, TheFeedModeAtPowerOn) {
   // No G98/G99 in the program: F0.2 is 0.2 mm/min on the GSK (G98 at power-on, §3.26), 0.2 mm/rev

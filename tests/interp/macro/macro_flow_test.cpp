@@ -16,17 +16,9 @@ namespace {
 using test::expectError;
 using test::expectMoves;
 using test::kRapid;
+using test::messageOf;
 using test::run;
-
-std::string messageOf(const InterpretResult& result) {
-  return result.diagnostics.empty() ? std::string() : result.diagnostics[0].message;
-}
-
-InterpreterOptions withMaxSteps(long long maxSteps) {
-  InterpreterOptions options = test::defaultOptions();
-  options.maxSteps = maxSteps;
-  return options;
-}
+using test::withMaxSteps;
 
 TEST(MacroFlow, M99PToABlockInsideTheCallersLoopGoesOnWithTheLoop) {
   // Each pass calls O100, whose M99 P7 returns to N7 (W-1) past the G00 U2 after the call:

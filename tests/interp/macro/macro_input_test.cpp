@@ -21,24 +21,9 @@ namespace {
 using test::expectMoves;
 using test::kFeed;
 using test::kRapid;
-
-InterpreterOptions under(std::string_view preset) {
-  InterpreterOptions options = test::defaultOptions();
-  options.control = controlPreset(preset)->parameters;
-  options.control.rapidPath = RapidPath::Linear;  // one move per rapid, as the lists below
-  return options;
-}
-
-std::vector<Diagnostic> warningsOf(const InterpretResult& result) {
-  std::vector<Diagnostic> warnings;
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == Severity::Warning) warnings.push_back(d);
-  return warnings;
-}
-
-std::string messageOf(const InterpretResult& result) {
-  return result.diagnostics.empty() ? std::string() : result.diagnostics[0].message;
-}
+using test::messageOf;
+using test::under;
+using test::warningsOf;
 
 TEST(MacroInput, AVariablesValueIsMillimetresUnderEitherDecimalPointInput) {
   // #1 = 20 (no point: a macro constant is 20.000): X#1 is Φ20 (r 10), Z[#1/4] is Z5, U-#1

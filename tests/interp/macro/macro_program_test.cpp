@@ -18,17 +18,9 @@ using test::expectError;
 using test::expectMoves;
 using test::kFeed;
 using test::kRapid;
+using test::messageOf;
 using test::run;
-
-std::string messageOf(const InterpretResult& result) {
-  return result.diagnostics.empty() ? std::string() : result.diagnostics[0].message;
-}
-
-InterpreterOptions withMaxSteps(long long maxSteps) {
-  InterpreterOptions options = test::defaultOptions();
-  options.maxSteps = maxSteps;
-  return options;
-}
+using test::withMaxSteps;
 
 TEST(MacroProgram, WhileLoopRunsItsBlocksWithTheVariablesOfEachPass) {
   // Three grooves: plunge to X32, out to X44, W-10, counted by #1.
