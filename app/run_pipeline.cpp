@@ -15,7 +15,6 @@
 #include "interp/toolpath_csv.hpp"
 #include "measure/thread_measure.hpp"
 #include "render/mesh_files.hpp"
-#include "render/offscreen_display.hpp"
 #include "render/part_image.hpp"
 #include "render/scene_export.hpp"
 #include "sim/simulate.hpp"
@@ -72,15 +71,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.notes = run.job.notes;
   figures.stops = run.job.toolpath.stops;
 
-  // Xvfb takes a moment to start: it does so while the simulation runs. A display that cannot
-  // start is reported by the first picture, which asks again.
   run.outputs = options.outputs;
-  if (options.outputs.png) run.display = std::async(std::launch::async, [] {
-    try {
-      render::ensureDisplay();
-    } catch (const std::exception&) {
-    }
-  });
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.stockVolumeMm3 = run.stock->volumeMm3();

@@ -41,7 +41,6 @@ struct SimulatedRun {
   std::vector<HtmlPicture> pictures;  // staged, for report.html
   std::string modelGlb;               // the part and toolpath for report.html's 3D view
   OutputSelection outputs;            // the files to write (--outputs)
-  std::future<void> display;          // the X display, started while the simulation runs
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
   /// The finished part: the piece that parted off, or else the stock.
