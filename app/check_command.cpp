@@ -274,10 +274,10 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
+  stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options.run, out, clock);
   if (options.run.outputs.png)
     stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
-  stockFile.get();
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);

@@ -14,8 +14,8 @@ int runCommand(const RunOptions& options) {
   if (!run) return job::kExitBadInput;
   std::future<void> stockFile = stageStockFile(*run, out);
   meshPart(*run, clock);
+  stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options, out, clock);
-  stockFile.get();
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
   stageReports(*run, reportJson(figures), out);

@@ -59,8 +59,8 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
 /// volumes, triangles, time).
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
-/// Stages stock.vdb in a thread of its own, while the part is meshed and drawn: get() the
-/// future before committing (it rethrows a failure).
+/// Stages stock.vdb in a thread of its own, while the part is meshed: get() the future
+/// before staging the other files (it rethrows a failure).
 std::future<void> stageStockFile(const SimulatedRun& run, StagedOutput& out);
 
 /// Stages the run's other files into `out` (the pictures as options.pictures asks, the exports;
