@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "app/commands.hpp"
 #include "batch/merge.hpp"
 #include "batch/shard.hpp"
 #include "batch/summary.hpp"
@@ -27,6 +28,9 @@ BatchCli::BatchCli(CLI::App& cli) {
       ->check(CLI::NonNegativeNumber);
   command_->add_option("--voxel", options_.defaults.voxelMm, "voxel size in mm for jobs that set none")
       ->check(CLI::PositiveNumber);
+  command_->add_option("--outputs", outputs_, "each job writes only these (report.json always), as run --outputs")
+      ->check(CLI::IsMember(kOutputNames))
+      ->delimiter(',');
   command_->footer(
       "Example:\n  lathesim batch parts --out out/parts --voxel 0.25\n"
       "runs every program under parts/ (with the setup.toml and drawing.toml beside it) and writes\n"
@@ -51,6 +55,11 @@ int BatchCli::run() {
       return job::kExitBadCommandLine;
     }
     options_.shard = *shard;
+  }
+  if (!outputs_.empty()) {  // passed to every job's run or check, before the job's own options
+    std::string names;
+    for (const auto& name : outputs_) names += (names.empty() ? "" : ",") + name;
+    options_.defaults.options.insert(options_.defaults.options.begin(), {"--outputs", names});
   }
   if (memoryMb_) options_.memoryBytes = static_cast<std::uint64_t>(*memoryMb_ * 1024 * 1024);
   return batch::runBatch(options_);

@@ -24,6 +24,7 @@ class BatchCli {
   CLI::App* merge_;
   batch::BatchOptions options_;
   std::string source_, shard_;
+  std::vector<std::string> outputs_;  // --outputs, for every job
   std::optional<double> memoryMb_;
   std::vector<std::filesystem::path> summaries_;
   std::optional<std::filesystem::path> mergeOut_;

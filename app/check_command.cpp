@@ -252,6 +252,7 @@ int checkCommand(const CheckOptions& options) {
   StagedOutput out(options.run.out);
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
   if (!run) return job::kExitBadInput;
+  std::future<void> stockFile = stageStockFile(*run, out);
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
   if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return job::kExitBadInput;
@@ -273,8 +274,10 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
+  stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options.run, out, clock);
-  stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
+  if (options.run.outputs.png)
+    stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   Json report = reportJson(run->figures);

@@ -39,6 +39,22 @@ struct AnimationRequest {
   int widthPx = 800, heightPx = 600;  // --video-size
 };
 
+/// --outputs: which of the run's files are written. report.json always is; --export and
+/// --animate add theirs. Names: kOutputNames.
+struct OutputSelection {
+  bool stl = true;   // part.stl (stub.stl after a part-off)
+  bool png = true;   // the pictures: part.png, the views, thread.png; check's deviation.png, section.png
+  bool vdb = true;   // stock.vdb
+  bool vtp = true;   // toolpath.vtp
+  bool csv = true;   // toolpath.csv
+  bool html = true;  // report.html
+
+  /// Exactly the files `names` (from kOutputNames) name, and report.json.
+  static OutputSelection only(const std::vector<std::string>& names);
+};
+inline const std::vector<std::string> kOutputNames{"stl", "png", "vdb", "vtp", "csv", "report", "html",
+                                                   "gltf", "glb", "ply", "obj", "video"};
+
 struct RunOptions {
   std::filesystem::path program;
   std::optional<std::filesystem::path> setup;
@@ -51,6 +67,7 @@ struct RunOptions {
   PictureRequest pictures;
   AnimationRequest animation;
   std::vector<std::string> exports;  // --export: gltf, glb, ply, obj (part.gltf, …)
+  OutputSelection outputs;           // --outputs
 };
 
 int runCommand(const RunOptions& options);

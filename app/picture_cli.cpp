@@ -1,5 +1,6 @@
 #include "app/picture_cli.hpp"
 
+#include <algorithm>
 #include <regex>
 
 namespace lathesim::app {
@@ -22,6 +23,18 @@ std::string readSize(const std::string& text, int& width, int& height, bool even
 
 }  // namespace
 
+OutputSelection OutputSelection::only(const std::vector<std::string>& names) {
+  const auto named = [&](const char* name) { return std::find(names.begin(), names.end(), name) != names.end(); };
+  OutputSelection selection;
+  selection.stl = named("stl");
+  selection.png = named("png");
+  selection.vdb = named("vdb");
+  selection.vtp = named("vtp");
+  selection.csv = named("csv");
+  selection.html = named("html");
+  return selection;
+}
+
 void addPictureOptions(CLI::App& command, RunOptions& options) {
   command
       .add_option_function<std::vector<std::string>>(
@@ -43,6 +56,22 @@ void addPictureOptions(CLI::App& command, RunOptions& options) {
   command.add_option("--export", options.exports, "more files of the part: gltf, glb, ply, obj (part.gltf, …)")
       ->delimiter(',')
       ->check(CLI::IsMember({"gltf", "glb", "ply", "obj"}));
+  command
+      .add_option_function<std::vector<std::string>>(
+          "--outputs",
+          [&options](const std::vector<std::string>& names) {
+            options.outputs = OutputSelection::only(names);
+            for (const auto& name : names) {
+              const bool export_ = name == "gltf" || name == "glb" || name == "ply" || name == "obj";
+              if (export_ && std::find(options.exports.begin(), options.exports.end(), name) == options.exports.end())
+                options.exports.push_back(name);
+              if (name == "video") options.animation.mp4 = true;
+            }
+          },
+          "write only these (report.json always): stl, png, vdb, vtp, csv, report, html, and gltf, glb, ply, obj, "
+          "video as --export and --animate would")
+      ->delimiter(',')
+      ->check(CLI::IsMember(kOutputNames));
   auto* animate = command.add_flag("--animate", options.animation.mp4, "write the cut as a video, cut.mp4 (needs ffmpeg)");
   command.add_flag("--gif", options.animation.gif, "with --animate: cut.gif too")->needs(animate);
   command

@@ -12,7 +12,9 @@ int runCommand(const RunOptions& options) {
   StagedOutput out(options.out);
   std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return job::kExitBadInput;
+  std::future<void> stockFile = stageStockFile(*run, out);
   meshPart(*run, clock);
+  stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();

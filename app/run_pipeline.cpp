@@ -71,6 +71,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.notes = run.job.notes;
   figures.stops = run.job.toolpath.stops;
 
+  run.outputs = options.outputs;
   run.progress = std::make_unique<Progress>(figures.program);
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
@@ -127,17 +128,21 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
   figures.timing.meshS = clock.lap();
 }
 
-void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock) {
-  const PictureRequest& pictures = options.pictures;
-  run.progress->stage("writing STL, VDB, the pictures and the report");
-  using Path = std::filesystem::path;
-  out.write("part.stl", [&](const Path& file) { render::writeBinaryStl(run.part, file); });
-  if (run.partedOff()) out.write("stub.stl", [&](const Path& file) { render::writeBinaryStl(run.stub, file); });
-  out.write("toolpath.csv", [&](const Path& file) {
-    writeTextFile(file, [&](std::ostream& csv) { interp::writeToolpathCsv(run.job.toolpath, csv); });
+std::future<void> stageStockFile(const SimulatedRun& run, StagedOutput& out) {
+  if (!run.outputs.vdb) return std::async(std::launch::deferred, [] {});
+  return std::async(std::launch::async, [&run, &out] {
+    out.write("stock.vdb", [&](const std::filesystem::path& file) {
+      run.stock->writeVdb(file, run.figures.simulation.part.get());
+    });
   });
-  out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
-  out.write("stock.vdb", [&](const Path& file) { run.stock->writeVdb(file, run.figures.simulation.part.get()); });
+}
+
+namespace {
+
+// part.png, the views asked for, and a thread's close-up.
+void stagePictures(SimulatedRun& run, const RunOptions& options, StagedOutput& out) {
+  using Path = std::filesystem::path;
+  const PictureRequest& pictures = options.pictures;
   render::PartImageOptions image =
       partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
   addPartSection(image, run.partStock().meridianSection(), run.figures.voxelMm);
@@ -170,7 +175,25 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
     run.pictures.push_back({"thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line), png});
     break;
   }
-  run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
+}
+
+}  // namespace
+
+void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock) {
+  run.progress->stage("writing STL, VDB, the pictures and the report");
+  using Path = std::filesystem::path;
+  const OutputSelection& wanted = options.outputs;
+  if (wanted.stl) out.write("part.stl", [&](const Path& file) { render::writeBinaryStl(run.part, file); });
+  if (wanted.stl && run.partedOff())
+    out.write("stub.stl", [&](const Path& file) { render::writeBinaryStl(run.stub, file); });
+  if (wanted.csv)
+    out.write("toolpath.csv", [&](const Path& file) {
+      writeTextFile(file, [&](std::ostream& csv) { interp::writeToolpathCsv(run.job.toolpath, csv); });
+    });
+  if (wanted.vtp) out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
+  if (wanted.png) stagePictures(run, options, out);
+  if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
+    run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
   for (const std::string& format : options.exports) {
     out.write("part." + format, [&](const Path& file) {
       if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
@@ -185,7 +208,8 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
   using Path = std::filesystem::path;
   out.write("report.json", [&](const Path& file) { writeJson(report, file); });
-  out.write("report.html",
+  if (run.outputs.html)
+    out.write("report.html",
             [&](const Path& file) { writeReportHtml(report, run.job.programText, run.pictures, run.modelGlb, file); });
 }
 

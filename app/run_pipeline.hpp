@@ -3,6 +3,7 @@
 // the run's output files (part.stl, toolpath.csv, toolpath.vtp, stock.vdb, part.png).
 
 #include <chrono>
+#include <future>
 #include <memory>
 #include <optional>
 
@@ -39,6 +40,7 @@ struct SimulatedRun {
   TriangleMesh stub;   // after a part-off: the stub's mesh (meshPart)
   std::vector<HtmlPicture> pictures;  // staged, for report.html
   std::string modelGlb;               // the part and toolpath for report.html's 3D view
+  OutputSelection outputs;            // the files to write (--outputs)
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
   /// The finished part: the piece that parted off, or else the stock.
@@ -57,7 +59,11 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
 /// volumes, triangles, time).
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
-/// Stages the run's files into `out` (the pictures as options.pictures asks, the exports;
+/// Stages stock.vdb in a thread of its own, while the part is meshed: get() the future
+/// before staging the other files (it rethrows a failure).
+std::future<void> stageStockFile(const SimulatedRun& run, StagedOutput& out);
+
+/// Stages the run's other files into `out` (the pictures as options.pictures asks, the exports;
 /// stub.stl too after a part-off), and times them as rendering.
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock);
 

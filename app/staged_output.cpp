@@ -81,6 +81,7 @@ fs::path StagedOutput::stage(const std::string& name) {
   // The temporary keeps the real extension: some writers choose their format by it.
   const auto temp = folder_ / (".tmp-" + std::to_string(getpid()) + "-" + name);
   InterruptCleanup::addFile(temp);
+  const std::lock_guard<std::mutex> lock(stagedMutex_);
   staged_.emplace_back(temp, folder_ / name);
   return temp;
 }

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <mutex>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -21,7 +22,8 @@ class StagedOutput {
   StagedOutput(const StagedOutput&) = delete;
   StagedOutput& operator=(const StagedOutput&) = delete;
 
-  /// Writes `folder/name` through `writer`, given the temporary path, and returns that path;
+  /// Writes `folder/name` through `writer`, given the temporary path, and returns that path
+  /// (several threads may write at once, each its own file);
   /// a failure (an exception, a full disk found when the file is synced) throws
   /// std::runtime_error naming the final file.
   std::filesystem::path write(const std::string& name, const std::function<void(const std::filesystem::path&)>& writer);
@@ -34,6 +36,7 @@ class StagedOutput {
  private:
   std::filesystem::path folder_;
   std::vector<std::filesystem::path> madeFolders_;  // outermost first
+  std::mutex stagedMutex_;  // over staged_: files are written from several threads
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temp, final
 };
 

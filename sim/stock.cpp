@@ -232,12 +232,18 @@ class CheckedVdbFile : public openvdb::io::File {
 Stock::Stock(std::unique_ptr<StockGrid> grid) : impl_(std::move(grid)) {}
 
 void Stock::writeVdb(const std::filesystem::path& file, const Stock* part) const {
-  openvdb::GridCPtrVec grids{impl_->grid};
-  if (part) {
-    openvdb::GridBase::Ptr piece = part->impl_->grid->copyGrid();  // shares the tree; only the name differs
-    piece->setName("part");
-    grids.push_back(piece);
-  }
+  // The file's copies share the trees; only their metadata differ. Values are stored as half
+  // floats (Blosc-compressed as before): a level set's values lie within the band, ±3 voxels,
+  // where a half keeps 11 bits, 1e-4 of a 0.1 mm voxel's band; every OpenVDB reader (Blender,
+  // Houdini, ParaView's) reads them back as floats. It halves the file and its writing time.
+  const auto fileCopy = [](const StockGrid& grid, const char* name) {
+    openvdb::GridBase::Ptr copy = grid.grid->copyGrid();
+    copy->setName(name);
+    copy->setSaveFloatAsHalf(true);
+    return copy;
+  };
+  openvdb::GridCPtrVec grids{fileCopy(*impl_, "stock")};
+  if (part) grids.push_back(fileCopy(*part->impl_, "part"));
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   if (!out) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
   CheckedVdbFile(file.string()).writeTo(out, grids);

@@ -120,7 +120,7 @@ class Stock {
   /// aside), lets it look only around there when the cut plainly parted nothing.
   std::unique_ptr<Stock> takeLoosePieces(const std::optional<ChangedArea>& lastCut = std::nullopt);
 
-  /// Writes the level set (.vdb, Blosc-compressed) under the grid name "stock", and `part`'s
+  /// Writes the level set (.vdb, half floats, Blosc-compressed) under the grid name "stock", and `part`'s
   /// (a piece taken out by takeLoosePieces) beside it under the name "part".
   void writeVdb(const std::filesystem::path& file, const Stock* part = nullptr) const;
 

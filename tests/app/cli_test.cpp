@@ -296,6 +296,41 @@ TEST(Cli, O0006AlarmsAtN40AndWritesNothing) {
   EXPECT_TRUE(noOutputs(out));
 }
 
+// --outputs writes exactly the files it names and report.json; each selection over the seven
+// files a plain run writes, and an export named there as --export would write it.
+TEST(Cli, OutputsWritesExactlyTheFilesNamedAndTheReport) {
+  const fs::path part = kPartsDir / "g71-g70-shaft";
+  const std::vector<std::pair<std::string, std::set<std::string>>> cases{
+      {"report", {"report.json"}},
+      {"stl,csv", {"part.stl", "toolpath.csv", "report.json"}},
+      {"png,vdb,html", {"part.png", "stock.vdb", "report.html", "report.json"}},
+      {"vtp,report,ply", {"toolpath.vtp", "part.ply", "report.json"}}};
+  for (const auto& [outputs, expected] : cases) {
+    TempDir dir("outputs");
+    const fs::path out = dir.path() / "out";
+    const Outcome outcome = lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(),
+                                      "--voxel", "0.5", "--outputs", outputs, "--out", out.string()},
+                                     dir.path());
+    ASSERT_EQ(outcome.status, 0) << outcome.err;
+    std::set<std::string> written;
+    for (const auto& entry : fs::directory_iterator(out)) written.insert(entry.path().filename().string());
+    EXPECT_EQ(written, expected) << "--outputs " << outputs;
+  }
+}
+
+TEST(Cli, OutputsWithAnUnknownNameIsACommandLineErrorNamingTheValidOnes) {
+  TempDir dir("outputs-bad");
+  const fs::path part = kPartsDir / "g71-g70-shaft";
+  const fs::path out = dir.path() / "out";
+  const Outcome outcome = lathesim({"run", (part / "program.nc").string(), "--setup", (part / "setup.toml").string(),
+                                    "--outputs", "stl,pdf", "--out", out.string()},
+                                   dir.path());
+  EXPECT_EQ(outcome.status, 2);
+  EXPECT_NE(outcome.err.find("pdf not in {stl,png,vdb,vtp,csv,report,html,gltf,glb,ply,obj,video}"), std::string::npos)
+      << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+}
+
 TEST(Cli, ExpandPrintsExactlyTheGoldenToolpath) {
   TempDir dir("expand");
   const Outcome outcome = lathesim({"expand", (kPartsDir / kPart / "program.nc").string(), "--setup",

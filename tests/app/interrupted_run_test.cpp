@@ -126,7 +126,8 @@ TEST(OutputFolder, UnwritableOutIsAClearErrorBeforeTheRun) {
 }
 
 // A file size limit (ulimit -f, with SIGXFSZ ignored, so that write() fails with EFBIG as a
-// full disk fails with ENOSPC) below the STL's size: the writer's failure is caught, named,
+// full disk fails with ENOSPC) below the size of stock.vdb, the first file written (while the
+// part is meshed): the writer's failure is caught, named,
 // and leaves nothing, not even the folder the run made. Needs no privilege.
 TEST(OutputFailure, FileSizeLimitIsAClearErrorAndLeavesNothing) {
   test::ScratchDir scratch("fsize");
@@ -135,7 +136,7 @@ TEST(OutputFailure, FileSizeLimitIsAClearErrorAndLeavesNothing) {
   for (const auto& arg : runArgs("seed001-taper-r24", out, "0.5")) command += " '" + arg + "'";
   const auto outcome = test::runProcess("/bin/bash", {"-c", command}, scratch.path());
   EXPECT_EQ(outcome.status, 1) << outcome.err;
-  EXPECT_NE(outcome.err.find("lathesim: error: cannot write " + (out / "part.stl").string() +
+  EXPECT_NE(outcome.err.find("lathesim: error: cannot write " + (out / "stock.vdb").string() +
                              ": File too large; no output was written"),
             std::string::npos)
       << outcome.err;
@@ -152,7 +153,8 @@ TEST(OutputFailure, FullDiskStopsEveryWriterAndLeavesNothing) {
   const auto full = test::runProcess(kBinary, runArgs("seed001-taper-r24", whole, "0.5"), scratch.path());
   ASSERT_EQ(full.status, 0) << full.err;
   constexpr std::uintmax_t kPage = 4096;  // tmpfs gives files whole pages
-  const std::vector<std::string> writeOrder = {"part.stl", "toolpath.csv", "toolpath.vtp", "stock.vdb", "part.png",
+  // stock.vdb first: it is written while the part is meshed.
+  const std::vector<std::string> writeOrder = {"stock.vdb", "part.stl", "toolpath.csv", "toolpath.vtp", "part.png",
                                                "report.json", "report.html"};
   const fs::path disk = scratch.path() / "disk";
   fs::create_directories(disk);

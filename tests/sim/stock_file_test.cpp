@@ -5,6 +5,7 @@
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "sim/stock.hpp"
@@ -28,6 +29,32 @@ TEST(StockFile, OpenVdbReadsBackTheWholeGrid) {
   in.close();
   EXPECT_EQ(grid->activeVoxelCount(), stock.activeVoxelCount());
   EXPECT_GT(stock.activeVoxelCount(), 0u);
+}
+
+// The file holds half floats: every value read back is the stock's to within a half's
+// rounding (11 significant bits), at voxel sizes where the band's values differ in scale.
+TEST(StockFile, ValuesReadBackWithinAHalfsRounding) {
+  openvdb::initialize();
+  for (const double voxel : {0.5, 0.23, 0.1}) {
+    test::ScratchDir scratch("vdb-half");
+    Stock stock(StockSpec{12.0, 8.0, 0.0}, voxel);
+    stock.remove(RevolvedRegion({ConvexPolygon::hullOf(std::vector<RZ>{{4, -3}, {7, -3}, {7, 1}, {4, 1}})}));
+    const std::filesystem::path file = scratch.path() / "stock.vdb";
+    stock.writeVdb(file);
+    openvdb::io::File in(file.string());
+    in.open();
+    const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(in.readGrid("stock"));
+    in.close();
+    ASSERT_TRUE(grid);
+    EXPECT_TRUE(grid->saveFloatAsHalf());
+    std::size_t compared = 0;
+    for (auto v = grid->cbeginValueOn(); v; ++v, ++compared) {
+      const openvdb::Vec3d p = grid->indexToWorld(v.getCoord());
+      const double expected = stock.signedDistanceAt(p.x(), p.y(), p.z());
+      ASSERT_NEAR(*v, expected, std::abs(expected) * std::ldexp(1.0, -11) + 1e-7) << "voxel " << voxel << " at " << p;
+    }
+    EXPECT_EQ(compared, stock.activeVoxelCount());
+  }
 }
 
 TEST(StockFile, AFolderThatTakesNoFileIsAnErrorNamingIt) {
