@@ -109,7 +109,7 @@ Result<std::vector<CycleLeg>> haasThreadingLegs(const Code& code, ParsedBlock& b
     }
     constantDepth = p->value == 3;
   }
-  auto lead = takeLeadMm(block, state, threadingWords(options.dialect), code.text, code.column, feedGiven);
+  auto lead = takeLeadMm(block, state, threadingWords(options.dialect), options.control, code.text, code.column, feedGiven);
   if (!lead.ok()) return lead.error();
 
   const RZ start = state.position;
@@ -136,7 +136,7 @@ Result<std::vector<CycleLeg>> haasThreadingLegs(const Code& code, ParsedBlock& b
                                               "(Setting 86, control g76_allowance)",
                                               k->text(), params.finishAllowanceMm)};
   }
-  const ThreadRunout runout = cycleRunout({}, options.threadRunoutLeads * params.leadMm);
+  const ThreadRunout runout = cycleRunout({}, options.control.threadRunoutLeads * params.leadMm);
   params.runoutAlongMm = runout.alongMm;
   params.runoutAcrossMm = std::abs(runout.acrossMm);
 
