@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -71,9 +72,14 @@ Ended interruptRun(const fs::path& scratch, const std::string& part, const std::
 TEST(InterruptedRun, SigintWhileSimulatingExits130AndWritesNothing) {
   test::ScratchDir scratch("sigint");
   const fs::path out = scratch.path() / "nested" / "out";
-  const auto start = Clock::now();  // seed 000 at 0.1 mm simulates for seconds
-  const Ended ended = interruptRun(scratch.path(), "seed000-face-taper", "0.1", out, SIGINT,
-                                   [&] { return Clock::now() - start > std::chrono::milliseconds(700); });
+  // The run makes --out (its signal handlers already set) just before it simulates, which at
+  // 0.1 mm takes seconds: a fixed delay instead let a loaded machine's signal land while the
+  // process was still loading its libraries.
+  std::optional<Clock::time_point> outMade;
+  const Ended ended = interruptRun(scratch.path(), "seed000-face-taper", "0.1", out, SIGINT, [&] {
+    if (!outMade && fs::exists(out)) outMade = Clock::now();
+    return outMade && Clock::now() - *outMade > std::chrono::milliseconds(200);
+  });
   EXPECT_EQ(ended.exitStatus, 130) << ended.log;
   EXPECT_NE(ended.log.find("stopped by SIGINT"), std::string::npos) << ended.log;
   EXPECT_FALSE(fs::exists(scratch.path() / "nested")) << "the folders the run made are removed";
