@@ -313,8 +313,8 @@ Status Executor::applyTool() {
     std::vector<std::string> seen;  // the program's T words, each once, where first written
     std::string used;
     for (const ProgramBlock& b : place_->program.blocks) {
-      const ParsedBlock* words = b.skipped ? nullptr : b.plainWords();
-      if (words == nullptr || !words->has('T')) continue;
+      const auto words = place_->program.plainWords(b);
+      if (!words || !words->has('T')) continue;
       const std::string text = words->words.at('T').text();
       if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
       seen.push_back(text);
