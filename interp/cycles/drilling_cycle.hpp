@@ -2,6 +2,8 @@
 // G81, G82 and G83: drilling on the spindle's axis with the part turning (a drill in the
 // turret at X0), from the tool's position. See drilling_cycle.cpp for the moves.
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "geometry/rz.hpp"
@@ -23,6 +25,9 @@ struct DrillingLegs {
   std::vector<CycleLeg> up;
 };
 
-DrillingLegs drillingLegs(const RZ& start, const DrillingParams& params);
+/// Nullopt when it would take more than `maxLegs` pecks (the move limit): pecks of microns
+/// over metres would fill memory first, and a peck below the precision of a far depth never
+/// arrives.
+std::optional<DrillingLegs> drillingLegs(const RZ& start, const DrillingParams& params, std::size_t maxLegs);
 
 }  // namespace lathesim::interp

@@ -25,6 +25,7 @@
 #include "interp/cycles/thread_words.hpp"
 #include "interp/motion/spindle_speed.hpp"
 #include "interp/execution/data_setting.hpp"
+#include "interp/execution/program_runner.hpp"
 #include "interp/execution/subprogram_call.hpp"
 #include "interp/control/tool_word.hpp"
 #include "interp/execution/work_coordinates.hpp"
@@ -1064,7 +1065,9 @@ Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
   params.clearanceMm = options_.control.peckRetractMm;
   // X0 in the block: the tool goes to the axis first, at rapid.
   if (from.x() != start.x()) emit(MoveKind::Rapid, from, RZ(start.x(), from.y()), 0);
-  const DrillingLegs legs = drillingLegs(RZ(start.x(), from.y()), params);
+  const auto drilled = drillingLegs(RZ(start.x(), from.y()), params, options_.maxMoves);
+  if (!drilled) return *moveLimitError(options_.maxMoves + 1, options_.maxMoves, block_.line, anchor);
+  const DrillingLegs& legs = *drilled;
   emitLegs(legs.down);
   if (state_.drillingDwellS > 0) {
     const RZ bottom(start.x(), bottomZ);
