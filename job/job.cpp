@@ -45,8 +45,8 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
   Setup& setup = job.setup;
   std::vector<int> mounted;
   for (const interp::ProgramBlock& block : program.blocks) {
-    const interp::ParsedBlock* words = block.skipped ? nullptr : block.plainWords();
-    if (words == nullptr || !words->has('T')) continue;
+    const auto words = program.plainWords(block);
+    if (!words || !words->has('T')) continue;
     const interp::Word t = words->words.at('T');
     const auto read = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line);
     if (!read.ok() || read.value().tool == 0) continue;  // the interpreter reports a bad T word

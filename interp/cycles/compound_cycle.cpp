@@ -15,6 +15,7 @@
 #include "interp/cycles/haas_g76.hpp"
 #include "interp/cycles/thread_words.hpp"
 #include "interp/compensation/nose_compensation.hpp"
+#include "interp/execution/program_runner.hpp"
 #include "interp/cycles/peck_cycle.hpp"
 #include "interp/text/label_number.hpp"
 #include "interp/cycles/roughing_cycle.hpp"
@@ -438,7 +439,9 @@ Status CompoundCycle::peck(const PeckCycle& cycle) {
                                code_.text, shiftLetter, g74 ? 'i' : 'k', g74 ? "X" : "Z",
                                g74 ? "X" : "Z"));
   }
-  outcome_.legs = peckCycleLegs(cycle, start, end, params);
+  auto legs = peckCycleLegs(cycle, start, end, params, options_.maxMoves);
+  if (!legs) return *moveLimitError(options_.maxMoves + 1, options_.maxMoves, block_.line, code_.column);
+  outcome_.legs = std::move(*legs);
   return success();
 }
 

@@ -88,9 +88,9 @@ Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
 }
 
 // A block that holds its N number and nothing else.
-bool isLabelOnly(const ProgramBlock& block) {
-  const ParsedBlock* parsed = block.plainWords();
-  return parsed != nullptr && parsed->gCodes.empty() && parsed->mCodes.empty() && parsed->words.size() == 1 &&
+bool isLabelOnly(const Program& program, const ProgramBlock& block) {
+  const auto parsed = program.plainWords(block);
+  return parsed && parsed->gCodes.empty() && parsed->mCodes.empty() && parsed->words.size() == 1 &&
          parsed->has('N');
 }
 
@@ -119,7 +119,7 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
                              *program.blocks[span.first].sequenceNumber)};
   }
   const std::string name = spanName(program, span);
-  while (span.start < span.last && (program.blocks[span.start].skipped || isLabelOnly(program.blocks[span.start])))
+  while (span.start < span.last && (program.blocks[span.start].skipped || isLabelOnly(program, program.blocks[span.start])))
     ++span.start;
   int count = 0;
   std::set<int> numbers;
@@ -133,7 +133,7 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
                                "G00–G03, G04, G96/G97, G98/G99 and G40–G42",
                                request.cycle, name)};
     }
-    auto words = sortedWords(block, cycle.variables, state, options);
+    auto words = sortedWords(cycle.program, block, cycle.variables, state, options);
     if (!words.ok()) return words.error();
     if (block.sequenceNumber && !numbers.insert(*block.sequenceNumber).second) {
       return Error{block.line, block.column,
@@ -158,7 +158,7 @@ Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
   for (std::size_t i = span.first; i <= span.last; ++i) {
     const ProgramBlock& block = cycle.program.blocks[i];
     if (block.skipped) continue;
-    auto words = sortedWords(block, cycle.variables, state, options);
+    auto words = sortedWords(cycle.program, block, cycle.variables, state, options);
     if (!words.ok()) return words.error();
     auto done = executeBlock(words.value(), std::move(state), options, block.ordinal);
     if (!done.ok()) return done.error();
@@ -180,7 +180,7 @@ Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan spa
   std::vector<Error> cornerWarnings;  // G70 gives them, when it runs the same blocks
   if (auto corners = insertCorners(run.value().moves, cornerWarnings); !corners.ok()) return corners.error();
   const ProgramBlock& first = cycle.program.blocks[span.start];
-  auto firstWords = sortedWords(first, cycle.variables, state, options);
+  auto firstWords = sortedWords(cycle.program, first, cycle.variables, state, options);
   if (!firstWords.ok()) return firstWords.error();
   const ParsedBlock& firstParsed = firstWords.value();
   ExtractedContour extracted;

@@ -18,7 +18,7 @@
 
 namespace lathesim::interp {
 
-DrillingLegs drillingLegs(const RZ& start, const DrillingParams& params) {
+std::optional<DrillingLegs> drillingLegs(const RZ& start, const DrillingParams& params, std::size_t maxLegs) {
   DrillingLegs legs;
   const double x = start.x();
   const double direction = params.bottomZ < params.rPlaneZ ? -1.0 : 1.0;  // toward the bottom
@@ -30,11 +30,13 @@ DrillingLegs drillingLegs(const RZ& start, const DrillingParams& params) {
   at = RZ(x, params.rPlaneZ);
   const double total = std::abs(params.bottomZ - params.rPlaneZ);
   double depth = params.peckMm > 0 ? std::min(params.peckMm, total) : total;
+  std::size_t pecks = 0;
   for (;;) {
     const RZ reached(x, params.rPlaneZ + direction * depth);
     add(legs.down, MoveKind::Feed, at, reached, 2);
     at = reached;
     if (depth >= total) break;
+    if (++pecks > maxLegs) return std::nullopt;
     add(legs.down, MoveKind::Rapid, at, RZ(x, params.rPlaneZ), 3);
     const double backDown = std::max(depth - params.clearanceMm, 0.0);
     add(legs.down, MoveKind::Rapid, RZ(x, params.rPlaneZ), RZ(x, params.rPlaneZ + direction * backDown), 4);

@@ -3,6 +3,8 @@
 // turret at X0), from the tool's position; G84 taps there the same way. See
 // drilling_cycle.cpp for the moves.
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "geometry/rz.hpp"
@@ -26,6 +28,9 @@ struct DrillingLegs {
   std::vector<CycleLeg> up;
 };
 
-DrillingLegs drillingLegs(const RZ& start, const DrillingParams& params);
+/// Nullopt when it would take more than `maxLegs` pecks (the move limit): pecks of microns
+/// over metres would fill memory first, and a peck below the precision of a far depth never
+/// arrives.
+std::optional<DrillingLegs> drillingLegs(const RZ& start, const DrillingParams& params, std::size_t maxLegs);
 
 }  // namespace lathesim::interp

@@ -26,8 +26,8 @@ double signOf(double value) { return value > kTolMm ? 1.0 : value < -kTolMm ? -1
 
 }  // namespace
 
-std::vector<CycleLeg> peckCycleLegs(const PeckCycle& cycle, const RZ& start, const RZ& end,
-                                    const PeckParams& params) {
+std::optional<std::vector<CycleLeg>> peckCycleLegs(const PeckCycle& cycle, const RZ& start, const RZ& end,
+                                                   const PeckParams& params, std::size_t maxLegs) {
   // (p, s) → (radius, Z)
   const auto at = [&cycle](double p, double s) {
     return cycle.pecksAlongZ ? RZ(s, p) : RZ(p, s);
@@ -45,10 +45,12 @@ std::vector<CycleLeg> peckCycleLegs(const PeckCycle& cycle, const RZ& start, con
   };
   double s = sA;
   RZ here = start;
+  std::size_t steps = 0;  // pecks and plunges, each one leg at least unless it does not move
   for (;;) {
     // Pecks down to p_E.
     double p = pA;
     for (;;) {
+      if (++steps > maxLegs) return std::nullopt;
       const bool last = std::abs(pE - p) <= params.peckMm + kTolMm;
       const double bottom = last ? pE : p + pDir * params.peckMm;
       add(MoveKind::Feed, here, at(bottom, s), 1);
@@ -64,6 +66,7 @@ std::vector<CycleLeg> peckCycleLegs(const PeckCycle& cycle, const RZ& start, con
     add(MoveKind::Rapid, at(pE, relieved), at(pA, relieved), 4);
     here = at(pA, relieved);
     if (std::abs(sE - s) <= kTolMm) break;
+    if (++steps > maxLegs) return std::nullopt;
     s = std::abs(sE - s) <= params.shiftMm + kTolMm ? sE : s + sDir * params.shiftMm;
     add(MoveKind::Rapid, here, at(pA, s), 5);
     here = at(pA, s);

@@ -2,6 +2,8 @@
 // G74 (face peck drilling / face grooving) and G75 (OD/ID grooving): one engine, the axes
 // exchanged by a table. See peck_cycle.cpp for the moves.
 
+#include <cstddef>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -30,8 +32,11 @@ struct PeckParams {
 
 /// The legs from the cycle start `start` (A) to the end point `end`; the cycle ends at A.
 /// The caller checks that `peckMm` > 0 when A and the end differ along the peck axis and
-/// `shiftMm` > 0 when they differ along the other (the plunges would never arrive).
-std::vector<CycleLeg> peckCycleLegs(const PeckCycle& cycle, const RZ& start, const RZ& end,
-                                    const PeckParams& params);
+/// `shiftMm` > 0 when they differ along the other (the plunges would never arrive). Nullopt
+/// when it would take more than `maxLegs` steps (the move limit): pecks of microns over
+/// metres would fill memory first, and a peck below the precision of a far coordinate never
+/// arrives.
+std::optional<std::vector<CycleLeg>> peckCycleLegs(const PeckCycle& cycle, const RZ& start, const RZ& end,
+                                                   const PeckParams& params, std::size_t maxLegs);
 
 }  // namespace lathesim::interp

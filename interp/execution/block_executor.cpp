@@ -25,6 +25,7 @@
 #include "interp/cycles/thread_words.hpp"
 #include "interp/motion/spindle_speed.hpp"
 #include "interp/execution/data_setting.hpp"
+#include "interp/execution/program_runner.hpp"
 #include "interp/execution/subprogram_call.hpp"
 #include "interp/control/tool_word.hpp"
 #include "interp/execution/work_coordinates.hpp"
@@ -313,8 +314,8 @@ Status Executor::applyTool() {
     std::vector<std::string> seen;  // the program's T words, each once, where first written
     std::string used;
     for (const ProgramBlock& b : place_->program.blocks) {
-      const ParsedBlock* words = b.skipped ? nullptr : b.plainWords();
-      if (words == nullptr || !words->has('T')) continue;
+      const auto words = place_->program.plainWords(b);
+      if (!words || !words->has('T')) continue;
       const std::string text = words->words.at('T').text();
       if (std::find(seen.begin(), seen.end(), text) != seen.end()) continue;
       seen.push_back(text);
@@ -1072,7 +1073,9 @@ Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
   params.tapping = tapping;
   // X0 in the block: the tool goes to the axis first, at rapid.
   if (from.x() != start.x()) emit(MoveKind::Rapid, from, RZ(start.x(), from.y()), 0);
-  const DrillingLegs legs = drillingLegs(RZ(start.x(), from.y()), params);
+  const auto drilled = drillingLegs(RZ(start.x(), from.y()), params, options_.maxMoves);
+  if (!drilled) return *moveLimitError(options_.maxMoves + 1, options_.maxMoves, block_.line, anchor);
+  const DrillingLegs& legs = *drilled;
   emitLegs(legs.down);
   if (state_.drillingDwellS > 0) {
     const RZ bottom(start.x(), bottomZ);

@@ -112,7 +112,7 @@ Result<std::size_t> ProgramRunner::runBlock(std::size_t index) {
   if (guard_.step(index)) return stepLimitError(index);
 
   Result<std::size_t> after = index + 1;
-  if (const ParsedBlock* words = block.plainWords()) {
+  if (const auto words = program_.plainWords(block)) {
     after = runWords(index, *words);
   } else if (const macro::MacroBlock* macroBlock = block.macroBlock(); macroBlock->statement) {
     std::vector<Error> stops;

@@ -5,10 +5,10 @@
 
 namespace lathesim::interp {
 
-Result<ParsedBlock> sortedWords(const ProgramBlock& block, const macro::VariableStore* variables,
+Result<ParsedBlock> sortedWords(const Program& program, const ProgramBlock& block, const macro::VariableStore* variables,
                                 const ModalState& state, const InterpreterOptions& options) {
   if (!block.content.ok()) return block.content.error();
-  if (const ParsedBlock* words = block.plainWords()) return *words;
+  if (auto words = program.plainWords(block)) return std::move(*words);
   const macro::MacroBlock& macroBlock = *block.macroBlock();
   if (macroBlock.statement) return Error{block.line, block.column, "a macro statement has no words to run here"};
   const macro::VariableStore none;

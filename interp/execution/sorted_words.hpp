@@ -16,7 +16,7 @@ namespace lathesim::interp {
 /// Fails for a block that cannot be read, or a macro statement (it has no words to run).
 /// `variables` may be null when no macro variables exist (a block run on its own). The values
 /// are read as the control does from `state` (G20) under `options` (its dialect and parameters).
-Result<ParsedBlock> sortedWords(const ProgramBlock& block, const macro::VariableStore* variables,
+Result<ParsedBlock> sortedWords(const Program& program, const ProgramBlock& block, const macro::VariableStore* variables,
                                 const ModalState& state, const InterpreterOptions& options);
 
 }  // namespace lathesim::interp

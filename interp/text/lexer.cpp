@@ -288,6 +288,7 @@ Result<std::optional<RawBlock>> BlockReader::next() {
     if (atLineStart_ && skipDirectiveLine()) continue;
     atLineStart_ = false;
 
+    blockStart_ = ReadPosition{at_, line_, column_, inProgram_};
     RawBlock block;
     block.line = line_;
     bool started = false;

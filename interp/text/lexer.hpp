@@ -116,10 +116,26 @@ struct Token {
   double value = 0.0;  // Number: its value
 };
 
+/// Where a BlockReader stood when it began a block: a reader started there reads that block
+/// again (interp/text/program.hpp keeps this instead of the block's words).
+struct ReadPosition {
+  std::size_t at = 0;  // byte offset into the text
+  int line = 1;
+  int column = 1;
+  bool inProgram = false;  // past the tape leader
+};
+
 /// Splits program text into blocks, one at a time, so nothing after M30 is ever read.
 class BlockReader {
  public:
   explicit BlockReader(std::string_view text) : text_(text) {}
+  /// Reads on from `from`, a blockStart() of a reader of the same text.
+  BlockReader(std::string_view text, ReadPosition from)
+      : text_(text), at_(from.at), line_(from.line), column_(from.column), atLineStart_(false),
+        inProgram_(from.inProgram) {}
+
+  /// Where the block next() returned last began.
+  ReadPosition blockStart() const { return blockStart_; }
 
   /// The next block holding anything but spaces and comments; std::nullopt at the end.
   /// Fails on a comment that is not closed on its line.
@@ -150,6 +166,7 @@ class BlockReader {
   bool atLineStart_ = true;
   bool inProgram_ = false;  // a block or '%' line has been read: the leader is over
   bool readBlock_ = false;  // a block was returned: the next '%' closes the program
+  ReadPosition blockStart_;
   std::optional<std::pair<int, int>> closingPercent_;
   std::optional<std::pair<int, int>> textAfterClosing_;
   std::vector<std::string> pendingAbove_;  // comment-only lines since the last block

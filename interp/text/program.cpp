@@ -31,18 +31,29 @@ Status readLabel(const std::vector<Token>& tokens, char letter, int line, std::o
   return success();
 }
 
-Result<BlockContent> contentOf(const std::vector<Token>& tokens, const RawBlock& raw, Dialect dialect,
-                               MachineMCodes machine) {
+// What a block says, sorted: its plain words, or its Custom Macro B.
+using SortedContent = std::variant<ParsedBlock, std::shared_ptr<const macro::MacroBlock>>;
+
+Result<SortedContent> contentOf(const std::vector<Token>& tokens, const RawBlock& raw, Dialect dialect,
+                                MachineMCodes machine) {
   if (macro::needsMacroReader(tokens)) {
     auto macroBlock = macro::readMacroBlock(tokens, raw);
     if (!macroBlock.ok()) return macroBlock.error();
-    return BlockContent{std::make_shared<const macro::MacroBlock>(std::move(macroBlock).value())};
+    return SortedContent{std::make_shared<const macro::MacroBlock>(std::move(macroBlock).value())};
   }
   std::vector<Word> words;
   for (const Token& token : tokens) words.push_back(token.word);
   auto parsed = parseBlock(words, raw.line, raw.column, dialect, machine);
   if (!parsed.ok()) return parsed.error();
-  return BlockContent{std::move(parsed).value()};
+  return SortedContent{std::move(parsed).value()};
+}
+
+// A block as the program keeps it: a block of plain words by where it starts.
+Result<BlockContent> kept(Result<SortedContent> content, ReadPosition start) {
+  if (!content.ok()) return content.error();
+  if (auto* macroBlock = std::get_if<std::shared_ptr<const macro::MacroBlock>>(&content.value()))
+    return BlockContent{std::move(*macroBlock)};
+  return BlockContent{PlainBlock{start}};
 }
 
 }  // namespace
@@ -63,13 +74,26 @@ std::optional<int> Program::programNumberOf(std::size_t index) const {
   return blocks[static_cast<std::size_t>(start)].programNumber;
 }
 
+std::optional<ParsedBlock> Program::plainWords(const ProgramBlock& block) const {
+  if (block.skipped || !block.plain()) return std::nullopt;
+  const SourceText& source = sources[static_cast<std::size_t>(block.source)];
+  // It read when the program was read, the same way: it reads again.
+  BlockReader reader(source.text, std::get<PlainBlock>(block.content.value()).start);
+  RawBlock raw = *reader.next().value();
+  if (raw.skipFrom && source.blockDelete) raw.chars.resize(*raw.skipFrom);
+  auto content = contentOf(lexBlock(raw).value(), raw, source.dialect, source.machine);
+  return std::get<ParsedBlock>(std::move(content).value());
+}
+
 namespace {
 
 // Appends the blocks of source `source` to `program`; returns the notes of the machine M codes
 // it names first (the main program's go into program.notes, after the reader's own).
-std::vector<ReadNote> appendBlocks(Program& program, int source, bool blockDelete, Dialect dialect,
-                                   MachineMCodes machine) {
-  BlockReader reader(program.sources[static_cast<std::size_t>(source)].text);
+std::vector<ReadNote> appendBlocks(Program& program, int source) {
+  const SourceText& text = program.sources[static_cast<std::size_t>(source)];
+  const bool blockDelete = text.blockDelete;
+  const MachineMCodes machine = text.machine;
+  BlockReader reader(text.text);
   int currentProgram = -1;
   std::vector<ReadNote> machineNotes;  // each machine M code, where it first appears
   for (;;) {
@@ -94,16 +118,17 @@ std::vector<ReadNote> appendBlocks(Program& program, int source, bool blockDelet
     block.comments = raw.comments;
     block.commentsAbove = raw.commentsAbove;
     block.skipped = raw.deleted && blockDelete;
+    Result<SortedContent> content = Error{};
     if (!block.skipped) {
       auto tokens = lexBlock(raw);
       if (tokens.ok()) {
         const Status sequence = readLabel(tokens.value(), 'N', raw.line, block.sequenceNumber);
         const Status number = readLabel(tokens.value(), 'O', raw.line, block.programNumber);
-        block.content = !sequence.ok() ? Result<BlockContent>(sequence.error())
-                        : !number.ok() ? Result<BlockContent>(number.error())
-                                       : contentOf(tokens.value(), raw, dialect, machine);
+        content = !sequence.ok() ? Result<SortedContent>(sequence.error())
+                  : !number.ok() ? Result<SortedContent>(number.error())
+                                 : contentOf(tokens.value(), raw, text.dialect, machine);
       } else {
-        block.content = tokens.error();
+        content = tokens.error();
       }
     }
     const std::size_t index = program.blocks.size();
@@ -111,7 +136,7 @@ std::vector<ReadNote> appendBlocks(Program& program, int source, bool blockDelet
       currentProgram = static_cast<int>(index);
       program.programStart.emplace(*block.programNumber, index);
     }
-    if (const ParsedBlock* words = block.plainWords()) {
+    if (const ParsedBlock* words = content.ok() ? std::get_if<ParsedBlock>(&content.value()) : nullptr) {
       for (const Code& code : words->machineCodes) {
         if (!program.notedMachineCodes.insert(code.number).second) continue;
         const MachineMCode* own = findMachineMCode(code.number, machine);
@@ -120,6 +145,7 @@ std::vector<ReadNote> appendBlocks(Program& program, int source, bool blockDelet
                                             code.text, own ? own->meaning : "machine function")});
       }
     }
+    if (!block.skipped) block.content = kept(std::move(content), reader.blockStart());
     program.programOf.push_back(currentProgram);
     program.blocks.push_back(std::move(block));
   }
@@ -138,17 +164,16 @@ std::vector<ReadNote> appendBlocks(Program& program, int source, bool blockDelet
 
 Program readProgram(std::string_view text, bool blockDelete, Dialect dialect, MachineMCodes machine) {
   Program program;
-  program.sources.push_back({"", std::string(text)});
-  appendBlocks(program, 0, blockDelete, dialect, machine);
+  program.sources.push_back({"", std::string(text), blockDelete, dialect, machine});
+  appendBlocks(program, 0);
   return program;
 }
 
 std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, std::string_view text,
                                         int number, bool blockDelete, Dialect dialect, MachineMCodes machine) {
   const std::size_t first = program.blocks.size();
-  program.sources.push_back({name, std::string(text)});
-  std::vector<ReadNote> notes =
-      appendBlocks(program, static_cast<int>(program.sources.size()) - 1, blockDelete, dialect, machine);
+  program.sources.push_back({name, std::string(text), blockDelete, dialect, machine});
+  std::vector<ReadNote> notes = appendBlocks(program, static_cast<int>(program.sources.size()) - 1);
   if (program.programStart.count(number) != 0 || first == program.blocks.size()) return notes;
   // No O line for it: the file is the program; its blocks before any O block belong to it.
   program.programStart.emplace(number, first);

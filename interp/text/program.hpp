@@ -1,12 +1,14 @@
 #pragma once
 // The whole program text read into blocks before any runs, so that execution can jump:
 // M98 to an O number, G70–G73 to the N numbers of their contour, GOTO and WHILE of Custom
-// Macro B. Each block is tokenized as it is read; a block of plain words is sorted into codes
-// then, a block of Custom Macro B (a statement, an expression in an address, a G65 call) is
-// kept as read, its words sorted each time it runs, since their values may change between
-// runs. An error in a block is kept with the block and reported only if execution reaches it
-// (text after M30 that never runs is never checked, as when the program was read block by
-// block).
+// Macro B. Each block is tokenized and checked as it is read. A block of plain words keeps
+// only where it starts in the text, and is read again each time it is asked for
+// (Program::plainWords): holding every block's sorted words took ~600 B a block, 600 MB for a
+// program of a million blocks. A block of Custom Macro B (a statement, an expression in an
+// address, a G65 call) is kept as read, its words sorted each time it runs, since their values
+// may change between runs. An error in a block is kept with the block and reported only if
+// execution reaches it (text after M30 that never runs is never checked, as when the program
+// was read block by block).
 
 #include <cstddef>
 #include <map>
@@ -20,13 +22,19 @@
 
 #include "interp/macro/statement.hpp"
 #include "interp/text/block_parser.hpp"
+#include "interp/text/lexer.hpp"
 #include "interp/result.hpp"
 
 namespace lathesim::interp {
 
-/// What a block says: plain words sorted into codes, or a block of Custom Macro B (held apart,
-/// so that the many plain blocks of a long program stay small).
-using BlockContent = std::variant<ParsedBlock, std::shared_ptr<const macro::MacroBlock>>;
+/// A block of plain words, read again from where it starts in its source when it runs.
+struct PlainBlock {
+  ReadPosition start;
+};
+
+/// What a block says: plain words, or a block of Custom Macro B (held apart, so that the many
+/// plain blocks of a long program stay small).
+using BlockContent = std::variant<PlainBlock, std::shared_ptr<const macro::MacroBlock>>;
 
 struct ProgramBlock {
   int ordinal = 0;        // 0-based position among the blocks read
@@ -41,10 +49,8 @@ struct ProgramBlock {
   std::vector<std::string> commentsAbove;  // comment-only lines directly above it
   Result<BlockContent> content = Error{};  // what the block says, or why it cannot run
 
-  /// The sorted words of a block of plain words; nullptr for a macro block or a bad one.
-  const ParsedBlock* plainWords() const {
-    return content.ok() ? std::get_if<ParsedBlock>(&content.value()) : nullptr;
-  }
+  /// Whether it is a block of plain words that reads (Program::plainWords gives them).
+  bool plain() const { return content.ok() && std::holds_alternative<PlainBlock>(content.value()); }
   /// The block of Custom Macro B; nullptr for a block of plain words or a bad one.
   const macro::MacroBlock* macroBlock() const {
     if (!content.ok()) return nullptr;
@@ -53,10 +59,14 @@ struct ProgramBlock {
   }
 };
 
-/// A text the blocks were read from: the program's own (name empty) or a subprogram's file.
+/// A text the blocks were read from: the program's own (name empty) or a subprogram's file,
+/// and how it was read.
 struct SourceText {
   std::string name;
   std::string text;
+  bool blockDelete = false;
+  Dialect dialect = Dialect::FanucA;
+  MachineMCodes machine = MachineMCodes::Gsk980tdi;
 };
 
 struct Program {
@@ -73,6 +83,9 @@ struct Program {
   std::vector<std::size_t> findSequence(int sequenceNumber, std::size_t from) const;
   /// The O number of the program that block `index` belongs to, if it has one.
   std::optional<int> programNumberOf(std::size_t index) const;
+  /// The words of `block` sorted into codes, read again from its source; nullopt unless it is
+  /// a block of plain words that reads and is not skipped.
+  std::optional<ParsedBlock> plainWords(const ProgramBlock& block) const;
 };
 
 /// Splits, tokenizes and sorts every block of `text`. Never fails: a block that cannot be read

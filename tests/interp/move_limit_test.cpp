@@ -50,5 +50,25 @@ TEST(MoveLimit, DogLegLegsCount) {
   EXPECT_TRUE(test::run("G00 X50 Z50\nM30\n", options).ok());
 }
 
+// A pecking cycle is refused at its block as soon as its pecks pass the limit, before they are
+// all made: the fuzzer's G74 pecking 0.07 mm over 5.7·10^22 mm (W5666…6.1) filled 1.9 GB, and
+// pecks far below a coordinate's precision (1 µm at Z-10^12) never arrive.
+TEST(MoveLimit, PeckingCyclesStopAtTheLimit) {
+  InterpreterOptions options = test::defaultOptions();
+  options.maxMoves = 1000;
+  test::expectError(test::run("G00 X0 Z2\nG74 R1\nG74 Z-1000000 Q1000 F0.1\n", options), 3, 1,
+                    "more than 1000 moves");  // 10^6 pecks of 1 mm
+  test::expectError(test::run("G00 X0 Z2\nG74 R1\nG74 Z-1000000000000 Q1 F0.1\n", options), 3, 1,
+                    "more than 1000 moves");
+  test::expectError(test::run("G00 X40 Z-5\nG75 R1\nG75 X0 Z-1000000 P1000 Q1000 F0.1\n", options), 3, 1,
+                    "more than 1000 moves");  // 10^6 plunges
+  test::expectError(test::run("G00 X0 Z5\nG83 Z-1000000 R-3 Q1000 F0.1\n", options), 2, 1, "more than 1000 moves");
+  test::expectError(test::run("G00 X0 Z5\nG83 Z-1000000000000 R-3 Q1 F0.1\n", options), 2, 1,
+                    "more than 1000 moves");
+  // Within the limit the same cycles run: 100 pecks of 1 mm.
+  EXPECT_TRUE(test::run("G00 X0 Z2\nG74 R1\nG74 Z-98 Q1000 F0.1\n", options).ok());
+  EXPECT_TRUE(test::run("G00 X0 Z5\nG83 Z-97 R-3 Q1000 F0.1\n", options).ok());
+}
+
 }  // namespace
 }  // namespace lathesim::interp

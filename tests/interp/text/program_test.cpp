@@ -1,0 +1,96 @@
+// A program keeps a block of plain words by where it starts and reads it again when asked
+// (program.hpp): the words read again are the words a single pass through the text reads,
+// wherever the block stands — after a tape leader or a byte order mark, after ';' on a line
+// shared with others, behind comments, with a '/' skip, among macro blocks and subprograms.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "interp/text/block_parser.hpp"
+#include "interp/text/lexer.hpp"
+#include "interp/text/program.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+// "G1@1 X10@4 …": each code and word with its column, to compare two readings of a block.
+std::string describe(const ParsedBlock& block) {
+  std::string text = std::to_string(block.line) + ":" + std::to_string(block.column);
+  for (const auto& [group, code] : block.gCodes) text += " " + code.text + "@" + std::to_string(code.column);
+  for (const auto& [group, code] : block.mCodes) text += " " + code.text + "@" + std::to_string(code.column);
+  for (const auto& [letter, word] : block.words) text += " " + word.text() + "@" + std::to_string(word.column);
+  return text;
+}
+
+// The plain blocks of `text` as one pass of a BlockReader reads them, in order.
+std::vector<std::string> readInOnePass(const std::string& text, bool blockDelete) {
+  std::vector<std::string> blocks;
+  BlockReader reader(text);
+  for (auto next = reader.next(); next.ok() && next.value(); next = reader.next()) {
+    RawBlock raw = *next.value();
+    if (raw.deleted && blockDelete) continue;
+    if (raw.skipFrom && blockDelete) raw.chars.resize(*raw.skipFrom);
+    auto words = tokenize(raw);
+    if (!words.ok()) continue;  // a macro block
+    auto parsed = parseBlock(words.value(), raw.line, raw.column);
+    if (parsed.ok()) blocks.push_back(describe(parsed.value()));
+  }
+  return blocks;
+}
+
+std::vector<std::string> readAgain(const Program& program) {
+  std::vector<std::string> blocks;
+  for (const ProgramBlock& block : program.blocks)
+    if (const auto words = program.plainWords(block)) blocks.push_back(describe(*words));
+  return blocks;
+}
+
+TEST(ProgramBlocks, ReadAgainAsInOnePass) {
+  const std::vector<std::string> texts = {
+      "G0 X10 Z2\nG1 Z-5 F0.2\nM30\n",
+      "\xEF\xBB\xBFG0 X10\nZ1\n",                            // a byte order mark
+      "\x1b\x12  G0 X10\n\x14Z1\n",                          // a tape leader, an error after it
+      "%\nO0001\n(ROUGH)\n  G0 X42 Z0.5; G94 X25.5 Z-5 F100; Z-10;\nM30\n%\n",  // ';' blocks on a line
+      "T0101 ;turning tool\n(a comment) G1 X20 (another) Z-3\n",  // prose after ';', comments first
+      "/G0 X5\nG1 X10 /Z-5\n  /  G1 X30\n",                 // block delete, a '/' skip inside
+      "#1=5\nG0 X#1\nG1 X20 Z-1\nWHILE[#1GT0]DO1\n#1=#1-1\nEND1\nG0 X50\n",  // among macro blocks
+      "G1 X10 (Ø20 — ünïcode) Z-2\nG1 X12 Z-4\r\nG1\tX14 Z-6\n",  // code points, CR LF, tabs
+      "O1\nG0 X1\nM99\nO2\nN10 G1 X2\nN20 G1 Z-2\nM99\n",
+  };
+  for (const std::string& text : texts) {
+    for (const bool blockDelete : {false, true}) {
+      const Program program = readProgram(text, blockDelete, Dialect::FanucA);
+      EXPECT_EQ(readAgain(program), readInOnePass(text, blockDelete)) << text;
+    }
+  }
+}
+
+// A block's words read again, checked by hand: the second block on the line starts at column
+// 9, its Z at column 9, its F at column 15.
+TEST(ProgramBlocks, ReadAgainWhereTheyStand) {
+  const Program program = readProgram("G1 X10 ;Z-5.5 F0.1 (c)\n", false, Dialect::FanucA);
+  ASSERT_EQ(program.blocks.size(), 2u);
+  const auto second = program.plainWords(program.blocks[1]);
+  ASSERT_TRUE(second);
+  EXPECT_EQ(second->line, 1);
+  EXPECT_EQ(second->column, 9);
+  EXPECT_EQ(second->words.at('Z').number, "-5.5");
+  EXPECT_EQ(second->words.at('Z').column, 9);
+  EXPECT_EQ(second->words.at('F').column, 15);
+  EXPECT_FALSE(program.plainWords(program.blocks[0])->has('Z'));
+}
+
+// Skipped blocks, blocks that do not read and macro blocks have no plain words.
+TEST(ProgramBlocks, OnlyPlainBlocksHaveWords) {
+  const Program program = readProgram("/G0 X5\nG1 X1.2.3\n#1=2\nG0 X1\n", true, Dialect::FanucA);
+  ASSERT_EQ(program.blocks.size(), 4u);
+  EXPECT_FALSE(program.plainWords(program.blocks[0]));
+  EXPECT_FALSE(program.plainWords(program.blocks[1]));
+  EXPECT_FALSE(program.plainWords(program.blocks[2]));
+  EXPECT_TRUE(program.plainWords(program.blocks[3]));
+}
+
+}  // namespace
+}  // namespace lathesim::interp
