@@ -527,7 +527,8 @@ Status CompoundCycle::multipleThreading() {
   params.firstDepthMm = incrementLengthMm(*firstDepth, reading);
   const RunoutWords runoutWords{kept.threadRunoutAcrossMm, kept.threadRunoutAlongMm};
   const double defaultLeads = kept.threadRunoutLeads.value_or(options_.control.threadRunoutLeads);
-  const ThreadRunout runout = cycleRunout(runoutWords, defaultLeads * params.leadMm);
+  const ThreadRunout runout =
+      cycleRunout(runoutWords, defaultLeads * params.leadMm, options_.control.threadRunoutAngleDeg);
   params.runoutAlongMm = runout.alongMm;
   params.runoutAcrossMm = std::abs(runout.acrossMm);
   state_.compound.threadRunoutAcrossMm.reset();  // GSK's J and K hold for one cycle
