@@ -47,6 +47,14 @@ class HelicalSweep {
   /// sweep, so its distance is a lower bound of this one's, and its bounds bound it.
   const RevolvedRegion& hull() const { return hull_; }
 
+  /// The helix: the programmed point at u ∈ [0, 1] stands at from() + u·direction(), at the
+  /// part's azimuth startAzimuthRad() + u·radiansPerUnit() (see the frames above).
+  const RZ& from() const { return from_; }
+  const RZ& direction() const { return direction_; }
+  double revolutions() const { return revolutions_; }
+  double startAzimuthRad() const { return phi0_; }
+  double radiansPerUnit() const { return omega_; }
+
  private:
   double azimuthAt(double u) const { return phi0_ + omega_ * u; }  // radians
   // Lowers out[k] by the outline placed at each P(u_k) for the point's azimuth φ, with u_k in

@@ -102,7 +102,13 @@ struct RevolvedShape {
   const RevolvedRegion* changes = nullptr;  // where the write can change anything (cut_history.hpp), or all of it
   using Local = RevolvedRegion;
 
-  const RevolvedRegion* changeBound() const { return changes; }
+  const RevolvedRegion* changeExtent() const { return changes; }
+  // Whether a voxel within `halfDiagonal` of (x, y, z) can lie within `margin` of the change
+  // bound (`band` of it, and a ghost's reach beyond).
+  bool mayChange(double x, double y, double z, double halfDiagonal, double margin, double, double h) const {
+    const double reach = halfDiagonal + margin;
+    return !changes || changes->signedDistance(std::sqrt(x * x + y * y), z, reach + h) <= reach;
+  }
   const RevolvedRegion& bounds() const { return region; }
   const Local& whole() const { return region; }
   void nearInto(double x, double y, double z, double radius, Local& out) const {
@@ -126,16 +132,21 @@ struct RevolvedShape {
 // distance must never read deeper than the region is, its ends included (a groove stops in
 // the face where the pass ended: helical_sweep.cpp bounds the depth by it). Near the axis the
 // helix's slope has no bound and nothing is covered. Only the bar itself is written with Add,
-// and it is revolved; these shapes only remove.
+// and it is revolved; these shapes only remove. A thread pass may come with a bound on where it
+// can change anything (thread_history.hpp); a slot never does.
 template <class Sweep>
 struct SweptShape {
   const Sweep& sweep;
+  const ThreadChangeBound* changes = nullptr;
   struct Local {
     const Sweep* sweep = nullptr;
   };
 
   const RevolvedRegion& bounds() const { return sweep.hull(); }
-  static const RevolvedRegion* changeBound() { return nullptr; }
+  const RevolvedRegion* changeExtent() const { return changes ? &changes->extent() : nullptr; }
+  bool mayChange(double x, double y, double z, double halfDiagonal, double margin, double band, double) const {
+    return !changes || changes->mayChange(x, y, z, halfDiagonal + (margin - band), band);
+  }
   Local whole() const { return {&sweep}; }
   void nearInto(double, double, double, double, Local& out) const { out.sweep = &sweep; }
   static bool empty(const Local& local) { return local.sweep == nullptr; }
@@ -171,6 +182,13 @@ struct Task {
   Leaf* leaf = nullptr;      // Update: the leaf; Densify: the leaf made for the tile
   float tileValue = 0.0f;    // Densify: the value the new leaf starts from
   double insideBefore = 0;   // Fill: material voxels it held before
+  std::uint8_t quietQuarters = 0;  // Update, Densify: bit q set where quarter q changes nothing
+};
+
+// A leaf with the quarters of it that the write can leave alone (see reachOfQuarters).
+struct LeafWrite {
+  Leaf* leaf;
+  std::uint8_t quietQuarters;
 };
 
 template <class Shape>
@@ -190,8 +208,10 @@ class RegionWriter {
 
   double run() {
     std::vector<Task> tasks = classify();
-    std::vector<Leaf*> leaves = restructure(tasks);
-    std::vector<double> insideLost = writeVoxels(leaves);
+    std::vector<LeafWrite> writes = restructure(tasks);
+    std::vector<double> insideLost = writeVoxels(writes);
+    std::vector<Leaf*> leaves(writes.size());
+    std::transform(writes.begin(), writes.end(), leaves.begin(), [](const LeafWrite& w) { return w.leaf; });
     // Only a write that changed something can leave a ghost (a grazing rapid cannot).
     const bool changedAny = insideLostTotal_ != 0.0 || std::any_of(insideLost.begin(), insideLost.end(),
                                                                     [](double lost) { return lost != 0.0; });
@@ -232,19 +252,18 @@ class RegionWriter {
   openvdb::CoordBBox candidateBox() const {
     openvdb::CoordBBox box = boxAround(shape_.bounds(), blockReach_);
     if (removing_) box.intersect(stock_.materialBounds);  // nothing to remove outside it
-    if (const RevolvedRegion* changes = shape_.changeBound()) box.intersect(boxAround(*changes, changeMargin_ + h_));
+    if (const RevolvedRegion* extent = shape_.changeExtent()) box.intersect(boxAround(*extent, changeMargin_ + h_));
     return box;
   }
 
   // Whether the cube of dim³ voxels at `origin` can hold a voxel this write changes, or a
-  // ghost beside one (a neighbour within √3 voxels): only near the shape's change bound.
+  // ghost beside one (a neighbour within √3 voxels): only within the band of the shape's
+  // change bound, spread by the cube's half-diagonal and that neighbour.
   bool mayChange(const Coord& origin, int dim) const {
-    const RevolvedRegion* changes = shape_.changeBound();
-    if (!changes) return true;
     const double half = 0.5 * (dim - 1);
-    const double x = (origin.x() + half) * h_, y = (origin.y() + half) * h_, z = (origin.z() + half) * h_;
-    const double reach = 0.5 * std::sqrt(3.0) * (dim - 1) * h_ + changeMargin_;
-    return changes->signedDistance(std::sqrt(x * x + y * y), z, reach + h_) <= reach;
+    const double halfDiagonal = 0.5 * std::sqrt(3.0) * (dim - 1) * h_;
+    return shape_.mayChange((origin.x() + half) * h_, (origin.y() + half) * h_, (origin.z() + half) * h_, halfDiagonal,
+                            changeMargin_, bg_, h_);
   }
 
   double node1InsideVoxels(const Node1* node, float tileValue) const {
@@ -335,27 +354,31 @@ class RegionWriter {
           Leaf* leaf = accessor.probeLeaf(origin);
           const float tile = leaf ? 0.0f : accessor.getValue(origin);
           if (!leaf && u(tile) <= -bg_) continue;
-          const Reach reach = leafReach == Reach::Partly ? reachOfQuarters(local, origin) : leafReach;
+          std::uint8_t quiet = 0;
+          const Reach reach = leafReach == Reach::Partly ? reachOfQuarters(local, origin, quiet) : leafReach;
           if (reach == Reach::None) continue;
           if (reach == Reach::Covers) {
             tasks.push_back({origin, 1, Action::Fill, nullptr, 0.0f,
                              leaf ? stock_.leafInsideVoxels(*leaf) : insideFraction(tile, h_) * Leaf::NUM_VOXELS});
             continue;
           }
-          tasks.push_back({origin, 1, leaf ? Action::Update : Action::Densify, leaf, tile, 0.0});
+          tasks.push_back({origin, 1, leaf ? Action::Update : Action::Densify, leaf, tile, 0.0, quiet});
         }
       }
   }
 
   // A finer look at a leaf the coarse test could not decide: the distance at the centres of
-  // its eight 4³ quarters, each with its own (smaller) reach.
-  Reach reachOfQuarters(const Local& local, const Coord& origin) const {
+  // its eight 4³ quarters, each with its own (smaller) reach. Sets in `quiet` the bits of the
+  // quarters out of the region's reach, where the write changes nothing: step 3 skips a column
+  // whose two quarters are quiet.
+  Reach reachOfQuarters(const Local& local, const Coord& origin, std::uint8_t& quiet) const {
     bool allBeyond = true, allCovered = true;
     for (int q = 0; q < 8; ++q) {
       const Coord quarter = origin.offsetBy((q & 1) * 4, ((q >> 1) & 1) * 4, ((q >> 2) & 1) * 4);
       const Reach reach = reachOfCube(local, quarter, 4);
       allBeyond &= reach == Reach::None;
       allCovered &= reach == Reach::Covers;
+      if (reach == Reach::None) quiet |= static_cast<std::uint8_t>(1 << q);
     }
     return allBeyond ? Reach::None : allCovered ? Reach::Covers : Reach::Partly;
   }
@@ -363,7 +386,7 @@ class RegionWriter {
   // 2. Change the tree's shape. Tasks come grouped by 128³ block (classify() emits a
   //    block's tasks together); each block's node is separate memory, so once the nodes
   //    exist (serial, one per block), blocks are restructured in parallel.
-  std::vector<Leaf*> restructure(std::vector<Task>& tasks) {
+  std::vector<LeafWrite> restructure(std::vector<Task>& tasks) {
     struct BlockTasks {
       std::size_t begin, end;
       Node1* node = nullptr;
@@ -396,7 +419,8 @@ class RegionWriter {
 
     // First the fills and updates, then the new leaves: those a fill took out of the tree
     // are used again for the leaves this write makes, rather than freed and allocated anew.
-    std::vector<std::vector<Leaf*>> leavesOf(blocks.size()), sparesOf(blocks.size());
+    std::vector<std::vector<LeafWrite>> leavesOf(blocks.size());
+    std::vector<std::vector<Leaf*>> sparesOf(blocks.size());
     std::vector<double> lostOf(blocks.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size()), [&](const auto& range) {
       for (std::size_t b = range.begin(); b != range.end(); ++b) {
@@ -411,7 +435,7 @@ class RegionWriter {
           } else if (task.action == Action::FillSub) {
             lostOf[b] += fillSubBlock(node, task.origin, box, sparesOf[b]);
           } else if (task.action == Action::Update) {
-            leavesOf[b].push_back(task.leaf);
+            leavesOf[b].push_back({task.leaf, task.quietQuarters});
           }
         }
       }
@@ -439,11 +463,11 @@ class RegionWriter {
             task.leaf = new Leaf(task.origin, task.tileValue, false);
           }
           node.addLeaf(task.leaf);  // the tree owns it from here
-          leavesOf[b].push_back(task.leaf);
+          leavesOf[b].push_back({task.leaf, task.quietQuarters});
         }
       }
     });
-    std::vector<Leaf*> leaves;
+    std::vector<LeafWrite> leaves;
     for (std::size_t b = 0; b < blocks.size(); ++b) {
       insideLostTotal_ += lostOf[b];
       leaves.insert(leaves.end(), leavesOf[b].begin(), leavesOf[b].end());
@@ -479,13 +503,14 @@ class RegionWriter {
 
   // 3. u ← min(u, ψ) voxel by voxel (parallel: leaves are independent). Returns, per leaf,
   //    the material voxels lost, summed over the voxels that changed.
-  std::vector<double> writeVoxels(const std::vector<Leaf*>& leaves) {
+  std::vector<double> writeVoxels(const std::vector<LeafWrite>& leaves) {
     ghostCandidates_.assign(leaves.size(), Leaf::NodeMaskType());
     std::vector<double> insideLost(leaves.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size()), [&](const auto& range) {
       Local local;  // each leaf's subset, in memory reused from leaf to leaf
       for (std::size_t l = range.begin(); l != range.end(); ++l) {
-        Leaf& leaf = *leaves[l];
+        Leaf& leaf = *leaves[l].leaf;
+        const std::uint8_t quiet = leaves[l].quietQuarters;
         const Coord o = leaf.origin();
         shape_.nearInto((o.x() + 3.5) * h_, (o.y() + 3.5) * h_, (o.z() + 3.5) * h_, leafReach_, local);
         if (Shape::empty(local)) continue;
@@ -496,6 +521,8 @@ class RegionWriter {
           const double x = (o.x() + i) * h_;
           for (int j = 0; j < kLeafDim; ++j) {
             const openvdb::Index column = (i << 6) | (j << 3);  // LeafNode<float, 3>::coordToOffset
+            const int lowQuarter = (i >> 2) | ((j >> 2) << 1);  // and lowQuarter | 4 above it in Z
+            if ((quiet >> lowQuarter) & (quiet >> (lowQuarter | 4)) & 1) continue;
             bool anyOpen = false;  // a voxel not yet as deep in the region's state as the band allows
             for (int k = 0; k < kLeafDim; ++k) anyOpen |= u(values[column + k]) > -bg_;
             if (!anyOpen) continue;
@@ -630,8 +657,8 @@ double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite h
   return RegionWriter<RevolvedShape>(stock, shape, how).run();
 }
 
-double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how) {
-  const SweptShape<HelicalSweep> shape{sweep};
+double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how, const ThreadChangeBound* changes) {
+  const SweptShape<HelicalSweep> shape{sweep, changes};
   return RegionWriter<SweptShape<HelicalSweep>>(stock, shape, how).run();
 }
 

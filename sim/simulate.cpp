@@ -43,13 +43,16 @@ double removeSlots(const interp::Move& move, const ConvexPolygon& tool, double t
 
 // What a thread move removes: the outline along its helix, from its start angle (measured in
 // the direction the spindle turns) one turn per lead.
-double removeThread(const interp::Move& move, const ConvexPolygon& tool, Stock& stock,
+// Only near what the thread passes before it left (thread_history.hpp).
+double removeThread(const interp::Move& move, const ConvexPolygon& tool, Stock& stock, ThreadHistory& history,
                     std::optional<ChangedArea>& changed) {
   const int sense = move.spindleDirection == interp::SpindleDirection::Clockwise ? 1 : -1;
-  const HelicalSweep sweep(tool, move.from, move.to, move.thread.revolutions(move.from, move.to),
-                           sense * move.thread.startAngleDeg, sense);
+  const ThreadPass pass{tool, move.from, move.to, move.thread.revolutions(move.from, move.to),
+                        sense * move.thread.startAngleDeg, sense};
+  const HelicalSweep sweep = pass.sweep();
   widen(changed, ChangedArea::of(sweep.hull()));
-  return stock.remove(sweep);
+  const auto changes = history.changesOf(pass);
+  return changes ? stock.remove(sweep, *changes) : stock.remove(sweep);
 }
 
 }  // namespace
@@ -85,6 +88,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
   PartOffWatch partOffs;
   bool checkShift = false;      // after G50 moved it: until the first cut, or a warning
   CutHistory history;           // what turning writes removed: bounds where the next can change anything
+  ThreadHistory threads;        // the same for thread passes
 
   for (std::size_t first = 0; first < moves.size();) {
     const interp::Move& head = moves[first];
@@ -126,7 +130,7 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
         result.warnings.push_back(*warning);
         threadWarnedBlock = head.block;
       }
-      removed = removeThread(head, tool, stock, changed);
+      removed = removeThread(head, tool, stock, threads, changed);
     } else {
       std::vector<ConvexPolygon> pieces;
       for (std::size_t m = first; m < end; ++m) {

@@ -144,6 +144,9 @@ double Stock::remove(const RevolvedRegion& region, const RevolvedRegion& changes
 }
 double Stock::remove(const HelicalSweep& sweep) { return writeRegion(*impl_, sweep, RegionWrite::Remove); }
 double Stock::remove(const StraightSlot& slot) { return writeRegion(*impl_, slot, RegionWrite::Remove); }
+double Stock::remove(const HelicalSweep& sweep, const ThreadChangeBound& changes) {
+  return writeRegion(*impl_, sweep, RegionWrite::Remove, &changes);
+}
 
 double Stock::volumeMm3() const {
   const Tree& tree = impl_->grid->tree();

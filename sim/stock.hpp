@@ -18,6 +18,7 @@
 #include "geometry/straight_slot.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "sim/stock_spec.hpp"
+#include "sim/thread_history.hpp"
 
 namespace lathesim::sim {
 
@@ -83,6 +84,9 @@ class Stock {
   /// leaves near their revolved hull's boundary and the material.
   double remove(const HelicalSweep& sweep);
   double remove(const StraightSlot& slot);
+  /// The thread pass again, visiting only leaves where `changes` (ThreadHistory::changesOf)
+  /// says it can change anything: the same result, at the cost of what it changes.
+  double remove(const HelicalSweep& sweep, const ThreadChangeBound& changes);
 
   /// Volume (mm³) of material lying deeper than `marginMm` inside the revolved `region`,
   /// measured without changing anything. It is integrated over the meridian half-plane: each

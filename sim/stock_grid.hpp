@@ -52,7 +52,8 @@ enum class RegionWrite {
 /// leaves near it are visited.
 double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite how,
                    const RevolvedRegion* changes = nullptr);
-double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how);
+double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how,
+                   const ThreadChangeBound* changes = nullptr);
 double writeRegion(StockGrid& stock, const StraightSlot& slot, RegionWrite how);
 
 }  // namespace lathesim::sim

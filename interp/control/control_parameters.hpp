@@ -96,6 +96,8 @@ struct ControlParameters {
   // The thread run-out of G92 and G76 when the program gives none, in leads (GSK No.19 and
   // Fanuc No.5130 count it in 0.1 lead): as long along the axis as it pulls out.
   double threadRunoutLeads = 0.0;
+  // The angle of that run-out to the Z axis, in whole degrees 1–89; 0 means 45° (Fanuc No.5131).
+  int threadRunoutAngleDeg = 0;
   ThreadEWord threadEWord{};
 };
 

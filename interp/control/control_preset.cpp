@@ -113,6 +113,7 @@ const std::vector<ParameterDefinition>& parameterTable() {
       number<&P::threadMinDepthMm>("g76_min_depth", 0.0, 1000.0),
       number<&P::threadAllowanceMm>("g76_allowance", 0.0, 1000.0),
       number<&P::threadRunoutLeads>("thread_runout", 0.0, 9.9),
+      number<&P::threadRunoutAngleDeg>("thread_runout_angle", 0.0, 89.0, true),
       choice<&P::threadEWord>("thread_e_word", {"none", "lead", "threads_per_inch"}),
   };
   return table;
@@ -176,6 +177,7 @@ const std::vector<PresetDefinition>& presetTable() {
            {"g76_min_depth", 0.0, "GSK No.59; its factory value assumed", false},
            {"g76_allowance", 0.0, "GSK No.60; its factory value assumed", false},
            {"thread_runout", 0.0, "GSK No.19 (in 0.1 lead); its factory value assumed", false},
+           {"thread_runout_angle", 0.0, "GSK has none: without J and K, No.19 runs out as far along as across (45°)", true},
            {"thread_e_word", "none", "§3.24.1, §3.24.9, §3.24.12: the lead is F, or I in threads per inch; no E", true},
        }},
       {"fanuc-0i-t",
@@ -213,6 +215,7 @@ const std::vector<PresetDefinition>& presetTable() {
            {"g76_min_depth", 0.0, "Fanuc 5140; its value assumed", false},
            {"g76_allowance", 0.0, "Fanuc 5141; its value assumed", false},
            {"thread_runout", 0.0, "Fanuc 5130 (in 0.1 lead); its value assumed", false},
+           {"thread_runout_angle", 0.0, "Fanuc 5131 (0 means 45°); its value assumed", false},
            {"thread_e_word", "lead", "E the lead with more digits for inch threads (Fanuc 0-TD G34; 0i-T unchecked)", false},
        }},
       {"haas",

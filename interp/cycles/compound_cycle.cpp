@@ -470,9 +470,15 @@ Status CompoundCycle::threadingParameters() {
                                             "55, 30, 29 or 0)",
                                             p->text(), a));
     }
+    const int m = static_cast<int>(digits / 10000);
+    if (words.fanucToolAngles && p->number.size() >= 5 && m == 0) {  // Fanuc's m is 01–99 (lathe-cycles.md §6)
+      return errorAt(p->column, fmt::format("G76 {}: the finishing passes m = 00 is not a number this control takes "
+                                            "(01 to 99)",
+                                            p->text()));
+    }
     kept.threadToolAngleDeg = a;
     if (p->number.size() >= 3) kept.threadRunoutLeads = static_cast<double>((digits / 100) % 100) / 10.0;
-    if (p->number.size() >= 5) kept.threadFinishingPasses = static_cast<int>(digits / 10000);
+    if (p->number.size() >= 5) kept.threadFinishingPasses = m;
   }
   if (q) {
     if (q->value < 0) return errorAt(q->column, fmt::format("G76 {} is not a minimum depth Δdmin: expected a number ≥ 0", q->text()));
@@ -532,7 +538,8 @@ Status CompoundCycle::multipleThreading() {
   params.firstDepthMm = incrementLengthMm(*firstDepth, reading);
   const RunoutWords runoutWords{kept.threadRunoutAcrossMm, kept.threadRunoutAlongMm};
   const double defaultLeads = kept.threadRunoutLeads.value_or(options_.control.threadRunoutLeads);
-  const ThreadRunout runout = cycleRunout(runoutWords, defaultLeads * params.leadMm);
+  const ThreadRunout runout =
+      cycleRunout(runoutWords, defaultLeads * params.leadMm, options_.control.threadRunoutAngleDeg);
   params.runoutAlongMm = runout.alongMm;
   params.runoutAcrossMm = std::abs(runout.acrossMm);
   state_.compound.threadRunoutAcrossMm.reset();  // GSK's J and K hold for one cycle

@@ -136,7 +136,8 @@ Result<std::vector<CycleLeg>> haasThreadingLegs(const Code& code, ParsedBlock& b
                                               "(Setting 86, control g76_allowance)",
                                               k->text(), params.finishAllowanceMm)};
   }
-  const ThreadRunout runout = cycleRunout({}, options.control.threadRunoutLeads * params.leadMm);
+  const ThreadRunout runout =
+      cycleRunout({}, options.control.threadRunoutLeads * params.leadMm, options.control.threadRunoutAngleDeg);
   params.runoutAlongMm = runout.alongMm;
   params.runoutAcrossMm = std::abs(runout.acrossMm);
 

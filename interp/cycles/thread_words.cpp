@@ -1,6 +1,7 @@
 #include "interp/cycles/thread_words.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -120,8 +121,12 @@ Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& rea
   return kept;
 }
 
-ThreadRunout cycleRunout(const RunoutWords& words, double defaultMm) {
-  if (!words.acrossMm && !words.alongMm) return {defaultMm, defaultMm};
+ThreadRunout cycleRunout(const RunoutWords& words, double defaultMm, int defaultAngleDeg) {
+  if (!words.acrossMm && !words.alongMm) {
+    // 45° exactly: tan 45° is not 1 in floating point.
+    const bool square = defaultAngleDeg == 0 || defaultAngleDeg == 45;
+    return {defaultMm, square ? defaultMm : defaultMm * std::tan(defaultAngleDeg * std::numbers::pi / 180.0)};
+  }
   const double across = words.acrossMm.value_or(defaultMm);
   if (across == 0.0) return {};
   const double along = words.alongMm && *words.alongMm != 0.0 ? *words.alongMm : std::abs(across);

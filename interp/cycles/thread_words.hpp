@@ -40,10 +40,11 @@ Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& rea
                                     RunoutWords kept, bool signedAcross, std::string_view name);
 
 /// G92's and G76's run-out from its words (GSK 3.24.9 notes 2–7, 3.24.12 notes 1–4):
-/// neither J nor K: `defaultMm` both ways (No.19, or G76's r); no J: K along and
-/// `defaultMm` across; no K, or K = 0: K = J; J = 0: none. Unsigned; the cycle points it
-/// toward its start.
-ThreadRunout cycleRunout(const RunoutWords& words, double defaultMm);
+/// neither J nor K: `defaultMm` along (No.19 or No.5130, or G76's r) and out at the control's
+/// run-out angle to the Z axis (`defaultAngleDeg`, No.5131: 0 is 45°, as far across as along);
+/// no J: K along and `defaultMm` across; no K, or K = 0: K = J; J = 0: none. Unsigned; the
+/// cycle points it toward its start.
+ThreadRunout cycleRunout(const RunoutWords& words, double defaultMm, int defaultAngleDeg);
 
 /// G32's run-out (GSK 3.24.1 notes 2–5): none without J or with J = 0; no K or K = 0: K = |J|.
 ThreadRunout chainRunout(const RunoutWords& words);

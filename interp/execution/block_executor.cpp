@@ -857,7 +857,8 @@ Status Executor::applyThreadCycle(const std::optional<Code>& code) {
   // Without run-out words the control's parameter decides (GSK No.19, Fanuc No.5130).
   const ThreadRunout runout =
       words.hncRunoutRE ? ThreadRunout{runoutWords.value().alongMm.value_or(0.0), std::abs(runoutWords.value().acrossMm.value_or(0.0))}
-                        : cycleRunout(runoutWords.value(), options_.control.threadRunoutLeads * params.leadMm);
+                        : cycleRunout(runoutWords.value(), options_.control.threadRunoutLeads * params.leadMm,
+                                      options_.control.threadRunoutAngleDeg);
   params.runoutAlongMm = runout.alongMm;
   params.runoutAcrossMm = std::abs(runout.acrossMm);
   params.starts = starts;

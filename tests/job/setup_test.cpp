@@ -251,6 +251,16 @@ TEST(ParseSetup, ThreadRunoutInLeads) {
             "GSK No.19 and Fanuc No.5130 in 0.1 lead), got -1");
 }
 
+// control.thread_runout_angle: Fanuc No.5131, whole degrees 0–89 (0 means 45°), 0 by default.
+TEST(ParseSetup, ThreadRunoutAngle) {
+  EXPECT_EQ(interpreterOptionsOf(*parse("").setup).control.threadRunoutAngleDeg, 0);
+  EXPECT_EQ(interpreterOptionsOf(*parse("[control]\nthread_runout_angle = 30\n").setup).control.threadRunoutAngleDeg, 30);
+  EXPECT_EQ(onlyError("[control]\nthread_runout_angle = 90\n").message,
+            "control.thread_runout_angle must be a whole number from 0 to 89, got 90");
+  EXPECT_EQ(onlyError("[control]\nthread_runout_angle = 30.5\n").message,
+            "control.thread_runout_angle must be a whole number from 0 to 89, got 30.5");
+}
+
 TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
   EXPECT_EQ(onlyError("[machine]\nreference = [200]\n").message,
             "machine.reference must be [X diameter, Z] in mm, got [200]");

@@ -228,6 +228,11 @@ TEST(MultipleThreading, Alarms) {
   fanucB.dialect = Dialect::FanucB;
   expectError(run("G00 X32 Z5\nG76 P010045\n", fanucB), 2, 5, "the tool angle a = 45 is not one this control takes");
   EXPECT_TRUE(run("G00 X32 Z5\nG76 P010045\n").ok());  // GSK takes 00–99
+  // Fanuc's m is 01–99, GSK's 00–99 (lathe-cycles.md §6).
+  expectError(run("G00 X32 Z5\nG76 P000060\n", fanucB), 2, 5, "G76 P000060: the finishing passes m = 00 is not a number this control takes (01 to 99)");
+  EXPECT_TRUE(run("G00 X32 Z5\nG76 P010060\n", fanucB).ok());
+  EXPECT_TRUE(run("G00 X32 Z5\nG76 P990060\n", fanucB).ok());
+  EXPECT_TRUE(run("G00 X32 Z5\nG76 P000060\n").ok());
 }
 
 }  // namespace

@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include <fmt/format.h>
 
 #include "../test_support.hpp"
@@ -80,6 +83,31 @@ TEST(ThreadCycle, RunoutFromTheMachineParameter) {
                                             {kThread, r, -18.5, 16.5, -20, 1.5, 2, 240},
                                             {kRapid, 16.5, -20, 20, -20, 0, 3},
                                             {kRapid, 20, -20, 20, 2, 0, 4}});
+}
+
+// The run-out's angle to the Z axis (Fanuc No.5131, control thread_runout_angle): 30° with a
+// run-out of one lead, 1.5 mm along Z, pulls out 1.5·tan 30° = 0.866025 mm. A = (20, 2), C =
+// (15, -20): the run-out starts at Z-18.5, 20.5 mm = 13⅔ turns in (240°). 0, the parameter's
+// own default, and 45 both run out as far across as along.
+TEST(ThreadCycle, RunoutAngleFromTheControlParameter) {
+  InterpreterOptions options = defaultOptions();
+  options.control.threadRunoutLeads = 1.0;
+  options.control.threadRunoutAngleDeg = 30;
+  const auto result = run("G00 X40 Z2\nG92 X30 Z-20 F1.5\n", options);
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const double across = 1.5 * std::tan(std::numbers::pi / 6);
+  expectThreadMoves(result.toolpath.moves, {{kRapid, 100, 200, 20, 2, 0, 0},
+                                            {kRapid, 20, 2, 15, 2, 0, 1},
+                                            {kThread, 15, 2, 15, -18.5, 1.5, 2, 0},
+                                            {kThread, 15, -18.5, 15 + across, -20, 1.5, 2, 240},
+                                            {kRapid, 15 + across, -20, 20, -20, 0, 3},
+                                            {kRapid, 20, -20, 20, 2, 0, 4}});
+  for (const int angle : {0, 45}) {
+    options.control.threadRunoutAngleDeg = angle;
+    const auto square = run("G00 X40 Z2\nG92 X30 Z-20 F1.5\n", options);
+    ASSERT_TRUE(square.ok());
+    EXPECT_EQ(square.toolpath.moves[3].to, RZ(16.5, -20)) << angle;
+  }
 }
 
 // An ID thread runs out toward A too, i.e. toward the axis: A = X20 Z3 (radius 10), C = X26
