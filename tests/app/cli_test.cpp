@@ -432,14 +432,15 @@ TEST(Cli, VoxelTooFineForMemoryIsRefusedAndWritesNothing) {
   EXPECT_TRUE(noOutputs(out));
 }
 
-// Seed 001's bar (Φ50, face Z0). The tool goes to X54 Z5, clear of the bar, then rapids
+// Seed 001's bar (Φ50, face Z0), the spindle turning (stopped, the rapid would cut a slot,
+// not a ring). The tool goes to X54 Z5, clear of the bar, then rapids
 // straight to X30 Z-10. The default tool's body lies at r ≥ tip, z ≥ tip and contains the
 // square [1, 10] × [1, 10] mm from the tip, so at the end of the rapid it alone fills the
 // ring r 16..25, Z-9..0 of the bar: π (25² − 16²) · 9 ≈ 10433 mm³, and the sweep more.
 TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
   TempDir dir("rapid");
   const fs::path program = dir.path() / "rapid.nc";
-  writeFile(program, "G00 X54 Z5;\nG00 X30 Z-10;\n");
+  writeFile(program, "M03 S500;\nG00 X54 Z5;\nG00 X30 Z-10;\n");
   const fs::path out = dir.path() / "out";
   const Outcome outcome = lathesim({"run", program.string(), "--setup", (kPartsDir / kPart / "setup.toml").string(),
                                     "--out", out.string(), "--voxel", "0.5"},
@@ -448,7 +449,7 @@ TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
   const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
   const auto& collisions = r.at("collisions");
   ASSERT_EQ(collisions.size(), 1u) << collisions.dump();
-  EXPECT_EQ(collisions[0].at("line"), 2);
+  EXPECT_EQ(collisions[0].at("line"), 3);
   EXPECT_EQ(collisions[0].at("kind"), "rapid_into_stock");
   const double ringMm3 = M_PI * (25.0 * 25.0 - 16.0 * 16.0) * 9.0;
   EXPECT_GT(collisions[0].at("volume_mm3").get<double>(), ringMm3 - volumeToleranceMm3(50, 60, 0.5));
