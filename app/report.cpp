@@ -144,10 +144,14 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   auto& notes = report["notes"] = nlohmann::ordered_json::array();
   for (const auto& n : f.notes) notes.push_back({{"line", n.line}, {"column", n.column}, {"message", n.message}});
   report["peak_memory_mb"] = f.peakMemoryMb;
+  report["grid_memory_mb"] = f.gridMemoryMb;
   report["timing_s"] = {{"parse", f.timing.parseS},
                         {"simulate", f.timing.simulateS},
                         {"mesh", f.timing.meshS},
-                        {"render", f.timing.renderS}};
+                        {"render", f.timing.renderS},
+                        {"bar", f.timing.barS},
+                        {"write", f.timing.writeS},
+                        {"total", f.timing.totalS}};
   if (f.timing.animateS > 0) report["timing_s"]["animate"] = f.timing.animateS;
   return report;
 }

@@ -74,7 +74,7 @@ struct JobResult {
   std::vector<Collision> collisions;
   std::optional<CheckFigures> check;
   double elapsedS = 0;              // the job's wall time in the batch: start to result written
-  std::optional<double> pipelineS;  // of which the command's own steps (report.json timing_s: parse … render)
+  std::optional<double> pipelineS;  // of which the command's own steps (report.json timing_s.total)
   std::optional<double> timeLimitS;
   std::optional<std::string> thumbnail;  // file name in the job's folder
   bool resumed = false;                  // taken from an earlier run's stamp, not run again
