@@ -66,8 +66,24 @@ X260;
 G00 X320 Z50;
 M30;
 NC
+cat > "$tmp/large.toml" <<'TOML'
+[stock]
+diameter = 300
+length = 600
+face_z = 2
+
+[machine]
+start = [400, 100]
+initial_feed_mode = "per_minute"
+travel_x = [-10.0, 420.0]
+travel_z = [-700.0, 200.0]
+
+[[tool]]
+number = 1
+polygon = [[0, 0], [10, 1], [12, 12], [1, 10]]
+TOML
 header
-run_figures 0.2 "$tmp/large.nc" --setup $part/setup.toml --stock D300xL600 --voxel 0.2
+run_figures 0.2 "$tmp/large.nc" --setup "$tmp/large.toml" --voxel 0.2
 echo "  $(memory_line) (asked <= 2.5x); $(volume_line)"
 
 echo
