@@ -221,8 +221,6 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
       writeTextFile(file, [&](std::ostream& csv) { interp::writeToolpathCsv(run.job.toolpath, csv); });
     });
   if (wanted.vtp) out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
-  if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
-    run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
   timing.writeS += writing.lap();
   if (drawing.valid()) {
     const std::vector<DrawnPicture> drawn = drawing.get();
@@ -231,8 +229,11 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
       const Path png = out.write(picture.file, [&](const Path& file) { render::writeFileBytes(picture.png, file); });
       run.pictures.push_back({picture.description, png});
     }
-    timing.writeS += writing.lap();
   }
+  // After the pictures, not beside them: their copies of the mesh and these would add up to
+  // the run's peak memory (a Φ300×600 bar at 0.2 mm: 2.53 times its grid's memory, 2.20 without).
+  if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
+    run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
   for (const std::string& format : options.exports) {
     out.write("part." + format, [&](const Path& file) {
       if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
