@@ -142,7 +142,10 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
   for (const auto& w : f.warnings) warnings.push_back({{"line", w.line}, {"column", w.column}, {"message", w.message}});
   auto& notes = report["notes"] = nlohmann::ordered_json::array();
-  for (const auto& n : f.notes) notes.push_back({{"line", n.line}, {"column", n.column}, {"message", n.message}});
+  for (const auto& n : f.notes) {
+    notes.push_back({{"line", n.line}, {"column", n.column}, {"message", n.message}});
+    if (n.file != f.program) notes.back()["file"] = n.file;  // a subprogram's own file (M98 from a file)
+  }
   report["peak_memory_mb"] = f.peakMemoryMb;
   report["grid_memory_mb"] = f.gridMemoryMb;
   report["timing_s"] = {{"parse", f.timing.parseS},

@@ -41,6 +41,9 @@ void readReport(const Json& report, JobResult& result) {
     for (const auto& collision : *c)
       result.collisions.push_back({collision.value("line", 0), collision.value("column", 0),
                                    collision.value("kind", ""), collision.value("volume_mm3", 0.0)});
+  if (const auto p = report.find("parted_off"); p != report.end() && p->is_object())
+    result.partedOff = PartedOff{p->value("line", 0), p->value("column", 0), p->value("z", 0.0),
+                                 p->value("volume_mm3", 0.0), p->value("stub_volume_mm3", 0.0)};
   if (const auto w = report.find("warnings"); w != report.end() && w->is_array()) {
     result.warnings = static_cast<int>(w->size());
     if (!w->empty())
@@ -180,6 +183,12 @@ nlohmann::ordered_json toJson(const JobResult& r) {
   auto& collisions = row["collisions"] = Ordered::array();
   for (const auto& c : r.collisions)
     collisions.push_back({{"line", c.line}, {"column", c.column}, {"kind", c.kind}, {"volume_mm3", c.volumeMm3}});
+  row["parted_off"] = r.partedOff ? Ordered{{"line", r.partedOff->line},
+                                            {"column", r.partedOff->column},
+                                            {"z", r.partedOff->zMm},
+                                            {"volume_mm3", r.partedOff->volumeMm3},
+                                            {"stub_volume_mm3", r.partedOff->stubVolumeMm3}}
+                                  : Ordered(nullptr);
   row["check"] = r.check ? Ordered{{"tolerance_mm", r.check->toleranceMm},
                                    {"within_tolerance", r.check->withinTolerance},
                                    {"max_gouge_mm", r.check->maxGougeMm},
@@ -216,6 +225,9 @@ JobResult resultFromJson(const Json& row) {
   r.moves = optionalAt<int>(row, "moves");
   for (const auto& c : row.at("collisions"))
     r.collisions.push_back({c.at("line"), c.at("column"), c.at("kind"), c.at("volume_mm3")});
+  // A stamp written before summaries had parted_off has no such key: nothing parted off is known.
+  if (const auto p = row.find("parted_off"); p != row.end() && !p->is_null())
+    r.partedOff = PartedOff{p->at("line"), p->at("column"), p->at("z"), p->at("volume_mm3"), p->at("stub_volume_mm3")};
   if (const auto& c = row.at("check"); !c.is_null())
     r.check = CheckFigures{c.at("tolerance_mm"), c.at("within_tolerance"), c.at("max_gouge_mm"), c.at("max_excess_mm")};
   r.peakMemoryMb = optionalAt<double>(row, "peak_memory_mb");

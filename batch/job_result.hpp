@@ -50,6 +50,16 @@ struct Collision {
   double volumeMm3 = 0;
 };
 
+/// report.json's `parted_off`: the block whose cut parted the bar, the Z of that cut's deepest
+/// point, and the level-set volumes of the piece that fell and of the stub.
+struct PartedOff {
+  int line = 0;
+  int column = 0;
+  double zMm = 0;
+  double volumeMm3 = 0;
+  double stubVolumeMm3 = 0;
+};
+
 struct CheckFigures {
   double toleranceMm = 0;
   bool withinTolerance = true;
@@ -72,6 +82,7 @@ struct JobResult {
   std::optional<double> stockVolumeMm3, finalVolumeMm3, removedVolumeMm3, cycleTimeS, peakMemoryMb;
   std::optional<int> moves;
   std::vector<Collision> collisions;
+  std::optional<PartedOff> partedOff;  // none: nothing parted off (or no report)
   std::optional<CheckFigures> check;
   double elapsedS = 0;              // the job's wall time in the batch: start to result written
   std::optional<double> pipelineS;  // of which the command's own steps (report.json timing_s.total)

@@ -99,7 +99,7 @@ void writeSummaryCsv(const BatchSummary& s, std::ostream& out) {
   out << "index,name,status,exit_code,program,command,message_kind,message_file,message_line,message_column,message,"
          "warnings,stock_volume_mm3,final_volume_mm3,removed_volume_mm3,cycle_time_s,moves,collisions,"
          "first_collision_line,first_collision_kind,tolerance_mm,within_tolerance,max_gouge_mm,max_excess_mm,"
-         "peak_memory_mb,elapsed_s,folder\n";
+         "peak_memory_mb,elapsed_s,folder,parted_off_line,parted_off_z,parted_off_volume_mm3\n";
   for (const auto& r : s.jobs) {
     const JobMessage* m = r.message ? &*r.message : nullptr;
     const CheckFigures* c = r.check ? &*r.check : nullptr;
@@ -113,7 +113,9 @@ void writeSummaryCsv(const BatchSummary& s, std::ostream& out) {
         << (first ? first->kind : "") << ',' << (c ? csvNumber(c->toleranceMm) : "") << ','
         << (c ? (c->withinTolerance ? "true" : "false") : "") << ',' << (c ? csvNumber(c->maxGougeMm) : "") << ','
         << (c ? csvNumber(c->maxExcessMm) : "") << ',' << csvNumber(r.peakMemoryMb) << ',' << csvNumber(r.elapsedS)
-        << ',' << csvField(r.folder) << '\n';
+        << ',' << csvField(r.folder) << ',' << (r.partedOff ? std::to_string(r.partedOff->line) : "") << ','
+        << (r.partedOff ? csvNumber(r.partedOff->zMm) : "") << ','
+        << (r.partedOff ? csvNumber(r.partedOff->volumeMm3) : "") << '\n';
   }
 }
 

@@ -109,6 +109,12 @@ std::string row(const JobResult& r, const std::filesystem::path& folder) {
   const int collisions = static_cast<int>(r.collisions.size());
   html += ran ? cell(std::to_string(collisions), std::to_string(collisions), collisions ? "num bad" : "num")
               : cell("", "", "num");
+  // The piece that fell: its volume, and the Z and line of the cut that parted it.
+  html += r.partedOff ? cell(shortestText(r.partedOff->volumeMm3),
+                             fixed(r.partedOff->volumeMm3, 1) + "<div class=\"path\">Z" + fixed(r.partedOff->zMm, 3) +
+                                 ", line " + std::to_string(r.partedOff->line) + "</div>",
+                             "num")
+                      : cell("", "", "num");
   const CheckFigures* c = r.check ? &*r.check : nullptr;
   const auto beyond = [&](double mm) { return c && mm > c->toleranceMm ? "num bad" : "num"; };
   html += c ? numberCell(c->maxGougeMm, 3, beyond(c->maxGougeMm)) : cell("", "", "num");
@@ -205,6 +211,7 @@ void writeSummaryHtml(const BatchSummary& s, const std::filesystem::path& folder
       {"removed_volume_mm3", "removed mm³"},
       {"cycle_time_s", "cycle time s"},
       {"collisions", "collisions"},
+      {"parted_off_volume_mm3", "parted off mm³"},
       {"max_gouge_mm", "max gouge mm"},
       {"max_excess_mm", "max excess mm"},
       {"tolerance_mm", "tolerance mm"},

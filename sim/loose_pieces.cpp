@@ -15,11 +15,18 @@
 // material: the pip a turning tool's flank leaves on the axis of a face cut to X0 stands on
 // the face by less than a voxel, and the samples see it loose.
 //
+// A cut that is no solid of revolution (a straight slot cut with the spindle stopped, a thread's
+// helix) breaks that premise: a slot through the plane y = 0 to the axis splits the section
+// while the material at every other angle still holds the end together. After such a cut a
+// piece the section sees loose is taken out only when the level set's interior is in more than
+// one piece in 3D (its connected components, crumbs of under ten voxels aside).
+//
 // The loose pieces are then moved voxel by voxel into a grid of their own: every voxel,
 // band and interior tiles alike, belongs to the piece whose material is nearest in the
 // section at its own radius and Z, so both grids keep the level set's values where their
 // surfaces are.
 
+#include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/Prune.h>
 #include <tbb/parallel_for.h>
 
@@ -253,15 +260,27 @@ void keepOnly(Grid& grid, const SideOf& sideOf, std::uint8_t keep, float backgro
   openvdb::tools::pruneLevelSet(tree);
 }
 
+/// Whether the material (φ < 0, tiles included) is in more than one 3D piece of ten voxels or
+/// more, neighbours joined through their faces.
+bool severedIn3D(const StockGrid& s) {
+  const auto interior = openvdb::tools::sdfInteriorMask(*s.grid);
+  std::vector<openvdb::BoolGrid::Ptr> pieces;
+  openvdb::tools::segmentActiveVoxels(*interior, pieces);
+  constexpr openvdb::Index64 kCrumbVoxels = 10;
+  return std::count_if(pieces.begin(), pieces.end(),
+                       [](const auto& piece) { return piece->activeVoxelCount() >= kCrumbVoxels; }) > 1;
+}
+
 }  // namespace
 
-std::unique_ptr<Stock> Stock::takeLoosePieces(const std::optional<ChangedArea>& lastCut) {
+std::unique_ptr<Stock> Stock::takeLoosePieces(const std::optional<ChangedArea>& lastCut, bool notRevolved) {
   Samples section = wholeSection(*impl_);  // its extent; read only when the cut's window cannot tell
   if (lastCut && hangsTogetherAround(samplesAround(*impl_, *lastCut, section), section)) return nullptr;
   readSamples(*impl_, section);
   const Pieces pieces = connectedPieces(section);
   const std::vector<bool> loose = loosePieces(section, pieces, impl_->voxel);
   if (loose.empty()) return nullptr;
+  if (notRevolved && !severedIn3D(*impl_)) return nullptr;
   const SideOf sideOf(section, territories(section, pieces, loose));
 
   auto piece = std::make_unique<StockGrid>(impl_->spec, impl_->voxel);

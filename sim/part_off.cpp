@@ -46,7 +46,7 @@ void PartOffWatch::afterCut(const interp::Toolpath& toolpath, std::size_t first,
   if (removedMm3 <= 0.0) return;  // nothing cut, nothing can have come loose
   // Every cut is checked, and what came loose taken out: the material hung together before
   // this one, so its neighbourhood is enough to see that it parted nothing.
-  std::unique_ptr<Stock> piece = stock.takeLoosePieces(changed);
+  std::unique_ptr<Stock> piece = stock.takeLoosePieces(changed, revolved.empty());
   if (!piece) return;
   PartOff off{head.line, head.column, deepestZ(toolpath.moves, first, end), piece->volumeMm3(),
               catcherInForce(toolpath, first)};

@@ -117,7 +117,9 @@ SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& 
     RevolvedRegion revolved;             // what a turning write swept (none for a thread or a slot)
     std::optional<ChangedArea> changed;  // where the write can have changed the stock
     const ConvexPolygon& tool = toolOf(head, tools);
-    if (interp::isCutting(head.kind) && !spindleTurns(head)) {
+    // With the spindle stopped nothing turns the part: a feed or a rapid alike drags the tool's
+    // outline through it as a straight slot (a rapid swept as a ring would part the bar).
+    if ((interp::isCutting(head.kind) || head.kind == interp::MoveKind::Rapid) && !spindleTurns(head)) {
       removed = removeSlots(head, tool, thicknessOf(head, thicknesses), stock, changed);
     } else if (head.kind == interp::MoveKind::Thread) {
       if (auto warning = threadPassStartsInStock(head, moves, first, stock); warning && threadWarnedBlock != head.block) {

@@ -118,7 +118,11 @@ class Stock {
   /// loose_pieces.cpp). The chuck's end is the material nearest the chuck: the lowest Z.
   /// `lastCut`, where the stock was written since the material last hung together (crumbs
   /// aside), lets it look only around there when the cut plainly parted nothing.
-  std::unique_ptr<Stock> takeLoosePieces(const std::optional<ChangedArea>& lastCut = std::nullopt);
+  /// `notRevolved`: the last cut was no solid of revolution (a slot cut with the spindle
+  /// stopped, a helix), so the meridian section need not show what still holds: a piece the
+  /// section sees loose is taken out only if the material is in more than one piece in 3D.
+  std::unique_ptr<Stock> takeLoosePieces(const std::optional<ChangedArea>& lastCut = std::nullopt,
+                                         bool notRevolved = false);
 
   /// Writes the level set (.vdb, half floats, Blosc-compressed) under the grid name "stock", and `part`'s
   /// (a piece taken out by takeLoosePieces) beside it under the name "part".

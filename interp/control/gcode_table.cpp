@@ -49,6 +49,7 @@ constexpr std::array kGCodes{
     GCodeInfo{81, GGroup::DrillingCycle, true, "drilling cycle on the axis"},
     GCodeInfo{82, GGroup::DrillingCycle, true, "spot drilling cycle on the axis (dwell at the bottom)"},
     GCodeInfo{83, GGroup::DrillingCycle, true, "peck drilling cycle on the axis"},
+    GCodeInfo{84, GGroup::DrillingCycle, true, "tapping cycle on the axis"},
     GCodeInfo{87, GGroup::NonModal, false, "side drilling cycle", "live tooling (a driven tool drills radial holes)"},
     GCodeInfo{88, GGroup::NonModal, false, "side tapping cycle", "live tooling (a driven tool taps radial holes)"},
     GCodeInfo{89, GGroup::NonModal, false, "side boring cycle", "live tooling (a driven tool bores radial holes)"},

@@ -22,7 +22,7 @@ enum class GGroup {
   Distance,     // 03: absolute / incremental (system B and HNC write G90 / G91; system A
                 //     has no such codes: X/Z are absolute, U/W incremental)
   WorkCoordinates,  // 14: G54–G59, the work coordinate systems (work offsets)
-  DrillingCycle,    // 10: G80 (cancel), G81–G83 drilling on the axis (Fanuc T: G83–G89)
+  DrillingCycle,    // 10: G80 (cancel), G81–G83 drilling and G84 tapping on the axis (Fanuc T: G83–G89)
 };
 
 /// The numbers of the Distance group's meanings (they have no system-A code).

@@ -11,6 +11,7 @@
 #include "interp/cycles/contour_blocks.hpp"
 #include "interp/cycles/g73_cycle.hpp"
 #include "interp/cycles/g76_cycle.hpp"
+#include "interp/cycles/haas_contour.hpp"
 #include "interp/cycles/haas_g76.hpp"
 #include "interp/cycles/thread_words.hpp"
 #include "interp/compensation/nose_compensation.hpp"
@@ -294,6 +295,7 @@ Status CompoundCycle::haasRoughing() {
   params.roughAllowanceZMm = roughZ ? length(*roughZ) : 0.0;
   params.typeII = b.contour.firstBlockHasX && b.contour.firstBlockHasZ;
   params.retractAtFeed = options_.control.roughingRetractAtFeed;
+  if (auto problem = haasContourProblem(state_.position, b.contour.contour, turning, params.typeII)) return *problem;
   auto legs = turning ? turningRoughingLegs(state_.position, b.contour.contour, params)
                       : facingRoughingLegs(state_.position, b.contour.contour, params);
   if (!legs.ok()) return legs.error();

@@ -7,6 +7,9 @@
 //   (G82/G83 P: the dwell at the bottom, made by the caller between the two lists)
 //   step 5  rapid  back to A's Z (the initial point ⚠: where Haas's lathe cycles return is not
 //                  checked against the manual)
+// G84 (tapping: Fanuc 0i-T's front tapping cycle, Haas's G84 ⚠) feeds to the bottom in one go
+// (step 2); there the spindle reverses and the tap feeds back out to R at the same feed
+// (step 3, at feed), then the tool rapids back to A's Z (step 5).
 // Zero-length legs are left out.
 
 #include "interp/cycles/drilling_cycle.hpp"
@@ -37,6 +40,10 @@ DrillingLegs drillingLegs(const RZ& start, const DrillingParams& params) {
     add(legs.down, MoveKind::Rapid, RZ(x, params.rPlaneZ), RZ(x, params.rPlaneZ + direction * backDown), 4);
     at = RZ(x, params.rPlaneZ + direction * backDown);
     depth = std::min(depth + params.peckMm, total);
+  }
+  if (params.tapping) {
+    add(legs.up, MoveKind::Feed, at, RZ(x, params.rPlaneZ), 3);
+    at = RZ(x, params.rPlaneZ);
   }
   add(legs.up, MoveKind::Rapid, at, RZ(x, start.y()), 5);
   return legs;

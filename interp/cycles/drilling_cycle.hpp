@@ -1,6 +1,7 @@
 #pragma once
 // G81, G82 and G83: drilling on the spindle's axis with the part turning (a drill in the
-// turret at X0), from the tool's position. See drilling_cycle.cpp for the moves.
+// turret at X0), from the tool's position; G84 taps there the same way. See
+// drilling_cycle.cpp for the moves.
 
 #include <vector>
 
@@ -14,10 +15,12 @@ struct DrillingParams {
   double bottomZ = 0;    // Z of the hole's bottom
   double peckMm = 0;     // G83 Q: the depth of each peck (0: one feed to the bottom)
   double clearanceMm = 0;  // G83: how far short of the last depth the tool comes back down at rapid
+  bool tapping = false;    // G84: back out to the R point at feed (the spindle reversed), then rapid
 };
 
 /// The legs down to the bottom and, apart, the legs back up to `start`'s Z (the cycle dwells
-/// between them when it has a dwell).
+/// between them when it has a dwell). A tap's `up` begins with its feed back out to the R
+/// point, made with the spindle reversed.
 struct DrillingLegs {
   std::vector<CycleLeg> down;
   std::vector<CycleLeg> up;

@@ -159,7 +159,7 @@ Result<BlockOutcome> Executor::run() {
   applyWorkSystem(oneShot);
   noteDrillingCycleCancel();
   if (const auto motion = block_.gCode(GGroup::Motion); oneShot && motion) selectMotion(*motion);
-  // G81–G83 stay in force until G80 or a motion code; a block that gives an axis word drills again
+  // G81–G84 stay in force until G80 or a motion code; a block that gives an axis word drills again
   // (at X0 only: a hole elsewhere needs live tooling, and is refused rather than moved to).
   const auto drillCode = block_.gCode(GGroup::DrillingCycle);
   if ((drillCode && drillCode->number == 80) || block_.gCode(GGroup::Motion)) state_.drillingCycle = 0;
@@ -1006,7 +1006,9 @@ void Executor::warnIfSurfaceSpeedUnclamped() {
 // the tool's position (drilling_cycle.hpp). R is the R point's Z on a Haas (⚠) and its distance
 // from the start's Z on Fanuc T (⚠); without it the feed starts where the tool stands. Q is a
 // length (Haas) or least increments without a point (Fanuc's [LII]); P counts as G04's P. X may
-// only be X0 (U0): with no live tool a drill cuts on the axis alone.
+// only be X0 (U0): with no live tool a drill cuts on the axis alone. G84 Z R F [P] taps: F is
+// the lead under G99 (the tap follows the spindle), the spindle must turn, and it reverses for
+// the feed back out to R (those moves carry the reversed direction).
 Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
   const bool haas = options_.dialect == Dialect::Haas;
   const int cycle = code ? code->number : state_.drillingCycle;
@@ -1056,12 +1058,18 @@ Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
                                        name));
   }
   if (auto problem = zeroFeedProblem(state_.feed, name)) return errorAt(anchor, *problem);
+  const bool tapping = cycle == 84;
+  if (tapping && !state_.spindleOn) {
+    return errorAt(anchor, "G84 taps with the spindle turning (the tap follows it down, and the spindle reverses to back "
+                           "it out): give M03 (or M04) and S before it");
+  }
   const RZ from = state_.position;
   DrillingParams params;
   params.rPlaneZ = state_.drillingRPlaneZ;
   params.bottomZ = bottomZ;
   params.peckMm = state_.drillingPeckMm;
   params.clearanceMm = options_.control.peckRetractMm;
+  params.tapping = tapping;
   // X0 in the block: the tool goes to the axis first, at rapid.
   if (from.x() != start.x()) emit(MoveKind::Rapid, from, RZ(start.x(), from.y()), 0);
   const DrillingLegs legs = drillingLegs(RZ(start.x(), from.y()), params);
@@ -1071,7 +1079,14 @@ Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
     emit(MoveKind::Dwell, bottom, bottom, 0);
     moves_.back().dwellS = state_.drillingDwellS;
   }
+  const std::size_t firstUp = moves_.size();
   emitLegs(legs.up);
+  for (std::size_t i = firstUp; i < moves_.size(); ++i) {  // a tap backs out with the spindle reversed
+    if (moves_[i].kind != MoveKind::Feed) continue;
+    moves_[i].spindleDirection = state_.spindleDirection == SpindleDirection::Clockwise
+                                     ? SpindleDirection::CounterClockwise
+                                     : SpindleDirection::Clockwise;
+  }
   state_.position = RZ(start.x(), from.y());
   return success();
 }

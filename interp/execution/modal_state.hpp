@@ -54,7 +54,7 @@ inline std::optional<std::string> zeroFeedProblem(std::optional<double> feed, st
 
 struct ModalState {
   MotionMode motion = MotionMode::Rapid;
-  int drillingCycle = 0;            // G81–G83 in force (0: none): a later block with X(U) or Z(W)
+  int drillingCycle = 0;            // G81–G84 in force (0: none): a later block with X(U) or Z(W)
   double drillingRPlaneZ = 0;       // drills again, to the same R point and bottom, with the same
   double drillingBottomZ = 0;       // peck and dwell, until G80 or a group 01 code
   double drillingPeckMm = 0;

@@ -283,8 +283,10 @@ Result<std::size_t> ProgramRunner::giveBack(const SubprogramReturn& giveBack, st
 Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int column, std::size_t caller) {
   if (program_.programStart.count(programNumber) != 0) return success();
   if (const auto file = findProgramFile(programNumber, options_.programDirectories)) {
-    appendProgramFile(program_, file->path.string(), file->text, programNumber, options_.control.blockSkip,
-                      options_.dialect, options_.control.machineMCodes);
+    const std::string name = file->path.string();
+    for (ReadNote& note : appendProgramFile(program_, name, file->text, programNumber, options_.control.blockSkip,
+                                            options_.dialect, options_.control.machineMCodes))
+      notes_.push_back(Error{note.line, note.column, std::move(note.message), name});
     guard_.programGrew(program_.blocks.size());
     flow_.programGrew();
     return success();

@@ -65,12 +65,13 @@ std::optional<int> Program::programNumberOf(std::size_t index) const {
 
 namespace {
 
-// Appends the blocks of source `source` to `program`.
-void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialect, MachineMCodes machine) {
+// Appends the blocks of source `source` to `program`; returns the notes of the machine M codes
+// it names first (the main program's go into program.notes, after the reader's own).
+std::vector<ReadNote> appendBlocks(Program& program, int source, bool blockDelete, Dialect dialect,
+                                   MachineMCodes machine) {
   BlockReader reader(program.sources[static_cast<std::size_t>(source)].text);
   int currentProgram = -1;
   std::vector<ReadNote> machineNotes;  // each machine M code, where it first appears
-  std::set<int> noted;
   for (;;) {
     auto next = reader.next();
     ProgramBlock block;
@@ -112,7 +113,7 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
     }
     if (const ParsedBlock* words = block.plainWords()) {
       for (const Code& code : words->machineCodes) {
-        if (!noted.insert(code.number).second) continue;
+        if (!program.notedMachineCodes.insert(code.number).second) continue;
         const MachineMCode* own = findMachineMCode(code.number, machine);
         machineNotes.push_back({block.line, code.column,
                                 fmt::format("{} ({}) is a machine function that changes nothing simulated: ignored",
@@ -122,7 +123,7 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
     program.programOf.push_back(currentProgram);
     program.blocks.push_back(std::move(block));
   }
-  if (source != 0) return;
+  if (source != 0) return machineNotes;
   program.notes = reader.notes();
   program.notes.insert(program.notes.end(), machineNotes.begin(), machineNotes.end());
   if (const auto after = reader.textAfterClosing()) {
@@ -130,6 +131,7 @@ void appendBlocks(Program& program, int source, bool blockDelete, Dialect dialec
                                  fmt::format("the program ends at the % on line {}: this text after it is not run",
                                              reader.closingPercent()->first)};
   }
+  return {};
 }
 
 }  // namespace
@@ -141,16 +143,18 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect, Ma
   return program;
 }
 
-void appendProgramFile(Program& program, const std::string& name, std::string_view text, int number,
-                       bool blockDelete, Dialect dialect, MachineMCodes machine) {
+std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, std::string_view text,
+                                        int number, bool blockDelete, Dialect dialect, MachineMCodes machine) {
   const std::size_t first = program.blocks.size();
   program.sources.push_back({name, std::string(text)});
-  appendBlocks(program, static_cast<int>(program.sources.size()) - 1, blockDelete, dialect, machine);
-  if (program.programStart.count(number) != 0 || first == program.blocks.size()) return;
+  std::vector<ReadNote> notes =
+      appendBlocks(program, static_cast<int>(program.sources.size()) - 1, blockDelete, dialect, machine);
+  if (program.programStart.count(number) != 0 || first == program.blocks.size()) return notes;
   // No O line for it: the file is the program; its blocks before any O block belong to it.
   program.programStart.emplace(number, first);
   for (std::size_t i = first; i < program.blocks.size() && program.programOf[i] < 0; ++i)
     program.programOf[i] = static_cast<int>(first);
+  return notes;
 }
 
 }  // namespace lathesim::interp

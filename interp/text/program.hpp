@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,7 @@ struct Program {
   std::map<int, std::size_t> programStart;  // O number → index of the first block with it
   std::vector<int> programOf;  // per block: the index of the O block it follows, −1 before any
   std::vector<ReadNote> notes;  // what the reader skipped (a tape leader, prose after ';')
+  std::set<int> notedMachineCodes;  // machine M codes noted as ignored, in any of its files
   std::optional<Error> textAfterEnd;  // a warning at text after the closing '%', which never runs
 
   /// The indices of the blocks numbered N`sequenceNumber` in the same program (between the
@@ -80,8 +82,10 @@ Program readProgram(std::string_view text, bool blockDelete, Dialect dialect,
 
 /// Reads the file `name` holding subprogram O`number` into `program` after its blocks. The
 /// subprogram starts at the file's O`number` block, or at its first block when the file has
-/// none (a file named for its program often leaves the O line out).
-void appendProgramFile(Program& program, const std::string& name, std::string_view text, int number,
+/// none (a file named for its program often leaves the O line out). Returns the notes of the
+/// machine M codes the file names first (each code is noted once, in whichever file names it
+/// first), located in the file.
+std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, std::string_view text, int number,
                        bool blockDelete, Dialect dialect, MachineMCodes machine = MachineMCodes::Gsk980tdi);
 
 }  // namespace lathesim::interp

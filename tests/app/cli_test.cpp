@@ -536,7 +536,7 @@ TEST(Cli, ShopProgramRunsWithoutASetupFile) {
   TempDir dir("shop");
   const fs::path programs = dir.path() / "control";
   fs::create_directories(programs);
-  writeFile(programs / "O7615.nc", "O7615 (TURN)\nG01 Z-20 F0.2\nG00 X42\nM99\n");
+  writeFile(programs / "O7615.nc", "O7615 (TURN)\nM41\nG01 Z-20 F0.2\nG00 X42\nM99\n");
   const fs::path program = dir.path() / "shaft.nc";
   writeFile(program,
             "\x12%\nO0100 (SHAFT)\nG21 G40 G80 G99\nG54\nT0101 (CNMG 120408)\nG97 S1000 M03\n"
@@ -550,8 +550,12 @@ TEST(Cli, ShopProgramRunsWithoutASetupFile) {
       << outcome.err;
   const nlohmann::json report = nlohmann::json::parse(readFile(out / "report.json"));
   EXPECT_NEAR(report["removed_volume_mm3"].get<double>(), 1520.0 * M_PI, volumeToleranceMm3(40, 60, 0.5));
-  ASSERT_EQ(report["notes"].size(), 1u);  // the DC2 before the program
+  ASSERT_EQ(report["notes"].size(), 2u);  // the DC2 before the program, the subprogram file's M41
   EXPECT_NE(report["notes"][0]["message"].get<std::string>().find("DC2"), std::string::npos);
+  EXPECT_FALSE(report["notes"][0].contains("file"));  // the program's own
+  EXPECT_NE(report["notes"][1]["message"].get<std::string>().find("M41"), std::string::npos);
+  EXPECT_EQ(report["notes"][1]["file"], (programs / "O7615.nc").string());
+  EXPECT_EQ(report["notes"][1]["line"], 2);
 }
 
 }  // namespace

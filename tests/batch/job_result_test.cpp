@@ -63,6 +63,27 @@ TEST(JobResult, ARunThatExitedZeroIsOkWithItsReportsFigures) {
   EXPECT_EQ(r.message->column, 5);
   EXPECT_EQ(r.message->text, "G96 without G50 S");
   EXPECT_FALSE(r.check);
+  EXPECT_FALSE(r.partedOff);  // the report says nothing parted off
+}
+
+// report.json's parted_off is carried into the row, and back from its JSON.
+TEST(JobResult, APartOffIsTakenFromTheReport) {
+  Json parted = report();
+  parted["parted_off"] = {{"line", 21}, {"column", 1}, {"z", -40.0}, {"volume_mm3", 5654.87},
+                          {"stub_volume_mm3", 3141.59}, {"mesh_volume_mm3", 3141.2}, {"parts_catcher", nullptr}};
+  const JobResult r = resultOf(job(), "part", exited(0), "", parted);
+  ASSERT_TRUE(r.partedOff);
+  EXPECT_EQ(r.partedOff->line, 21);
+  EXPECT_EQ(r.partedOff->column, 1);
+  EXPECT_EQ(r.partedOff->zMm, -40.0);
+  EXPECT_EQ(r.partedOff->volumeMm3, 5654.87);
+  EXPECT_EQ(r.partedOff->stubVolumeMm3, 3141.59);
+  const JobResult back = resultFromJson(toJson(r));
+  ASSERT_TRUE(back.partedOff);
+  EXPECT_EQ(toJson(back), toJson(r));
+  Json old = toJson(r);  // a stamp written before rows had parted_off
+  old.erase("parted_off");
+  EXPECT_FALSE(resultFromJson(old).partedOff);
 }
 
 // A report that times its whole command gives that total as the command's own time: its

@@ -68,6 +68,7 @@ TEST(BatchSummary, CsvOneQuotedLinePerJob) {
   BatchSummary s = summaryOf({JobStatus::Ok, JobStatus::Failed, JobStatus::OutOfTolerance});
   s.jobs[1].message = JobMessage{"error", "progs/job1.nc", 5, 21, "R-5.5 and W3, \"opposite\" signs"};
   s.jobs[0].collisions.push_back({7, 1, "rapid_into_stock", 3.5});
+  s.jobs[0].partedOff = PartedOff{12, 1, -41.5, 1234.25, 800.5};
   std::ostringstream csv;
   writeSummaryCsv(s, csv);
   std::istringstream lines(csv.str());
@@ -81,17 +82,24 @@ TEST(BatchSummary, CsvOneQuotedLinePerJob) {
             "index,name,status,exit_code,program,command,message_kind,message_file,message_line,message_column,"
             "message,warnings,stock_volume_mm3,final_volume_mm3,removed_volume_mm3,cycle_time_s,moves,collisions,"
             "first_collision_line,first_collision_kind,tolerance_mm,within_tolerance,max_gouge_mm,max_excess_mm,"
-            "peak_memory_mb,elapsed_s,folder");
-  EXPECT_EQ(first, "1,job0,ok,0,progs/job0.nc,run,,,,,,0,2000,1000,1000,0,,1,7,rapid_into_stock,,,,,,1.5,job0");
+            "peak_memory_mb,elapsed_s,folder,parted_off_line,parted_off_z,parted_off_volume_mm3");
+  EXPECT_EQ(first,
+            "1,job0,ok,0,progs/job0.nc,run,,,,,,0,2000,1000,1000,0,,1,7,rapid_into_stock,,,,,,1.5,job0,12,-41.5,1234.25");
   EXPECT_EQ(second,
             "2,job1,failed,1,progs/job1.nc,run,error,progs/job1.nc,5,21,\"R-5.5 and W3, \"\"opposite\"\" signs\",0,,,,,,"
-            "0,,,,,,,,1.5,job1");
-  EXPECT_EQ(third, "3,job2,out_of_tolerance,3,progs/job2.nc,check,,,,,,0,2000,1002,998,20,,0,,,0.5,false,0.125,1.5,,1.5,job2");
+            "0,,,,,,,,1.5,job1,,,");
+  EXPECT_EQ(third,
+            "3,job2,out_of_tolerance,3,progs/job2.nc,check,,,,,,0,2000,1002,998,20,,0,,,0.5,false,0.125,1.5,,1.5,job2,,,");
 }
 
 TEST(BatchSummary, JsonRoundTrip) {
-  const BatchSummary s = summaryOf({JobStatus::Ok, JobStatus::Timeout, JobStatus::OutOfTolerance});
+  BatchSummary s = summaryOf({JobStatus::Ok, JobStatus::Timeout, JobStatus::OutOfTolerance});
+  s.jobs[0].partedOff = PartedOff{12, 3, -41.5, 1234.25, 800.5};
   const nlohmann::ordered_json json = toJson(s);
+  EXPECT_EQ(json.at("jobs").at(0).at("parted_off"),
+            nlohmann::ordered_json({{"line", 12}, {"column", 3}, {"z", -41.5}, {"volume_mm3", 1234.25},
+                                    {"stub_volume_mm3", 800.5}}));
+  EXPECT_TRUE(json.at("jobs").at(1).at("parted_off").is_null());
   EXPECT_EQ(json.at("exit_status"), 1);
   EXPECT_EQ(json.at("counts").at("timeout"), 1);
   EXPECT_EQ(json.at("counts").at("ok"), 1);
@@ -119,6 +127,7 @@ TEST(SummaryHtml, OneRowPerJobWithItsThumbnailInside) {
   ScratchDir dir("html");
   BatchSummary s = summaryOf({JobStatus::Ok, JobStatus::Failed, JobStatus::OutOfTolerance});
   s.jobs[1].message = JobMessage{"error", "", 5, 21, "<b>&\"bad\"</b>"};
+  s.jobs[0].partedOff = PartedOff{12, 1, -41.5, 1234.375, 800.5};
   // Thumbnails of 1, 2 and 3 bytes cover base64's three paddings; the failed job has none.
   const std::vector<std::string> thumbnails{"A", std::string("\x89P", 2), std::string("\0\xff\x10", 3)};
   for (int i : {0, 2}) {
@@ -148,6 +157,10 @@ TEST(SummaryHtml, OneRowPerJobWithItsThumbnailInside) {
   EXPECT_NE(html.find("<span class=\"badge out_of_tolerance\">out of tolerance</span>"), std::string::npos);
   EXPECT_NE(html.find("href=\"job2/deviation.png\""), std::string::npos);  // a check links its deviation picture
   EXPECT_NE(html.find("href=\"job0/part.png\""), std::string::npos);
+  // The part-off column: sorted by the fallen piece's volume, showing it with the cut's Z and line.
+  EXPECT_NE(html.find("data-key=\"parted_off_volume_mm3\" data-type=\"number\">parted off mm³</th>"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\" data-value=\"1234.375\">1234.4<div class=\"path\">Z-41.500, line 12</div></td>"),
+            std::string::npos);
 }
 
 /// Writes `whole` as `count` shard summaries into `folder`, as `--shard I/N` runs would.

@@ -40,6 +40,16 @@ inline InterpreterOptions under(std::string_view preset) {
   return options;
 }
 
+/// The same, with the program read in `dialect` (a preset and a dialect are chosen apart).
+inline InterpreterOptions under(std::string_view preset, Dialect dialect) {
+  InterpreterOptions options = under(preset);
+  options.dialect = dialect;
+  return options;
+}
+
+/// A Haas: the haas preset, its programs read in the haas dialect.
+inline InterpreterOptions haas() { return under("haas", Dialect::Haas); }
+
 /// The default options with Custom Macro B's step limit set to `maxSteps`.
 inline InterpreterOptions withMaxSteps(long long maxSteps) {
   InterpreterOptions options = defaultOptions();
@@ -57,6 +67,22 @@ inline std::vector<Diagnostic> warningsOf(const InterpretResult& result) {
   for (const Diagnostic& d : result.diagnostics)
     if (d.severity == Severity::Warning) warnings.push_back(d);
   return warnings;
+}
+
+inline std::vector<Diagnostic> notesOf(const InterpretResult& result) {
+  std::vector<Diagnostic> notes;
+  for (const Diagnostic& d : result.diagnostics)
+    if (d.severity == Severity::Note) notes.push_back(d);
+  return notes;
+}
+
+/// Two runs made the same moves: kinds and end points (two forms of one cycle).
+inline void expectSameMoves(const std::vector<Move>& actual, const std::vector<Move>& expected) {
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(actual[i].kind, expected[i].kind) << i;
+    EXPECT_NEAR((actual[i].to - expected[i].to).norm(), 0.0, 1e-12) << i;
+  }
 }
 
 /// A move as worked out by hand: positions are (radius, Z) in mm.

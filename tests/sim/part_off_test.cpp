@@ -84,6 +84,44 @@ TEST(PartOff, G01ToTheCentreOrPastItPartsTheBar) {
       }
 }
 
+// With the spindle stopped the same G01 to X-2. cuts a straight slot (4 mm thick, the default
+// insert's) in the plane y = 0 where the section is read: the section falls in two, yet the
+// bar still holds together at every other angle, so nothing parts off. The slot takes 3 mm of
+// Z times the bar's section within |y| ≤ 2, x ≥ −1: 4·1 + ∫₋₂² √(400 − y²) dy = 4 + 2(√396 +
+// 200·asin 0.1) = 83.86646 mm², 251.5994 mm³; the rapid back out (G00 X60.) runs in the slot
+// and takes nothing more. A rapid in (G00 X-2.) with the spindle stopped cuts the same slot,
+// reported as a rapid into the stock of that volume: it is no ring, and parts nothing. A
+// blade 50 mm thick (wider than the bar) cut past the whole bar (G01 X-44.) severs it in 3D
+// too, and the piece Z-20 … 0 falls: 400π·20.
+TEST(PartOff, ASlotCutWithTheSpindleStoppedPartsOnlyWhenItSevers) {
+  const StockSpec bar{40.0, 50.0, 0.0};
+  const double voxel = 0.25;
+  const double slotMm3 = 3.0 * (4.0 + 2.0 * (std::sqrt(396.0) + 200.0 * std::asin(0.1)));
+  EXPECT_NEAR(slotMm3, 251.5994, 1e-4);
+  const double slotSurface = 2 * 83.86646 + 3.0 * (2 * 40.0 + 4.0);
+  const double slotTolerance = tolerance(surface(20, 0, 50) + slotSurface, voxel);
+  const PartOffRun slot = simulateProgram(bar, voxel, "G99\nG00 X44. Z-20.\nG01 X-2. F0.05\nG00 X60.\nM30\n");
+  EXPECT_TRUE(slot.result.partOffs.empty());
+  EXPECT_FALSE(slot.result.part);
+  EXPECT_TRUE(slot.result.collisions.empty());
+  EXPECT_NEAR(slot.stubMm3, 400 * M_PI * 50 - slotMm3, slotTolerance);
+
+  const PartOffRun rapid = simulateProgram(bar, voxel, "G99\nG00 X44. Z-20.\nG00 X-2.\nG00 X60.\nM30\n");
+  EXPECT_TRUE(rapid.result.partOffs.empty());
+  EXPECT_FALSE(rapid.result.part);
+  ASSERT_EQ(rapid.result.collisions.size(), 1u);
+  EXPECT_EQ(rapid.result.collisions[0].line, 3);
+  EXPECT_EQ(rapid.result.collisions[0].kind, "rapid_into_stock");
+  EXPECT_NEAR(rapid.result.collisions[0].volumeMm3, slotMm3, slotTolerance);
+  EXPECT_NEAR(rapid.stubMm3, 400 * M_PI * 50 - slotMm3, slotTolerance);
+  Stock stock(bar, voxel);
+  const SimulationResult through = simulate(toolpathOf("G99\nG00 X44. Z-20.\nG01 X-44. F0.05\nM30\n"),
+                                            tools(), stock, {}, nullptr, ToolThicknesses{{1, 50.0}});
+  ASSERT_EQ(through.partOffs.size(), 1u);
+  EXPECT_NEAR(through.partOffs[0].volumeMm3, 400 * M_PI * 20, tolerance(surface(20, 0, 20), voxel));
+  EXPECT_NEAR(stock.volumeMm3(), 400 * M_PI * 27, tolerance(surface(20, 0, 27), voxel));
+}
+
 // G75 to X-1 in 3 mm pecks (P6000: Δi on the diameter): the piece falls on the cycle's line.
 TEST(PartOff, G75PeckCyclePartsTheBarOnItsLine) {
   const PartOffRun run = simulateProgram({40.0, 50.0, 0.0}, 0.25,

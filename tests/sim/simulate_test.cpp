@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "interp/interpreter.hpp"
+
 namespace lathesim::sim {
 namespace {
 
@@ -70,6 +72,40 @@ TEST(Simulate, FeedsOfOneBlockAreMeasuredTogether) {
   EXPECT_EQ(result.blocks[0].line, 7);
   EXPECT_NEAR(result.blocks[0].removedMm3, M_PI * 400 * 2, 0.1 * 0.25 * (2 * M_PI * 400 + 2 * M_PI * 20 * 2));
   EXPECT_NEAR(stock.volumeMm3(), M_PI * 400 * 28, 0.1 * 0.25 * (4 * M_PI * 400 + 2 * M_PI * 20 * 30));
+}
+
+// G84 sweeps the tap as the mounted tool's outline revolved, like a drill: a tap that fits the
+// drilled hole removes nothing more, a wider one cuts. Bar Φ40×30, face at Z0; a flat drill of
+// radius 5 (T1) drills Z0..−20 by G81: π·5²·20 = 500π mm³. A tap of radius 5 (T2) then removes
+// nothing; a tap of radius 6 (T3) the ring π(6² − 5²)·20 = 220π mm³, down and not again back out.
+TEST(Simulate, ATapCutsOnlyWhereItIsWiderThanTheHole) {
+  const auto flat = [](double radius) {
+    const std::vector<RZ> outline{{0, 0}, {radius, 0}, {radius, 40}, {0, 40}};
+    return *ConvexPolygon::fromOutline(outline).polygon;
+  };
+  ToolOutlines tools;
+  tools.emplace(1, flat(5));
+  tools.emplace(2, flat(5));
+  tools.emplace(3, flat(6));
+  interp::InterpreterOptions options;
+  options.startPosition = RZ(50, 50);
+  options.toolNumbers = {1, 2, 3};
+  const double h = 0.25;
+  const double tolerance = 0.1 * h * (2 * M_PI * 6 * 20 + M_PI * 36);
+  for (const int tap : {2, 3}) {
+    SCOPED_TRACE(tap);
+    const auto program = interp::interpret("G99 G97 S300 M03\nT0101\nG00 X0 Z5\nG81 Z-20 R2 F0.1\nG80\nT0" +
+                                               std::to_string(tap) + "00\nG84 Z-20 R2 F1.5\n",
+                                           "tap.nc", options);
+    ASSERT_TRUE(program.ok()) << program.diagnostics[0].message;
+    Stock stock({40.0, 30.0, 0.0}, h);
+    const SimulationResult result = simulate(program.toolpath, tools, stock);
+    EXPECT_TRUE(result.collisions.empty());
+    double drilled = 0, tapped = 0;
+    for (const auto& block : result.blocks) (block.line == 4 ? drilled : tapped) += block.removedMm3;
+    EXPECT_NEAR(drilled, 500 * M_PI, tolerance);
+    EXPECT_NEAR(tapped, tap == 2 ? 0.0 : 220 * M_PI, tolerance);
+  }
 }
 
 }  // namespace

@@ -16,20 +16,8 @@ namespace {
 using test::expectError;
 using test::run;
 
-InterpreterOptions withControl(std::string_view preset, Dialect dialect) {
-  InterpreterOptions options = test::under(preset);  // one move per rapid, as the lists below
-  options.dialect = dialect;
-  return options;
-}
-
-InterpreterOptions haas() { return withControl("haas", Dialect::Haas); }
-
-std::vector<Diagnostic> notesOf(const InterpretResult& result) {
-  std::vector<Diagnostic> notes;
-  for (const Diagnostic& d : result.diagnostics)
-    if (d.severity == Severity::Note) notes.push_back(d);
-  return notes;
-}
+using test::haas;
+using test::notesOf;
 
 TEST(HaasPreset, IsBasedOnFanucWithHaasValues) {
   const auto control = controlPreset("haas");
@@ -81,7 +69,7 @@ TEST(MachineMCodes, UnknownToTheControlIsAnErrorListingItsCodes) {
   // M13 is Haas's air jet off; under the GSK and Fanuc it is a live tool, refused by name.
   EXPECT_TRUE(run("M13\n", haas()).ok());
   expectError(run("M13\n"), 1, 1, "needs live tooling");
-  expectError(run("M13\n", withControl("fanuc-0i-t", Dialect::FanucA)), 1, 1, "needs live tooling");
+  expectError(run("M13\n", test::under("fanuc-0i-t", Dialect::FanucA)), 1, 1, "needs live tooling");
   // A code no control knows.
   expectError(run("G00 X40. M777\n", haas()), 1, 10, "unknown M code M777");
 }

@@ -269,6 +269,33 @@ TEST(ExternalSubprogram, AnErrorInsideItNamesItsFileAndLine) {
   EXPECT_EQ(d.sourceLine, "G01 X20.3.");
 }
 
+// Machine M codes (the GSK's M32/M33 lubrication, M41 gear range) in a subprogram's file are
+// listed as ignored as the main program's are: each code once in the whole run, at the first
+// place that names it, in its file. M41 is the main program's already; the file's second M32
+// and its second run (P2…) add nothing.
+TEST(ExternalSubprogram, ItsMachineMCodesAreNotedOnceInItsFile) {
+  ProgramDirectory dir("external_machine_codes");
+  dir.write("O7615.nc", "O7615\nM32\nG01 U-2 F0.1\nM41\nM33 M32\nM99\n");
+  const auto result = test::run("G00 X50 Z2\nM41\nM98 P27615\nM30\n", searching({dir.path()}));
+  ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
+  const std::vector<Diagnostic> notes = test::notesOf(result);
+  ASSERT_EQ(notes.size(), 3u);
+  const std::string file = (dir.path() / "O7615.nc").string();
+  EXPECT_EQ(notes[0].file, "test.nc");
+  EXPECT_EQ(notes[0].line, 2);
+  EXPECT_NE(notes[0].message.find("M41"), std::string::npos) << notes[0].message;
+  EXPECT_EQ(notes[1].file, file);
+  EXPECT_EQ(notes[1].line, 2);
+  EXPECT_EQ(notes[1].column, 1);
+  EXPECT_NE(notes[1].message.find("M32"), std::string::npos) << notes[1].message;
+  EXPECT_NE(notes[1].message.find("ignored"), std::string::npos) << notes[1].message;
+  EXPECT_EQ(notes[2].file, file);
+  EXPECT_EQ(notes[2].line, 5);
+  EXPECT_EQ(notes[2].column, 1);
+  EXPECT_NE(notes[2].message.find("M33"), std::string::npos) << notes[2].message;
+  EXPECT_EQ(notes[2].sourceLine, "M33 M32");
+}
+
 TEST(ExternalSubprogram, MissingNamesWhatWasLookedForWhere) {
   ProgramDirectory dir("external_missing");
   const auto result = test::run(kMain, searching({dir.path()}));

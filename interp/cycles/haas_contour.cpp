@@ -1,0 +1,50 @@
+#include "interp/cycles/haas_contour.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace lathesim::interp {
+namespace {
+
+constexpr double kTolMm = 1e-9;
+
+// A G71 level steps in X (a radius, written as a diameter), a G72 level in Z.
+double stepOf(const RZ& point, bool turning) { return turning ? point.x() : point.y(); }
+double writtenStep(const RZ& point, bool turning) { return turning ? 2.0 * point.x() : point.y(); }
+
+}  // namespace
+
+std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour, bool turning, bool typeII) {
+  if (contour.empty()) return std::nullopt;
+  const char* cycle = turning ? "G71" : "G72";
+  const char axis = turning ? 'X' : 'Z';
+  const double towardB = stepOf(contour.front().to, turning) - stepOf(start, turning);
+  if (std::abs(towardB) <= kTolMm) return std::nullopt;  // the engine says what is wrong with it
+  const double stepDir = towardB > 0 ? 1.0 : -1.0;
+  if (!typeII) {
+    for (std::size_t i = 1; i < contour.size(); ++i) {
+      const ContourSegment& s = contour[i];
+      if ((stepOf(s.to, turning) - stepOf(s.from, turning)) * stepDir <= kTolMm) continue;
+      return Error{s.line, s.column,
+                   fmt::format("{0} type I contour with a pocket: this block moves {1} back toward the P block's {1}. "
+                               "A Fanuc alarms here; how a Haas cuts it (as type II, with an alarm, or leaving the "
+                               "pocket) is not in any Haas manual at hand, so it is not simulated; give the P block "
+                               "both X and Z (type II) to cut the pocket",
+                               cycle, axis)};
+    }
+  }
+  const ContourSegment& last = contour.back();
+  if ((stepOf(last.to, turning) - stepOf(start, turning)) * stepDir < -kTolMm) {
+    return Error{last.line, last.column,
+                 fmt::format("{0} contour ends with a retract past the start point ({1}{2:g} beyond the start's "
+                             "{1}{3:g}): the Haas manual treats such a last block in a way of its own that no manual "
+                             "at hand gives, so it is not simulated; end the contour at or inside the start point "
+                             "and retract after the cycle",
+                             cycle, axis, writtenStep(last.to, turning), writtenStep(start, turning))};
+  }
+  return std::nullopt;
+}
+
+}  // namespace lathesim::interp
