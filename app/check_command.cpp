@@ -252,7 +252,7 @@ int checkCommand(const CheckOptions& options) {
   StagedOutput out(options.run.out);
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
   if (!run) return job::kExitBadInput;
-  std::future<void> stockFile = stageStockFile(*run, out);
+  std::future<double> stockFile = stageStockFile(*run, out);
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
   if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return job::kExitBadInput;
@@ -274,12 +274,13 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
-  stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
+  run->figures.timing.writeS += stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options.run, out, clock);
   if (options.run.outputs.png)
     stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
+  run->figures.timing.totalS = clock.total();
   Json report = reportJson(run->figures);
   report["check"] = checkJson(options, deviation, threadChecks, process, checkS);
   stageReports(*run, report, out);

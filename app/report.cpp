@@ -147,10 +147,14 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
     if (n.file != f.program) notes.back()["file"] = n.file;  // a subprogram's own file (M98 from a file)
   }
   report["peak_memory_mb"] = f.peakMemoryMb;
+  report["grid_memory_mb"] = f.gridMemoryMb;
   report["timing_s"] = {{"parse", f.timing.parseS},
                         {"simulate", f.timing.simulateS},
                         {"mesh", f.timing.meshS},
-                        {"render", f.timing.renderS}};
+                        {"render", f.timing.renderS},
+                        {"bar", f.timing.barS},
+                        {"write", f.timing.writeS},
+                        {"total", f.timing.totalS}};
   if (f.timing.animateS > 0) report["timing_s"]["animate"] = f.timing.animateS;
   return report;
 }

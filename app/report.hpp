@@ -16,8 +16,14 @@
 
 namespace lathesim::app {
 
+/// Each step's own wall time (s). Steps that run beside each other overlap (stock.vdb is
+/// written while the part is meshed, the pictures drawn while the files are written), so they
+/// add up to more than totalS.
 struct RunTimings {
   double parseS = 0, simulateS = 0, meshS = 0, renderS = 0;
+  double barS = 0;      // building the bar's level set once (the floor), a part of simulateS
+  double writeS = 0;    // writing the files, each writer's own time added (the pictures' in renderS)
+  double totalS = 0;    // the whole command, from its start to report.json staged
   double animateS = 0;  // --animate: drawing and encoding the frames (not counted in simulateS)
 };
 
@@ -39,6 +45,7 @@ struct RunFigures {
   std::size_t moves = 0;
   double cycleTimeS = 0;  // the machine time of all moves (interp/motion/cycle_time.hpp)
   double peakMemoryMb = 0;  // this process's peak resident memory (the Xvfb it may start is not counted)
+  double gridMemoryMb = 0;  // the level sets' own memory: the bar's, or after the program (with a parted-off piece) if more
   sim::SimulationResult simulation;
   std::vector<measure::MeasuredThread> threads;  // every thread cut, as programmed and as measured
   std::vector<interp::ProgramStop> stops;  // M00/M01 reached: listed, not timed

@@ -12,12 +12,13 @@ int runCommand(const RunOptions& options) {
   StagedOutput out(options.out);
   std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return job::kExitBadInput;
-  std::future<void> stockFile = stageStockFile(*run, out);
+  std::future<double> stockFile = stageStockFile(*run, out);
   meshPart(*run, clock);
-  stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
+  run->figures.timing.writeS += stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
+  figures.timing.totalS = clock.total();
   stageReports(*run, reportJson(figures), out);
   out.commit();
   run->progress->stage("done");

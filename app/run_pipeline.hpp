@@ -20,15 +20,19 @@ namespace lathesim::app {
 
 class Stopwatch {
  public:
+  /// Seconds since the last lap (or the start).
   double lap() {
     const auto now = std::chrono::steady_clock::now();
     const double seconds = std::chrono::duration<double>(now - last_).count();
     last_ = now;
     return seconds;
   }
+  /// Seconds since the start.
+  double total() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
 
  private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_ = start_;
 };
 
 struct SimulatedRun {
@@ -60,11 +64,12 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
 /// Stages stock.vdb in a thread of its own, while the part is meshed: get() the future
-/// before staging the other files (it rethrows a failure).
-std::future<void> stageStockFile(const SimulatedRun& run, StagedOutput& out);
+/// before staging the other files (it rethrows a failure); it gives the seconds writing took.
+std::future<double> stageStockFile(const SimulatedRun& run, StagedOutput& out);
 
 /// Stages the run's other files into `out` (the pictures as options.pictures asks, the exports;
-/// stub.stl too after a part-off), and times them as rendering.
+/// stub.stl too after a part-off): the pictures are drawn (timing.renderS) while the files are
+/// written (timing.writeS).
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock);
 
 /// Stages report.json (`report`) and report.html.

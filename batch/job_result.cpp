@@ -50,11 +50,16 @@ void readReport(const Json& report, JobResult& result) {
       result.message = JobMessage{"warning", report.value("program", ""), w->front().value("line", 0),
                                   w->front().value("column", 0), w->front().value("message", "")};
   }
+  // The command's own time: its total, or (from a report that has none) its steps added up.
   if (const auto t = report.find("timing_s"); t != report.end() && t->is_object()) {
-    double sum = 0;
-    for (const auto& [step, seconds] : t->items())
-      if (seconds.is_number()) sum += seconds.get<double>();
-    result.pipelineS = sum;
+    if (const auto total = t->find("total"); total != t->end() && total->is_number()) {
+      result.pipelineS = total->get<double>();
+    } else {
+      double sum = 0;
+      for (const auto& [step, seconds] : t->items())
+        if (seconds.is_number()) sum += seconds.get<double>();
+      result.pipelineS = sum;
+    }
   }
   if (const auto c = report.find("check"); c != report.end() && c->is_object())
     result.check = CheckFigures{c->value("tolerance_mm", 0.0), c->value("within_tolerance", true),

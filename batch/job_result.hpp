@@ -85,7 +85,7 @@ struct JobResult {
   std::optional<PartedOff> partedOff;  // none: nothing parted off (or no report)
   std::optional<CheckFigures> check;
   double elapsedS = 0;              // the job's wall time in the batch: start to result written
-  std::optional<double> pipelineS;  // of which the command's own steps (report.json timing_s: parse … render)
+  std::optional<double> pipelineS;  // of which the command's own steps (report.json timing_s.total)
   std::optional<double> timeLimitS;
   std::optional<std::string> thumbnail;  // file name in the job's folder
   bool resumed = false;                  // taken from an earlier run's stamp, not run again

@@ -63,22 +63,26 @@ std::size_t dropCollapsedTriangles(TriangleMesh& mesh) {
 }
 
 bool isClosedAndOriented(const TriangleMesh& mesh) {
-  // A directed edge (a→b) must appear exactly once, and its reverse exactly once.
-  std::unordered_map<std::uint64_t, int> directed;
-  directed.reserve(mesh.triangles.size() * 3);
-  auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; };
+  // A directed edge (a→b) must appear exactly once, and its reverse exactly once. Each edge
+  // is filed by its two ends, lower first, in `up` when it runs from the lower to the higher
+  // and in `down` otherwise: then both lists hold no edge twice and hold the same edges.
+  // (Sorted lists rather than a hash map: a mesh has millions of edges, and this is several
+  // times faster.)
+  std::vector<std::uint64_t> up, down;
+  up.reserve(mesh.triangles.size() * 3 / 2 + 1);
+  down.reserve(mesh.triangles.size() * 3 / 2 + 1);
   for (const auto& t : mesh.triangles) {
     for (int i = 0; i < 3; ++i) {
-      if (t[i] == t[(i + 1) % 3]) return false;  // degenerate edge
-      if (++directed[key(t[i], t[(i + 1) % 3])] > 1) return false;
+      const std::uint32_t a = t[i], b = t[(i + 1) % 3];
+      if (a == b) return false;  // degenerate edge
+      if (a < b) up.push_back((std::uint64_t{a} << 32) | b);
+      else down.push_back((std::uint64_t{b} << 32) | a);
     }
   }
-  for (const auto& [edge, count] : directed) {
-    const auto a = static_cast<std::uint32_t>(edge >> 32);
-    const auto b = static_cast<std::uint32_t>(edge & 0xffffffffu);
-    if (directed.find(key(b, a)) == directed.end()) return false;
-  }
-  return !mesh.triangles.empty();
+  if (up.size() != down.size()) return false;
+  std::sort(up.begin(), up.end());
+  std::sort(down.begin(), down.end());
+  return !mesh.triangles.empty() && std::adjacent_find(up.begin(), up.end()) == up.end() && up == down;
 }
 
 }  // namespace lathesim

@@ -10,4 +10,9 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   picture.writePng(png);
 }
 
+std::string partImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options) {
+  PartPicture picture(options, toolpath, part);
+  return picture.png();
+}
+
 }  // namespace lathesim::render

@@ -87,5 +87,8 @@ struct PartImageOptions {
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,
                        const PartImageOptions& options, const std::filesystem::path& png);
+/// The same picture encoded as a PNG in memory: to draw it in one thread and write it in
+/// another.
+std::string partImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);
 
 }  // namespace lathesim::render

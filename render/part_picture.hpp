@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "interp/motion/toolpath_clock.hpp"
@@ -34,6 +35,7 @@ class PartPicture {
             const std::string& caption);
 
   void writePng(const std::filesystem::path& png);
+  std::string png();  // the picture encoded as a PNG
   /// The picture as rows of RGB bytes, top row first (as video encoders take them).
   void readRgb(std::vector<unsigned char>& rgb);
 

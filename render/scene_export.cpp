@@ -1,5 +1,6 @@
 #include "render/scene_export.hpp"
 
+#include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -173,7 +174,8 @@ void writeFileBytes(const std::string& bytes, const std::filesystem::path& file)
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   out.close();
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  // With the system's reason (a full disk: "No space left on device").
+  if (!out) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
 }
 
 void writePartGltf(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::filesystem::path& file) {

@@ -116,14 +116,13 @@ vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx,
   return actor;
 }
 
-void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png) {
+std::string windowPng(vtkRenderWindow* window) {
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
-  // Encoded in memory and written here, so a bad path gives our message, not VTK's
-  // ("Ran out of disk space") on stderr.
+  grab->ShouldRerenderOff();  // the back buffer holds the frame just rendered: a second render would cost as much again
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(grab->GetOutputPort());
   writer->WriteToMemoryOn();
@@ -132,9 +131,15 @@ void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png) {
   if (bytes == nullptr || bytes->GetNumberOfValues() == 0) {
     throw std::runtime_error("cannot encode the image as PNG");
   }
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+}
+
+void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png) {
+  // Encoded in memory and written here, so a bad path gives our message, not VTK's
+  // ("Ran out of disk space") on stderr.
+  const std::string bytes = windowPng(window);
   std::ofstream out(png, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(bytes->GetPointer(0)),
-            static_cast<std::streamsize>(bytes->GetNumberOfValues()));
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   out.close();
   if (!out) throw std::runtime_error("cannot write " + png.string() + ": " + std::strerror(errno));
 }

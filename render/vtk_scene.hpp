@@ -37,8 +37,11 @@ void applyFrame(vtkCamera* camera, const PictureFrame& f);
 
 vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx, const std::array<double, 3>& colour);
 
-/// Renders `window` (off-screen, already sized and populated) and writes it as a PNG.
-/// Throws std::runtime_error if it cannot be encoded or written.
+/// Renders `window` (off-screen, already sized and populated) and returns it encoded as a
+/// PNG. Throws std::runtime_error if it cannot be encoded.
+std::string windowPng(vtkRenderWindow* window);
+
+/// The same, written to `png`. Throws std::runtime_error if it cannot be encoded or written.
 void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png);
 
 }  // namespace lathesim::render

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Benchmark: seed 000's Φ125×112 program at 0.2 mm and 0.1 mm. Prints, from one run, the
-# CLI's wall time, peak memory and STL size, and simulate against its floor (building the
-# bar's level set once from its analytic distance) with their ratio. Then threads at 0.1 mm:
+# Benchmark: seed 000's Φ125×112 program at 0.1 mm and 0.05 mm: from one `lathesim run` each,
+# the floor (building the bar's level set once), simulate, mesh, render, writing and the whole
+# run, as ratios to the floor; the STL at 0.05 mm; a Φ300×600 bar at 0.2 mm: peak memory
+# against the grid's own. Then simulate against its floor (Google Benchmark). Then threads at 0.1 mm:
 # parts/g76-m30x2 (M30×2×30 by G76, ten passes) per thread pass against its bar's floor, and
 # a CAM-style thread of 3,600 chained G32 blocks of 0.1 mm: its time per pass. Then the parts/
 # batch against the same programs run one `lathesim run` (or `check`) after another.
@@ -12,16 +13,78 @@ part=parts/seed000-face-taper
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-echo "== lathesim run on $part (end to end: simulate, mesh, STL, PNG, VDB, report)"
-printf '%-9s %10s %14s %12s\n' voxel_mm wall_s peak_memory_mb stl_mb
-for voxel in 0.2 0.1; do
-  start=$(date +%s.%N)
-  build/lathesim run $part/program.nc --setup $part/setup.toml --voxel $voxel --out "$tmp/$voxel" >/dev/null
-  end=$(date +%s.%N)
-  peak=$(grep -o '"peak_memory_mb": [0-9.]*' "$tmp/$voxel/report.json" | awk '{print $2}')
-  stl=$(stat -c %s "$tmp/$voxel/part.stl")
-  awk -v v=$voxel -v s=$start -v e=$end -v p=$peak -v b=$stl 'BEGIN{printf "%-9s %10.2f %14.0f %12.1f\n", v, e-s, p, b/1e6}'
+# One `lathesim run` with every output: each step's own wall time from its report.json (steps
+# overlap: stock.vdb is written while the part is meshed, the pictures drawn while the files
+# are written), the whole process's wall and CPU time (user + sys) from outside, and each as a
+# ratio to the floor measured in the same run: building the bar's level set once (timing_s.bar).
+field() { grep -o "\"$1\": [-0-9.e+]*" "$tmp/run/report.json" | head -1 | awk '{print $2}'; }
+run_figures() {  # label, then the run's arguments
+  local label=$1 TIMEFORMAT='%R %U %S' times
+  shift
+  rm -rf "$tmp/run"
+  times=$( { time build/lathesim run "$@" --out "$tmp/run" >/dev/null 2>&1; } 2>&1 )
+  awk -v label="$label" -v floor="$(field bar)" -v simulate="$(field simulate)" -v mesh="$(field mesh)" \
+      -v render="$(field render)" -v write="$(field write)" -v times="$times" 'BEGIN {
+    split(times, t, " ")
+    n = split(simulate " " mesh " " render " " write " " t[1] " " t[2] + t[3], step, " ")
+    printf "%-10s %8.2f", label, floor
+    for (i = 1; i <= n; i++) printf "  %7.2f %5.1fx", step[i], step[i] / floor
+    printf "\n"
+  }'
+}
+memory_line() {
+  awk -v peak="$(field peak_memory_mb)" -v grid="$(field grid_memory_mb)" \
+    'BEGIN { printf "peak memory %.0f MB = %.2fx the grid'"'"'s own %.0f MB", peak, peak / grid, grid }'
+}
+volume_line() {
+  awk -v mesh="$(field mesh_volume_mm3)" -v level="$(field final_volume_mm3)" -v tol="$(field volume_tolerance_mm3)" \
+    'BEGIN { printf "final volume %.0f mm³, the mesh %+.1f mm³ from it (tolerance %.1f)", level, mesh - level, tol }'
+}
+header() {
+  printf '%-10s %8s  %14s  %14s  %14s  %14s  %14s  %14s\n' voxel_mm floor_s simulate mesh render write "whole (wall)" "whole (cpu)"
+}
+
+echo "== lathesim run on $part, every output: seconds and ratio to the floor (building the bar once, same run)"
+header
+for voxel in 0.1 0.05; do
+  run_figures $voxel $part/program.nc --setup $part/setup.toml --voxel $voxel
 done
+closed=closed
+grep -q "not closed" "$tmp/run/report.json" && closed="NOT CLOSED"
+echo "  at 0.05 mm: part.stl $(stat -c %s "$tmp/run/part.stl" | awk '{printf "%.1f", $1 / 1e6}') MB (asked < 50), $closed;" \
+  "$(volume_line); $(memory_line)"
+
+echo
+echo "== a large bar: Φ300×600 at 0.2 mm (faced, then four G90 passes), every output"
+cat > "$tmp/large.nc" <<'NC'
+G00 X310 Z5 M3 S300;
+G94 X0 Z0 F200;
+G90 X290 Z-400 F300;
+X280;
+X270 Z-200;
+X260;
+G00 X320 Z50;
+M30;
+NC
+cat > "$tmp/large.toml" <<'TOML'
+[stock]
+diameter = 300
+length = 600
+face_z = 2
+
+[machine]
+start = [400, 100]
+initial_feed_mode = "per_minute"
+travel_x = [-10.0, 420.0]
+travel_z = [-700.0, 200.0]
+
+[[tool]]
+number = 1
+polygon = [[0, 0], [10, 1], [12, 12], [1, 10]]
+TOML
+header
+run_figures 0.2 "$tmp/large.nc" --setup "$tmp/large.toml" --voxel 0.2
+echo "  $(memory_line) (asked <= 2.5x); $(volume_line)"
 
 echo
 echo "== simulate vs floor (Google Benchmark, mean of 3, same run)"

@@ -86,6 +86,15 @@ TEST(JobResult, APartOffIsTakenFromTheReport) {
   EXPECT_FALSE(resultFromJson(old).partedOff);
 }
 
+// A report that times its whole command gives that total as the command's own time: its
+// steps overlap (stock.vdb is written while the part is meshed) and add up to more.
+TEST(JobResult, TheCommandsOwnTimeIsItsTotalWhenTheReportGivesOne) {
+  Json timed = report();
+  timed["timing_s"] = {{"parse", 0.5}, {"simulate", 1.0}, {"bar", 0.25}, {"mesh", 0.25}, {"render", 0.5},
+                       {"write", 0.75}, {"total", 2.25}};
+  EXPECT_EQ(resultOf(job(), "part", exited(0), "", timed).pipelineS, 2.25);
+}
+
 TEST(JobResult, ACheckExitingThreeIsOutOfTolerance) {
   Json checked = report();
   checked["check"] = {{"tolerance_mm", 0.5}, {"within_tolerance", false}, {"max_gouge_mm", 0.1}, {"max_excess_mm", 1.49}};

@@ -33,6 +33,17 @@ TEST(TriangleMesh, FlippedTriangleIsDetected) {
   EXPECT_FALSE(isClosedAndOriented(cube));
 }
 
+// A face inside the cube, in both windings: every edge still has as many triangles each way,
+// but the cube's edges it shares are used by four triangles.
+TEST(TriangleMesh, AnInnerFaceBothWaysIsDetected) {
+  TriangleMesh cube = unitCube(1.0);
+  const auto inner = cube.triangles[0];
+  cube.triangles.push_back(inner);
+  cube.triangles.push_back({inner[0], inner[2], inner[1]});
+  EXPECT_FALSE(isClosedAndOriented(cube));
+  EXPECT_FALSE(isClosedAndOriented(TriangleMesh{}));
+}
+
 TEST(TriangleMesh, AreaOfACube) { EXPECT_NEAR(surfaceAreaMm2(unitCube(2.0)), 24.0, 1e-9); }
 
 // Two cubes sharing an edge (0,0,0)–(0,0,1) but with vertices of their own, as volumeToMesh
