@@ -183,9 +183,21 @@ std::vector<DrawnPicture> drawPictures(const SimulatedRun& run, const RunOptions
     closeUp.heightPx = pictures.heightPx;
     closeUp.view = render::PartView::Front;
     closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
-    closeUp.closeUp = render::CloseUp{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
+    const render::CloseUp box{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
+    closeUp.closeUp = box;
+    // Its own mesh, with every voxel's facets (the export's merged facets lay long chords
+    // across the flanks), of what the picture shows only: the cost of the box, not of the
+    // part. The picture shows the box stretched to its aspect, and margins (6 % a side;
+    // 25 % allowed here).
+    const double aspect = static_cast<double>(pictures.widthPx) / pictures.heightPx;
+    const double halfZMm = 1.25 * std::max(0.5 * (box.zHighMm - box.zLowMm), 0.5 * (box.radiusHighMm - box.radiusLowMm) * aspect);
+    const double halfXMm = 1.25 * std::max(0.5 * (box.radiusHighMm - box.radiusLowMm), 0.5 * (box.zHighMm - box.zLowMm) / aspect);
+    const double reachMm = 0.5 * (box.radiusLowMm + box.radiusHighMm) + halfXMm;
+    const TriangleMesh closeUpMesh =
+        run.partStock().mesh(0.0, Eigen::Vector3d(reachMm - 2 * halfXMm, -reachMm, middle - halfZMm),
+                             Eigen::Vector3d(reachMm, reachMm, middle + halfZMm));
     drawn.push_back({"thread.png", "thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line),
-                     render::partImagePng(run.part, run.job.toolpath, closeUp)});
+                     render::partImagePng(closeUpMesh, run.job.toolpath, closeUp)});
     break;
   }
   return drawn;

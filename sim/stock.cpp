@@ -2,6 +2,7 @@
 
 #include "sim/stock.hpp"
 
+#include <openvdb/tools/Clip.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <tbb/parallel_for.h>
@@ -187,7 +188,10 @@ void Stock::signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span
   });
 }
 
-TriangleMesh Stock::mesh(double adaptivity) const {
+namespace {
+
+/// `grid`'s surface just inside φ = 0 (see Stock::mesh).
+TriangleMesh meshOf(const Grid& grid, double voxelMm, double adaptivity) {
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
@@ -199,8 +203,8 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   // fraction of a voxel inside instead: no round dimension lands on it, and it moves those
   // vertices apart by several float steps of a coordinate (0.16 % of a voxel: 8e-5 mm at
   // 0.05 mm voxels) while the volume moves by 0.16 % of a voxel layer.
-  const double isoMm = -impl_->voxel * (std::numbers::sqrt2 - 1.0) / 256.0;
-  openvdb::tools::volumeToMesh(*impl_->grid, points, triangles, quads, isoMm, adaptivity);
+  const double isoMm = -voxelMm * (std::numbers::sqrt2 - 1.0) / 256.0;
+  openvdb::tools::volumeToMesh(grid, points, triangles, quads, isoMm, adaptivity);
   TriangleMesh mesh;
   mesh.vertices.reserve(points.size());
   for (const auto& p : points) mesh.vertices.emplace_back(p.x(), p.y(), p.z());
@@ -217,6 +221,18 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   weldCoincidentVertices(mesh);
   dropCollapsedTriangles(mesh);
   return mesh;
+}
+
+}  // namespace
+
+TriangleMesh Stock::mesh(double adaptivity) const { return meshOf(*impl_->grid, impl_->voxel, adaptivity); }
+
+TriangleMesh Stock::mesh(double adaptivity, const Eigen::Vector3d& low, const Eigen::Vector3d& high) const {
+  // clip() leaves the background (outside) beyond the box, interior tiles included, so the
+  // material the box cuts is closed by its faces.
+  const Grid::Ptr box = openvdb::tools::clip(
+      *impl_->grid, openvdb::BBoxd(openvdb::Vec3d(low.x(), low.y(), low.z()), openvdb::Vec3d(high.x(), high.y(), high.z())));
+  return meshOf(*box, impl_->voxel, adaptivity);
 }
 
 namespace {

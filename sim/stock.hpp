@@ -112,6 +112,10 @@ class Stock {
   /// vertices merged by position as an STL reader merges them. adaptivity 0 keeps every
   /// voxel's facets; larger values (up to 1) merge facets on flat and gently curved areas.
   TriangleMesh mesh(double adaptivity) const;
+  /// The same surface within the box x `low.x()`…`high.x()` × y … × z … (mm) only, closed
+  /// by the box's faces where it cuts the material: a close-up's mesh, at the cost of the
+  /// box, not of the part.
+  TriangleMesh mesh(double adaptivity, const Eigen::Vector3d& low, const Eigen::Vector3d& high) const;
 
   /// φ in the meridian plane y = 0, x ≥ 0, at every voxel centre over the bar's extent and
   /// a band's width beyond (see stock_outline.cpp).
