@@ -3,6 +3,8 @@
 #include "sim/stock.hpp"
 
 #include <openvdb/tools/Clip.h>
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <tbb/parallel_for.h>
@@ -228,11 +230,16 @@ TriangleMesh meshOf(const Grid& grid, double voxelMm, double adaptivity) {
 TriangleMesh Stock::mesh(double adaptivity) const { return meshOf(*impl_->grid, impl_->voxel, adaptivity); }
 
 TriangleMesh Stock::mesh(double adaptivity, const Eigen::Vector3d& low, const Eigen::Vector3d& high) const {
-  // clip() leaves the background (outside) beyond the box, interior tiles included, so the
-  // material the box cuts is closed by its faces.
-  const Grid::Ptr box = openvdb::tools::clip(
-      *impl_->grid, openvdb::BBoxd(openvdb::Vec3d(low.x(), low.y(), low.z()), openvdb::Vec3d(high.x(), high.y(), high.z())));
-  return meshOf(*box, impl_->voxel, adaptivity);
+  // The grid is clipped a band beyond the box (cheap: what lies in the box), and then
+  // intersected with the box as a level set: clip() alone leaves the material open where it
+  // cuts it (its interior tiles meet the outside with no band between them to mesh).
+  const openvdb::Vec3d boxLow(low.x(), low.y(), low.z()), boxHigh(high.x(), high.y(), high.z());
+  const double bandMm = (openvdb::LEVEL_SET_HALF_WIDTH + 1) * impl_->voxel;
+  const Grid::Ptr inBox =
+      openvdb::tools::clip(*impl_->grid, openvdb::BBoxd(boxLow - openvdb::Vec3d(bandMm), boxHigh + openvdb::Vec3d(bandMm)));
+  const Grid::Ptr box = openvdb::tools::createLevelSetBox<Grid>(openvdb::BBoxd(boxLow, boxHigh), inBox->transform());
+  openvdb::tools::csgIntersection(*inBox, *box);
+  return meshOf(*inBox, impl_->voxel, adaptivity);
 }
 
 namespace {
