@@ -228,9 +228,9 @@ void PartPicture::setPart(const TriangleMesh& part) {
   Scene& s = *scene_;
   s.part->SetVisibility(!part.triangles.empty());
   if (part.triangles.empty()) return;
-  // A close-up's voxel facets are large enough to see: a flank's neighbouring facets lean up
-  // to ~45° against each other, and split there they show as a saw edge. Its true edges are
-  // sharper (a 60° thread's crest meets its flanks at 60°, its flanks meet at 120°).
+  // A close-up magnifies the facets: neighbours on a flank that lean more than 35° against
+  // each other (voxel facets do) show as a saw edge where the normals split. Its true edges
+  // are sharper (a 60° thread's crest meets its flanks at 60°, its flanks meet at 120°).
   const auto mapper =
       shadedMapper(toPolyData(part), s.options.closeUp ? kCloseUpFeatureAngleDeg : kShoulderFeatureAngleDeg);
   mapper->ScalarVisibilityOff();
