@@ -29,9 +29,10 @@ std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour,
       if ((stepOf(s.to, turning) - stepOf(s.from, turning)) * stepDir <= kTolMm) continue;
       return Error{s.line, s.column,
                    fmt::format("{0} type I contour with a pocket: this block moves {1} back toward the P block's {1}. "
-                               "A Fanuc alarms here; how a Haas cuts it (as type II, with an alarm, or leaving the "
-                               "pocket) is not in any Haas manual at hand, so it is not simulated; give the P block "
-                               "both X and Z (type II) to cut the pocket",
+                               "A Fanuc alarms here; a Haas roughs such troughs in an order of its own (the material "
+                               "above every trough first, then the troughs one by one along Z, as its operator's manual "
+                               "shows under \"Troughs\"), which lathesim does not simulate yet; give the P block both X "
+                               "and Z (type II) to cut the pocket",
                                cycle, axis)};
     }
   }
@@ -39,9 +40,9 @@ std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour,
   if ((stepOf(last.to, turning) - stepOf(start, turning)) * stepDir < -kTolMm) {
     return Error{last.line, last.column,
                  fmt::format("{0} contour ends with a retract past the start point ({1}{2:g} beyond the start's "
-                             "{1}{3:g}): the Haas manual treats such a last block in a way of its own that no manual "
-                             "at hand gives, so it is not simulated; end the contour at or inside the start point "
-                             "and retract after the cycle",
+                             "{1}{3:g}): the Haas manual asks for a short retraction after a last cut that is not "
+                             "monotonic, but no manual at hand says how the roughing passes treat it, so it is not "
+                             "simulated; end the contour at or inside the start point and retract after the cycle",
                              cycle, axis, writtenStep(last.to, turning), writtenStep(start, turning))};
   }
   return std::nullopt;

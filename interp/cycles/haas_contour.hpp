@@ -1,8 +1,10 @@
 #pragma once
-// Two G71/G72 contours the Haas manual treats in its own way, which no manual at hand says how
-// (lathesim reads Haas's one-block G71/G72 by Fanuc's rules otherwise): a contour whose last
-// block retracts past the start point, and a type I contour with a pocket. Each is refused at
-// its block rather than cut by a guess.
+// Two G71/G72 contours a Haas treats in its own way (lathesim reads Haas's one-block G71/G72 by
+// Fanuc's rules otherwise): a contour whose last block retracts past the start point (the
+// manual asks for one after a last cut that is not monotonic, but gives no rule for the
+// roughing), and a type I contour with a pocket (the manual's "Troughs": the material above
+// every trough first, then the troughs along Z — not simulated yet). Each is refused at its
+// block rather than cut by a guess.
 
 #include <optional>
 

@@ -10,33 +10,15 @@
 
 #include "sim/simulate.hpp"
 #include "sim/thread_history.hpp"
+#include "tests/sim/thread_test_support.hpp"
 
 namespace lathesim::sim {
 namespace {
 
-const double kTan30 = std::tan(std::numbers::pi / 6.0);
+using test::kTan30;
+using test::threadMove;
 
-// A sharp 60° V, 1.8 mm tall, its apex the programmed point.
-ConvexPolygon vee() {
-  const std::vector<RZ> v{{0, 0}, {1.8, -1.8 * kTan30}, {1.8, 1.8 * kTan30}};
-  return *ConvexPolygon::fromOutline(v).polygon;
-}
-
-interp::Move threadMove(RZ from, RZ to, double leadMm, double startDeg, interp::SpindleDirection direction) {
-  interp::Move m;
-  m.kind = interp::MoveKind::Thread;
-  m.from = from;
-  m.to = to;
-  m.feed = leadMm;
-  m.thread = {leadMm, true, startDeg, 1};
-  m.tool = 1;
-  m.line = 1;
-  m.column = 1;
-  m.spindleOn = true;
-  m.spindleS = 500;
-  m.spindleDirection = direction;
-  return m;
-}
+ConvexPolygon vee() { return test::sharpVee(1.8); }  // 1.8 mm tall
 
 // A G76's passes on a Φ20 bar (Z −12…0) cut from Z3 to Z−8: depths 0.3, 0.45, 0.6, 0.6 (the
 // last a spring pass), each started `infeedTan`·depth further along −Z (flank infeed when

@@ -16,34 +16,16 @@
 #include <numbers>
 
 #include "sim/simulate.hpp"
+#include "tests/sim/thread_test_support.hpp"
 
 namespace lathesim::sim {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-const double kTan30 = std::tan(kPi / 6.0);
+using test::kTan30;
+using test::threadMove;
 
-// A sharp 60° V pointing at the axis, 3 mm tall: apex at the programmed point.
-ConvexPolygon sharpVee() {
-  const std::vector<RZ> v{{0, 0}, {3, -3 * kTan30}, {3, 3 * kTan30}};
-  return *ConvexPolygon::fromOutline(v).polygon;
-}
-
-interp::Move threadMove(RZ from, RZ to, double leadMm, double startDeg, interp::SpindleDirection direction) {
-  interp::Move m;
-  m.kind = interp::MoveKind::Thread;
-  m.from = from;
-  m.to = to;
-  m.feed = leadMm;
-  m.thread = {leadMm, true, startDeg, 1};
-  m.tool = 1;
-  m.line = 1;
-  m.column = 1;
-  m.spindleOn = true;
-  m.spindleS = 500;
-  m.spindleDirection = direction;
-  return m;
-}
+ConvexPolygon sharpVee() { return test::sharpVee(3.0); }  // 3 mm tall
 
 double veeGrooveVolume(double radius, double depth, double lead, double length) {
   const double a = radius - depth;

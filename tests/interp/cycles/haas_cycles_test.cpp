@@ -124,7 +124,7 @@ TEST(HaasG71, BadForms) {
               "YASNAC");
 }
 
-// Two contours the Haas manual treats in a way of its own, which no manual at hand gives, are
+// Two contours a Haas treats in a way of its own, which lathesim does not simulate, are
 // refused at their block saying so: a last block retracting past the start point (X55. beyond
 // X52.; for G72, Z3. beyond Z2.), and a type I contour with a pocket (X26. after X30., back
 // toward the P block's X20.), which a Fanuc alarms on. A last block at the start point is read.
