@@ -34,6 +34,7 @@ constexpr double kToolNearFraction = 0.25;  // a tool this far (of the frame's s
 // The tool's slabs are this thick, as a fraction of the picture's diagonal (mm): enough to
 // read as solid, thin enough to stay in the meridian plane.
 constexpr double kToolThicknessPerSize = 0.012;
+constexpr double kCloseUpFeatureAngleDeg = 50.0;  // see setPart
 constexpr double kJawHalfWidthPerRadius = 0.18;  // as chuckActors draws them
 // The jaws' front ends framed with a bar: this far behind their face (of the bar's length)
 // and out past the bar (of its radius).
@@ -227,7 +228,11 @@ void PartPicture::setPart(const TriangleMesh& part) {
   Scene& s = *scene_;
   s.part->SetVisibility(!part.triangles.empty());
   if (part.triangles.empty()) return;
-  const auto mapper = shadedMapper(toPolyData(part));
+  // A close-up magnifies the facets: neighbours on a flank that lean more than 35° against
+  // each other (voxel facets do) show as a saw edge where the normals split. Its true edges
+  // are sharper (a 60° thread's crest meets its flanks at 60°, its flanks meet at 120°).
+  const auto mapper =
+      shadedMapper(toPolyData(part), s.options.closeUp ? kCloseUpFeatureAngleDeg : kShoulderFeatureAngleDeg);
   mapper->ScalarVisibilityOff();
   if (s.options.view == PartView::Section) mapper->AddClippingPlane(belowAxisPlane());
   s.part->SetMapper(mapper);

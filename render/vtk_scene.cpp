@@ -21,13 +21,13 @@
 
 namespace lathesim::render {
 
-vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data) {
+vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data, double featureAngleDeg) {
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputData(data);
   normals->ComputePointNormalsOn();
   normals->ComputeCellNormalsOff();
   normals->SplittingOn();
-  normals->SetFeatureAngle(35.0);
+  normals->SetFeatureAngle(featureAngleDeg);
   normals->ConsistencyOff();
   normals->AutoOrientNormalsOff();
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();

@@ -24,9 +24,10 @@ namespace lathesim::render {
 vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh);
 
 /// A mapper that shades `data` smoothly but keeps the shoulders of a turned part crisp:
-/// point normals split at edges sharper than 35°. The meshes are consistently oriented, so
-/// there is no reorientation pass.
-vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data);
+/// point normals split at edges sharper than `featureAngleDeg`. The meshes are consistently
+/// oriented, so there is no reorientation pass.
+inline constexpr double kShoulderFeatureAngleDeg = 35.0;
+vtkSmartPointer<vtkPolyDataMapper> shadedMapper(vtkPolyData* data, double featureAngleDeg = kShoulderFeatureAngleDeg);
 
 /// Parallel camera on `view`, framing `e` tightly (5 % margin) in a viewport of
 /// `aspect` = width / height. Parallel projection keeps the profile true to scale.

@@ -2,6 +2,10 @@
 
 #include "sim/stock.hpp"
 
+#include <openvdb/tools/Clip.h>
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/SignedFloodFill.h>
+#include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/VolumeToMesh.h>
 #include <tbb/parallel_for.h>
@@ -187,7 +191,10 @@ void Stock::signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span
   });
 }
 
-TriangleMesh Stock::mesh(double adaptivity) const {
+namespace {
+
+/// `grid`'s surface just inside φ = 0 (see Stock::mesh).
+TriangleMesh meshOf(const Grid& grid, double voxelMm, double adaptivity) {
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
@@ -199,8 +206,8 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   // fraction of a voxel inside instead: no round dimension lands on it, and it moves those
   // vertices apart by several float steps of a coordinate (0.16 % of a voxel: 8e-5 mm at
   // 0.05 mm voxels) while the volume moves by 0.16 % of a voxel layer.
-  const double isoMm = -impl_->voxel * (std::numbers::sqrt2 - 1.0) / 256.0;
-  openvdb::tools::volumeToMesh(*impl_->grid, points, triangles, quads, isoMm, adaptivity);
+  const double isoMm = -voxelMm * (std::numbers::sqrt2 - 1.0) / 256.0;
+  openvdb::tools::volumeToMesh(grid, points, triangles, quads, isoMm, adaptivity);
   TriangleMesh mesh;
   mesh.vertices.reserve(points.size());
   for (const auto& p : points) mesh.vertices.emplace_back(p.x(), p.y(), p.z());
@@ -217,6 +224,48 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   weldCoincidentVertices(mesh);
   dropCollapsedTriangles(mesh);
   return mesh;
+}
+
+}  // namespace
+
+TriangleMesh Stock::mesh(double adaptivity) const { return meshOf(*impl_->grid, impl_->voxel, adaptivity); }
+
+TriangleMesh Stock::mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int subdivisions) const {
+  if (subdivisions < 1) throw std::invalid_argument("Stock::mesh: subdivisions must be at least 1");
+  // The grid is clipped a band beyond the box (cheap: what lies in the box), and then
+  // intersected with the box as a level set: clip() alone leaves the material open where it
+  // cuts it (its interior tiles meet the outside with no band between them to mesh).
+  const double h = impl_->voxel;
+  const openvdb::Vec3d boxLow(low.x(), low.y(), low.z()), boxHigh(high.x(), high.y(), high.z());
+  const double bandMm = (openvdb::LEVEL_SET_HALF_WIDTH + 1) * h;
+  const Grid::Ptr inBox =
+      openvdb::tools::clip(*impl_->grid, openvdb::BBoxd(boxLow - openvdb::Vec3d(bandMm), boxHigh + openvdb::Vec3d(bandMm)));
+  const Grid::Ptr box = openvdb::tools::createLevelSetBox<Grid>(openvdb::BBoxd(boxLow, boxHigh), inBox->transform());
+  openvdb::tools::csgIntersection(*inBox, *box);
+  if (subdivisions == 1) return meshOf(*inBox, h, 0.0);
+  // Finer voxels whose centres split each voxel near the surface (|φ| within 1.5 voxels)
+  // k × k × k ways, φ sampled trilinearly there: k − 1 more voxel layers of band each side
+  // than the surface needs, and the inside flood-filled from them.
+  const int k = subdivisions;
+  const Grid::Ptr fine = Grid::create(inBox->background());
+  fine->setGridClass(openvdb::GRID_LEVEL_SET);
+  fine->setTransform(openvdb::math::Transform::createLinearTransform(h / k));
+  Grid::Accessor out = fine->getAccessor();
+  const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*inBox);
+  const int first = -(k - 1) / 2;  // k odd: centred on the voxel's centre; even: half a fine voxel low
+  for (auto v = inBox->cbeginValueOn(); v; ++v) {
+    if (!v.isVoxelValue() || std::abs(*v) > 1.5 * h) continue;
+    const openvdb::Coord voxel = v.getCoord();
+    const openvdb::Coord c(voxel.x() * k + first, voxel.y() * k + first, voxel.z() * k + first);
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j)
+        for (int l = 0; l < k; ++l) {
+          const openvdb::Coord f = c.offsetBy(i, j, l);
+          out.setValue(f, static_cast<float>(sampler.wsSample(fine->indexToWorld(f))));
+        }
+  }
+  openvdb::tools::signedFloodFill(fine->tree());
+  return meshOf(*fine, h / k, 0.0);
 }
 
 namespace {

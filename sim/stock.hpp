@@ -112,6 +112,13 @@ class Stock {
   /// vertices merged by position as an STL reader merges them. adaptivity 0 keeps every
   /// voxel's facets; larger values (up to 1) merge facets on flat and gently curved areas.
   TriangleMesh mesh(double adaptivity) const;
+  /// The same surface (adaptivity 0) within the box x `low.x()`…`high.x()` × y … × z … (mm)
+  /// only, closed by the box's faces where it cuts the material, and `subdivisions` (≥ 1)
+  /// times finer than the voxels: φ sampled trilinearly near the surface on voxels that
+  /// split each voxel k × k × k ways. That adds no detail the level set lacks; it draws its
+  /// trilinear surface, where one facet a voxel shows as steps and saw edges once a voxel
+  /// fills many pixels (a picture's close-up). Costs what the box holds, not the part.
+  TriangleMesh mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int subdivisions) const;
 
   /// φ in the meridian plane y = 0, x ≥ 0, at every voxel centre over the bar's extent and
   /// a band's width beyond (see stock_outline.cpp).

@@ -56,10 +56,8 @@ Result<std::vector<CycleLeg>> haasThreadingLegs(const Code& code, ParsedBlock& b
                                                 const std::function<double(const Word&)>& lengthMm,
                                                 std::vector<Error>& warnings) {
   const int line = block.line;
-  const auto x = block.take('X');
-  const auto u = block.take('U');
-  const auto z = block.take('Z');
-  const auto w = block.take('W');
+  const ThreadEndWords endWords = takeThreadEndWords(block);
+  const auto& [x, u, z, w] = endWords;
   const auto k = block.take('K');
   const auto d = block.take('D');
   const auto a = block.take('A');
@@ -113,13 +111,9 @@ Result<std::vector<CycleLeg>> haasThreadingLegs(const Code& code, ParsedBlock& b
   if (!lead.ok()) return lead.error();
 
   const RZ start = state.position;
-  RZ end = start;
-  if (x) end.x() = lengthMm(*x) / 2.0;
-  if (u) end.x() += lengthMm(*u) / 2.0;
-  if (z) end.y() = lengthMm(*z);
-  if (w) end.y() += lengthMm(*w);
+  const RZ end = threadEndPoint(start, endWords, lengthMm);
   if (end.y() == start.y()) {
-    return Error{line, z ? z->column : w->column,
+    return Error{line, endWords.endZ()->column,
                  fmt::format("G76 cannot cut a face thread: its end Z must differ from the start point's Z{:g}",
                              start.y())};
   }

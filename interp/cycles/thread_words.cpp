@@ -121,6 +121,24 @@ Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& rea
   return kept;
 }
 
+ThreadEndWords takeThreadEndWords(ParsedBlock& block) {
+  ThreadEndWords words;
+  words.x = block.take('X');
+  words.u = block.take('U');
+  words.z = block.take('Z');
+  words.w = block.take('W');
+  return words;
+}
+
+RZ threadEndPoint(const RZ& start, const ThreadEndWords& words, const std::function<double(const Word&)>& lengthMm) {
+  RZ end = start;
+  if (words.x) end.x() = lengthMm(*words.x) / 2.0;
+  if (words.u) end.x() += lengthMm(*words.u) / 2.0;
+  if (words.z) end.y() = lengthMm(*words.z);
+  if (words.w) end.y() += lengthMm(*words.w);
+  return end;
+}
+
 ThreadRunout cycleRunout(const RunoutWords& words, double defaultMm, int defaultAngleDeg) {
   if (!words.acrossMm && !words.alongMm) {
     // 45° exactly: tan 45° is not 1 in floating point.

@@ -3,6 +3,7 @@
 // per inch, Fanuc's E), the start angle Q, the run-out words, and the warnings a thread block earns
 // from the state it runs in (G41/G42, G96). Lengths in mm, X ones as radii.
 
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -38,6 +39,17 @@ Result<double> takeStartAngleDeg(ParsedBlock& block, std::string_view name, std:
 /// E without R is an error (where the run-out starts is not given).
 Result<RunoutWords> takeRunoutWords(ParsedBlock& block, const NumberReading& reading, const ThreadingWords& words,
                                     RunoutWords kept, bool signedAcross, std::string_view name);
+
+/// The end point's words of a G76 in the Fanuc/GSK or Haas form: X or U, Z or W.
+struct ThreadEndWords {
+  std::optional<Word> x, u, z, w;
+  std::optional<Word> endZ() const { return z ? z : w; }  // the word that gives its Z, if any
+};
+ThreadEndWords takeThreadEndWords(ParsedBlock& block);
+
+/// D, the thread's end, from the start point: X (a diameter) and Z replace its coordinates,
+/// U (a diameter) and W are added to them; `lengthMm` reads a word as the block's unit says.
+RZ threadEndPoint(const RZ& start, const ThreadEndWords& words, const std::function<double(const Word&)>& lengthMm);
 
 /// G92's and G76's run-out from its words (GSK 3.24.9 notes 2–7, 3.24.12 notes 1–4):
 /// neither J nor K: `defaultMm` along (No.19 or No.5130, or G76's r) and out at the control's

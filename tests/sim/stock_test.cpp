@@ -88,6 +88,30 @@ TEST_P(StockAtVoxel, MeshIsClosedWithOutwardNormalsAndMatchesTheVolume) {
   }
 }
 
+TEST_P(StockAtVoxel, MeshOfABoxIsTheMaterialInItClosedByItsFaces) {
+  // A close-up's mesh, at the voxels and finer: Φ20 to Z-10, Φ12 above; the box x ≥ 0,
+  // Z-15…-5 holds half of each step, 5 mm long. The box's faces are placed by whole voxels,
+  // so each cap may stand up to a voxel off: the tolerance adds a voxel layer over the caps.
+  const double h = GetParam();
+  Stock stock({20.0, 30.0, 0.0}, h);
+  stock.remove(RevolvedRegion({rectangle(6.0, -10.0, 20.0, 5.0)}));
+  const Eigen::Vector3d low(0.0, -20.0, -15.0), high(20.0, 20.0, -5.0);
+  const double exact = 0.5 * M_PI * (10.0 * 10.0 + 6.0 * 6.0) * 5.0;
+  const double curved = M_PI * (10 + 6) * 5.0 + 0.5 * M_PI * (10 * 10 - 6 * 6);
+  const double caps = 0.5 * M_PI * (10 * 10 + 6 * 6) + 2 * 10 * 5 + 2 * 6 * 5;
+  for (const int subdivisions : {1, 2, 3}) {
+    SCOPED_TRACE(subdivisions);
+    const TriangleMesh mesh = stock.mesh(low, high, subdivisions);
+    EXPECT_TRUE(isClosedAndOriented(mesh));
+    EXPECT_NEAR(enclosedVolumeMm3(mesh), exact, voxelTolerance(curved, h) + h * caps);
+    for (const Eigen::Vector3f& v : mesh.vertices)
+      for (int axis = 0; axis < 3; ++axis) {
+        ASSERT_GE(v[axis], low[axis] - h);
+        ASSERT_LE(v[axis], high[axis] + h);
+      }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(TwoVoxelSizes, StockAtVoxel, ::testing::Values(0.5, 0.25));
 
 TEST(Stock, CutThroughTheAxisRemovesTheWholeSlice) {
