@@ -74,6 +74,21 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
   }
 }
 
+// Each move timed (interp/motion/cycle_time.hpp) on its way to the consumer.
+class TimedMoves final : public interp::MoveSink {
+ public:
+  TimedMoves(const interp::MachineLimits& machine, interp::MoveSink& next) : timer_(machine), next_(next) {}
+  void take(interp::Move move) override {
+    timer_.time(move);
+    next_.take(std::move(move));
+  }
+  const std::vector<interp::Error>& warnings() const { return timer_.warnings(); }
+
+ private:
+  interp::MoveTimer timer_;
+  interp::MoveSink& next_;
+};
+
 }  // namespace
 
 interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
@@ -121,6 +136,14 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
 }
 
 std::optional<Job> loadJob(const JobRequest& request) {
+  std::vector<interp::Move> moves;
+  interp::MoveCollector collector(moves);
+  std::optional<Job> job = loadJob(request, collector);
+  if (job) job->toolpath.moves = std::move(moves);
+  return job;
+}
+
+std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
   Job job{defaultSetup(), {}, {}, {}, {}, {}};
@@ -171,14 +194,15 @@ std::optional<Job> loadJob(const JobRequest& request) {
   options.toolDefinitionHint = toolDefinitionHint;
   options.programDirectories = request.programDirectories;
   options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());
-  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options);
+  TimedMoves timed(job.setup.machine, moves);
+  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options, timed);
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
     else if (d.severity == interp::Severity::Note) job.notes.push_back(std::move(d));
   job.toolpath = std::move(result.toolpath);
-  for (const interp::Error& w : interp::assignMoveTimes(job.toolpath, job.setup.machine)) {
+  for (const interp::Error& w : timed.warnings()) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
     print({job.warnings.back()});
   }
