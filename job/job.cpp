@@ -30,6 +30,24 @@ bool hasError(const std::vector<interp::Diagnostic>& diagnostics) {
   return false;
 }
 
+// All of `in`. A file is read in one piece at its size: a stream's buffer, grown by doubling
+// and then copied, would hold a long program's text up to three times over. A pipe has no size.
+std::string wholeText(std::ifstream& in) {
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size < 0 || !in) {
+    in.clear();
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), size);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
+
 // The TOML that defines tool `number`, for the error of a T word nothing defines.
 std::string toolDefinitionHint(int number) {
   return fmt::format(
@@ -164,10 +182,7 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
     std::cerr << interp::printable(program.string()) << ": error: cannot read the program file\n";
     return std::nullopt;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-
-  job.programText = text.str();
+  job.programText = wholeText(in);
   job.programLines = interp::LineStarts(job.programText);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
