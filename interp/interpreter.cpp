@@ -47,6 +47,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   std::vector<Move> moves;
   MoveCollector collector(moves);
   InterpretResult result = interpret(programText, fileName, options, collector);
+  moves.insert(moves.end(), result.toolpath.moves.begin(), result.toolpath.moves.end());  // an error's
   result.toolpath.moves = std::move(moves);
   return result;
 }
@@ -66,7 +67,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   if (status.ok()) {
     status = runProgram(program, options, result.toolpath, pipeline, warnings, notes);
     if (status.ok()) status = pipeline.finish();
-    else pipeline.abandon();
+    else result.toolpath.moves = pipeline.abandon();
   }
   // A diagnostic in the file it names: the program's own, or a subprogram's.
   const LineStarts programLines(programText);

@@ -68,7 +68,9 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
 
 /// The moves handed to `moves` as they are made, in order, each once nothing can change it:
 /// a long program never holds its whole toolpath (`result.toolpath` has everything else). A
-/// program that fails may have handed on moves before its error: the consumer drops them.
+/// program that fails may have handed on moves before its error: the consumer drops them; the
+/// moves made before the error and not handed on are left in `result.toolpath.moves`, as
+/// their blocks made them (what `interpret` without a sink gives after those handed on).
 InterpretResult interpret(std::string_view programText, const std::string& fileName,
                           const InterpreterOptions& options, MoveSink& moves);
 

@@ -43,12 +43,6 @@ Status MovePipeline::release(bool anyCount) {
 
 Status MovePipeline::finish() { return pass(); }
 
-void MovePipeline::abandon() {
-  for (Move& move : held_) sink_.take(std::move(move));
-  passed_ += held_.size();
-  held_.clear();
-}
-
 // The moves are made as programmed, in the work coordinate systems (G54–G59, G50); placed in
 // the setup's frame, then G41/G42 and the tool offsets' shifts are applied, each rapid is
 // given the path the machine makes, and the whole checked against the machine's travel.

@@ -13,6 +13,7 @@
 // which is held until it is cancelled.
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "interp/interpreter.hpp"
@@ -33,9 +34,9 @@ class MovePipeline {
   Status release(bool anyCount = false);
   /// Lets every move go: the program has ended.
   Status finish();
-  /// After an error of a block: the moves held go to the sink as their blocks made them (not
-  /// compensated, offset nor split), so that what ran before the error can be looked at.
-  void abandon();
+  /// After an error of a block: the moves held, as their blocks made them (not compensated,
+  /// offset nor split), for a look at what ran before the error; none goes to the sink.
+  std::vector<Move> abandon() { return std::exchange(held_, {}); }
 
   /// Moves handed to the sink so far, and held: made but not yet handed on.
   std::size_t passed() const { return passed_; }
