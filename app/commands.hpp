@@ -84,6 +84,10 @@ struct CheckOptions {
 /// (job/exit_status.hpp).
 int checkCommand(const CheckOptions& options);
 
+/// The toolpath CSV on stdout, whole or not at all: the rows stream into an unnamed temporary
+/// file as the program makes its moves (the toolpath is never held in memory) and are copied
+/// to stdout once the program has run without error; exit status 1 and nothing on stdout
+/// when it fails, however many moves came before the error.
 int expandCommand(const job::JobRequest& request);
 
 /// The job a run's options name.

@@ -3,7 +3,6 @@
 #include "app/commands.hpp"
 #include "app/run_pipeline.hpp"
 #include "interp/printable_text.hpp"
-#include "interp/toolpath_csv.hpp"
 
 namespace lathesim::app {
 
@@ -41,13 +40,6 @@ int runCommand(const RunOptions& options) {
 
 job::JobRequest jobRequestOf(const RunOptions& options) {
   return {options.program, options.setup, options.overrides, options.programDirectories, options.stock};
-}
-
-int expandCommand(const job::JobRequest& request) {
-  const std::optional<job::Job> loaded = job::loadJob(request);
-  if (!loaded) return job::kExitBadInput;
-  interp::writeToolpathCsv(loaded->toolpath, std::cout);
-  return job::kExitOk;
 }
 
 }  // namespace lathesim::app

@@ -5,26 +5,13 @@
 
 #include <fmt/format.h>
 
-#include "interp/compensation/nose_compensation.hpp"
+#include "interp/execution/move_pipeline.hpp"
 #include "interp/execution/program_runner.hpp"
-#include "interp/motion/corners.hpp"
-#include "interp/motion/rapid_path.hpp"
-#include "interp/motion/travel_limits.hpp"
 #include "interp/text/control_family.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp {
 namespace {
-
-// Each move from its work coordinate system into the setup's frame. A change of system
-// re-expresses the position (work_coordinates.cpp), so consecutive moves stay joined.
-void placeInSetupFrame(std::vector<Move>& moves) {
-  for (Move& move : moves) {
-    move.from += move.workShift;
-    move.to += move.workShift;
-    if (isArc(move.kind)) move.center += move.workShift;
-  }
-}
 
 // A file with no block to run is the wrong file or a program cut short, not a part that
 // needs no machining: said as such rather than simulated as an untouched bar.
@@ -57,6 +44,16 @@ bool InterpretResult::ok() const {
 
 InterpretResult interpret(std::string_view programText, const std::string& fileName,
                           const InterpreterOptions& options) {
+  std::vector<Move> moves;
+  MoveCollector collector(moves);
+  InterpretResult result = interpret(programText, fileName, options, collector);
+  moves.insert(moves.end(), result.toolpath.moves.begin(), result.toolpath.moves.end());  // an error's
+  result.toolpath.moves = std::move(moves);
+  return result;
+}
+
+InterpretResult interpret(std::string_view programText, const std::string& fileName,
+                          const InterpreterOptions& options, MoveSink& moves) {
   InterpretResult result;
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
@@ -66,25 +63,12 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
   if (status.ok()) status = refuseEmptyProgram(program, programText);
-  if (status.ok()) status = runProgram(program, options, result.toolpath, warnings, notes);
-  // The blocks are freed before compensation needs memory; the texts stay for the messages.
-  program.blocks = {};
-  program.programOf = {};
-  // The moves are made as programmed, in the work coordinate systems (G54–G59, G50); placed in
-  // the setup's frame, then G41/G42 and the tool offsets' shifts are applied, each rapid is
-  // given the path the machine makes, and the whole checked against the machine's travel.
-  std::vector<Move>& moves = result.toolpath.moves;
-  if (status.ok()) status = insertCorners(moves, warnings);
-  if (status.ok()) placeInSetupFrame(moves);
-  if (status.ok()) status = compensateNoseRadius(moves);
-  if (status.ok()) status = applyToolOffsets(moves);
-  if (status.ok() && options.control.rapidPath == RapidPath::NonLinear) splitRapidsIntoAxisLegs(moves, options.machine);
-  if (status.ok())  // the dog-legs' second legs count too
-    if (moves.size() > options.maxMoves) {  // at the line of the move past the limit
-      const Move& past = moves[options.maxMoves];
-      status = *moveLimitError(moves.size(), options.maxMoves, past.line, past.column);
-    }
-  if (status.ok() && options.machine.travel) status = checkTravel(moves, *options.machine.travel);
+  MovePipeline pipeline(options, moves, warnings);
+  if (status.ok()) {
+    status = runProgram(program, options, result.toolpath, pipeline, warnings, notes);
+    if (status.ok()) status = pipeline.finish();
+    else result.toolpath.moves = pipeline.abandon();
+  }
   // A diagnostic in the file it names: the program's own, or a subprogram's.
   const LineStarts programLines(programText);
   const auto diagnostic = [&](Severity severity, const Error& e) {

@@ -15,6 +15,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/execution/step_guard.hpp"
 #include "interp/move.hpp"
+#include "interp/move_sink.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/execution/work_frame.hpp"
 
@@ -23,6 +24,9 @@ namespace lathesim::interp {
 /// Moves a program may make before it is refused (InterpreterOptions::maxMoves): a million
 /// blocks and their dog-leg rapids pass; nested repeats (M98 P9999… four deep) do not.
 inline constexpr std::size_t kDefaultMaxMoves = 2'000'000;
+
+/// Moves the interpreter holds before it hands them on (InterpreterOptions::moveWindow).
+inline constexpr std::size_t kDefaultMoveWindow = 4096;
 
 struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
@@ -47,6 +51,8 @@ struct InterpreterOptions {
   std::map<int, double> macroVariables;  // common macro variables set before the run
                                          // (#100–#199, #500–#999)
   std::size_t maxMoves = kDefaultMaxMoves;  // more is an error at the block that passes it
+  std::size_t moveWindow = kDefaultMoveWindow;  // moves held before they are handed on, once the
+                                                // path can be cut there (execution/move_pipeline.hpp)
 };
 
 struct InterpretResult {
@@ -56,7 +62,16 @@ struct InterpretResult {
   bool ok() const;
 };
 
+/// The moves in `result.toolpath.moves`.
 InterpretResult interpret(std::string_view programText, const std::string& fileName,
                           const InterpreterOptions& options);
+
+/// The moves handed to `moves` as they are made, in order, each once nothing can change it:
+/// a long program never holds its whole toolpath (`result.toolpath` has everything else). A
+/// program that fails may have handed on moves before its error: the consumer drops them; the
+/// moves made before the error and not handed on are left in `result.toolpath.moves`, as
+/// their blocks made them (what `interpret` without a sink gives after those handed on).
+InterpretResult interpret(std::string_view programText, const std::string& fileName,
+                          const InterpreterOptions& options, MoveSink& moves);
 
 }  // namespace lathesim::interp

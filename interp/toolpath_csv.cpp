@@ -34,22 +34,26 @@ std::string csvNumber(double value) {
   return text;
 }
 
+std::string toolpathCsvHeader() { return std::string(kHeader) + '\n'; }
+
+std::string toolpathCsvRow(const Move& move) {
+  std::string row = fmt::format("{},{},{},{},{},{},{},", move.line, kindName(move.kind), csvNumber(diameterOf(move.from)),
+                                csvNumber(move.from.y()), csvNumber(diameterOf(move.to)), csvNumber(move.to.y()),
+                                csvNumber(move.feed));
+  if (isArc(move.kind)) row += csvNumber(diameterOf(move.center)) + ',' + csvNumber(move.center.y());
+  else row += ',';
+  row += ',' + csvNumber(move.timeS) + ',';
+  if (move.kind == MoveKind::Thread)
+    row += csvNumber(move.thread.startAngleDeg) + ',' + (move.spindleDirection == SpindleDirection::Clockwise ? "cw" : "ccw");
+  else
+    row += ',';
+  row += '\n';
+  return row;
+}
+
 void writeToolpathCsv(const Toolpath& toolpath, std::ostream& out) {
-  out << kHeader << '\n';
-  for (const Move& move : toolpath.moves) {
-    out << move.line << ',' << kindName(move.kind) << ',' << csvNumber(diameterOf(move.from)) << ','
-        << csvNumber(move.from.y()) << ',' << csvNumber(diameterOf(move.to)) << ',' << csvNumber(move.to.y())
-        << ',' << csvNumber(move.feed) << ',';
-    if (isArc(move.kind)) out << csvNumber(diameterOf(move.center)) << ',' << csvNumber(move.center.y());
-    else out << ',';
-    out << ',' << csvNumber(move.timeS) << ',';
-    if (move.kind == MoveKind::Thread)
-      out << csvNumber(move.thread.startAngleDeg) << ','
-          << (move.spindleDirection == SpindleDirection::Clockwise ? "cw" : "ccw");
-    else
-      out << ',';
-    out << '\n';
-  }
+  out << toolpathCsvHeader();
+  for (const Move& move : toolpath.moves) out << toolpathCsvRow(move);
 }
 
 std::vector<CsvRow> readToolpathCsv(std::istream& in) {

@@ -35,6 +35,11 @@ struct CsvRow {
 /// Writes the header and one row per move, in order.
 void writeToolpathCsv(const Toolpath& toolpath, std::ostream& out);
 
+/// The header line and one move's row, each with its newline, for moves written as they
+/// stream (interp/move_sink.hpp).
+std::string toolpathCsvHeader();
+std::string toolpathCsvRow(const Move& move);
+
 /// Reads what writeToolpathCsv wrote. Throws std::runtime_error on a missing header or a
 /// malformed row (golden files are trusted test input, so a bad one is a broken invariant).
 std::vector<CsvRow> readToolpathCsv(std::istream& in);

@@ -30,6 +30,24 @@ bool hasError(const std::vector<interp::Diagnostic>& diagnostics) {
   return false;
 }
 
+// All of `in`. A file is read in one piece at its size: a stream's buffer, grown by doubling
+// and then copied, would hold a long program's text up to three times over. A pipe has no size.
+std::string wholeText(std::ifstream& in) {
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size < 0 || !in) {
+    in.clear();
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), size);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return text;
+}
+
 // The TOML that defines tool `number`, for the error of a T word nothing defines.
 std::string toolDefinitionHint(int number) {
   return fmt::format(
@@ -73,6 +91,21 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
     }
   }
 }
+
+// Each move timed (interp/motion/cycle_time.hpp) on its way to the consumer.
+class TimedMoves final : public interp::MoveSink {
+ public:
+  TimedMoves(const interp::MachineLimits& machine, interp::MoveSink& next) : timer_(machine), next_(next) {}
+  void take(interp::Move move) override {
+    timer_.time(move);
+    next_.take(std::move(move));
+  }
+  const std::vector<interp::Error>& warnings() const { return timer_.warnings(); }
+
+ private:
+  interp::MoveTimer timer_;
+  interp::MoveSink& next_;
+};
 
 }  // namespace
 
@@ -121,6 +154,14 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
 }
 
 std::optional<Job> loadJob(const JobRequest& request) {
+  std::vector<interp::Move> moves;
+  interp::MoveCollector collector(moves);
+  std::optional<Job> job = loadJob(request, collector);
+  if (job) job->toolpath.moves = std::move(moves);
+  return job;
+}
+
+std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
   Job job{defaultSetup(), {}, {}, {}, {}, {}};
@@ -141,10 +182,7 @@ std::optional<Job> loadJob(const JobRequest& request) {
     std::cerr << interp::printable(program.string()) << ": error: cannot read the program file\n";
     return std::nullopt;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-
-  job.programText = text.str();
+  job.programText = wholeText(in);
   job.programLines = interp::LineStarts(job.programText);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
@@ -171,14 +209,15 @@ std::optional<Job> loadJob(const JobRequest& request) {
   options.toolDefinitionHint = toolDefinitionHint;
   options.programDirectories = request.programDirectories;
   options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());
-  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options);
+  TimedMoves timed(job.setup.machine, moves);
+  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options, timed);
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
     else if (d.severity == interp::Severity::Note) job.notes.push_back(std::move(d));
   job.toolpath = std::move(result.toolpath);
-  for (const interp::Error& w : interp::assignMoveTimes(job.toolpath, job.setup.machine)) {
+  for (const interp::Error& w : timed.warnings()) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
     print({job.warnings.back()});
   }

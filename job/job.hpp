@@ -11,12 +11,13 @@
 #include "interp/control/dialect.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/move.hpp"
+#include "interp/move_sink.hpp"
 
 namespace lathesim::job {
 
 struct Job {
   Setup setup;
-  interp::Toolpath toolpath;  // every move's timeS filled in
+  interp::Toolpath toolpath;  // every move's timeS filled in; no moves when loadJob handed them on
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   std::string programText;
@@ -56,5 +57,10 @@ struct JobRequest {
 /// (interp/text/stated_stock.hpp: a billet line or a stock comment, face at Z0, with a note),
 /// else the default setup's.
 std::optional<Job> loadJob(const JobRequest& request);
+
+/// The same, the moves timed and handed to `moves` as the program makes them (the job's
+/// toolpath has no moves): a long program is never held whole. A job with errors may have
+/// handed on moves before its error: the consumer drops them.
+std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves);
 
 }  // namespace lathesim::job

@@ -22,8 +22,7 @@ NoseComp noseCompWith(NoseSide side, const ToolOffset& offset) {
   return NoseComp{side, offset.radiusMm + offset.wearRadiusMm, offset.tip};
 }
 
-Status applyToolOffsets(std::vector<Move>& moves) {
-  RZ inForce(0, 0);  // the shift the tool stands under
+Status applyToolOffsets(std::vector<Move>& moves, RZ& inForce) {
   for (Move& move : moves) {
     if (move.kind == MoveKind::Dwell) {
       move.from += inForce;

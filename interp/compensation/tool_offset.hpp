@@ -40,10 +40,11 @@ NoseComp noseCompWith(NoseSide side, const ToolOffset& offset);
 
 /// Moves every move of `moves` by its offsetShift, as the machine does: a move ends at its
 /// programmed end plus its own offset's shift, and starts at its programmed start plus the
-/// shift the tool was under until then (the previous move's; none before the first). A
-/// changed offset therefore takes effect with the next move, which must be straight: an arc
-/// whose offset shift differs from the one in force is an error at its block. A dwell stays
-/// where the tool is.
-Status applyToolOffsets(std::vector<Move>& moves);
+/// shift the tool was under until then (the previous move's; `shiftInForce` before the first,
+/// zero at the program's start). A changed offset therefore takes effect with the next move,
+/// which must be straight: an arc whose offset shift differs from the one in force is an error
+/// at its block. A dwell stays where the tool is. `shiftInForce` is left as the last move's,
+/// for the moves that follow (the toolpath goes through in pieces: move_pipeline.hpp).
+Status applyToolOffsets(std::vector<Move>& moves, RZ& shiftInForce);
 
 }  // namespace lathesim::interp

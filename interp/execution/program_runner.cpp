@@ -1,6 +1,7 @@
 #include "interp/execution/program_runner.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -25,11 +26,12 @@ namespace {
 
 class ProgramRunner {
  public:
-  ProgramRunner(Program& program, const InterpreterOptions& options, Toolpath& toolpath, std::vector<Error>& warnings,
-                std::vector<Error>& notes)
+  ProgramRunner(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
+                std::vector<Error>& warnings, std::vector<Error>& notes)
       : program_(program),
         options_(options),
         toolpath_(toolpath),
+        moves_(moves),
         warnings_(warnings),
         notes_(notes),
         calls_(program),
@@ -54,7 +56,8 @@ class ProgramRunner {
   Result<std::size_t> callMacro(std::size_t index, const std::vector<Word>& words);
   Result<std::size_t> giveBack(const SubprogramReturn& giveBack, std::size_t index);
   void listStop(std::size_t index, const ParsedBlock& words);
-  void listPartsCatcher(std::size_t index, const ParsedBlock& words);
+  void notePartsCatcher(std::size_t index, const ParsedBlock& words);
+  Status passBlockMoves();
   std::pair<int, int> listedAt(std::size_t index, int column) const;
   Status loadProgram(int programNumber, std::string_view code, int column, std::size_t caller);
   void warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut);
@@ -74,6 +77,10 @@ class ProgramRunner {
   Program& program_;
   const InterpreterOptions& options_;
   Toolpath& toolpath_;
+  MovePipeline& moves_;
+  std::vector<Move> blockMoves_;  // the moves of the block that ran last, not yet in moves_
+  std::optional<PartsCatcherCommand> catcher_;  // its parts catcher command, not yet listed
+  std::size_t movesMade_ = 0;  // by the blocks, before corners and dog-legs
   std::vector<Error>& warnings_;
   std::vector<Error>& notes_;
   ModalState state_;
@@ -92,6 +99,7 @@ Status ProgramRunner::run() {
     const std::size_t index = next;
     auto after = runBlock(index);
     if (!after.ok()) return after.error();
+    if (auto passed = passBlockMoves(); !passed.ok()) return passed.error();
     next = after.value();
   }
   if (!state_.ended) {
@@ -192,10 +200,11 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   for (Error& warning : done.warnings) warn(std::move(warning), index);
   const ProgramFlow flow = done.flow;
   state_ = std::move(done.state);
-  listPartsCatcher(index, words);  // before the block's moves: it acts before them
-  toolpath_.moves.insert(toolpath_.moves.end(), done.moves.begin(), done.moves.end());
+  notePartsCatcher(index, words);
+  movesMade_ += done.moves.size();
+  blockMoves_ = std::move(done.moves);
   const ProgramBlock& made = program_.blocks[index];
-  if (auto tooMany = moveLimitError(toolpath_.moves.size(), options_.maxMoves, made.line, made.column)) return *tooMany;
+  if (auto tooMany = moveLimitError(movesMade_, options_.maxMoves, made.line, made.column)) return *tooMany;
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
   listStop(index, words);
   if (flow.call) {
@@ -252,12 +261,27 @@ void ProgramRunner::listStop(std::size_t index, const ParsedBlock& words) {
   toolpath_.stops.push_back({line, column, stop->text});
 }
 
-// The parts catcher's commands are listed with the moves made before them.
-void ProgramRunner::listPartsCatcher(std::size_t index, const ParsedBlock& words) {
+// The parts catcher's commands are listed with the moves made before them (passBlockMoves).
+void ProgramRunner::notePartsCatcher(std::size_t index, const ParsedBlock& words) {
   const auto catcher = words.mCode(MGroup::PartsCatcher);
   if (!catcher) return;
   const auto [line, column] = listedAt(index, catcher->column);
-  toolpath_.partsCatcher.push_back({toolpath_.moves.size(), line, column, catcher->text, catcher->number != 37});
+  catcher_ = PartsCatcherCommand{0, line, column, catcher->text, catcher->number != 37};
+}
+
+// The moves of the block that ran, into the pipeline; a parts catcher command of the block
+// acts before them, so it is listed with the toolpath's moves before them: the pipeline first
+// lets go what it holds, so that the count is of the moves as they end up (dog-legs and
+// corners counted). Inside a G41/G42 chain, which cannot be cut, the moves held count as made.
+Status ProgramRunner::passBlockMoves() {
+  if (catcher_) {
+    if (auto released = moves_.release(true); !released.ok()) return released;
+    catcher_->movesBefore = moves_.passed() + moves_.held();
+    toolpath_.partsCatcher.push_back(*std::exchange(catcher_, std::nullopt));
+  }
+  moves_.add(blockMoves_);
+  blockMoves_.clear();
+  return moves_.release();
 }
 
 Result<std::size_t> ProgramRunner::giveBack(const SubprogramReturn& giveBack, std::size_t index) {
@@ -315,9 +339,9 @@ std::optional<Error> moveLimitError(std::size_t moves, std::size_t maxMoves, int
                            maxMoves)};
 }
 
-Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
+Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
                   std::vector<Error>& warnings, std::vector<Error>& notes) {
-  return ProgramRunner(program, options, toolpath, warnings, notes).run();
+  return ProgramRunner(program, options, toolpath, moves, warnings, notes).run();
 }
 
 }  // namespace lathesim::interp

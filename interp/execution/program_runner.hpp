@@ -12,16 +12,18 @@
 #include <optional>
 #include <vector>
 
+#include "interp/execution/move_pipeline.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/result.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp {
 
-/// Runs `program`, appending its moves to `toolpath`, its warnings to `warnings` (each once,
-/// however often its block runs) and its notes (a macro's #3006 stops) to `notes`. A block's
-/// read error is reported when execution reaches it.
-Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath,
+/// Runs `program`, handing its moves to `moves` block by block (the caller finishes it), its
+/// cycle starts, stops and parts catcher commands to `toolpath`, its warnings to `warnings`
+/// (each once, however often its block runs) and its notes (a macro's #3006 stops) to
+/// `notes`. A block's read error is reported when execution reaches it.
+Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
                   std::vector<Error>& warnings, std::vector<Error>& notes);
 
 /// When `moves` passes `maxMoves` (InterpreterOptions::maxMoves), the error at `line`,

@@ -146,23 +146,24 @@ std::optional<double> moveTimeS(const Move& move, const MachineLimits& machine) 
   return perRevolutionTimeS(move, machine);
 }
 
+void MoveTimer::time(Move& move) {
+  const std::optional<double> time = moveTimeS(move, machine_);
+  move.timeS = time.value_or(0.0);
+  spindle_.place(move, machine_);
+  if (time || move.block == lastWarnedBlock_) return;
+  lastWarnedBlock_ = move.block;
+  const char* why = move.spindleOn ? (move.spindleMode == SpindleMode::Rpm ? "at S0" : "at G96 S0")
+                                   : "with the spindle stopped (M05, or no M03/M04 yet)";
+  const char* what = move.kind == MoveKind::Thread ? "a thread cut (one lead per revolution) "
+                                                   : "a feed in mm per revolution (G99) ";
+  warnings_.push_back({move.line, move.column,
+                       std::string(what) + why + " never moves on a machine; its time is counted as 0 s"});
+}
+
 std::vector<Error> assignMoveTimes(Toolpath& toolpath, const MachineLimits& machine) {
-  std::vector<Error> warnings;
-  int lastWarnedBlock = -1;
-  for (Move& move : toolpath.moves) {
-    const std::optional<double> time = moveTimeS(move, machine);
-    move.timeS = time.value_or(0.0);
-    if (time || move.block == lastWarnedBlock) continue;
-    lastWarnedBlock = move.block;
-    const char* why = move.spindleOn ? (move.spindleMode == SpindleMode::Rpm ? "at S0" : "at G96 S0")
-                                     : "with the spindle stopped (M05, or no M03/M04 yet)";
-    const char* what = move.kind == MoveKind::Thread ? "a thread cut (one lead per revolution) "
-                                                     : "a feed in mm per revolution (G99) ";
-    warnings.push_back({move.line, move.column,
-                        std::string(what) + why + " never moves on a machine; its time is counted as 0 s"});
-  }
-  assignSpindleAngles(toolpath, machine);  // the angles follow from the times
-  return warnings;
+  MoveTimer timer(machine);
+  for (Move& move : toolpath.moves) timer.time(move);
+  return timer.warnings();
 }
 
 double cycleTimeS(const Toolpath& toolpath) {

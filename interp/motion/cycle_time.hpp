@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "interp/control/machine_limits.hpp"
+#include "interp/motion/spindle_angle.hpp"
 #include "interp/move.hpp"
 #include "interp/result.hpp"
 
@@ -26,9 +27,25 @@ namespace lathesim::interp {
 /// The time of one move, in seconds; nullopt for a G99 feed that never moves (spindle stopped).
 std::optional<double> moveTimeS(const Move& move, const MachineLimits& machine);
 
-/// Fills every move's timeS, and then its spindleAngleDeg (spindle_angle.hpp). Returns a
-/// warning per block whose G99 feeds or thread cuts stand still for want of spindle
-/// revolutions (those moves get timeS = 0).
+/// Times moves one after another in program order, as they stream from the interpreter:
+/// each move's timeS, and then its spindleAngleDeg (spindle_angle.hpp), which follows from
+/// the times of the moves before it.
+class MoveTimer {
+ public:
+  explicit MoveTimer(const MachineLimits& machine) : machine_(machine) {}
+  void time(Move& move);
+  /// A warning per block whose G99 feeds or thread cuts stand still for want of spindle
+  /// revolutions (those moves get timeS = 0), in the order met.
+  const std::vector<Error>& warnings() const { return warnings_; }
+
+ private:
+  MachineLimits machine_;
+  SpindleAngleClock spindle_;
+  std::vector<Error> warnings_;
+  int lastWarnedBlock_ = -1;
+};
+
+/// Times every move of `toolpath` (MoveTimer); returns its warnings.
 std::vector<Error> assignMoveTimes(Toolpath& toolpath, const MachineLimits& machine);
 
 /// The sum of the moves' times (s).

@@ -50,16 +50,13 @@ double spindleRevolutions(const Move& move, const MachineLimits& machine) {
   return meanRpm * move.timeS / kSecondsPerMinute;
 }
 
-void assignSpindleAngles(Toolpath& toolpath, const MachineLimits& machine) {
-  double angle = 0.0;  // about +Z
-  for (Move& move : toolpath.moves) {
-    const double sense = move.spindleDirection == SpindleDirection::Clockwise ? 1.0 : -1.0;
-    if (move.kind == MoveKind::Thread) angle = sense * move.thread.startAngleDeg;
-    angle = std::fmod(angle, 360.0);
-    if (angle < 0) angle += 360.0;
-    move.spindleAngleDeg = angle;
-    angle += sense * 360.0 * spindleRevolutions(move, machine);
-  }
+void SpindleAngleClock::place(Move& move, const MachineLimits& machine) {
+  const double sense = move.spindleDirection == SpindleDirection::Clockwise ? 1.0 : -1.0;
+  if (move.kind == MoveKind::Thread) angleDeg_ = sense * move.thread.startAngleDeg;
+  angleDeg_ = std::fmod(angleDeg_, 360.0);
+  if (angleDeg_ < 0) angleDeg_ += 360.0;
+  move.spindleAngleDeg = angleDeg_;
+  angleDeg_ += sense * 360.0 * spindleRevolutions(move, machine);
 }
 
 }  // namespace lathesim::interp

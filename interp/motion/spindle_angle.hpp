@@ -18,7 +18,14 @@ namespace lathesim::interp {
 /// The spindle's revolutions during `move` (≥ 0; its timeS must be set).
 double spindleRevolutions(const Move& move, const MachineLimits& machine);
 
-/// Fills every move's spindleAngleDeg, in program order (times must be assigned).
-void assignSpindleAngles(Toolpath& toolpath, const MachineLimits& machine);
+/// Where the spindle stands, move after move in program order (times must be assigned).
+class SpindleAngleClock {
+ public:
+  /// Sets `move.spindleAngleDeg` and turns the spindle through the move.
+  void place(Move& move, const MachineLimits& machine);
+
+ private:
+  double angleDeg_ = 0.0;  // about +Z; the program starts at 0°
+};
 
 }  // namespace lathesim::interp

@@ -1,5 +1,6 @@
 #include "interp/text/program.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include <utility>
@@ -94,6 +95,11 @@ std::vector<ReadNote> appendBlocks(Program& program, int source) {
   const bool blockDelete = text.blockDelete;
   const MachineMCodes machine = text.machine;
   BlockReader reader(text.text);
+  // Room for a block a line, the usual count, made at once: grown by doubling, the vector of a
+  // million blocks would briefly hold its old and new copies, twice its size and more.
+  const std::size_t lines = static_cast<std::size_t>(std::count(text.text.begin(), text.text.end(), '\n')) + 1;
+  program.blocks.reserve(program.blocks.size() + lines);
+  program.programOf.reserve(program.programOf.size() + lines);
   int currentProgram = -1;
   std::vector<ReadNote> machineNotes;  // each machine M code, where it first appears
   for (;;) {

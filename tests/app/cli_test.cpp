@@ -345,6 +345,27 @@ TEST(Cli, ExpandPrintsExactlyTheGoldenToolpath) {
   EXPECT_EQ(lines.size(), 1 + goldenToolpath(kPart).size());  // nothing else on stdout
 }
 
+// expand streams its rows while the program runs, but stdout gets them only when the whole
+// program has run: an error after many thousand moves prints the error, nothing on stdout,
+// exit 1; the same program without the bad block prints every row.
+TEST(Cli, ExpandPrintsNothingWhenTheProgramFailsLate) {
+  TempDir dir("expand-late-error");
+  constexpr int kBlocks = 30000;  // several of the interpreter's windows of moves
+  std::string program = "G99 M03 S800\nG00 X40 Z2\n";
+  for (int i = 0; i < kBlocks; ++i) program += (i % 2 ? "G01 X40 Z-" : "G01 X42 Z-") + std::to_string(i % 50) + " F0.1\n";
+  writeFile(dir.path() / "good.nc", program + "M30\n");
+  writeFile(dir.path() / "bad.nc", program + "G01 X40 Z-1 K3\nM30\n");
+
+  const Outcome good = lathesim({"expand", (dir.path() / "good.nc").string()}, dir.path());
+  ASSERT_EQ(good.status, 0) << good.err;
+  EXPECT_EQ(linesOf(good.out).size(), 1u + 2u + kBlocks);  // the header, the rapid in two legs, the cuts
+
+  const Outcome bad = lathesim({"expand", (dir.path() / "bad.nc").string()}, dir.path());
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_TRUE(bad.out.empty()) << bad.out.substr(0, 200);
+  EXPECT_NE(bad.err.find("bad.nc:" + std::to_string(kBlocks + 3) + ":"), std::string::npos) << bad.err;
+}
+
 // An endless Macro B loop stops at the step limit, which --max-steps sets over [macro]
 // max_steps; the error names the loop's WHILE.
 TEST(Cli, MaxStepsStopsAnEndlessLoopAtItsWhile) {

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -215,6 +216,54 @@ TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
       EXPECT_NEAR(simulated.stubVolumeMm3, expected.partedOff->stubVolumeMm3, tolerance);
     }
   }
+}
+
+// The toolpath streamed is the toolpath held (interp/execution/move_pipeline.hpp): passed on
+// in pieces as small as the pipeline may cut (after every move it can) or held whole, the
+// part gives the same CSV byte for byte, the same parts catcher commands and the same
+// diagnostics; and the job that hands its moves to a sink as loadJob makes them gives the
+// same CSV as the job that collects them.
+TEST_P(Part, StreamsTheSameToolpathAsItHolds) {
+  const std::string part = GetParam();
+  const job::Setup setup = loadPartSetup(part);
+  const std::string text = readFile(kPartsDir / part / "program.nc");
+  const auto interpretIn = [&](std::size_t window) {
+    interp::InterpreterOptions options = job::interpreterOptionsOf(setup);
+    options.moveWindow = window;
+    interp::InterpretResult result = interp::interpret(text, "program.nc", options);
+    if (result.ok()) (void)interp::assignMoveTimes(result.toolpath, setup.machine);
+    return result;
+  };
+  const auto csvOf = [](const interp::Toolpath& toolpath) {
+    std::ostringstream csv;
+    interp::writeToolpathCsv(toolpath, csv);
+    return csv.str();
+  };
+  const interp::InterpretResult whole = interpretIn(std::numeric_limits<std::size_t>::max());
+  for (const std::size_t window : {std::size_t{1}, std::size_t{4}}) {
+    SCOPED_TRACE(testing::Message() << part << " in pieces of " << window);
+    const interp::InterpretResult pieces = interpretIn(window);
+    ASSERT_EQ(pieces.diagnostics.size(), whole.diagnostics.size());
+    for (std::size_t i = 0; i < whole.diagnostics.size(); ++i)
+      EXPECT_EQ(interp::format(pieces.diagnostics[i]), interp::format(whole.diagnostics[i]));
+    if (!whole.ok()) continue;
+    EXPECT_EQ(csvOf(pieces.toolpath), csvOf(whole.toolpath));
+    ASSERT_EQ(pieces.toolpath.partsCatcher.size(), whole.toolpath.partsCatcher.size());
+    for (std::size_t i = 0; i < whole.toolpath.partsCatcher.size(); ++i)
+      EXPECT_EQ(pieces.toolpath.partsCatcher[i].movesBefore, whole.toolpath.partsCatcher[i].movesBefore);
+  }
+
+  const job::JobRequest request{kPartsDir / part / "program.nc", kPartsDir / part / "setup.toml", {}, {}, {}};
+  const std::optional<job::Job> held = job::loadJob(request);
+  std::vector<interp::Move> streamedMoves;
+  interp::MoveCollector sink(streamedMoves);
+  const std::optional<job::Job> streamed = job::loadJob(request, sink);
+  ASSERT_EQ(held.has_value(), streamed.has_value());
+  if (!held) return;
+  EXPECT_TRUE(streamed->toolpath.moves.empty());
+  interp::Toolpath fromSink = streamed->toolpath;
+  fromSink.moves = std::move(streamedMoves);
+  EXPECT_EQ(csvOf(fromSink), csvOf(held->toolpath));
 }
 
 std::string testName(const testing::TestParamInfo<std::string>& info) {

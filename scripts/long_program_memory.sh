@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Peak memory of `lathesim expand` on long programs: 100 000, 300 000 and 1 000 000 one-move
+# G01 blocks, and 1 000 000 blocks with a G71/G70 cycle and a subprogram called every 1000
+# blocks. Prints each program's size, blocks, CSV rows, wall time and peak RSS (max resident
+# set, /usr/bin/time -v), and the peak a block above the 100 000-block program's.
+# Usage: scripts/long_program_memory.sh [LATHESIM]   (default build/lathesim)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+lathesim=${1:-build/lathesim}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+straight() {  # blocks
+  awk -v n="$1" 'BEGIN {
+    print "G99 M03 S800"; print "G00 X40 Z2"
+    for (i = 0; i < n; i++) printf "G01 X%d Z-%d F0.1\n", i % 2 ? 40 : 42, i % 50
+    print "M30" }'
+}
+cycles_and_calls() {  # blocks
+  awk -v n="$1" 'BEGIN {
+    print "G99 M03 S800"; print "G00 X44 Z2"
+    print "G71 U1.5 R0.5"; print "G71 P10 Q20 U0.4 W0.1 F0.25"
+    print "N10 G00 X20"; print "G01 Z-10 F0.1"; print "X30 Z-20"; print "N20 X44"
+    print "G70 P10 Q20"; print "G00 X44 Z2"
+    for (i = 0; i < n - 16; i++)
+      if (i % 1000 == 999) print "M98 P21000"
+      else printf "G01 X%d Z-%d F0.1\n", i % 2 ? 40 : 42, i % 50
+    print "M30"; print "O1000"; print "G01 U-2. F0.1"; print "G00 U2."; print "M99" }'
+}
+
+measure() {  # label, program file
+  local out
+  /usr/bin/time -v "$lathesim" expand "$2" >"$tmp/out.csv" 2>"$tmp/time.txt" || { tail -3 "$tmp/time.txt"; exit 1; }
+  out=$(awk -F': ' '/Maximum resident/ {rss = $2} /Elapsed/ {wall = $2} END {print rss, wall}' "$tmp/time.txt")
+  printf '%-22s %5.0f MB program %8d blocks %8d rows  %s s  peak %6.1f MB\n' "$1" \
+    "$(( $(stat -c %s "$2") ))e-6" "$(wc -l <"$2")" "$(( $(wc -l <"$tmp/out.csv") - 1 ))" \
+    "$(echo "$out" | cut -d' ' -f2)" "$(echo "$out" | awk '{print $1 / 1024}')"
+}
+
+for n in 100000 300000 1000000; do
+  straight $n >"$tmp/straight-$n.nc"
+  measure "$n one-move blocks" "$tmp/straight-$n.nc"
+done
+cycles_and_calls 1000000 >"$tmp/calls.nc"
+measure "1M with G71 and M98" "$tmp/calls.nc"
