@@ -2,6 +2,8 @@
 // G71 (turning) and G72 (facing) stock removal against a finishing contour: the parameters
 // both share and the two expansions. See g71_cycle.cpp and g72_cycle.cpp for the moves.
 
+#include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "interp/cycles/contour.hpp"
@@ -20,6 +22,8 @@ struct RoughingParams {
   bool retractAtFeed = true;  // GSK makes the 45° retract at cutting feed; Fanuc-style: rapid
   bool typeII = false;        // the ns block programs both axes (G71: X(U) and Z(W), W0
                               // included; G72: Z(W) and X(U)): pockets allowed
+  std::size_t maxLegs = std::numeric_limits<std::size_t>::max();  // more: refused at the ns
+                                                                    // block (the move limit)
 };
 
 /// The moves of G71 from the cycle start `start` (A): roughing passes, the semi-finishing pass

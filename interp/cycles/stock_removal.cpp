@@ -55,7 +55,8 @@
 // Errors, each at the contour block to blame (the ns block for Δd and e; line 0 for an
 // empty contour): empty contour; Δd ≤ 0; e < 0; ns block an arc; ns block not moving in X;
 // type I: a block moving X back toward B, or an arc turning in X inside its span; both
-// types: a block moving Z against the earlier blocks, or an arc turning in Z inside its span.
+// types: a block moving Z against the earlier blocks, or an arc turning in Z inside its span;
+// more legs than `maxLegs` (the move limit), found before they fill memory.
 // "Monotonic in X" for type I means: after the ns block, X moves only away from B, toward
 // A's side; the ns block itself (the approach A → B) is exempt.
 
@@ -134,15 +135,21 @@ std::optional<Error> contourProblem(const Contour& contour, const RoughingParams
   return std::nullopt;
 }
 
-/// Builds the leg list, leaving out straight legs of no length.
+/// Builds the leg list, leaving out straight legs of no length. Past `maxLegs` legs it keeps
+/// no more and is `full()`: the cycle is refused, and an absurd contour or depth (levels of
+/// 4 mm over 10²¹ mm) must not fill memory first.
 class LegList {
  public:
-  explicit LegList(const RZ& at) : at_(at) {}
+  LegList(const RZ& at, std::size_t maxLegs) : at_(at), maxLegs_(maxLegs) {}
 
   const RZ& at() const { return at_; }
+  bool full() const { return overflowed_ || legs_.size() > maxLegs_; }
+  std::size_t maxLegs() const { return maxLegs_; }
+  /// More levels are coming than legs allowed: full whatever was kept.
+  void overflow() { overflowed_ = true; }
 
   void straight(MoveKind kind, const RZ& to, int step) {
-    if ((to - at_).norm() > kTolMm) legs_.push_back({kind, at_, to, step});
+    if (!full() && (to - at_).norm() > kTolMm) legs_.push_back({kind, at_, to, step});
     at_ = to;
   }
 
@@ -153,16 +160,34 @@ class LegList {
       straight(MoveKind::Feed, to, step);
       return;
     }
-    if ((to - at_).norm() > kTolMm) legs_.push_back({segment.kind, at_, to, step, segment.center});
+    if (!full() && (to - at_).norm() > kTolMm) legs_.push_back({segment.kind, at_, to, step, segment.center});
     at_ = to;
   }
 
-  std::vector<CycleLeg> take() && { return std::move(legs_); }
+  /// The legs, or nullopt when there were more than `maxLegs`.
+  std::optional<std::vector<CycleLeg>> take() && {
+    if (full()) return std::nullopt;
+    return std::move(legs_);
+  }
 
  private:
   RZ at_;
+  std::size_t maxLegs_;
+  bool overflowed_ = false;
   std::vector<CycleLeg> legs_;
 };
+
+/// Whether level `k` may be cut: it is short of the depth to cut, and the list can take it.
+/// Each level adds at least one leg, so level maxLegs + 1 overflows the list without being
+/// built (a Δd below a far coordinate's precision would never reach the depth).
+bool nextLevel(long long k, double depthMm, double depthToCutMm, LegList& legs) {
+  if (!(k * depthMm < depthToCutMm - kTolMm) || legs.full()) return false;
+  if (static_cast<double>(k) > static_cast<double>(legs.maxLegs())) {
+    legs.overflow();
+    return false;
+  }
+  return true;
+}
 
 /// Where the level X = `levelMm` last meets the rough contour after the ns block, or C′ moved
 /// onto the level when it never does.
@@ -195,16 +220,16 @@ void semiFinishAndReturn(const Plan& plan, LegList& legs, int infeedStep) {
   legs.straight(MoveKind::Rapid, plan.start, 8);
 }
 
-std::vector<CycleLeg> typeOneLegs(const Plan& plan) {
+std::optional<std::vector<CycleLeg>> typeOneLegs(const Plan& plan) {
   const RZ& shiftedStart = plan.rough.front().from;
   const RZ& b = plan.rough.front().to;
   const double depthMm = plan.params->depthMm;
   const double retractMm = plan.params->retractMm;
   const double depthToCutMm = plan.stepDir * (b.x() - shiftedStart.x());
-  LegList legs(plan.start);
+  LegList legs(plan.start, plan.params->maxLegs);
   legs.straight(MoveKind::Rapid, shiftedStart, 1);
   int infeedStep = 2;
-  for (int k = 1; k * depthMm < depthToCutMm - kTolMm; ++k) {
+  for (long long k = 1; nextLevel(k, depthMm, depthToCutMm, legs); ++k) {
     const double levelMm = shiftedStart.x() + plan.stepDir * k * depthMm;
     legs.straight(plan.infeedKind, RZ(levelMm, shiftedStart.y()), infeedStep);
     const RZ end = typeOneLevelEnd(plan.rough, levelMm);
@@ -287,16 +312,16 @@ class TypeTwo {
         b_(plan.rough.front().to),
         tail_(plan.rough.begin() + 1, plan.rough.end()),
         swappedTail_(swappedAxes(tail_)),
-        legs_(plan.start) {
+        legs_(plan.start, plan.params->maxLegs) {
     for (auto it = tail_.rbegin(); it != tail_.rend(); ++it) backwards_.push_back(reversed(*it));
   }
 
-  std::vector<CycleLeg> legs() && {
+  std::optional<std::vector<CycleLeg>> legs() && {
     const RoughingParams& params = *plan_.params;
     legs_.straight(MoveKind::Rapid, shiftedStart_, 1);
     int infeedStep = 2;
     const double deepestMm = deepestDepthMm();
-    for (int k = 1; k * params.depthMm < deepestMm - kTolMm; ++k) {
+    for (long long k = 1; nextLevel(k, params.depthMm, deepestMm, legs_); ++k) {
       const double levelMm = xAtDepth(k * params.depthMm);
       const double previousMm = xAtDepth((k - 1) * params.depthMm);
       for (const Interval& interval : intervals(levelMm)) {
@@ -443,7 +468,7 @@ class TypeTwo {
   bool inFirstRegion_ = true;
 };
 
-std::vector<CycleLeg> typeTwoLegs(const Plan& plan) { return TypeTwo(plan).legs(); }
+std::optional<std::vector<CycleLeg>> typeTwoLegs(const Plan& plan) { return TypeTwo(plan).legs(); }
 
 }  // namespace
 
@@ -486,7 +511,14 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
                   ns.kind == MoveKind::Rapid ? MoveKind::Rapid : MoveKind::Feed,
                   params.retractAtFeed ? MoveKind::Feed : MoveKind::Rapid,
                   &params};
-  return params.typeII ? typeTwoLegs(plan) : typeOneLegs(plan);
+  auto legs = params.typeII ? typeTwoLegs(plan) : typeOneLegs(plan);
+  if (!legs) {
+    return errorAt(ns, fmt::format("{} would make more than {} moves (the limit) roughing this contour {:g} mm a "
+                                   "level: check the contour's {} coordinates and the depth of cut Δd; if it is "
+                                   "meant, raise the limit with --max-moves or [sim] max_moves",
+                                   cycle, params.maxLegs, params.depthMm, names.stepAxis));
+  }
+  return std::move(*legs);
 }
 
 }  // namespace lathesim::interp
