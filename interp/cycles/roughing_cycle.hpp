@@ -2,6 +2,7 @@
 // G71 (turning) and G72 (facing) stock removal against a finishing contour: the parameters
 // both share and the two expansions. See g71_cycle.cpp and g72_cycle.cpp for the moves.
 
+#include <cstddef>
 #include <vector>
 
 #include "interp/cycles/contour.hpp"
@@ -9,6 +10,9 @@
 #include "interp/result.hpp"
 
 namespace lathesim::interp {
+
+/// The most troughs a Haas roughs in one G71/G72 (its operator's manual, "Troughs").
+inline constexpr std::size_t kHaasMaxTroughs = 10;
 
 struct RoughingParams {
   double depthMm = 0;         // Δd: cut depth per pass (G71: radius, in X; G72: in Z), > 0
@@ -20,6 +24,9 @@ struct RoughingParams {
   bool retractAtFeed = true;  // GSK makes the 45° retract at cutting feed; Fanuc-style: rapid
   bool typeII = false;        // the ns block programs both axes (G71: X(U) and Z(W), W0
                               // included; G72: Z(W) and X(U)): pockets allowed
+  bool haasTroughs = false;   // Haas: a contour with troughs (type I or II) is roughed region by
+                              // region, the material above the troughs first, then each trough
+                              // along Z (stock_removal.cpp); at most kHaasMaxTroughs of them
 };
 
 /// The moves of G71 from the cycle start `start` (A): roughing passes, the semi-finishing pass

@@ -71,6 +71,7 @@
 #include <fmt/format.h>
 
 #include "interp/cycles/contour_geometry.hpp"
+#include "interp/cycles/contour_troughs.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -279,10 +280,55 @@ struct Interval {
   double s0, s1;
 };
 
+/// One stretch of one level to cut.
+struct LevelCut {
+  int level;  // k: the level lies k·Δd deep
+  Interval interval;
+};
+
+/// How the pocket engine orders and ends its cuts.
+struct PocketStyle {
+  bool byRegion = false;    // Haas: region by region (the cut above each stretch first, then the
+                            // stretches below it in Z order), else level by level (Fanuc/GSK)
+  bool escapeAt45 = false;  // Haas type I: leave each stretch by the 45° retract of e, else
+                            // follow the contour up and back off e in X (type II)
+};
+
+/// The cuts in region order: each stretch (its level's k) lies under exactly one stretch of
+/// level k − 1 (the material is connected upward); visiting that tree depth first, children in
+/// Z order, cuts the region reached from Z_A′ (the material above every trough) down to its
+/// bottom first, then each trough, in the order of Z, level by level down to its own bottom
+/// (a trough holding troughs of its own: its common part first, then those in Z order).
+std::vector<LevelCut> regionOrder(const std::vector<LevelCut>& byLevel) {
+  std::vector<std::vector<std::size_t>> children(byLevel.size());
+  std::vector<std::size_t> roots;
+  for (std::size_t i = 0; i < byLevel.size(); ++i) {
+    const Interval& below = byLevel[i].interval;
+    std::optional<std::size_t> parent;
+    for (std::size_t j = 0; j < i && !parent; ++j) {
+      const Interval& above = byLevel[j].interval;
+      if (byLevel[j].level == byLevel[i].level - 1 && above.s0 <= below.s0 + 1e-6 && below.s1 <= above.s1 + 1e-6) {
+        parent = j;
+      }
+    }
+    (parent ? children[*parent] : roots).push_back(i);
+  }
+  std::vector<LevelCut> ordered;
+  std::vector<std::size_t> stack(roots.rbegin(), roots.rend());
+  while (!stack.empty()) {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    ordered.push_back(byLevel[i]);
+    stack.insert(stack.end(), children[i].rbegin(), children[i].rend());
+  }
+  return ordered;
+}
+
 class TypeTwo {
  public:
-  explicit TypeTwo(const Plan& plan)
+  TypeTwo(const Plan& plan, PocketStyle style)
       : plan_(plan),
+        style_(style),
         shiftedStart_(plan.rough.front().from),
         b_(plan.rough.front().to),
         tail_(plan.rough.begin() + 1, plan.rough.end()),
@@ -292,24 +338,22 @@ class TypeTwo {
   }
 
   std::vector<CycleLeg> legs() && {
-    const RoughingParams& params = *plan_.params;
+    const double depthMm = plan_.params->depthMm;
     legs_.straight(MoveKind::Rapid, shiftedStart_, 1);
     int infeedStep = 2;
-    const double deepestMm = deepestDepthMm();
-    for (int k = 1; k * params.depthMm < deepestMm - kTolMm; ++k) {
-      const double levelMm = xAtDepth(k * params.depthMm);
-      const double previousMm = xAtDepth((k - 1) * params.depthMm);
-      for (const Interval& interval : intervals(levelMm)) {
-        if (interval.s0 <= kTolMm) {
-          returnToStartZ();
-          legs_.straight(plan_.infeedKind, RZ(levelMm, shiftedStart_.y()), infeedStep);
-        } else {
-          enterPocket(levelMm, previousMm, interval.s0);
-        }
-        infeedStep = 6;
-        cutAndEscape(levelMm, previousMm, interval.s1);
-        inFirstRegion_ = interval.s0 <= kTolMm;
+    for (const LevelCut& cut : cuts()) {
+      const Interval& interval = cut.interval;
+      const double levelMm = xAtDepth(cut.level * depthMm);
+      const double previousMm = xAtDepth((cut.level - 1) * depthMm);
+      if (interval.s0 <= kTolMm) {
+        returnToStartZ();
+        legs_.straight(plan_.infeedKind, RZ(levelMm, shiftedStart_.y()), infeedStep);
+      } else {
+        enterPocket(levelMm, previousMm, interval.s0);
       }
+      infeedStep = 6;
+      cutAndEscape(levelMm, previousMm, interval);
+      inFirstRegion_ = interval.s0 <= kTolMm;
     }
     returnToStartZ();
     semiFinishAndReturn(plan_, legs_, infeedStep);
@@ -321,6 +365,18 @@ class TypeTwo {
   double zOf(double s) const { return shiftedStart_.y() + plan_.cutDir * s; }
   double depthOf(double xMm) const { return plan_.stepDir * (xMm - shiftedStart_.x()); }
   double xAtDepth(double depthMm) const { return shiftedStart_.x() + plan_.stepDir * depthMm; }
+
+  /// Every stretch of every level, level by level (each level's in cutting order), or in region
+  /// order.
+  std::vector<LevelCut> cuts() const {
+    const double depthMm = plan_.params->depthMm;
+    const double deepestMm = deepestDepthMm();
+    std::vector<LevelCut> byLevel;
+    for (int k = 1; k * depthMm < deepestMm - kTolMm; ++k) {
+      for (const Interval& interval : intervals(xAtDepth(k * depthMm))) byLevel.push_back({k, interval});
+    }
+    return style_.byRegion ? regionOrder(byLevel) : byLevel;
+  }
 
   double deepestDepthMm() const {
     double deepest = depthOf(b_.x());
@@ -415,13 +471,24 @@ class TypeTwo {
     legs_.straight(MoveKind::Feed, entry, 6);
   }
 
-  /// Along the level to `s1`, up the contour to the previous level, and back off e in X.
-  void cutAndEscape(double levelMm, double previousMm, double s1) {
+  /// Along the level to the stretch's end, then up the contour to the previous level and back
+  /// off e in X; or (escapeAt45) back off e in X and in Z at once, no further back in Z than
+  /// where the stretch began (a trough narrower than e).
+  void cutAndEscape(double levelMm, double previousMm, const Interval& interval) {
+    const double s1 = interval.s1;
+    const double retractMm = plan_.params->retractMm;
     std::optional<Crossing> exit;
     for (const Crossing& crossing : crossings(levelMm)) {
       if (std::abs(crossing.s - s1) <= kTolMm) exit = crossing;
     }
     legs_.straight(MoveKind::Feed, exit ? exit->point : RZ(levelMm, zOf(s1)), 3);
+    if (style_.escapeAt45) {
+      const RZ& at = legs_.at();
+      const double backMm = std::min(retractMm, interval.s1 - interval.s0);
+      legs_.straight(plan_.retractKind,
+                     RZ(at.x() - plan_.stepDir * retractMm, at.y() - plan_.cutDir * backMm), 4);
+      return;
+    }
     if (exit) {
       for (const ContourSegment& piece :
            climb(tail_, exit->index, exit->point, previousMm, plan_.stepDir, true)) {
@@ -429,11 +496,11 @@ class TypeTwo {
       }
     }
     const RZ& at = legs_.at();
-    legs_.straight(plan_.retractKind, RZ(at.x() - plan_.stepDir * plan_.params->retractMm, at.y()),
-                   4);
+    legs_.straight(plan_.retractKind, RZ(at.x() - plan_.stepDir * retractMm, at.y()), 4);
   }
 
   const Plan& plan_;
+  PocketStyle style_;
   RZ shiftedStart_;
   RZ b_;
   Contour tail_;
@@ -443,7 +510,7 @@ class TypeTwo {
   bool inFirstRegion_ = true;
 };
 
-std::vector<CycleLeg> typeTwoLegs(const Plan& plan) { return TypeTwo(plan).legs(); }
+std::vector<CycleLeg> typeTwoLegs(const Plan& plan, PocketStyle style) { return TypeTwo(plan, style).legs(); }
 
 }  // namespace
 
@@ -476,7 +543,21 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
   }
   const double stepDir = stepMm > 0 ? 1.0 : -1.0;
   const double cutDir = cuttingDirection(contour);
-  if (auto problem = contourProblem(contour, params, stepDir, cutDir, names)) return *problem;
+  // Haas: a contour with troughs, type I as well as type II, is roughed region by region.
+  bool haasTroughs = false;
+  if (params.haasTroughs) {
+    const std::vector<std::size_t> bottoms = troughBottoms(contour, stepDir);
+    if (bottoms.size() > kHaasMaxTroughs) {
+      return errorAt(contour[bottoms[kHaasMaxTroughs]],
+                     fmt::format("{} contour has {} troughs (this block ends trough {}): a Haas roughs at most {} in "
+                                 "one cycle (its operator's manual, \"Troughs\"); split the contour into two cycles",
+                                 cycle, bottoms.size(), kHaasMaxTroughs + 1, kHaasMaxTroughs));
+    }
+    haasTroughs = !bottoms.empty();
+  }
+  RoughingParams checked = params;
+  checked.typeII = params.typeII || haasTroughs;
+  if (auto problem = contourProblem(contour, checked, stepDir, cutDir, names)) return *problem;
   const RZ finishing(params.allowanceXMm, params.allowanceZMm);
   const Plan plan{start,
                   translatedContour(contour, finishing + RZ(params.roughAllowanceXMm, params.roughAllowanceZMm)),
@@ -486,7 +567,8 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
                   ns.kind == MoveKind::Rapid ? MoveKind::Rapid : MoveKind::Feed,
                   params.retractAtFeed ? MoveKind::Feed : MoveKind::Rapid,
                   &params};
-  return params.typeII ? typeTwoLegs(plan) : typeOneLegs(plan);
+  if (haasTroughs) return typeTwoLegs(plan, {.byRegion = true, .escapeAt45 = !params.typeII});
+  return params.typeII ? typeTwoLegs(plan, {}) : typeOneLegs(plan);
 }
 
 }  // namespace lathesim::interp
