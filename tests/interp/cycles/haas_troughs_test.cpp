@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../test_support.hpp"
+#include "interp/cycles/contour_geometry.hpp"
 #include "interp/cycles/roughing_cycle.hpp"
 #include "roughing_test_support.hpp"
 
@@ -181,6 +182,186 @@ TEST(HaasTroughs, TwoTroughsTypeIIG72) {
   auto legs = facingRoughingLegs(facingPoint(RZ(30, 2)), facingContour(twoTroughs()), haasParams(4, 1, true));
   ASSERT_TRUE(legs.ok()) << legs.error().message;
   expectLegsNear(legs.value(), facingLegs(twoTroughLegs()));
+}
+
+// The Fanuc/GSK engine is unchanged: without haasTroughs the two-trough type II contour is
+// roughed level by level (every level's stretches before the next level's), as before.
+TEST(HaasTroughs, FanucStillRoughsLevelByLevel) {
+  RoughingParams params = haasParams(4, 1, true);
+  params.haasTroughs = false;
+  auto legs = turningRoughingLegs(RZ(30, 2), twoTroughs(), params);
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  std::vector<double> levels;
+  for (const CycleLeg& leg : legs.value()) {
+    if (leg.step == 3) levels.push_back(leg.from.x());
+  }
+  EXPECT_EQ(levels, (std::vector<double>{26, 22, 22, 22, 18, 18, 14}));
+}
+
+
+// A sweep over contours with one to three troughs of random crests, floors and widths, depths
+// of cut D and allowances, type I and II, G71 and G72 (the G72 case is the G71 one moved onto a
+// face as above and its legs moved back), where a level could be lost or a trough cut from
+// above before the material over it. Every case, in G71's axes, A′ = A + (u, w):
+//   - no cut, infeed, retract or rapid crosses the rough contour;
+//   - every level cut (step 3) lies a whole number of D below A′, and, below the first level,
+//     under a level cut D above it made earlier that spans its Z (no cut deeper than D, no
+//     trough entered before the material over it is gone);
+//   - every point of the material lies at most D above a level cut through it, or within D of
+//     the rough contour (what the closing pass along it takes): no level lost, every trough
+//     bottom reached.
+struct SweepCase {
+  Contour contour;
+  RZ start;
+  RoughingParams params;
+};
+
+class Lcg {
+ public:
+  explicit Lcg(unsigned seed) : state_(seed) {}
+  double uniform(double lo, double hi) {
+    state_ = state_ * 1103515245u + 12345u;
+    return lo + (hi - lo) * ((state_ >> 8) % 100000) / 100000.0;
+  }
+
+ private:
+  unsigned state_;
+};
+
+// A = (30, 2); B at radius 6–10 (type I: at Z 2; type II: at Z 0); then 1–3 troughs, each a
+// slanted wall up to a crest 2–8 deep, a flat, a slanted wall down to a floor 1–6 deeper, a
+// flat; then up to a last flat 1–2 deep. Every block moves Z.
+SweepCase sweepCase(Lcg& random, int troughs, bool typeII) {
+  SweepCase c;
+  c.start = RZ(30, 2);
+  const double rB = random.uniform(6, 10);
+  RZ at(rB, typeII ? 0.0 : 2.0);
+  int line = 1;
+  c.contour.push_back(segment(kRapid, 30, 2, at.x(), at.y(), line++));
+  auto to = [&](double r, double dz) {
+    c.contour.push_back(segment(kFeed, at.x(), at.y(), r, at.y() - dz, line++));
+    at = RZ(r, at.y() - dz);
+  };
+  to(rB, random.uniform(0.5, 3));
+  for (int i = 0; i < troughs; ++i) {
+    const double crest = 30 - random.uniform(2, 8);
+    to(crest, random.uniform(0.3, 3));
+    to(crest, random.uniform(0.2, 2));
+    to(crest - random.uniform(1, 6), random.uniform(0.3, 3));
+    to(at.x(), random.uniform(0.2, 2));
+  }
+  to(30 - random.uniform(1, 2), random.uniform(0.3, 3));
+  to(at.x(), 1);
+  return c;
+}
+
+void expectRoughedByLevels(const std::vector<CycleLeg>& legs, const SweepCase& c, Lcg& random) {
+  const RoughingParams& p = c.params;
+  const RZ offset(p.allowanceXMm + p.roughAllowanceXMm, p.allowanceZMm + p.roughAllowanceZMm);
+  const Contour rough = translatedContour(c.contour, offset);
+  const RZ shiftedStart = c.start + offset;
+  test::expectNoGouge(legs, rough, -1.0);
+  auto roughR = [&](double z) {  // the rough contour's radius at z (B′'s before its Z)
+    const std::vector<double> xs = test::contourXsAt(rough, z);
+    return xs.empty() ? rough.front().to.x() : *std::max_element(xs.begin(), xs.end());
+  };
+  // The rapids of the roughing too (up to the infeed onto the closing pass's contour, which
+  // with a rough allowance lies inside the rough one).
+  const auto closing = std::find_if(legs.begin(), legs.end(), [](const CycleLeg& leg) { return leg.step == 7; });
+  for (auto it = legs.begin(); it + 1 < closing; ++it) {
+    const CycleLeg& leg = *it;
+    if (leg.kind != kRapid) continue;
+    for (int i = 0; i <= 20; ++i) {
+      const RZ q = test::legPoint(leg, i / 20.0);
+      if (q.y() > rough.front().to.y() || q.y() < rough.back().to.y()) continue;
+      EXPECT_GE(q.x(), roughR(q.y()) - 1e-9) << "rapid step " << leg.step << " at " << q.x() << ", " << q.y();
+    }
+  }
+  std::vector<const CycleLeg*> cuts;
+  for (const CycleLeg& leg : legs) {
+    if (leg.step != 3) continue;
+    const double depth = shiftedStart.x() - leg.from.x();
+    const double k = std::round(depth / p.depthMm);
+    EXPECT_NEAR(depth, k * p.depthMm, 1e-9);
+    EXPECT_NEAR(leg.from.x(), leg.to.x(), 1e-12);
+    const double zHi = std::max(leg.from.y(), leg.to.y()), zLo = std::min(leg.from.y(), leg.to.y());
+    if (k > 1) {
+      const bool under = std::any_of(cuts.begin(), cuts.end(), [&](const CycleLeg* above) {
+        return std::abs(above->from.x() - (leg.from.x() + p.depthMm)) < 1e-9 &&
+               std::max(above->from.y(), above->to.y()) >= zHi - 1e-9 &&
+               std::min(above->from.y(), above->to.y()) <= zLo + 1e-9;
+      });
+      EXPECT_TRUE(under) << "level cut at r " << leg.from.x() << " Z " << zHi << " to " << zLo
+                         << " before the material above it is cut";
+    }
+    cuts.push_back(&leg);
+  }
+  // The Haas order: the cuts from Z_A′ (the material above the troughs) first; then, of two
+  // trough cuts, the later lies under the earlier (the same trough, deeper) or wholly beyond it
+  // along Z (a later trough), never back toward A.
+  auto zHiOf = [](const CycleLeg* leg) { return std::max(leg->from.y(), leg->to.y()); };
+  auto zLoOf = [](const CycleLeg* leg) { return std::min(leg->from.y(), leg->to.y()); };
+  const auto fromStart = [&](const CycleLeg* leg) { return std::abs(leg->from.y() - shiftedStart.y()) < 1e-9; };
+  const auto firstTrough = std::find_if_not(cuts.begin(), cuts.end(), fromStart);
+  EXPECT_TRUE(std::none_of(firstTrough, cuts.end(), fromStart)) << "a cut from Z_A′ after a trough's";
+  for (auto i = firstTrough; i != cuts.end(); ++i) {
+    for (auto j = i + 1; j != cuts.end(); ++j) {
+      const bool under = zHiOf(*j) <= zHiOf(*i) + 1e-9 && zLoOf(*j) >= zLoOf(*i) - 1e-9;
+      const bool beyond = zHiOf(*j) <= zLoOf(*i) + 1e-9;
+      EXPECT_TRUE(under || beyond) << "trough cut at r " << (*j)->from.x() << " Z " << zHiOf(*j)
+                                   << " after the one at r " << (*i)->from.x() << " Z " << zHiOf(*i);
+    }
+  }
+  const double zEnd = rough.back().to.y();
+  for (int i = 0; i < 400; ++i) {
+    const double z = random.uniform(zEnd, shiftedStart.y());
+    const double floorR = roughR(z);
+    if (floorR >= shiftedStart.x()) continue;
+    const double r = random.uniform(floorR, shiftedStart.x());
+    const double levelR = shiftedStart.x() - std::ceil((shiftedStart.x() - r) / p.depthMm - 1e-9) * p.depthMm;
+    if (levelR <= floorR + 1e-6) continue;  // within D of the contour: the closing pass's
+    const bool cut = std::any_of(cuts.begin(), cuts.end(), [&](const CycleLeg* leg) {
+      return std::abs(leg->from.x() - levelR) < 1e-9 && std::max(leg->from.y(), leg->to.y()) >= z - 1e-9 &&
+             std::min(leg->from.y(), leg->to.y()) <= z + 1e-9;
+    });
+    EXPECT_TRUE(cut) << "no level cut at r " << levelR << " over Z " << z << " (material at r " << r << ")";
+  }
+}
+
+TEST(HaasTroughs, SweepEveryLevelWithinDAndEveryTroughReached) {
+  Lcg random(12);
+  for (int n = 0; n < 240; ++n) {
+    const bool typeII = n % 2 == 1;
+    const bool facing = n % 4 >= 2;
+    SweepCase c = sweepCase(random, 1 + n % 3, typeII);
+    c.params = haasParams(std::vector<double>{0.7, 1.3, 2.0, 2.5, 3.1}[n % 5], random.uniform(0, 0.6), typeII);
+    if (n % 3 == 0) {
+      c.params.allowanceXMm = random.uniform(0, 0.4);
+      c.params.allowanceZMm = random.uniform(0, 0.15);  // narrower than the narrowest trough floor
+      c.params.roughAllowanceXMm = random.uniform(0, 0.2);
+    }
+    SCOPED_TRACE(testing::Message() << "case " << n << (facing ? " G72" : " G71") << (typeII ? " type II" : " type I")
+                                    << " D " << c.params.depthMm);
+    Result<std::vector<CycleLeg>> legs = Error{0, 0, ""};
+    if (!facing) {
+      legs = turningRoughingLegs(c.start, c.contour, c.params);
+    } else {
+      RoughingParams mirrored = c.params;
+      mirrored.allowanceXMm = c.params.allowanceZMm;
+      mirrored.allowanceZMm = c.params.allowanceXMm;
+      mirrored.roughAllowanceXMm = c.params.roughAllowanceZMm;
+      mirrored.roughAllowanceZMm = c.params.roughAllowanceXMm;
+      legs = facingRoughingLegs(facingPoint(c.start), facingContour(c.contour), mirrored);
+      if (legs.ok()) {
+        for (CycleLeg& leg : legs.value()) {
+          leg.from = RZ(leg.from.y() + 30, leg.from.x() - 40);
+          leg.to = RZ(leg.to.y() + 30, leg.to.x() - 40);
+        }
+      }
+    }
+    ASSERT_TRUE(legs.ok()) << legs.error().message;
+    expectRoughedByLevels(legs.value(), c, random);
+  }
 }
 
 }  // namespace
