@@ -1,6 +1,7 @@
 #include "interp/cycles/compound_cycle.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -252,6 +253,7 @@ Status CompoundCycle::roughing() {
   params.allowanceZMm = b.allowanceZMm;
   params.typeII = c.firstBlockHasX && c.firstBlockHasZ;
   params.retractAtFeed = options_.control.roughingRetractAtFeed;
+  params.maxLegs = options_.maxMoves;
   const RZ start = state_.position;
   auto legs = turning ? turningRoughingLegs(start, c.contour, params)
                       : facingRoughingLegs(start, c.contour, params);
@@ -296,6 +298,7 @@ Status CompoundCycle::haasRoughing() {
   params.roughAllowanceZMm = roughZ ? length(*roughZ) : 0.0;
   params.typeII = b.contour.firstBlockHasX && b.contour.firstBlockHasZ;
   params.retractAtFeed = options_.control.roughingRetractAtFeed;
+  params.maxLegs = options_.maxMoves;
   params.haasTroughs = true;
   if (auto problem = haasContourProblem(state_.position, b.contour.contour, turning)) return *problem;
   auto legs = turning ? turningRoughingLegs(state_.position, b.contour.contour, params)
@@ -329,6 +332,10 @@ Status CompoundCycle::patternValues(const std::optional<Word>& reliefX, const st
                                                "whole number ≥ 1",
                                                passes->text()));
   }
+  // Each pass makes a move at least: more passes than the move limit are refused as it is
+  // (and before a count past int's range is stored).
+  if (passes && passes->value > std::min<double>(static_cast<double>(options_.maxMoves), INT_MAX))
+    return *moveLimitError(options_.maxMoves + 1, options_.maxMoves, block_.line, passes->column);
   if (reliefX) state_.compound.patternReliefXMm = length(*reliefX);
   if (reliefZ) state_.compound.patternReliefZMm = length(*reliefZ);
   if (passes) state_.compound.patternPasses = static_cast<int>(passes->value);
@@ -364,8 +371,10 @@ Status CompoundCycle::patternRepeat() {
   params.singlePassRunsTwice = options_.control.patternSinglePass == PatternSinglePass::RunsTwice;
   params.allowanceXMm = b.allowanceXMm;
   params.allowanceZMm = b.allowanceZMm;
-  outcome_.legs = patternRepeatLegs(state_.position, c.contour, c.firstBlockSegments,
-                                    c.firstBlockRapid, params);
+  auto legs = patternRepeatLegs(state_.position, c.contour, c.firstBlockSegments, c.firstBlockRapid, params,
+                                options_.maxMoves);
+  if (!legs) return *moveLimitError(options_.maxMoves + 1, options_.maxMoves, block_.line, code_.column);
+  outcome_.legs = std::move(*legs);
   continueAfter(b.span);
   return success();
 }

@@ -16,9 +16,9 @@
 
 namespace lathesim::interp {
 
-std::vector<CycleLeg> patternRepeatLegs(const RZ& start, const Contour& contour,
-                                        std::size_t firstBlockSegments, bool firstBlockRapid,
-                                        const PatternRepeatParams& params) {
+std::optional<std::vector<CycleLeg>> patternRepeatLegs(const RZ& start, const Contour& contour,
+                                                       std::size_t firstBlockSegments, bool firstBlockRapid,
+                                                       const PatternRepeatParams& params, std::size_t maxLegs) {
   const int passes = params.passes == 1 && params.singlePassRunsTwice ? 2 : std::max(params.passes, 1);
   std::vector<CycleLeg> legs;
   const auto add = [&legs](CycleLeg leg) {
@@ -26,6 +26,7 @@ std::vector<CycleLeg> patternRepeatLegs(const RZ& start, const Contour& contour,
   };
   RZ at = start;
   for (int k = 1; k <= passes; ++k) {
+    if (legs.size() > maxLegs) return std::nullopt;
     const double share = passes == 1 ? 0.0 : static_cast<double>(passes - k) / (passes - 1);
     const RZ shift(params.allowanceXMm + params.reliefXMm * share,
                    params.allowanceZMm + params.reliefZMm * share);
@@ -41,6 +42,7 @@ std::vector<CycleLeg> patternRepeatLegs(const RZ& start, const Contour& contour,
     at = (contour.empty() ? start : contour.back().to) + shift;
   }
   add({MoveKind::Rapid, at, start, 4, RZ(0, 0)});
+  if (legs.size() > maxLegs) return std::nullopt;
   return legs;
 }
 

@@ -2,6 +2,7 @@
 // G73, pattern repeating: the finishing contour cut d times, shifted less each pass.
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "geometry/rz.hpp"
@@ -21,8 +22,9 @@ struct PatternRepeatParams {
 
 /// The legs of G73 from the cycle start `start` (A) along `contour` (which starts at A), whose
 /// first `firstBlockSegments` segments the ns block made, rapid or at feed as `firstBlockRapid`.
-std::vector<CycleLeg> patternRepeatLegs(const RZ& start, const Contour& contour,
-                                        std::size_t firstBlockSegments, bool firstBlockRapid,
-                                        const PatternRepeatParams& params);
+/// Nullopt when there would be more than `maxLegs` (the move limit), found before they are made.
+std::optional<std::vector<CycleLeg>> patternRepeatLegs(const RZ& start, const Contour& contour,
+                                                       std::size_t firstBlockSegments, bool firstBlockRapid,
+                                                       const PatternRepeatParams& params, std::size_t maxLegs);
 
 }  // namespace lathesim::interp

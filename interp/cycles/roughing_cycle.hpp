@@ -3,6 +3,7 @@
 // both share and the two expansions. See g71_cycle.cpp and g72_cycle.cpp for the moves.
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "interp/cycles/contour.hpp"
@@ -27,6 +28,8 @@ struct RoughingParams {
   bool haasTroughs = false;   // Haas: a contour with troughs (type I or II) is roughed region by
                               // region, the material above the troughs first, then each trough
                               // along Z (stock_removal.cpp); at most kHaasMaxTroughs of them
+  std::size_t maxLegs = std::numeric_limits<std::size_t>::max();  // more: refused at the ns
+                                                                    // block (the move limit)
 };
 
 /// The moves of G71 from the cycle start `start` (A): roughing passes, the semi-finishing pass

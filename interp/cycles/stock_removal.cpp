@@ -55,13 +55,16 @@
 // Errors, each at the contour block to blame (the ns block for Δd and e; line 0 for an
 // empty contour): empty contour; Δd ≤ 0; e < 0; ns block an arc; ns block not moving in X;
 // type I: a block moving X back toward B, or an arc turning in X inside its span; both
-// types: a block moving Z against the earlier blocks, or an arc turning in Z inside its span.
+// types: a block moving Z against the earlier blocks, or an arc turning in Z inside its span;
+// more legs than `maxLegs` (the move limit), found before they fill memory.
 // "Monotonic in X" for type I means: after the ns block, X moves only away from B, toward
 // A's side; the ns block itself (the approach A → B) is exempt.
 
 #include "interp/cycles/stock_removal.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <iterator>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -135,15 +138,21 @@ std::optional<Error> contourProblem(const Contour& contour, const RoughingParams
   return std::nullopt;
 }
 
-/// Builds the leg list, leaving out straight legs of no length.
+/// Builds the leg list, leaving out straight legs of no length. Past `maxLegs` legs it keeps
+/// no more and is `full()`: the cycle is refused, and an absurd contour or depth (levels of
+/// 4 mm over 10²¹ mm) must not fill memory first.
 class LegList {
  public:
-  explicit LegList(const RZ& at) : at_(at) {}
+  LegList(const RZ& at, std::size_t maxLegs) : at_(at), maxLegs_(maxLegs) {}
 
   const RZ& at() const { return at_; }
+  bool full() const { return overflowed_ || legs_.size() > maxLegs_; }
+  std::size_t maxLegs() const { return maxLegs_; }
+  /// More levels are coming than legs allowed: full whatever was kept.
+  void overflow() { overflowed_ = true; }
 
   void straight(MoveKind kind, const RZ& to, int step) {
-    if ((to - at_).norm() > kTolMm) legs_.push_back({kind, at_, to, step});
+    if (!full() && (to - at_).norm() > kTolMm) legs_.push_back({kind, at_, to, step});
     at_ = to;
   }
 
@@ -154,16 +163,34 @@ class LegList {
       straight(MoveKind::Feed, to, step);
       return;
     }
-    if ((to - at_).norm() > kTolMm) legs_.push_back({segment.kind, at_, to, step, segment.center});
+    if (!full() && (to - at_).norm() > kTolMm) legs_.push_back({segment.kind, at_, to, step, segment.center});
     at_ = to;
   }
 
-  std::vector<CycleLeg> take() && { return std::move(legs_); }
+  /// The legs, or nullopt when there were more than `maxLegs`.
+  std::optional<std::vector<CycleLeg>> take() && {
+    if (full()) return std::nullopt;
+    return std::move(legs_);
+  }
 
  private:
   RZ at_;
+  std::size_t maxLegs_;
+  bool overflowed_ = false;
   std::vector<CycleLeg> legs_;
 };
+
+/// Whether level `k` may be cut: it is short of the depth to cut, and the list can take it.
+/// Each level adds at least one leg, so level maxLegs + 1 overflows the list without being
+/// built (a Δd below a far coordinate's precision would never reach the depth).
+bool nextLevel(long long k, double depthMm, double depthToCutMm, LegList& legs) {
+  if (!(k * depthMm < depthToCutMm - kTolMm) || legs.full()) return false;
+  if (static_cast<double>(k) > static_cast<double>(legs.maxLegs())) {
+    legs.overflow();
+    return false;
+  }
+  return true;
+}
 
 /// Where the level X = `levelMm` last meets the rough contour after the ns block, or C′ moved
 /// onto the level when it never does.
@@ -196,16 +223,16 @@ void semiFinishAndReturn(const Plan& plan, LegList& legs, int infeedStep) {
   legs.straight(MoveKind::Rapid, plan.start, 8);
 }
 
-std::vector<CycleLeg> typeOneLegs(const Plan& plan) {
+std::optional<std::vector<CycleLeg>> typeOneLegs(const Plan& plan) {
   const RZ& shiftedStart = plan.rough.front().from;
   const RZ& b = plan.rough.front().to;
   const double depthMm = plan.params->depthMm;
   const double retractMm = plan.params->retractMm;
   const double depthToCutMm = plan.stepDir * (b.x() - shiftedStart.x());
-  LegList legs(plan.start);
+  LegList legs(plan.start, plan.params->maxLegs);
   legs.straight(MoveKind::Rapid, shiftedStart, 1);
   int infeedStep = 2;
-  for (int k = 1; k * depthMm < depthToCutMm - kTolMm; ++k) {
+  for (long long k = 1; nextLevel(k, depthMm, depthToCutMm, legs); ++k) {
     const double levelMm = shiftedStart.x() + plan.stepDir * k * depthMm;
     legs.straight(plan.infeedKind, RZ(levelMm, shiftedStart.y()), infeedStep);
     const RZ end = typeOneLevelEnd(plan.rough, levelMm);
@@ -282,7 +309,7 @@ struct Interval {
 
 /// One stretch of one level to cut.
 struct LevelCut {
-  int level;  // k: the level lies k·Δd deep
+  long long level;  // k: the level lies k·Δd deep
   Interval interval;
 };
 
@@ -300,18 +327,27 @@ struct PocketStyle {
 /// bottom first, then each trough, in the order of Z, level by level down to its own bottom
 /// (a trough holding troughs of its own: its common part first, then those in Z order).
 std::vector<LevelCut> regionOrder(const std::vector<LevelCut>& byLevel) {
+  constexpr double kSpanTolMm = 1e-6;
   std::vector<std::vector<std::size_t>> children(byLevel.size());
   std::vector<std::size_t> roots;
+  std::size_t aboveBegin = 0, aboveEnd = 0;  // the stretches of the level above, in Z order
   for (std::size_t i = 0; i < byLevel.size(); ++i) {
-    const Interval& below = byLevel[i].interval;
-    std::optional<std::size_t> parent;
-    for (std::size_t j = 0; j < i && !parent; ++j) {
-      const Interval& above = byLevel[j].interval;
-      if (byLevel[j].level == byLevel[i].level - 1 && above.s0 <= below.s0 + 1e-6 && below.s1 <= above.s1 + 1e-6) {
-        parent = j;
-      }
+    if (i > 0 && byLevel[i].level != byLevel[i - 1].level) {
+      aboveBegin = aboveEnd;
+      aboveEnd = i;
+      while (aboveBegin < aboveEnd && byLevel[aboveBegin].level != byLevel[i].level - 1) ++aboveBegin;
     }
-    (parent ? children[*parent] : roots).push_back(i);
+    const Interval& below = byLevel[i].interval;
+    // The last stretch above that begins no later than this one; it holds it, or none does.
+    const auto first = byLevel.begin() + static_cast<std::ptrdiff_t>(aboveBegin);
+    const auto last = byLevel.begin() + static_cast<std::ptrdiff_t>(aboveEnd);
+    const auto after = std::upper_bound(first, last, below.s0 + kSpanTolMm,
+                                        [](double s, const LevelCut& cut) { return s < cut.interval.s0; });
+    if (after != first && below.s1 <= std::prev(after)->interval.s1 + kSpanTolMm) {
+      children[static_cast<std::size_t>(std::prev(after) - byLevel.begin())].push_back(i);
+    } else {
+      roots.push_back(i);
+    }
   }
   std::vector<LevelCut> ordered;
   std::vector<std::size_t> stack(roots.rbegin(), roots.rend());
@@ -333,15 +369,16 @@ class TypeTwo {
         b_(plan.rough.front().to),
         tail_(plan.rough.begin() + 1, plan.rough.end()),
         swappedTail_(swappedAxes(tail_)),
-        legs_(plan.start) {
+        legs_(plan.start, plan.params->maxLegs) {
     for (auto it = tail_.rbegin(); it != tail_.rend(); ++it) backwards_.push_back(reversed(*it));
   }
 
-  std::vector<CycleLeg> legs() && {
+  std::optional<std::vector<CycleLeg>> legs() && {
     const double depthMm = plan_.params->depthMm;
     legs_.straight(MoveKind::Rapid, shiftedStart_, 1);
     int infeedStep = 2;
     for (const LevelCut& cut : cuts()) {
+      if (legs_.full()) break;
       const Interval& interval = cut.interval;
       const double levelMm = xAtDepth(cut.level * depthMm);
       const double previousMm = xAtDepth((cut.level - 1) * depthMm);
@@ -367,13 +404,17 @@ class TypeTwo {
   double xAtDepth(double depthMm) const { return shiftedStart_.x() + plan_.stepDir * depthMm; }
 
   /// Every stretch of every level, level by level (each level's in cutting order), or in region
-  /// order.
-  std::vector<LevelCut> cuts() const {
+  /// order. Each stretch makes at least one leg: past the move limit the list overflows.
+  std::vector<LevelCut> cuts() {
     const double depthMm = plan_.params->depthMm;
     const double deepestMm = deepestDepthMm();
     std::vector<LevelCut> byLevel;
-    for (int k = 1; k * depthMm < deepestMm - kTolMm; ++k) {
+    for (long long k = 1; nextLevel(k, depthMm, deepestMm, legs_); ++k) {
       for (const Interval& interval : intervals(xAtDepth(k * depthMm))) byLevel.push_back({k, interval});
+      if (byLevel.size() > legs_.maxLegs()) {
+        legs_.overflow();
+        return {};
+      }
     }
     return style_.byRegion ? regionOrder(byLevel) : byLevel;
   }
@@ -510,7 +551,9 @@ class TypeTwo {
   bool inFirstRegion_ = true;
 };
 
-std::vector<CycleLeg> typeTwoLegs(const Plan& plan, PocketStyle style) { return TypeTwo(plan, style).legs(); }
+std::optional<std::vector<CycleLeg>> typeTwoLegs(const Plan& plan, PocketStyle style) {
+  return TypeTwo(plan, style).legs();
+}
 
 }  // namespace
 
@@ -567,8 +610,16 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
                   ns.kind == MoveKind::Rapid ? MoveKind::Rapid : MoveKind::Feed,
                   params.retractAtFeed ? MoveKind::Feed : MoveKind::Rapid,
                   &params};
-  if (haasTroughs) return typeTwoLegs(plan, {.byRegion = true, .escapeAt45 = !params.typeII});
-  return params.typeII ? typeTwoLegs(plan, {}) : typeOneLegs(plan);
+  auto legs = haasTroughs    ? typeTwoLegs(plan, {.byRegion = true, .escapeAt45 = !params.typeII})
+              : params.typeII ? typeTwoLegs(plan, {})
+                              : typeOneLegs(plan);
+  if (!legs) {
+    return errorAt(ns, fmt::format("{} would make more than {} moves (the limit) roughing this contour {:g} mm a "
+                                   "level: check the contour's {} coordinates and the depth of cut Δd; if it is "
+                                   "meant, raise the limit with --max-moves or [sim] max_moves",
+                                   cycle, params.maxLegs, params.depthMm, names.stepAxis));
+  }
+  return std::move(*legs);
 }
 
 }  // namespace lathesim::interp

@@ -184,6 +184,16 @@ TEST(HaasTroughs, TwoTroughsTypeIIG72) {
   expectLegsNear(legs.value(), facingLegs(twoTroughLegs()));
 }
 
+// The move limit holds in the trough order too: one leg fewer than the two-trough contour's
+// is refused at its P block.
+TEST(HaasTroughs, StopsAtTheMoveLimit) {
+  RoughingParams params = haasParams(4, 1, true);
+  params.maxLegs = twoTroughLegs().size() - 1;
+  test::expectRoughingError(turningRoughingLegs(RZ(30, 2), twoTroughs(), params), 1, 1, "would make more than");
+  params.maxLegs = twoTroughLegs().size();
+  EXPECT_TRUE(turningRoughingLegs(RZ(30, 2), twoTroughs(), params).ok());
+}
+
 // The Fanuc/GSK engine is unchanged: without haasTroughs the two-trough type II contour is
 // roughed level by level (every level's stretches before the next level's), as before.
 TEST(HaasTroughs, FanucStillRoughsLevelByLevel) {

@@ -1,0 +1,10 @@
+(expect: 5:13: error: the program makes more than 2000000 moves)
+G00 X62. Z2.
+T0101
+G99 G97 S500 M03
+G73 U3. W0. R3000000000000
+G73 P10 Q30 U0.4 W0.2 F0.25
+N10 G00 X40.
+N20 G01 Z-10. F0.1
+N30 X62.
+M30
