@@ -239,7 +239,8 @@ class Lcg {
 };
 
 // A = (30, 2); B at radius 6–10 (type I: at Z 2; type II: at Z 0); then 1–3 troughs, each a
-// slanted wall up to a crest 2–8 deep, a flat, a slanted wall down to a floor 1–6 deeper, a
+// slanted wall up to a crest 2–8 deep, a flat, a slanted wall down to a floor between 1 deeper
+// and r 1 (deeper than B at times), a
 // flat; then up to a last flat 1–2 deep. Every block moves Z.
 SweepCase sweepCase(Lcg& random, int troughs, bool typeII) {
   SweepCase c;
@@ -257,7 +258,7 @@ SweepCase sweepCase(Lcg& random, int troughs, bool typeII) {
     const double crest = 30 - random.uniform(2, 8);
     to(crest, random.uniform(0.3, 3));
     to(crest, random.uniform(0.2, 2));
-    to(crest - random.uniform(1, 6), random.uniform(0.3, 3));
+    to(crest - random.uniform(1, crest - 1), random.uniform(0.3, 3));  // down to r 1, deeper than B at times
     to(at.x(), random.uniform(0.2, 2));
   }
   to(30 - random.uniform(1, 2), random.uniform(0.3, 3));
