@@ -240,8 +240,8 @@ class Lcg {
 
 // A = (30, 2); B at radius 6–10 (type I: at Z 2; type II: at Z 0); then 1–3 troughs, each a
 // slanted wall up to a crest 2–8 deep, a flat, a slanted wall down to a floor between 1 deeper
-// and r 1 (deeper than B at times), a
-// flat; then up to a last flat 1–2 deep. Every block moves Z.
+// and r 1 (deeper than B at times), a flat; then up to a last flat 1–2 deep. Every block moves
+// Z.
 SweepCase sweepCase(Lcg& random, int troughs, bool typeII) {
   SweepCase c;
   c.start = RZ(30, 2);
