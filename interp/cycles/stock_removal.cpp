@@ -51,6 +51,16 @@
 // Haas's one-block G71/G72 may add a rough allowance I (X, a radius) and K (Z): the levels then
 // rough against the contour translated by (Δu/2 + I, Δw + K) (A′ moves with it), and steps 6–7
 // go to and follow the contour translated by (Δu/2, Δw) alone. Without them both are the same.
+// Haas troughs (RoughingParams::haasTroughs; the Haas operator's manual, "Troughs"): a contour
+// that turns back deeper after the ns block (contour_troughs.hpp), type I or II, is cut by the
+// type II steps above with its stretches in another order: "all material above the troughs is
+// roughed first, followed by the troughs in the direction of Z". Each stretch of level k lies
+// under one stretch of level k − 1; taken depth first, the stretches from Z_A′ come first, then
+// each trough level by level, troughs in Z order (regionOrder). Type I ends each stretch by step
+// 4 of type I (the 45° retract e, no further back in Z than the stretch began) instead of the
+// climb: "Type 1 and Type 2 differ in their retraction". Type I is then checked by the type II
+// rules (Z monotonic, X free). More than kHaasMaxTroughs troughs: an error at the block that
+// ends the first one too many.
 //
 // Errors, each at the contour block to blame (the ns block for Δd and e; line 0 for an
 // empty contour): empty contour; Δd ≤ 0; e < 0; ns block an arc; ns block not moving in X;
