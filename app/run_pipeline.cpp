@@ -14,6 +14,7 @@
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "measure/thread_measure.hpp"
+#include "render/close_up_region.hpp"
 #include "render/mesh_files.hpp"
 #include "render/offscreen_display.hpp"
 #include "render/part_image.hpp"
@@ -154,20 +155,6 @@ struct DrawnPicture {
   std::string png;          // the encoded picture
 };
 
-// What a close-up shows around its box: the box stretched to the picture's aspect, and its
-// margins (6 % a side; 25 % allowed).
-constexpr double kCloseUpReach = 1.25;
-
-// A close-up magnifies the voxels: at 0.2 mm a voxel fills ~20 pixels, and one facet a voxel
-// shows as steps across the crests and saw edges along the flanks. Its mesh is made this
-// many times finer than the voxels (the level set's trilinear surface), for facets of about
-// 7 pixels: 3 at 0.2 mm for the default size, 1 where a voxel is small already; at most 4.
-int closeUpSubdivisions(double voxelPx) {
-  constexpr double kFacetPx = 7.0;
-  constexpr int kMostSubdivisions = 4;
-  return static_cast<int>(std::clamp(std::lround(voxelPx / kFacetPx), 1L, static_cast<long>(kMostSubdivisions)));
-}
-
 // part.png, the views asked for, and a thread's close-up, drawn into memory.
 std::vector<DrawnPicture> drawPictures(const SimulatedRun& run, const RunOptions& options) {
   std::vector<DrawnPicture> drawn;
@@ -199,18 +186,9 @@ std::vector<DrawnPicture> drawPictures(const SimulatedRun& run, const RunOptions
     closeUp.title = run.figures.program + ", thread of line " + std::to_string(thread.programmed.line);
     const render::CloseUp box{middle - 3 * pitch, middle + 3 * pitch, inner - 2 * pitch, outer + pitch};
     closeUp.closeUp = box;
-    // Its own mesh, of what the picture shows only (the cost of the box, not of the part),
-    // finer than the voxels (see closeUpSubdivisions).
-    const double aspect = static_cast<double>(pictures.widthPx) / pictures.heightPx;
-    const double halfZMm = kCloseUpReach * std::max(0.5 * (box.zHighMm - box.zLowMm), 0.5 * (box.radiusHighMm - box.radiusLowMm) * aspect);
-    const double halfXMm = kCloseUpReach * std::max(0.5 * (box.radiusHighMm - box.radiusLowMm), 0.5 * (box.zHighMm - box.zLowMm) / aspect);
-    const double reachMm = 0.5 * (box.radiusLowMm + box.radiusHighMm) + halfXMm;
-    // The front view looks from +Y: the far side of the part is left out, but for a margin
-    // behind the meridian plane, where the silhouette's crests may come from.
-    const TriangleMesh closeUpMesh =
-        run.partStock().mesh(Eigen::Vector3d(reachMm - 2 * halfXMm, -halfXMm, middle - halfZMm),
-                             Eigen::Vector3d(reachMm, reachMm, middle + halfZMm),
-                             closeUpSubdivisions(run.figures.voxelMm * pictures.widthPx / (2 * halfZMm)));
+    // Its own mesh, of what the picture shows only, finer than the voxels.
+    const render::CloseUpRegion region = render::closeUpRegion(box, pictures.widthPx, pictures.heightPx, run.figures.voxelMm);
+    const TriangleMesh closeUpMesh = run.partStock().mesh(region.low, region.high, region.subdivisions);
     drawn.push_back({"thread.png", "thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line),
                      render::partImagePng(closeUpMesh, run.job.toolpath, closeUp)});
     break;
