@@ -36,9 +36,9 @@ std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour,
   const double towardB = stepOf(contour.front().to, turning) - stepOf(start, turning);
   if (std::abs(towardB) <= kTolMm) return std::nullopt;  // the engine says what is wrong with it
   const double stepDir = towardB > 0 ? 1.0 : -1.0;
-  const int lastLine = contour.back().line;
+  const ContourSegment& last = contour.back();  // the Q block (its chamfer or corner too)
   for (const ContourSegment& segment : contour) {
-    if (segment.line == lastLine) break;
+    if (segment.line == last.line && segment.column == last.column) break;
     for (const RZ& point : extremePoints(segment, turning)) {
       if ((stepOf(point, turning) - stepOf(start, turning)) * stepDir >= -kTolMm) continue;
       const char axis = turning ? 'X' : 'Z';

@@ -73,9 +73,9 @@
 #include "interp/cycles/stock_removal.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
-#include <cmath>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -602,7 +602,7 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
     const std::vector<std::size_t> bottoms = troughBottoms(contour, stepDir);
     if (bottoms.size() > kHaasMaxTroughs) {
       return errorAt(contour[bottoms[kHaasMaxTroughs]],
-                     fmt::format("{} contour has {} troughs (this block ends trough {}): a Haas roughs at most {} in "
+                     fmt::format("{} contour has {} troughs (this block reaches the bottom of trough {}): a Haas roughs at most {} in "
                                  "one cycle (its operator's manual, \"Troughs\"); split the contour into two cycles",
                                  cycle, bottoms.size(), kHaasMaxTroughs + 1, kHaasMaxTroughs));
     }

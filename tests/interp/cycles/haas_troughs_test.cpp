@@ -194,6 +194,28 @@ TEST(HaasTroughs, StopsAtTheMoveLimit) {
   EXPECT_TRUE(turningRoughingLegs(RZ(30, 2), twoTroughs(), params).ok());
 }
 
+// At most ten troughs a cycle ("Troughs"): eleven V troughs on a G72 face are refused at the
+// block that reaches the eleventh's bottom; ten are roughed.
+Contour vTroughs(int count) {
+  Contour contour = {segment(kRapid, 26, 2, 10, 2, 1), segment(kFeed, 10, 2, 10, -2, 2)};
+  double z = -2;
+  int line = 3;
+  for (int i = 0; i < count; ++i) {
+    contour.push_back(segment(kFeed, i == 0 ? 10 : 15, z, 20, z - 1, line++));  // up to a crest
+    contour.push_back(segment(kFeed, 20, z - 1, 15, z - 2, line++));            // down to a bottom
+    z -= 2;
+  }
+  contour.push_back(segment(kFeed, 15, z, 25, z - 1, line));
+  return contour;
+}
+
+TEST(HaasTroughs, AtMostTenTroughsACycle) {
+  const RoughingParams params = haasParams(2, 0.5, false);
+  test::expectRoughingError(facingRoughingLegs(facingPoint(RZ(26, 2)), facingContour(vTroughs(11)), params), 24, 1,
+                            "G72 contour has 11 troughs (this block reaches the bottom of trough 11)");
+  EXPECT_TRUE(facingRoughingLegs(facingPoint(RZ(26, 2)), facingContour(vTroughs(10)), params).ok());
+}
+
 // The Fanuc/GSK engine is unchanged: without haasTroughs the two-trough type II contour is
 // roughed level by level (every level's stretches before the next level's), as before.
 TEST(HaasTroughs, FanucStillRoughsLevelByLevel) {
