@@ -464,7 +464,7 @@ class TypeTwo {
 
   /// The stretches of the level, from Z_A′ to Z_C′, that lie in the material.
   std::vector<Interval> intervals(double levelMm) const {
-    const double sEnd = sOf(tail_.back().to.y());
+    const double sEnd = sOf((tail_.empty() ? b_ : tail_.back().to).y());  // a contour of the ns block alone ends at B′
     std::vector<double> bounds = {0.0, sEnd};
     const double sB = sOf(b_.y());
     if (sB > kTolMm && sB < sEnd - kTolMm) bounds.push_back(sB);

@@ -95,25 +95,30 @@ TEST(PartOff, G01ToTheCentreOrPastItPartsTheBar) {
 // too, and the piece Z-20 … 0 falls: 400π·20.
 TEST(PartOff, ASlotCutWithTheSpindleStoppedPartsOnlyWhenItSevers) {
   const StockSpec bar{40.0, 50.0, 0.0};
-  const double voxel = 0.25;
   const double slotMm3 = 3.0 * (4.0 + 2.0 * (std::sqrt(396.0) + 200.0 * std::asin(0.1)));
   EXPECT_NEAR(slotMm3, 251.5994, 1e-4);
   const double slotSurface = 2 * 83.86646 + 3.0 * (2 * 40.0 + 4.0);
-  const double slotTolerance = tolerance(surface(20, 0, 50) + slotSurface, voxel);
-  const PartOffRun slot = simulateProgram(bar, voxel, "G99\nG00 X44. Z-20.\nG01 X-2. F0.05\nG00 X60.\nM30\n");
-  EXPECT_TRUE(slot.result.partOffs.empty());
-  EXPECT_FALSE(slot.result.part);
-  EXPECT_TRUE(slot.result.collisions.empty());
-  EXPECT_NEAR(slot.stubMm3, 400 * M_PI * 50 - slotMm3, slotTolerance);
+  // On and off the voxel grid, at two voxel sizes: the slot's volume is the same wherever it is.
+  for (const double voxel : {0.25, 0.4})
+    for (const std::string z : {"-20.", "-31.3"}) {
+      SCOPED_TRACE(testing::Message() << voxel << " mm voxels, Z" << z);
+      const double slotTolerance = tolerance(surface(20, 0, 50) + slotSurface, voxel);
+      const PartOffRun slot = simulateProgram(bar, voxel, "G99\nG00 X44. Z" + z + "\nG01 X-2. F0.05\nG00 X60.\nM30\n");
+      EXPECT_TRUE(slot.result.partOffs.empty());
+      EXPECT_FALSE(slot.result.part);
+      EXPECT_TRUE(slot.result.collisions.empty());
+      EXPECT_NEAR(slot.stubMm3, 400 * M_PI * 50 - slotMm3, slotTolerance);
 
-  const PartOffRun rapid = simulateProgram(bar, voxel, "G99\nG00 X44. Z-20.\nG00 X-2.\nG00 X60.\nM30\n");
-  EXPECT_TRUE(rapid.result.partOffs.empty());
-  EXPECT_FALSE(rapid.result.part);
-  ASSERT_EQ(rapid.result.collisions.size(), 1u);
-  EXPECT_EQ(rapid.result.collisions[0].line, 3);
-  EXPECT_EQ(rapid.result.collisions[0].kind, "rapid_into_stock");
-  EXPECT_NEAR(rapid.result.collisions[0].volumeMm3, slotMm3, slotTolerance);
-  EXPECT_NEAR(rapid.stubMm3, 400 * M_PI * 50 - slotMm3, slotTolerance);
+      const PartOffRun rapid = simulateProgram(bar, voxel, "G99\nG00 X44. Z" + z + "\nG00 X-2.\nG00 X60.\nM30\n");
+      EXPECT_TRUE(rapid.result.partOffs.empty());
+      EXPECT_FALSE(rapid.result.part);
+      ASSERT_EQ(rapid.result.collisions.size(), 1u);
+      EXPECT_EQ(rapid.result.collisions[0].line, 3);
+      EXPECT_EQ(rapid.result.collisions[0].kind, "rapid_into_stock");
+      EXPECT_NEAR(rapid.result.collisions[0].volumeMm3, slotMm3, slotTolerance);
+      EXPECT_NEAR(rapid.stubMm3, 400 * M_PI * 50 - slotMm3, slotTolerance);
+    }
+  const double voxel = 0.25;
   Stock stock(bar, voxel);
   const SimulationResult through = simulate(toolpathOf("G99\nG00 X44. Z-20.\nG01 X-44. F0.05\nM30\n"),
                                             tools(), stock, {}, nullptr, ToolThicknesses{{1, 50.0}});

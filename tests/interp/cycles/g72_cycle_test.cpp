@@ -248,5 +248,26 @@ TEST(FacingRoughingErrors, NamesTheAxesOfG72) {
                       "G72 ns block does not move Z");
 }
 
+// A contour of the ns block alone (the fuzzer's: N10 moves Z and X, the blocks to Q move
+// nothing more) is type II with no blocks after the ns block: it ran past the end of an empty
+// list. Now each level is cut to B′, as type I cuts it. By hand, G72 W4 R0.5, U0.4 W0.2 from
+// A = (31, 2) to B = (20, -10): A′ = (31.2, 2.2), B′ = (20.2, -9.8), 12 mm to cut, levels
+// k·4 < 12 at Z -1.8 and -5.8, each cut along X to B′'s radius 20.2.
+TEST(FacingRoughing, TypeIIContourOfTheNsBlockAloneCutsEachLevelToB) {
+  const Contour nsAlone{segment(kRapid, 31, 2, 20, -10, 10)};
+  const auto legs = facingRoughingLegs(RZ(31, 2), nsAlone, params(4, 0.5, 0.2, 0.2));
+  ASSERT_TRUE(legs.ok()) << legs.error().message;
+  std::vector<CycleLeg> cuts;
+  for (const CycleLeg& leg : legs.value())
+    if (leg.step == 3) cuts.push_back(leg);
+  ASSERT_EQ(cuts.size(), 2u);
+  EXPECT_NEAR(cuts[0].from.x(), 31.2, 1e-9);
+  EXPECT_NEAR(cuts[0].from.y(), -1.8, 1e-9);
+  EXPECT_NEAR(cuts[0].to.x(), 20.2, 1e-9);
+  EXPECT_NEAR(cuts[0].to.y(), -1.8, 1e-9);
+  EXPECT_NEAR(cuts[1].to.x(), 20.2, 1e-9);
+  EXPECT_NEAR(cuts[1].to.y(), -5.8, 1e-9);
+}
+
 }  // namespace
 }  // namespace lathesim::interp
