@@ -299,7 +299,8 @@ Status CompoundCycle::haasRoughing() {
   params.typeII = b.contour.firstBlockHasX && b.contour.firstBlockHasZ;
   params.retractAtFeed = options_.control.roughingRetractAtFeed;
   params.maxLegs = options_.maxMoves;
-  if (auto problem = haasContourProblem(state_.position, b.contour.contour, turning, params.typeII)) return *problem;
+  params.haasTroughs = true;
+  if (auto problem = haasContourProblem(state_.position, b.contour.contour, turning)) return *problem;
   auto legs = turning ? turningRoughingLegs(state_.position, b.contour.contour, params)
                       : facingRoughingLegs(state_.position, b.contour.contour, params);
   if (!legs.ok()) return legs.error();

@@ -1,9 +1,12 @@
 #include "interp/cycles/haas_contour.hpp"
 
 #include <cmath>
-#include <string>
+#include <numbers>
+#include <vector>
 
 #include <fmt/format.h>
+
+#include "interp/cycles/contour_geometry.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -14,36 +17,39 @@ constexpr double kTolMm = 1e-9;
 double stepOf(const RZ& point, bool turning) { return turning ? point.x() : point.y(); }
 double writtenStep(const RZ& point, bool turning) { return turning ? 2.0 * point.x() : point.y(); }
 
+/// The points of a block where its step-axis coordinate may be extreme: its end, and for an
+/// arc the points of its circle in the step axis's two directions when they lie inside it.
+std::vector<RZ> extremePoints(const ContourSegment& segment, bool turning) {
+  std::vector<RZ> points = {segment.to};
+  if (!isArc(segment.kind)) return points;
+  const double first = turning ? std::numbers::pi / 2 : 0.0;
+  for (const double angle : {first, first - std::numbers::pi}) {
+    if (arcPassesAngleInside(segment, angle)) points.push_back(arcPointAt(segment, angle));
+  }
+  return points;
+}
+
 }  // namespace
 
-std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour, bool turning, bool typeII) {
+std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour, bool turning) {
   if (contour.empty()) return std::nullopt;
-  const char* cycle = turning ? "G71" : "G72";
-  const char axis = turning ? 'X' : 'Z';
   const double towardB = stepOf(contour.front().to, turning) - stepOf(start, turning);
   if (std::abs(towardB) <= kTolMm) return std::nullopt;  // the engine says what is wrong with it
   const double stepDir = towardB > 0 ? 1.0 : -1.0;
-  if (!typeII) {
-    for (std::size_t i = 1; i < contour.size(); ++i) {
-      const ContourSegment& s = contour[i];
-      if ((stepOf(s.to, turning) - stepOf(s.from, turning)) * stepDir <= kTolMm) continue;
-      return Error{s.line, s.column,
-                   fmt::format("{0} type I contour with a pocket: this block moves {1} back toward the P block's {1}. "
-                               "A Fanuc alarms here; a Haas roughs such troughs in an order of its own (the material "
-                               "above every trough first, then the troughs one by one along Z, as its operator's manual "
-                               "shows under \"Troughs\"), which lathesim does not simulate yet; give the P block both X "
-                               "and Z (type II) to cut the pocket",
-                               cycle, axis)};
+  const ContourSegment& last = contour.back();  // the Q block (its chamfer or corner too)
+  for (const ContourSegment& segment : contour) {
+    if (segment.line == last.line && segment.column == last.column) break;
+    for (const RZ& point : extremePoints(segment, turning)) {
+      if ((stepOf(point, turning) - stepOf(start, turning)) * stepDir >= -kTolMm) continue;
+      const char axis = turning ? 'X' : 'Z';
+      return Error{segment.line, segment.column,
+                   fmt::format("{0} contour goes past the start point before its last block ({1}{2:g} beyond the "
+                               "start's {1}{3:g}): a Haas lets only the Q block leave the start point's side (its "
+                               "operator's manual, \"Type 2 details\"); start the cycle further out or end the "
+                               "contour with this move",
+                               turning ? "G71" : "G72", axis, writtenStep(point, turning),
+                               writtenStep(start, turning))};
     }
-  }
-  const ContourSegment& last = contour.back();
-  if ((stepOf(last.to, turning) - stepOf(start, turning)) * stepDir < -kTolMm) {
-    return Error{last.line, last.column,
-                 fmt::format("{0} contour ends with a retract past the start point ({1}{2:g} beyond the start's "
-                             "{1}{3:g}): the Haas manual asks for a short retraction after a last cut that is not "
-                             "monotonic, but no manual at hand says how the roughing passes treat it, so it is not "
-                             "simulated; end the contour at or inside the start point and retract after the cycle",
-                             cycle, axis, writtenStep(last.to, turning), writtenStep(start, turning))};
   }
   return std::nullopt;
 }

@@ -1,10 +1,8 @@
 #pragma once
-// Two G71/G72 contours a Haas treats in its own way (lathesim reads Haas's one-block G71/G72 by
-// Fanuc's rules otherwise): a contour whose last block retracts past the start point (the
-// manual asks for one after a last cut that is not monotonic, but gives no rule for the
-// roughing), and a type I contour with a pocket (the manual's "Troughs": the material above
-// every trough first, then the troughs along Z — not simulated yet). Each is refused at its
-// block rather than cut by a guess.
+// The Haas rule on where a G71/G72 contour may go (the Haas operator's manual, "Type 2 details"):
+// the PQ path must not pass the start point in the step axis, the Q block excepted (a short
+// retraction at the end of the contour is allowed and roughed as any block). Troughs, in type I
+// as in type II, are roughed by the engine (stock_removal.cpp, RoughingParams::haasTroughs).
 
 #include <optional>
 
@@ -14,8 +12,8 @@
 
 namespace lathesim::interp {
 
-/// Why a Haas G71 (`turning`) or G72 contour run from `start` is not simulated, or nullopt.
-/// `typeII`: the P block moves both axes.
-std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour, bool turning, bool typeII);
+/// The block of a Haas G71 (`turning`) or G72 contour run from `start` that passes the start
+/// point before the Q block, as an Error, or nullopt.
+std::optional<Error> haasContourProblem(const RZ& start, const Contour& contour, bool turning);
 
 }  // namespace lathesim::interp

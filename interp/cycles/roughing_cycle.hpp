@@ -12,6 +12,9 @@
 
 namespace lathesim::interp {
 
+/// The most troughs a Haas roughs in one G71/G72 (its operator's manual, "Troughs").
+inline constexpr std::size_t kHaasMaxTroughs = 10;
+
 struct RoughingParams {
   double depthMm = 0;         // Δd: cut depth per pass (G71: radius, in X; G72: in Z), > 0
   double retractMm = 0;       // e: retract after each pass, ≥ 0
@@ -22,6 +25,9 @@ struct RoughingParams {
   bool retractAtFeed = true;  // GSK makes the 45° retract at cutting feed; Fanuc-style: rapid
   bool typeII = false;        // the ns block programs both axes (G71: X(U) and Z(W), W0
                               // included; G72: Z(W) and X(U)): pockets allowed
+  bool haasTroughs = false;   // Haas: a contour with troughs (type I or II) is roughed region by
+                              // region, the material above the troughs first, then each trough
+                              // along Z (stock_removal.cpp); at most kHaasMaxTroughs of them
   std::size_t maxLegs = std::numeric_limits<std::size_t>::max();  // more: refused at the ns
                                                                     // block (the move limit)
 };

@@ -51,6 +51,16 @@
 // Haas's one-block G71/G72 may add a rough allowance I (X, a radius) and K (Z): the levels then
 // rough against the contour translated by (Δu/2 + I, Δw + K) (A′ moves with it), and steps 6–7
 // go to and follow the contour translated by (Δu/2, Δw) alone. Without them both are the same.
+// Haas troughs (RoughingParams::haasTroughs; the Haas operator's manual, "Troughs"): a contour
+// that turns back deeper after the ns block (contour_troughs.hpp), type I or II, is cut by the
+// type II steps above with its stretches in another order: "all material above the troughs is
+// roughed first, followed by the troughs in the direction of Z". Each stretch of level k lies
+// under one stretch of level k − 1; taken depth first, the stretches from Z_A′ come first, then
+// each trough level by level, troughs in Z order (regionOrder). Type I ends each stretch by step
+// 4 of type I (the 45° retract e, no further back in Z than the stretch began) instead of the
+// climb: "Type 1 and Type 2 differ in their retraction". Type I is then checked by the type II
+// rules (Z monotonic, X free). More than kHaasMaxTroughs troughs: an error at the block that
+// ends the first one too many.
 //
 // Errors, each at the contour block to blame (the ns block for Δd and e; line 0 for an
 // empty contour): empty contour; Δd ≤ 0; e < 0; ns block an arc; ns block not moving in X;
@@ -64,6 +74,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <iterator>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -72,6 +84,7 @@
 #include <fmt/format.h>
 
 #include "interp/cycles/contour_geometry.hpp"
+#include "interp/cycles/contour_troughs.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -304,10 +317,64 @@ struct Interval {
   double s0, s1;
 };
 
+/// One stretch of one level to cut.
+struct LevelCut {
+  long long level;  // k: the level lies k·Δd deep
+  Interval interval;
+};
+
+/// How the pocket engine orders and ends its cuts.
+struct PocketStyle {
+  bool byRegion = false;    // Haas: region by region (the cut above each stretch first, then the
+                            // stretches below it in Z order), else level by level (Fanuc/GSK)
+  bool escapeAt45 = false;  // Haas type I: leave each stretch by the 45° retract of e, else
+                            // follow the contour up and back off e in X (type II)
+};
+
+/// The cuts in region order: each stretch (its level's k) lies under exactly one stretch of
+/// level k − 1 (the material is connected upward); visiting that tree depth first, children in
+/// Z order, cuts the region reached from Z_A′ (the material above every trough) down to its
+/// bottom first, then each trough, in the order of Z, level by level down to its own bottom
+/// (a trough holding troughs of its own: its common part first, then those in Z order).
+std::vector<LevelCut> regionOrder(const std::vector<LevelCut>& byLevel) {
+  constexpr double kSpanTolMm = 1e-6;
+  std::vector<std::vector<std::size_t>> children(byLevel.size());
+  std::vector<std::size_t> roots;
+  std::size_t aboveBegin = 0, aboveEnd = 0;  // the stretches of the level above, in Z order
+  for (std::size_t i = 0; i < byLevel.size(); ++i) {
+    if (i > 0 && byLevel[i].level != byLevel[i - 1].level) {
+      aboveBegin = aboveEnd;
+      aboveEnd = i;
+      while (aboveBegin < aboveEnd && byLevel[aboveBegin].level != byLevel[i].level - 1) ++aboveBegin;
+    }
+    const Interval& below = byLevel[i].interval;
+    // The last stretch above that begins no later than this one; it holds it, or none does.
+    const auto first = byLevel.begin() + static_cast<std::ptrdiff_t>(aboveBegin);
+    const auto last = byLevel.begin() + static_cast<std::ptrdiff_t>(aboveEnd);
+    const auto after = std::upper_bound(first, last, below.s0 + kSpanTolMm,
+                                        [](double s, const LevelCut& cut) { return s < cut.interval.s0; });
+    if (after != first && below.s1 <= std::prev(after)->interval.s1 + kSpanTolMm) {
+      children[static_cast<std::size_t>(std::prev(after) - byLevel.begin())].push_back(i);
+    } else {
+      roots.push_back(i);
+    }
+  }
+  std::vector<LevelCut> ordered;
+  std::vector<std::size_t> stack(roots.rbegin(), roots.rend());
+  while (!stack.empty()) {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    ordered.push_back(byLevel[i]);
+    stack.insert(stack.end(), children[i].rbegin(), children[i].rend());
+  }
+  return ordered;
+}
+
 class TypeTwo {
  public:
-  explicit TypeTwo(const Plan& plan)
+  TypeTwo(const Plan& plan, PocketStyle style)
       : plan_(plan),
+        style_(style),
         shiftedStart_(plan.rough.front().from),
         b_(plan.rough.front().to),
         tail_(plan.rough.begin() + 1, plan.rough.end()),
@@ -317,24 +384,23 @@ class TypeTwo {
   }
 
   std::optional<std::vector<CycleLeg>> legs() && {
-    const RoughingParams& params = *plan_.params;
+    const double depthMm = plan_.params->depthMm;
     legs_.straight(MoveKind::Rapid, shiftedStart_, 1);
     int infeedStep = 2;
-    const double deepestMm = deepestDepthMm();
-    for (long long k = 1; nextLevel(k, params.depthMm, deepestMm, legs_); ++k) {
-      const double levelMm = xAtDepth(k * params.depthMm);
-      const double previousMm = xAtDepth((k - 1) * params.depthMm);
-      for (const Interval& interval : intervals(levelMm)) {
-        if (interval.s0 <= kTolMm) {
-          returnToStartZ();
-          legs_.straight(plan_.infeedKind, RZ(levelMm, shiftedStart_.y()), infeedStep);
-        } else {
-          enterPocket(levelMm, previousMm, interval.s0);
-        }
-        infeedStep = 6;
-        cutAndEscape(levelMm, previousMm, interval.s1);
-        inFirstRegion_ = interval.s0 <= kTolMm;
+    for (const LevelCut& cut : cuts()) {
+      if (legs_.full()) break;
+      const Interval& interval = cut.interval;
+      const double levelMm = xAtDepth(cut.level * depthMm);
+      const double previousMm = xAtDepth((cut.level - 1) * depthMm);
+      if (interval.s0 <= kTolMm) {
+        returnToStartZ();
+        legs_.straight(plan_.infeedKind, RZ(levelMm, shiftedStart_.y()), infeedStep);
+      } else {
+        enterPocket(levelMm, previousMm, interval.s0);
       }
+      infeedStep = 6;
+      cutAndEscape(levelMm, previousMm, interval);
+      inFirstRegion_ = interval.s0 <= kTolMm;
     }
     returnToStartZ();
     semiFinishAndReturn(plan_, legs_, infeedStep);
@@ -346,6 +412,22 @@ class TypeTwo {
   double zOf(double s) const { return shiftedStart_.y() + plan_.cutDir * s; }
   double depthOf(double xMm) const { return plan_.stepDir * (xMm - shiftedStart_.x()); }
   double xAtDepth(double depthMm) const { return shiftedStart_.x() + plan_.stepDir * depthMm; }
+
+  /// Every stretch of every level, level by level (each level's in cutting order), or in region
+  /// order. Each stretch makes at least one leg: past the move limit the list overflows.
+  std::vector<LevelCut> cuts() {
+    const double depthMm = plan_.params->depthMm;
+    const double deepestMm = deepestDepthMm();
+    std::vector<LevelCut> byLevel;
+    for (long long k = 1; nextLevel(k, depthMm, deepestMm, legs_); ++k) {
+      for (const Interval& interval : intervals(xAtDepth(k * depthMm))) byLevel.push_back({k, interval});
+      if (byLevel.size() > legs_.maxLegs()) {
+        legs_.overflow();
+        return {};
+      }
+    }
+    return style_.byRegion ? regionOrder(byLevel) : byLevel;
+  }
 
   double deepestDepthMm() const {
     double deepest = depthOf(b_.x());
@@ -440,13 +522,24 @@ class TypeTwo {
     legs_.straight(MoveKind::Feed, entry, 6);
   }
 
-  /// Along the level to `s1`, up the contour to the previous level, and back off e in X.
-  void cutAndEscape(double levelMm, double previousMm, double s1) {
+  /// Along the level to the stretch's end, then up the contour to the previous level and back
+  /// off e in X; or (escapeAt45) back off e in X and in Z at once, no further back in Z than
+  /// where the stretch began (a trough narrower than e).
+  void cutAndEscape(double levelMm, double previousMm, const Interval& interval) {
+    const double s1 = interval.s1;
+    const double retractMm = plan_.params->retractMm;
     std::optional<Crossing> exit;
     for (const Crossing& crossing : crossings(levelMm)) {
       if (std::abs(crossing.s - s1) <= kTolMm) exit = crossing;
     }
     legs_.straight(MoveKind::Feed, exit ? exit->point : RZ(levelMm, zOf(s1)), 3);
+    if (style_.escapeAt45) {
+      const RZ& at = legs_.at();
+      const double backMm = std::min(retractMm, interval.s1 - interval.s0);
+      legs_.straight(plan_.retractKind,
+                     RZ(at.x() - plan_.stepDir * retractMm, at.y() - plan_.cutDir * backMm), 4);
+      return;
+    }
     if (exit) {
       for (const ContourSegment& piece :
            climb(tail_, exit->index, exit->point, previousMm, plan_.stepDir, true)) {
@@ -454,11 +547,11 @@ class TypeTwo {
       }
     }
     const RZ& at = legs_.at();
-    legs_.straight(plan_.retractKind, RZ(at.x() - plan_.stepDir * plan_.params->retractMm, at.y()),
-                   4);
+    legs_.straight(plan_.retractKind, RZ(at.x() - plan_.stepDir * retractMm, at.y()), 4);
   }
 
   const Plan& plan_;
+  PocketStyle style_;
   RZ shiftedStart_;
   RZ b_;
   Contour tail_;
@@ -468,7 +561,9 @@ class TypeTwo {
   bool inFirstRegion_ = true;
 };
 
-std::optional<std::vector<CycleLeg>> typeTwoLegs(const Plan& plan) { return TypeTwo(plan).legs(); }
+std::optional<std::vector<CycleLeg>> typeTwoLegs(const Plan& plan, PocketStyle style) {
+  return TypeTwo(plan, style).legs();
+}
 
 }  // namespace
 
@@ -501,7 +596,21 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
   }
   const double stepDir = stepMm > 0 ? 1.0 : -1.0;
   const double cutDir = cuttingDirection(contour);
-  if (auto problem = contourProblem(contour, params, stepDir, cutDir, names)) return *problem;
+  // Haas: a contour with troughs, type I as well as type II, is roughed region by region.
+  bool haasTroughs = false;
+  if (params.haasTroughs) {
+    const std::vector<std::size_t> bottoms = troughBottoms(contour, stepDir);
+    if (bottoms.size() > kHaasMaxTroughs) {
+      return errorAt(contour[bottoms[kHaasMaxTroughs]],
+                     fmt::format("{} contour has {} troughs (this block reaches the bottom of trough {}): a Haas roughs at most {} in "
+                                 "one cycle (its operator's manual, \"Troughs\"); split the contour into two cycles",
+                                 cycle, bottoms.size(), kHaasMaxTroughs + 1, kHaasMaxTroughs));
+    }
+    haasTroughs = !bottoms.empty();
+  }
+  RoughingParams checked = params;
+  checked.typeII = params.typeII || haasTroughs;
+  if (auto problem = contourProblem(contour, checked, stepDir, cutDir, names)) return *problem;
   const RZ finishing(params.allowanceXMm, params.allowanceZMm);
   const Plan plan{start,
                   translatedContour(contour, finishing + RZ(params.roughAllowanceXMm, params.roughAllowanceZMm)),
@@ -511,7 +620,9 @@ Result<std::vector<CycleLeg>> stockRemovalLegs(const RZ& start, const Contour& c
                   ns.kind == MoveKind::Rapid ? MoveKind::Rapid : MoveKind::Feed,
                   params.retractAtFeed ? MoveKind::Feed : MoveKind::Rapid,
                   &params};
-  auto legs = params.typeII ? typeTwoLegs(plan) : typeOneLegs(plan);
+  auto legs = haasTroughs    ? typeTwoLegs(plan, {.byRegion = true, .escapeAt45 = !params.typeII})
+              : params.typeII ? typeTwoLegs(plan, {})
+                              : typeOneLegs(plan);
   if (!legs) {
     return errorAt(ns, fmt::format("{} would make more than {} moves (the limit) roughing this contour {:g} mm a "
                                    "level: check the contour's {} coordinates and the depth of cut Δd; if it is "

@@ -124,21 +124,26 @@ TEST(HaasG71, BadForms) {
               "YASNAC");
 }
 
-// Two contours a Haas treats in a way of its own, which lathesim does not simulate, are
-// refused at their block saying so: a last block retracting past the start point (X55. beyond
-// X52.; for G72, Z3. beyond Z2.), and a type I contour with a pocket (X26. after X30., back
-// toward the P block's X20.), which a Fanuc alarms on. A last block at the start point is read.
-TEST(HaasG71, ContoursTheHaasManualTreatsItsOwnWayAreRefused) {
+// Where a Haas contour may go (its operator's manual, "Type 2 details"): only the Q block may
+// pass the start point in the step axis (a short retraction at the end of the contour), and it
+// is roughed as any block: N20 X55. beyond the start's X52. ends the closing pass at C′ =
+// (27.5 + 0.25, −30 + 0.1); a block before Q passing the start is refused at its line. G72's
+// Q block Z3. beyond Z2. likewise. A type I contour with a pocket (X26. after X30.) is roughed
+// under haas (haas_troughs_test.cpp) and is still the Fanuc's alarm under fanuc-a.
+TEST(HaasG71, OnlyTheQBlockMayPassTheStartPointAndTypeIPocketsAreRoughed) {
   const std::string start = "G00 X52. Z2.\nG71 P10 Q20 U0.5 W0.1 D2. F0.25\nN10 G00 X30.\nG01 Z-20.\nX50. Z-30.\n";
-  expectError(run(start + "N20 X55.\n", haas()), 6, 1, "retract past the start point (X55 beyond the start's X52)");
-  const auto atStart = run(start + "N20 X52.\n", haas());
-  ASSERT_TRUE(atStart.ok()) << atStart.diagnostics[0].message;
-  EXPECT_NEAR(atStart.toolpath.moves.back().from.x(), 26.25, 1e-12);  // the closing pass ends at X52. + U0.5
-  expectError(run("G00 X52. Z2.\nG72 P10 Q20 W0.2 D4. F0.2\nN10 G00 Z-10.\nG01 X20.\nN20 Z3.\n", haas()), 5, 1,
-              "retract past the start point (Z3 beyond the start's Z2)");
+  const auto pastStart = run(start + "N20 X55.\n", haas());
+  ASSERT_TRUE(pastStart.ok()) << pastStart.diagnostics[0].message;
+  EXPECT_NEAR(pastStart.toolpath.moves.back().from.x(), 27.75, 1e-12);
+  EXPECT_NEAR(pastStart.toolpath.moves.back().from.y(), -29.9, 1e-12);
+  expectError(run(start + "X55.\nN20 Z-35.\n", haas()), 6, 1,
+              "goes past the start point before its last block (X55 beyond the start's X52)");
+  const auto facing = run("G00 X52. Z2.\nG72 P10 Q20 W0.2 D4. F0.2\nN10 G00 Z-10.\nG01 X20.\nN20 Z3.\n", haas());
+  ASSERT_TRUE(facing.ok()) << facing.diagnostics[0].message;
+  EXPECT_NEAR(facing.toolpath.moves.back().from.y(), 3.2, 1e-12);
   const std::string pocket = "N10 G00 X20.\nG01 Z-10.\nX30. Z-15.\nX26. Z-20.\nN20 X50. Z-30.\n";
-  expectError(run("G00 X52. Z2.\nG71 P10 Q20 U0.5 D2. F0.25\n" + pocket, haas()), 6, 1,
-              "type I contour with a pocket");
+  const auto haasPocket = run("G00 X52. Z2.\nG71 P10 Q20 U0.5 D2. F0.25\n" + pocket, haas());
+  ASSERT_TRUE(haasPocket.ok()) << haasPocket.diagnostics[0].message;
   expectError(run("G00 X52. Z2.\nG71 U2. R1.\nG71 P10 Q20 U0.5 F0.25\n" + pocket, test::under("haas", Dialect::FanucA)),
               7, 1, "type I contour must be monotonic");
 }
