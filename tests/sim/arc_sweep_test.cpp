@@ -8,6 +8,7 @@
 
 #include "sim/move_sweep.hpp"
 #include "sim/simulate.hpp"
+#include "test_moves.hpp"
 
 namespace lathesim::sim {
 namespace {
@@ -15,18 +16,7 @@ namespace {
 constexpr double kVoxelMm = 0.25;
 
 interp::Move move(interp::MoveKind kind, RZ from, RZ to, RZ center = RZ(0, 0)) {
-  interp::Move m;
-  m.kind = kind;
-  m.from = from;
-  m.to = to;
-  m.center = center;
-  m.feed = interp::isCutting(kind) ? 0.1 : 0.0;
-  m.tool = 1;
-  m.line = 1;
-  m.column = 1;
-  m.spindleOn = true;
-  m.spindleS = 500;  // turning (S0 would be a stopped spindle)
-  return m;
+  return test::turningMove(kind, from, to, 0, 1, center);
 }
 
 // A sharp tool: a 12 mm square whose corner at the programmed point points at -r, -z.

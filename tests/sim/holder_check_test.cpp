@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "sim/simulate.hpp"
+#include "test_moves.hpp"
 
 namespace lathesim::sim {
 namespace {
@@ -15,18 +16,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int line) {
-  interp::Move m;
-  m.kind = kind;
-  m.from = from;
-  m.to = to;
-  m.feed = kind == interp::MoveKind::Feed ? 0.1 : 0.0;
-  m.tool = 1;
-  m.block = block;
-  m.line = line;
-  m.column = 1;
-  m.spindleOn = true;
-  m.spindleS = 500;  // turning (S0 would be a stopped spindle)
-  return m;
+  return test::turningMove(kind, from, to, block, line);
 }
 
 ConvexPolygon box(double r0, double z0, double r1, double z1) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/simulate.hpp"
+#include "test_moves.hpp"
 
 namespace lathesim::sim {
 namespace {
@@ -27,18 +28,7 @@ ToolOutlines defaultTool() {
 }
 
 interp::Move feed(RZ from, RZ to, int block) {
-  interp::Move m;
-  m.kind = interp::MoveKind::Feed;
-  m.from = from;
-  m.to = to;
-  m.feed = 0.1;
-  m.tool = 1;
-  m.block = block;
-  m.line = block + 1;
-  m.column = 1;
-  m.spindleOn = true;
-  m.spindleS = 1000;
-  return m;
+  return test::turningMove(interp::MoveKind::Feed, from, to, block, block + 1);
 }
 
 // The tip runs at radius `tipMm` from Z1 to the face (block 0, cuts nothing), then leftwards

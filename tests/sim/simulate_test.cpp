@@ -5,23 +5,13 @@
 #include <cmath>
 
 #include "interp/interpreter.hpp"
+#include "test_moves.hpp"
 
 namespace lathesim::sim {
 namespace {
 
 interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int line) {
-  interp::Move m;
-  m.kind = kind;
-  m.from = from;
-  m.to = to;
-  m.feed = kind == interp::MoveKind::Feed ? 0.1 : 0.0;
-  m.tool = 1;
-  m.block = block;
-  m.line = line;
-  m.column = 1;
-  m.spindleOn = true;
-  m.spindleS = 500;  // turning (S0 would be a stopped spindle)
-  return m;
+  return test::turningMove(kind, from, to, block, line);
 }
 
 ToolOutlines squareTool() {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/simulate.hpp"
+#include "test_moves.hpp"
 
 namespace lathesim::sim {
 namespace {
@@ -11,17 +12,9 @@ namespace {
 constexpr double kVoxelMm = 0.25;
 
 interp::Move feedMove(RZ from, RZ to, bool spindleOn) {
-  interp::Move m;
-  m.kind = interp::MoveKind::Feed;
-  m.from = from;
-  m.to = to;
-  m.feed = 0.1;
-  m.tool = 1;
-  m.block = 0;
-  m.line = 4;
+  interp::Move m = test::turningMove(interp::MoveKind::Feed, from, to, 0, 4);
   m.column = 2;
   m.spindleOn = spindleOn;
-  m.spindleS = 500;
   return m;
 }
 

@@ -7,6 +7,7 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/move.hpp"
+#include "test_moves.hpp"
 
 namespace lathesim::sim::test {
 
@@ -20,17 +21,9 @@ inline ConvexPolygon sharpVee(double heightMm) {
 
 /// A thread move of tool 1 on line 1, the spindle turning at 500 rpm in `direction`.
 inline interp::Move threadMove(RZ from, RZ to, double leadMm, double startDeg, interp::SpindleDirection direction) {
-  interp::Move m;
-  m.kind = interp::MoveKind::Thread;
-  m.from = from;
-  m.to = to;
+  interp::Move m = turningMove(interp::MoveKind::Thread, from, to);
   m.feed = leadMm;
   m.thread = {leadMm, true, startDeg, 1};
-  m.tool = 1;
-  m.line = 1;
-  m.column = 1;
-  m.spindleOn = true;
-  m.spindleS = 500;
   m.spindleDirection = direction;
   return m;
 }

@@ -19,6 +19,7 @@ namespace {
 using test::arcSegment;
 using test::expectLegsNear;
 using test::expectRoughingError;
+using test::params;
 using test::HandLeg;
 using test::segment;
 
@@ -32,16 +33,6 @@ Contour odTaperContour() {
   return {segment(kRapid, 50, 2, 20, 2, 10), segment(kFeed, 20, 2, 20, -30, 20),
           segment(kFeed, 20, -30, 30, -40, 30), segment(kFeed, 30, -40, 30, -60, 40),
           segment(kFeed, 30, -60, 50, -60, 50)};
-}
-
-RoughingParams params(double depthMm, double retractMm, double allowanceXMm,
-                      double allowanceZMm) {
-  RoughingParams p;
-  p.depthMm = depthMm;
-  p.retractMm = retractMm;
-  p.allowanceXMm = allowanceXMm;
-  p.allowanceZMm = allowanceZMm;
-  return p;
 }
 
 // G71 U2 R0.5; G71 P10 Q50 U0.5 W0.1: Δd 2, e 0.5, allowance (0.25 radius, 0.1).

@@ -15,21 +15,12 @@ namespace {
 using test::arcSegment;
 using test::expectLegsNear;
 using test::expectRoughingError;
+using test::params;
 using test::segment;
 
 constexpr MoveKind kRapid = MoveKind::Rapid;
 constexpr MoveKind kFeed = MoveKind::Feed;
 constexpr MoveKind kCw = MoveKind::ArcCW;
-
-RoughingParams params(double depthMm, double retractMm, double allowanceXMm,
-                      double allowanceZMm) {
-  RoughingParams p;
-  p.depthMm = depthMm;
-  p.retractMm = retractMm;
-  p.allowanceXMm = allowanceXMm;
-  p.allowanceZMm = allowanceZMm;
-  return p;
-}
 
 // A = X104 Z2 (radius 52). N10 G00 Z-12; N20 G01 X80 (radius 40); N30 X40 Z-2 (radius 20);
 // N40 Z0; N50 X0.

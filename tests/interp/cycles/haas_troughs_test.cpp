@@ -67,13 +67,11 @@ std::vector<HandLeg> facingLegs(std::vector<HandLeg> legs) {
 }
 
 RoughingParams haasParams(double depthMm, double retractMm, bool typeII) {
-  RoughingParams params;
-  params.depthMm = depthMm;
-  params.retractMm = retractMm;
-  params.retractAtFeed = false;
-  params.typeII = typeII;
-  params.haasTroughs = true;
-  return params;
+  RoughingParams p = test::params(depthMm, retractMm, 0, 0);
+  p.retractAtFeed = false;
+  p.typeII = typeII;
+  p.haasTroughs = true;
+  return p;
 }
 
 // One trough, type I. A = (26, 2); N1 G00 to B = (10, 2); then (10, −10), up to the crest

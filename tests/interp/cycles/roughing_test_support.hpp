@@ -14,9 +14,20 @@
 
 #include "interp/cycles/contour.hpp"
 #include "interp/cycles/cycle_leg.hpp"
+#include "interp/cycles/roughing_cycle.hpp"
 #include "interp/result.hpp"
 
 namespace lathesim::interp::test {
+
+/// Δd, e and the finishing allowance (X a radius, Z) of a G71/G72, the rest as defaulted.
+inline RoughingParams params(double depthMm, double retractMm, double allowanceXMm, double allowanceZMm) {
+  RoughingParams p;
+  p.depthMm = depthMm;
+  p.retractMm = retractMm;
+  p.allowanceXMm = allowanceXMm;
+  p.allowanceZMm = allowanceZMm;
+  return p;
+}
 
 /// A straight contour segment (r, z in mm, radius) made by the block on `line`, column 1.
 inline ContourSegment segment(MoveKind kind, double r0, double z0, double r1, double z1,
