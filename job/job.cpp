@@ -73,8 +73,9 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
       return tool.number == number && (setup.toolsGiven || number != 1);
     });
     if (defined || std::find(mounted.begin(), mounted.end(), number) != mounted.end()) continue;
-    std::vector<std::string> comments = block.comments;
-    comments.insert(comments.end(), block.commentsAbove.begin(), block.commentsAbove.end());
+    const interp::BlockComments& blockComments = program.commentsOf(block);
+    std::vector<std::string> comments = blockComments.own;
+    comments.insert(comments.end(), blockComments.above.begin(), blockComments.above.end());
     for (const std::string& comment : comments) {
       auto named = toolNamedIn(comment, number, setup.stock.diameterMm);
       if (!named) continue;
