@@ -130,8 +130,9 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
 }
 
 interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
+  if (!programLines) programLines.emplace(programText);
   return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
-          programLines.lineOf(programText, line)};
+          programLines->lineOf(programText, line)};
 }
 
 std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
@@ -184,7 +185,6 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
     return std::nullopt;
   }
   job.programText = wholeText(in);
-  job.programLines = interp::LineStarts(job.programText);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {

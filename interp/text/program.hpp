@@ -6,9 +6,9 @@
 // (Program::plainWords): holding every block's sorted words took ~600 B a block, 600 MB for a
 // program of a million blocks. A block of Custom Macro B (a statement, an expression in an
 // address, a G65 call) is kept as read, its words sorted each time it runs, since their values
-// may change between runs. An error in a block is kept with the block and reported only if
-// execution reaches it (text after M30 that never runs is never checked, as when the program
-// was read block by block).
+// may change between runs. An error in a block is kept (by the block's ordinal, apart from the
+// blocks, as comments are) and reported only if execution reaches it (text after M30 that
+// never runs is never checked, as when the program was read block by block).
 
 #include <cstddef>
 #include <map>
