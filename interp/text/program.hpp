@@ -50,8 +50,8 @@ struct ProgramBlock {
   int ordinal = 0;        // 0-based position among the blocks read: its index in Program::blocks
   int line = 0;           // 1-based line where the block starts
   int column = 0;         // 1-based column where the block starts
-  // The file and the two flags share a word (a run reads at most one file a program number it
-  // calls, far fewer than 2^30).
+  // The file and the two flags share a word: a run reads one file a program number the text
+  // lacks, and program numbers have at most 8 digits, so fewer than 10^8 + 1 < 2^30 files.
   unsigned source : 30 = 0;  // the file it is in: Program::sources (0: the program's own)
   bool deleted : 1 = false;  // it starts with '/'
   bool skipped : 1 = false;  // deleted while block delete is on: never runs, never checked
@@ -82,7 +82,7 @@ struct BlockError {
 
 /// A text the blocks were read from: the program's own (name empty) or a subprogram's file,
 /// and how it was read. The program's own text is the caller's, read where it lies (a program
-/// of a million blocks is 18 MB of text: held twice, it was 18 B a block more); a file M98
+/// of a million blocks is 18 MB of text: held twice, it was 18 B a line more); a file M98
 /// reads is held by the Program.
 struct SourceText {
   std::string name;
