@@ -1,6 +1,7 @@
 #include "interp/interpreter.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
 #include <fmt/format.h>
@@ -69,13 +70,15 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
     if (status.ok()) status = pipeline.finish();
     else result.toolpath.moves = pipeline.abandon();
   }
-  // A diagnostic in the file it names: the program's own, or a subprogram's.
-  const LineStarts programLines(programText);
+  // A diagnostic in the file it names: the program's own, or a subprogram's. The program's line
+  // starts (8 B a line) are found only when a diagnostic needs them.
+  std::optional<LineStarts> programLines;
   const auto diagnostic = [&](Severity severity, const Error& e) {
     for (const SourceText& source : program.sources)
       if (!e.file.empty() && source.name == e.file)
         return Diagnostic{severity, e.file, e.line, e.column, e.message, lineOf(source.text, e.line)};
-    return Diagnostic{severity, fileName, e.line, e.column, e.message, programLines.lineOf(programText, e.line)};
+    if (!programLines) programLines.emplace(programText);
+    return Diagnostic{severity, fileName, e.line, e.column, e.message, programLines->lineOf(programText, e.line)};
   };
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.

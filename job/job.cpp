@@ -73,8 +73,9 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
       return tool.number == number && (setup.toolsGiven || number != 1);
     });
     if (defined || std::find(mounted.begin(), mounted.end(), number) != mounted.end()) continue;
-    std::vector<std::string> comments = block.comments;
-    comments.insert(comments.end(), block.commentsAbove.begin(), block.commentsAbove.end());
+    const interp::BlockComments& blockComments = program.commentsOf(block);
+    std::vector<std::string> comments = blockComments.own;
+    comments.insert(comments.end(), blockComments.above.begin(), blockComments.above.end());
     for (const std::string& comment : comments) {
       auto named = toolNamedIn(comment, number, setup.stock.diameterMm);
       if (!named) continue;
@@ -129,8 +130,9 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
 }
 
 interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
+  if (!programLines) programLines.emplace(programText);
   return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
-          programLines.lineOf(programText, line)};
+          programLines->lineOf(programText, line)};
 }
 
 std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
@@ -183,7 +185,6 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
     return std::nullopt;
   }
   job.programText = wholeText(in);
-  job.programLines = interp::LineStarts(job.programText);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {

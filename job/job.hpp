@@ -21,7 +21,9 @@ struct Job {
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   std::string programText;
-  interp::LineStarts programLines;  // of programText: a warning per block stays linear
+  // Of programText, found by the first warningAt (8 B a line, not held while the interpreter
+  // reads a long program unless a warning needs it): a warning per block stays linear.
+  mutable std::optional<interp::LineStarts> programLines;
 
   /// A warning located in the program, ready to print and report.
   interp::Diagnostic warningAt(int line, int column, std::string message) const;

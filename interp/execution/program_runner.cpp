@@ -116,7 +116,7 @@ Result<std::size_t> ProgramRunner::runBlock(std::size_t index) {
   const ProgramBlock& block = program_.blocks[index];
   toolpath_.blockCount = std::max(toolpath_.blockCount, block.ordinal + 1);
   if (block.skipped) return index + 1;
-  if (!block.content.ok()) return inFile(block.content.error(), index);
+  if (const Error* error = program_.errorOf(block)) return inFile(*error, index);
   if (guard_.step(index)) return stepLimitError(index);
 
   Result<std::size_t> after = index + 1;
@@ -306,9 +306,9 @@ Result<std::size_t> ProgramRunner::giveBack(const SubprogramReturn& giveBack, st
 // (program_library.hpp), or say which names were looked for where.
 Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int column, std::size_t caller) {
   if (program_.programStart.count(programNumber) != 0) return success();
-  if (const auto file = findProgramFile(programNumber, options_.programDirectories)) {
+  if (auto file = findProgramFile(programNumber, options_.programDirectories)) {
     const std::string name = file->path.string();
-    for (ReadNote& note : appendProgramFile(program_, name, file->text, programNumber, options_.control.blockSkip,
+    for (ReadNote& note : appendProgramFile(program_, name, std::move(file->text), programNumber, options_.control.blockSkip,
                                             options_.dialect, options_.control.machineMCodes))
       notes_.push_back(Error{note.line, note.column, std::move(note.message), name});
     guard_.programGrew(program_.blocks.size());

@@ -7,8 +7,9 @@ namespace lathesim::interp {
 
 Result<ParsedBlock> sortedWords(const Program& program, const ProgramBlock& block, const macro::VariableStore* variables,
                                 const ModalState& state, const InterpreterOptions& options) {
-  if (!block.content.ok()) return block.content.error();
+  if (const Error* error = program.errorOf(block)) return *error;
   if (auto words = program.plainWords(block)) return std::move(*words);
+  if (block.macroBlock() == nullptr) return Error{block.line, block.column, "a block skipped by block delete has no words to run"};
   const macro::MacroBlock& macroBlock = *block.macroBlock();
   if (macroBlock.statement) return Error{block.line, block.column, "a macro statement has no words to run here"};
   const macro::VariableStore none;

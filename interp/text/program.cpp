@@ -50,11 +50,18 @@ Result<SortedContent> contentOf(const std::vector<Token>& tokens, const RawBlock
 }
 
 // A block as the program keeps it: a block of plain words by where it starts.
-Result<BlockContent> kept(Result<SortedContent> content, ReadPosition start) {
-  if (!content.ok()) return content.error();
-  if (auto* macroBlock = std::get_if<std::shared_ptr<const macro::MacroBlock>>(&content.value()))
+BlockContent kept(SortedContent content, ReadPosition start) {
+  if (auto* macroBlock = std::get_if<std::shared_ptr<const macro::MacroBlock>>(&content))
     return BlockContent{std::move(*macroBlock)};
   return BlockContent{PlainBlock{start}};
+}
+
+// The entry of `table` (sorted by ordinal) for the block `ordinal`, or nullptr.
+template <class Entry>
+const Entry* entryOf(const std::vector<Entry>& table, int ordinal) {
+  const auto found = std::lower_bound(table.begin(), table.end(), ordinal,
+                                      [](const Entry& entry, int wanted) { return entry.ordinal < wanted; });
+  return found != table.end() && found->ordinal == ordinal ? &*found : nullptr;
 }
 
 }  // namespace
@@ -75,11 +82,22 @@ std::optional<int> Program::programNumberOf(std::size_t index) const {
   return blocks[static_cast<std::size_t>(start)].programNumber;
 }
 
+const BlockComments& Program::commentsOf(const ProgramBlock& block) const {
+  static const BlockComments none;
+  const BlockComments* found = entryOf(comments, block.ordinal);
+  return found != nullptr ? *found : none;
+}
+
+const Error* Program::errorOf(const ProgramBlock& block) const {
+  const BlockError* found = entryOf(errors, block.ordinal);
+  return found != nullptr ? &found->error : nullptr;
+}
+
 std::optional<ParsedBlock> Program::plainWords(const ProgramBlock& block) const {
   if (block.skipped || !block.plain()) return std::nullopt;
   const SourceText& source = sources[static_cast<std::size_t>(block.source)];
   // It read when the program was read, the same way: it reads again.
-  BlockReader reader(source.text, std::get<PlainBlock>(block.content.value()).start);
+  BlockReader reader(source.text, std::get<PlainBlock>(block.content).start);
   RawBlock raw = *reader.next().value();
   if (raw.skipFrom && source.blockDelete) raw.chars.resize(*raw.skipFrom);
   auto content = contentOf(lexBlock(raw).value(), raw, source.dialect, source.machine);
@@ -110,7 +128,7 @@ std::vector<ReadNote> appendBlocks(Program& program, int source) {
     if (!next.ok()) {  // an unclosed comment: nothing after it can be split into blocks
       block.line = next.error().line;
       block.column = next.error().column;
-      block.content = next.error();
+      program.errors.push_back({block.ordinal, next.error()});
       program.programOf.push_back(currentProgram);
       program.blocks.push_back(std::move(block));
       break;
@@ -121,8 +139,6 @@ std::vector<ReadNote> appendBlocks(Program& program, int source) {
     block.line = raw.line;
     block.column = raw.column;
     block.deleted = raw.deleted;
-    block.comments = raw.comments;
-    block.commentsAbove = raw.commentsAbove;
     block.skipped = raw.deleted && blockDelete;
     Result<SortedContent> content = Error{};
     if (!block.skipped) {
@@ -151,7 +167,11 @@ std::vector<ReadNote> appendBlocks(Program& program, int source) {
                                             code.text, own ? own->meaning : "machine function")});
       }
     }
-    if (!block.skipped) block.content = kept(std::move(content), reader.blockStart());
+    if (!block.skipped && content.ok()) block.content = kept(std::move(content).value(), reader.blockStart());
+    else if (!block.skipped) program.errors.push_back({block.ordinal, content.error()});
+    // Moved out last: a macro block's message is its first comment, read above.
+    if (!raw.comments.empty() || !raw.commentsAbove.empty())
+      program.comments.push_back({block.ordinal, std::move(raw.comments), std::move(raw.commentsAbove)});
     program.programOf.push_back(currentProgram);
     program.blocks.push_back(std::move(block));
   }
@@ -170,15 +190,17 @@ std::vector<ReadNote> appendBlocks(Program& program, int source) {
 
 Program readProgram(std::string_view text, bool blockDelete, Dialect dialect, MachineMCodes machine) {
   Program program;
-  program.sources.push_back({"", std::string(text), blockDelete, dialect, machine});
+  program.sources.push_back({"", text, nullptr, blockDelete, dialect, machine});
   appendBlocks(program, 0);
   return program;
 }
 
-std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, std::string_view text,
-                                        int number, bool blockDelete, Dialect dialect, MachineMCodes machine) {
+std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, std::string text, int number,
+                                        bool blockDelete, Dialect dialect, MachineMCodes machine) {
   const std::size_t first = program.blocks.size();
-  program.sources.push_back({name, std::string(text), blockDelete, dialect, machine});
+  auto file = std::make_shared<const std::string>(std::move(text));
+  const std::string_view view = *file;
+  program.sources.push_back({name, view, std::move(file), blockDelete, dialect, machine});
   std::vector<ReadNote> notes = appendBlocks(program, static_cast<int>(program.sources.size()) - 1);
   if (program.programStart.count(number) != 0 || first == program.blocks.size()) return notes;
   // No O line for it: the file is the program; its blocks before any O block belong to it.

@@ -92,5 +92,48 @@ TEST(ProgramBlocks, OnlyPlainBlocksHaveWords) {
   EXPECT_TRUE(program.plainWords(program.blocks[3]));
 }
 
+// The record every block of a long program holds: its peak memory grows with it (a million
+// blocks: 64 MB at 64 B). Comments and errors are kept apart (Program::commentsOf, errorOf):
+// a field added here is paid by every block, so it must be one nearly every block needs.
+static_assert(sizeof(ProgramBlock) <= 64, "ProgramBlock is held for every block of a program");
+
+// Comments and errors are found for the blocks that have them, and only those, in programs
+// where such blocks stand first, last, in a row and apart, with and without block delete.
+TEST(ProgramBlocks, CommentsAndErrorsOfTheirBlocks) {
+  const Program program = readProgram(
+      "(OP 10)\n(T1 ROUGH)\nT0101 (CNMG)\nG0 X1\nG1 X1.2.3\n/G1 X2 (SKIP)\nG0 X3 (A) (B)\nG1 Q\nG1 X4 (LAST",
+      true, Dialect::FanucA);
+  ASSERT_EQ(program.blocks.size(), 7u);
+  const std::vector<std::vector<std::string>> own = {{"CNMG"}, {}, {}, {"SKIP"}, {"A", "B"}, {}, {}};
+  const std::vector<std::vector<std::string>> above = {{"OP 10", "T1 ROUGH"}, {}, {}, {}, {}, {}, {}};
+  const std::vector<int> errorLines = {0, 0, 5, 0, 0, 8, 9};  // 0: none
+  for (std::size_t i = 0; i < program.blocks.size(); ++i) {
+    const ProgramBlock& block = program.blocks[i];
+    EXPECT_EQ(block.ordinal, static_cast<int>(i));
+    EXPECT_EQ(program.commentsOf(block).own, own[i]) << i;
+    EXPECT_EQ(program.commentsOf(block).above, above[i]) << i;
+    const Error* error = program.errorOf(block);
+    EXPECT_EQ(error != nullptr ? error->line : 0, errorLines[i]) << i;
+    EXPECT_EQ(error == nullptr && !block.skipped, block.plain()) << i;
+  }
+  EXPECT_TRUE(program.blocks[3].skipped);
+  EXPECT_NE(program.errorOf(program.blocks[6])->message.find("comment"), std::string::npos);
+}
+
+// A subprogram file's text is held by the Program: read again after the caller's copy is gone.
+TEST(ProgramBlocks, SubprogramFileHeldByTheProgram) {
+  Program program = readProgram("M98 P1234\nM30\n", false, Dialect::FanucA);
+  {
+    std::string file = "O1234\nG1 X7 Z-3 (FILE)\nM99\n";
+    (void)appendProgramFile(program, "O1234.nc", std::move(file), 1234, false, Dialect::FanucA);
+  }
+  ASSERT_EQ(program.blocks.size(), 5u);
+  const auto words = program.plainWords(program.blocks[3]);
+  ASSERT_TRUE(words);
+  EXPECT_EQ(words->words.at('X').number, "7");
+  EXPECT_EQ(program.commentsOf(program.blocks[3]).own, std::vector<std::string>{"FILE"});
+  EXPECT_EQ(program.programStart.at(1234), 2u);
+}
+
 }  // namespace
 }  // namespace lathesim::interp
