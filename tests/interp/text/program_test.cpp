@@ -20,7 +20,7 @@ std::string describe(const ParsedBlock& block) {
   std::string text = std::to_string(block.line) + ":" + std::to_string(block.column);
   for (const auto& [group, code] : block.gCodes) text += " " + code.text + "@" + std::to_string(code.column);
   for (const auto& [group, code] : block.mCodes) text += " " + code.text + "@" + std::to_string(code.column);
-  for (const auto& [letter, word] : block.words) text += " " + word.text() + "@" + std::to_string(word.column);
+  for (const auto& [letter, word] : block.words) text.append(" ").append(word.text()).append("@").append(std::to_string(word.column));
   return text;
 }
 
