@@ -1,8 +1,7 @@
 #include "geometry/triangle_mesh.hpp"
 
 #include <algorithm>
-#include <functional>
-#include <unordered_map>
+#include <tuple>
 
 namespace lathesim {
 
@@ -29,25 +28,38 @@ double surfaceAreaMm2(const TriangleMesh& mesh) {
 }
 
 void weldCoincidentVertices(TriangleMesh& mesh) {
-  struct PositionHash {
-    std::size_t operator()(const std::array<float, 3>& p) const {
-      std::size_t h = 0;
-      for (float c : p) h = h * 0x9E3779B97F4A7C15ull + std::hash<float>()(c);
-      return h;
-    }
+  // The vertices sorted by position, and by index among equal positions: each run of equal
+  // positions becomes its first vertex, and the vertices kept keep their order. (A sort
+  // rather than a hash map of positions: a part has millions of vertices, and the map's
+  // allocation per entry made it several times slower.)
+  struct Keyed {
+    float x, y, z;
+    std::uint32_t index;
   };
-  std::unordered_map<std::array<float, 3>, std::uint32_t, PositionHash> indexAt;
-  indexAt.reserve(mesh.vertices.size());
-  std::vector<Eigen::Vector3f> welded;
-  welded.reserve(mesh.vertices.size());
-  std::vector<std::uint32_t> newIndex(mesh.vertices.size());
+  std::vector<Keyed> sorted(mesh.vertices.size());
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const Eigen::Vector3f& p = mesh.vertices[v];
-    // + 0.0f: -0 and +0 are one position
-    const auto [at, added] = indexAt.try_emplace({p.x() + 0.0f, p.y() + 0.0f, p.z() + 0.0f},
-                                                 static_cast<std::uint32_t>(welded.size()));
-    if (added) welded.push_back(p);
-    newIndex[v] = at->second;
+    sorted[v] = {p.x() + 0.0f, p.y() + 0.0f, p.z() + 0.0f, static_cast<std::uint32_t>(v)};  // + 0.0f: -0 is +0
+  }
+  std::sort(sorted.begin(), sorted.end(), [](const Keyed& a, const Keyed& b) {
+    return std::tie(a.x, a.y, a.z, a.index) < std::tie(b.x, b.y, b.z, b.index);
+  });
+  std::vector<std::uint32_t> firstOf(mesh.vertices.size());  // the first vertex at each one's position
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    const bool samePlace = i > 0 && sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y &&
+                           sorted[i].z == sorted[i - 1].z;
+    firstOf[sorted[i].index] = samePlace ? firstOf[sorted[i - 1].index] : sorted[i].index;
+  }
+  std::vector<std::uint32_t> newIndex(mesh.vertices.size());
+  std::vector<Eigen::Vector3f> welded;
+  welded.reserve(mesh.vertices.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (firstOf[v] == v) {
+      newIndex[v] = static_cast<std::uint32_t>(welded.size());
+      welded.push_back(mesh.vertices[v]);
+    } else {
+      newIndex[v] = newIndex[firstOf[v]];  // an earlier vertex: already numbered
+    }
   }
   for (auto& t : mesh.triangles)
     for (auto& corner : t) corner = newIndex[corner];

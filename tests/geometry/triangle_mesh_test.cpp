@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace lathesim {
 namespace {
 
@@ -83,6 +85,40 @@ TEST(TriangleMesh, MinusZeroIsTheSamePositionAsZero) {
   weldCoincidentVertices(cube);
   EXPECT_EQ(cube.vertices.size(), 8u);
   EXPECT_TRUE(isClosedAndOriented(cube));
+}
+
+// Welding against its definition, worked out the slow way: vertex v becomes the first vertex
+// at its position, and those first vertices are kept in their order. Positions drawn from a
+// small set so that most recur, some as -0.
+TEST(TriangleMesh, WeldingKeepsTheFirstVertexAtEachPositionInOrder) {
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> coordinate(-2, 2);
+  for (int round = 0; round < 20; ++round) {
+    TriangleMesh mesh;
+    const auto value = [&] { const int c = coordinate(random); return c == 0 && random() % 2 ? -0.0f : 0.5f * c; };
+    for (int v = 0; v < 300; ++v) mesh.vertices.emplace_back(value(), value(), value());
+    std::uniform_int_distribution<std::uint32_t> vertex(0, 299);
+    for (int t = 0; t < 200; ++t) mesh.triangles.push_back({vertex(random), vertex(random), vertex(random)});
+    std::vector<Eigen::Vector3f> expectedVertices;
+    std::vector<std::uint32_t> expectedIndex(mesh.vertices.size());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      std::size_t first = 0;
+      while (!(mesh.vertices[first] == mesh.vertices[v])) ++first;  // == takes -0 for +0
+      if (first == v) {
+        expectedIndex[v] = static_cast<std::uint32_t>(expectedVertices.size());
+        expectedVertices.push_back(mesh.vertices[v]);
+      } else {
+        expectedIndex[v] = expectedIndex[first];
+      }
+    }
+    auto expectedTriangles = mesh.triangles;
+    for (auto& t : expectedTriangles)
+      for (auto& corner : t) corner = expectedIndex[corner];
+    weldCoincidentVertices(mesh);
+    ASSERT_EQ(mesh.vertices.size(), expectedVertices.size());
+    for (std::size_t v = 0; v < expectedVertices.size(); ++v) EXPECT_EQ(mesh.vertices[v], expectedVertices[v]);
+    EXPECT_EQ(mesh.triangles, expectedTriangles);
+  }
 }
 
 }  // namespace
