@@ -121,5 +121,37 @@ TEST(TriangleMesh, WeldingKeepsTheFirstVertexAtEachPositionInOrder) {
   }
 }
 
+// Closure against its definition, checked the slow way: every directed edge once and its
+// reverse once. Small random meshes over few vertices, so that every case occurs: closed
+// ones (a cube's triangles with some reversed or repeated), open, doubled, degenerate.
+TEST(TriangleMesh, ClosureIsEachDirectedEdgeOnceAndItsReverseOnce) {
+  std::mt19937 random(11);
+  const TriangleMesh cube = unitCube(1.0);
+  int closedSeen = 0, openSeen = 0;
+  for (int round = 0; round < 400; ++round) {
+    TriangleMesh mesh = cube;
+    mesh.triangles.clear();
+    for (const auto& t : cube.triangles) {
+      const unsigned change = random() % 40;
+      if (change == 0) continue;                                                          // a hole
+      if (change == 1) mesh.triangles.push_back({t[0], t[2], t[1]});                     // reversed
+      else if (change == 2) mesh.triangles.push_back({t[0], t[0], t[1]});                 // degenerate
+      else mesh.triangles.push_back(change == 3 ? std::array{t[1], t[2], t[0]} : t);      // the same, rotated or not
+      if (change == 4) mesh.triangles.push_back(t);                                       // twice
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const auto& t : mesh.triangles)
+      for (int i = 0; i < 3; ++i) edges.emplace_back(t[i], t[(i + 1) % 3]);
+    bool expected = !mesh.triangles.empty();
+    for (const auto& [a, b] : edges)
+      expected = expected && a != b && std::count(edges.begin(), edges.end(), std::pair{a, b}) == 1 &&
+                 std::count(edges.begin(), edges.end(), std::pair{b, a}) == 1;
+    EXPECT_EQ(isClosedAndOriented(mesh), expected) << "round " << round;
+    (expected ? closedSeen : openSeen)++;
+  }
+  EXPECT_GT(closedSeen, 10);
+  EXPECT_GT(openSeen, 10);
+}
+
 }  // namespace
 }  // namespace lathesim
