@@ -245,7 +245,7 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   // After the pictures, not beside them: their copies of the mesh and these would add up to
   // the run's peak memory (a Φ300×600 bar at 0.2 mm: 2.53 times its grid's memory, 2.20 without).
   if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
-    run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
+    run.modelGlb = render::partGlb(run.part, run.job.toolpath);
   for (const std::string& format : options.exports) {
     out.write("part." + format, [&](const Path& file) {
       if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
