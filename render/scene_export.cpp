@@ -45,6 +45,7 @@ class GltfScene {
       low = low.cwiseMin(p);
       high = high.cwiseMax(p);
     }
+    static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "positions are three packed floats");
     const int position = view(positions.data(), positions.size() * sizeof(Eigen::Vector3f));
     accessors_.push_back({{"bufferView", position}, {"byteOffset", 0}, {"componentType", 5126},  // float
                           {"count", positions.size()}, {"type", "VEC3"},
