@@ -11,7 +11,8 @@
 
 namespace lathesim::app {
 
-BatchCli::BatchCli(CLI::App& cli) {
+BatchCli::BatchCli(CLI::App& cli, batch::InProcessMain jobMain) {
+  options_.jobMain = std::move(jobMain);
   command_ = cli.add_subcommand("batch", "simulate many programs, each in its own folder, and summarise them");
   command_->add_option("source", source_, "a manifest (.toml or .csv) or a folder of programs");
   command_->add_option("--out", options_.out, "output folder: a folder per job and the summary")->capture_default_str();

@@ -15,6 +15,7 @@ int runCommand(const RunOptions& options) {
   meshPart(*run, clock);
   run->figures.timing.writeS += stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options, out, clock);
+  if (!run->pictures.empty()) stageThumbnail(options, run->pictures.front().png, out);  // part.png
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();
   figures.timing.totalS = clock.total();
