@@ -62,6 +62,7 @@ int BatchCli::run() {
     for (const auto& name : outputs_) names += (names.empty() ? "" : ",") + name;
     options_.defaults.options.insert(options_.defaults.options.begin(), {"--outputs", names});
   }
+  options_.threadsAtStart = batch::threadCount();  // the libraries' (see BatchOptions::jobMain)
   if (memoryMb_) options_.memoryBytes = static_cast<std::uint64_t>(*memoryMb_ * 1024 * 1024);
   return batch::runBatch(options_);
 }

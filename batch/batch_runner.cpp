@@ -97,7 +97,10 @@ class BatchRun {
     done_ = alreadyDone;
     total_ = alreadyDone + static_cast<int>(pending.size());
     slots_ = std::max(1, options_.jobs.value_or(availableCpus()));
-    inProcess_ = options_.jobMain && onlyThread();
+    // Jobs are forked from the batch only while it runs no thread of its own. The libraries
+    // start some when they are loaded (log4cplus, under OpenVDB, a pool that stays idle):
+    // those were there before the batch began, and a job does not use them.
+    inProcess_ = options_.jobMain && threadCount() > 0 && threadCount() == options_.threadsAtStart;
     if (options_.memoryBytes) {
       budget_ = options_.memoryBytes;
     } else if (auto free = availableMemoryBytes()) {

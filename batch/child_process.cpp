@@ -101,13 +101,13 @@ ChildProcess ChildProcess::fork(const InProcessMain& main, const std::vector<std
   }));
 }
 
-bool onlyThread() {
+int threadCount() {
   std::error_code ec;
   int threads = 0;
   for (auto it = std::filesystem::directory_iterator("/proc/self/task", ec); !ec && it != std::filesystem::directory_iterator();
        it.increment(ec))
     ++threads;
-  return !ec && threads == 1;
+  return ec ? 0 : threads;
 }
 
 ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {

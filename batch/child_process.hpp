@@ -26,8 +26,9 @@ class ChildProcess {
 
   /// The same, but the child is a fork of this process that runs `main(args)` and exits with
   /// what it returns, without exec: no program start, dynamic linking or static
-  /// initialisation to pay again (about 0.06 s of CPU a job). Only from a process with one
-  /// thread (see onlyThread()): the child runs ordinary code after fork.
+  /// initialisation to pay again (about 0.06 s of CPU a job). The child runs ordinary code
+  /// after fork, in which only the calling thread goes on: fork only while no other thread
+  /// can be holding a lock the child needs (see threadCount()).
   static ChildProcess fork(const InProcessMain& main, const std::vector<std::string>& args,
                            const std::filesystem::path& logFile);
 
@@ -50,7 +51,7 @@ class ChildProcess {
   pid_t pid_ = -1;  // -1 once reaped
 };
 
-/// True if this process has one thread only, so that a fork of it may run anything.
-bool onlyThread();
+/// The threads this process has now (0 if that cannot be read).
+int threadCount();
 
 }  // namespace lathesim::batch
