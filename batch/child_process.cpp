@@ -87,11 +87,18 @@ ChildProcess ChildProcess::start(const std::filesystem::path& binary, const std:
 
 ChildProcess ChildProcess::fork(const InProcessMain& main, const std::vector<std::string>& args,
                                 const std::filesystem::path& logFile) {
+  // What the batch has buffered would otherwise be written by the child too, into the job's log.
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
   return ChildProcess(forkJob(logFile, [&] {
     int status = 70;  // EX_SOFTWARE, should anything escape main
     try {
       status = main(args);
+    } catch (const std::exception& e) {
+      std::cerr << "lathesim: internal error: " << e.what() << '\n';
     } catch (...) {
+      std::cerr << "lathesim: internal error\n";
     }
     // _exit, not exit: the batch's static objects (its Xvfb among them) are the batch's to end.
     std::cout.flush();

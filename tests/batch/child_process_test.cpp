@@ -147,6 +147,7 @@ TEST(ChildProcessForked, ACrashOrAnEscapedExceptionEndsOnlyTheJob) {
   const int threw = thrower.wait();
   ASSERT_TRUE(WIFEXITED(threw));
   EXPECT_EQ(WEXITSTATUS(threw), 70);
+  EXPECT_EQ(readFile(dir.path() / "log.txt"), "lathesim: internal error: escaped\n");
   // The batch goes on starting jobs.
   ChildProcess after = ChildProcess::fork([](const std::vector<std::string>&) { return 0; }, {}, dir.path() / "log.txt");
   EXPECT_EQ(after.wait(), 0);
