@@ -28,6 +28,25 @@ int orbitSize(int i, int j) {
   return j == 0 || j == i ? 4 : 8;
 }
 
+// A column of cells deep inside the region (ψ < −bg − h everywhere): writeColumn's result
+// without the distances. Each open cell takes the filled value u = −bg and goes inactive.
+// Returns the material voxels lost; marks the chunk and its class changed when anything did.
+double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, std::uint8_t& chunkChanged,
+            char& classChanged) {
+  const float filled = static_cast<float>(w.sign * -w.band);
+  const double filledShare = std::clamp(0.5 - filled * w.inverseVoxel, 0.0, 1.0);
+  double lost = 0.0;
+  for (int k = 0; k < kChunk; ++k) {
+    if (!(w.sign * values[k] > -w.band)) continue;  // already as deep in the region's state as the band allows
+    lost += std::clamp(0.5 - values[k] * w.inverseVoxel, 0.0, 1.0) - filledShare;
+    values[k] = filled;
+    activeBits &= static_cast<std::uint8_t>(~(1u << k));
+    chunkChanged = 1;
+    classChanged = 1;
+  }
+  return lost;
+}
+
 }  // namespace
 
 std::uint64_t RevolvedTable::bytesFor(int kFirst, int kLast, double voxelMm, double airRadiusMm) {
@@ -165,44 +184,72 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
   std::vector<double> lostOf(classCount, 0.0);
   std::vector<std::vector<Candidates>> ghostsOf(adding ? 0 : classCount);
   std::vector<char> changedClass(classCount, 0);
-  // A chunk's distances need only the region near it: per group of chunks, the pieces and
-  // edges within reach (RevolvedRegion::nearInto), as the writer takes them per leaf.
+  // Classes come in bins one voxel wide in ρ (at 22 mm about a hundred classes a bin): what
+  // depends on the place only — the region near it (RevolvedRegion::nearInto, as the writer
+  // takes it per leaf) and whether the change bound reaches it — is asked once per bin and
+  // group of chunks, for a place half a voxel wider.
+  std::vector<int> binStart{classLow};
+  for (int c = classLow + 1; c <= classHigh; ++c)
+    if (std::floor(rho_[c] / h_) != std::floor(rho_[binStart.back()] / h_)) binStart.push_back(c);
+  binStart.push_back(classHigh + 1);
   constexpr int kGroup = 4;
-  const double groupRadius = 0.5 * kGroup * kChunk * h_ + reach;
-  const double chunkReach = 0.5 * (kChunk - 1) * h_ + changeMargin;
-  tbb::parallel_for(tbb::blocked_range<int>(0, classCount, 16), [&](const tbb::blocked_range<int>& range) {
-    RevolvedRegion local;
-    for (int n = range.begin(); n != range.end(); ++n) {
-      const int c = classLow + n;
-      const double rho = rho_[c];
+  constexpr std::size_t kFewPieces = 4;  // fewer: the whole region is as quick as a subset
+  const bool subsets = region.pieceCount() > kFewPieces;
+  const double binHalfWidth = 0.5 * h_;
+  const double groupRadius = 0.5 * kGroup * kChunk * h_ + binHalfWidth + reach;
+  const double chunkReach = 0.5 * (kChunk - 1) * h_ + binHalfWidth + changeMargin;
+  const double cellReach = std::hypot(0.5 * (kChunk - 1) * h_, binHalfWidth);
+  const double farReach = cellReach + band_ + h_;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, binStart.size() - 1), [&](const auto& range) {
+    RevolvedRegion nearby;
+    for (std::size_t bin = range.begin(); bin != range.end(); ++bin) {
+      const int first = binStart[bin], last = binStart[bin + 1];
+      const double rhoMid = (std::floor(rho_[first] / h_) + 0.5) * h_;
       for (int group = chunkLow; group <= chunkHigh; group += kGroup) {
         const int groupEnd = std::min(chunkHigh + 1, group + kGroup);
-        const double zMid = (kBase_ + 0.5 * (group + groupEnd) * kChunk) * h_;
-        region.nearInto(rho, zMid, groupRadius, local);
-        if (local.empty()) continue;
+        const RevolvedRegion* local = &region;
+        if (subsets) {
+          const double zMid = (kBase_ + 0.5 * (group + groupEnd) * kChunk) * h_;
+          region.nearInto(rhoMid, zMid, groupRadius, nearby);
+          if (nearby.empty()) continue;
+          local = &nearby;
+        }
         for (int chunk = group; chunk < groupEnd; ++chunk) {
           const int k0 = kBase_ + chunk * kChunk;
-          if (changes) {
-            const double zCentre = (k0 + 0.5 * (kChunk - 1)) * h_;
-            if (changes->signedDistance(rho, zCentre, chunkReach + h_) > chunkReach) continue;
+          const double zCentre = (k0 + 0.5 * (kChunk - 1)) * h_;
+          if (changes && changes->signedDistance(rhoMid, zCentre, chunkReach + h_) > chunkReach) continue;
+          // The region's distance changes by at most the distance moved (each piece's is
+          // 1-Lipschitz, inside and out, and so is their minimum): from the place's centre to
+          // its cells, at most cellReach. Beyond reach nothing changes and nothing is a ghost
+          // candidate; deep inside, every open cell is filled, as writeColumn would fill it.
+          const double centre = local->signedDistance(rhoMid, zCentre, farReach + h_);
+          if (centre > farReach) continue;
+          const bool covered = centre < -farReach;
+          for (int c = first; c < last; ++c) {
+            float* values = cells(c, chunk);
+            if (covered) {
+              lostOf[c - classLow] += fill(values, activeBits_[chunkIndex(c, chunk)], w, changed_[chunkIndex(c, chunk)],
+                                           changedClass[c - classLow]);
+              continue;
+            }
+            bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
+            for (int k = 0; k < kChunk; ++k) anyOpen |= w.sign * values[k] > -w.band;
+            if (!anyOpen) continue;
+            double psi[kChunk];
+            local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
+            float before[kChunk];
+            std::memcpy(before, values, sizeof before);
+            std::uint8_t& active = activeBits_[chunkIndex(c, chunk)];
+            const std::uint8_t activeBefore = active;
+            std::uint8_t ghostBits = 0;
+            const int n = c - classLow;
+            lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
+            if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
+              changed_[chunkIndex(c, chunk)] = 1;
+              changedClass[n] = 1;
+            }
+            if (ghostBits && !adding) ghostsOf[n].push_back({chunk, ghostBits});
           }
-          float* values = cells(c, chunk);
-          bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
-          for (int k = 0; k < kChunk; ++k) anyOpen |= w.sign * values[k] > -w.band;
-          if (!anyOpen) continue;
-          double psi[kChunk];
-          local.signedDistanceColumn(rho, k0 * h_, h_, band_, psi);
-          float before[kChunk];
-          std::memcpy(before, values, sizeof before);
-          std::uint8_t& active = activeBits_[chunkIndex(c, chunk)];
-          const std::uint8_t activeBefore = active;
-          std::uint8_t ghostBits = 0;
-          lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
-          if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
-            changed_[chunkIndex(c, chunk)] = 1;
-            changedClass[n] = 1;
-          }
-          if (ghostBits && !adding) ghostsOf[n].push_back({chunk, ghostBits});
         }
       }
     }
