@@ -11,7 +11,8 @@
 
 namespace lathesim::app {
 
-BatchCli::BatchCli(CLI::App& cli) {
+BatchCli::BatchCli(CLI::App& cli, batch::InProcessMain jobMain) {
+  options_.jobMain = std::move(jobMain);
   command_ = cli.add_subcommand("batch", "simulate many programs, each in its own folder, and summarise them");
   command_->add_option("source", source_, "a manifest (.toml or .csv) or a folder of programs");
   command_->add_option("--out", options_.out, "output folder: a folder per job and the summary")->capture_default_str();
@@ -61,6 +62,7 @@ int BatchCli::run() {
     for (const auto& name : outputs_) names += (names.empty() ? "" : ",") + name;
     options_.defaults.options.insert(options_.defaults.options.begin(), {"--outputs", names});
   }
+  options_.threadsAtStart = batch::threadCount();  // the libraries' (see BatchOptions::jobMain)
   if (memoryMb_) options_.memoryBytes = static_cast<std::uint64_t>(*memoryMb_ * 1024 * 1024);
   return batch::runBatch(options_);
 }

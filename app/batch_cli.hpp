@@ -14,7 +14,8 @@ namespace lathesim::app {
 class BatchCli {
  public:
   /// Adds `batch` (and `batch merge`) to `cli`; keep the object until the command has run.
-  explicit BatchCli(CLI::App& cli);
+  /// The jobs run `jobMain` (lathesim's command line) in forks of the batch.
+  BatchCli(CLI::App& cli, batch::InProcessMain jobMain);
   bool chosen() const { return command_->parsed(); }
   /// Runs the parsed command; its exit status.
   int run();

@@ -27,6 +27,7 @@ inline constexpr double kExportAdaptivity = 0.002;
 struct PictureRequest {
   std::vector<render::PartView> views;  // --views: part-front.png, part-section.png
   int widthPx = 1600, heightPx = 1200;  // --size
+  std::optional<int> thumbnailWidthPx;  // --thumbnail: thumbnail.png, a small copy of the main picture
 };
 
 /// --animate: the cut as a video, frames at an even pace.

@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "app/batch_cli.hpp"
 #include "app/commands.hpp"
@@ -30,9 +32,19 @@ std::string badCommandLine(const CLI::App* app, const CLI::Error& error) {
   return "lathesim: " + lathesim::interp::printable(error.what()) + "\nRun '" + command + " --help' for more.\n";
 }
 
-}  // namespace
+int lathesimMain(int argc, char** argv);
 
-int main(int argc, char** argv) {
+/// A batch job's command line, run in a fork of the batch (batch::ChildProcess::fork).
+int runJobInProcess(const std::vector<std::string>& args) {
+  std::vector<std::string> words{"lathesim"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  return lathesimMain(static_cast<int>(words.size()), argv.data());
+}
+
+int lathesimMain(int argc, char** argv) {
   CLI::App cli{"lathesim — simulates a lathe program on a bar and shows the part it makes", "lathesim"};
   cli.require_subcommand(1);
   cli.set_version_flag("--version", "lathesim " LATHESIM_VERSION);
@@ -134,7 +146,7 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
   }
 
-  lathesim::app::BatchCli batch(cli);
+  lathesim::app::BatchCli batch(cli, runJobInProcess);
 
   try {
     cli.parse(argc, argv);
@@ -186,3 +198,7 @@ int main(int argc, char** argv) {
     return lathesim::job::kExitBadInput;
   }
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return lathesimMain(argc, argv); }

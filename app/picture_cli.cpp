@@ -53,6 +53,9 @@ void addPictureOptions(CLI::App& command, RunOptions& options) {
               throw CLI::ValidationError("--size", problem);
           },
           "the pictures' size in pixels (default 1600x1200)");
+  command.add_option("--thumbnail", options.pictures.thumbnailWidthPx,
+                     "also thumbnail.png, about this many pixels wide: part.png (check: deviation.png) shrunk")
+      ->check(CLI::Range(16, kLargestSidePx));
   command.add_option("--export", options.exports, "more files of the part: gltf, glb, ply, obj (part.gltf, …)")
       ->delimiter(',')
       ->check(CLI::IsMember({"gltf", "glb", "ply", "obj"}));

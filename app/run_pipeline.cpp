@@ -19,6 +19,7 @@
 #include "render/offscreen_display.hpp"
 #include "render/part_image.hpp"
 #include "render/scene_export.hpp"
+#include "render/thumbnail.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::app {
@@ -249,6 +250,13 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   }
   timing.writeS += writing.lap();
   clock.lap();
+}
+
+void stageThumbnail(const RunOptions& options, const std::filesystem::path& picture, StagedOutput& out) {
+  if (!options.pictures.thumbnailWidthPx) return;
+  out.write("thumbnail.png", [&](const std::filesystem::path& file) {
+    render::writeThumbnailPng(picture, file, *options.pictures.thumbnailWidthPx);
+  });
 }
 
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {

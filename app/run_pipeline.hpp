@@ -72,6 +72,9 @@ std::future<double> stageStockFile(const SimulatedRun& run, StagedOutput& out);
 /// written (timing.writeS).
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock);
 
+/// Stages thumbnail.png, `picture` (a staged PNG) shrunk, when options.pictures asks for it.
+void stageThumbnail(const RunOptions& options, const std::filesystem::path& picture, StagedOutput& out);
+
 /// Stages report.json (`report`) and report.html.
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out);
 

@@ -20,7 +20,6 @@
 #include "batch/resources.hpp"
 #include "batch/summary.hpp"
 #include "render/offscreen_display.hpp"
-#include "render/thumbnail.hpp"
 
 namespace lathesim::batch {
 namespace {
@@ -98,6 +97,10 @@ class BatchRun {
     done_ = alreadyDone;
     total_ = alreadyDone + static_cast<int>(pending.size());
     slots_ = std::max(1, options_.jobs.value_or(availableCpus()));
+    // Jobs are forked from the batch only while it runs no thread of its own. The libraries
+    // start some when they are loaded (log4cplus, under OpenVDB, a pool that stays idle):
+    // those were there before the batch began, and a job does not use them.
+    inProcess_ = options_.jobMain && threadCount() > 0 && threadCount() == options_.threadsAtStart;
     if (options_.memoryBytes) {
       budget_ = options_.memoryBytes;
     } else if (auto free = availableMemoryBytes()) {
@@ -163,8 +166,12 @@ class BatchRun {
       record(std::move(result));
       return;
     }
+    // The job stages its own thumbnail from its picture in memory, with its other files.
+    std::vector<std::string> args = commandArguments(job, folder);
+    args.insert(args.end(), {"--thumbnail", std::to_string(kThumbnailWidthPx)});
+    const fs::path log = folder / kLogFileName;
     RunningJob running{&job, queued.inputs, queued.bytes,
-                       ChildProcess::start(options_.binary, commandArguments(job, folder), folder / kLogFileName),
+                       inProcess_ ? ChildProcess::fork(options_.jobMain, args, log) : ChildProcess::start(options_.binary, args, log),
                        Clock::now(), std::nullopt};
     if (job.settings.timeLimitS)
       running.deadline = running.start + std::chrono::duration_cast<Clock::duration>(
@@ -224,20 +231,11 @@ class BatchRun {
     outcome.timedOut = r.timedOut;
     JobResult result = resultOf(job, job.name, outcome, readText(folder / kLogFileName), readReport(folder / "report.json"));
     if (outcome.signal) removeAllButLog(folder);
-    if (result.finalVolumeMm3) addThumbnail(folder, result);
+    std::error_code ec;
+    if (fs::exists(folder / kThumbnailFileName, ec)) result.thumbnail = kThumbnailFileName;
     result.elapsedS = secondsSince(r.start);
     writeStamp(folder, r.inputs, result);
     record(std::move(result));
-  }
-
-  void addThumbnail(const fs::path& folder, JobResult& result) {
-    const fs::path picture = folder / (result.command == "check" ? "deviation.png" : "part.png");
-    try {
-      render::writeThumbnailPng(picture, folder / kThumbnailFileName, kThumbnailWidthPx);
-      result.thumbnail = kThumbnailFileName;
-    } catch (const std::exception& e) {
-      std::cerr << "lathesim batch: " << result.name << ": no thumbnail: " << e.what() << '\n';
-    }
   }
 
   void record(JobResult result) {
@@ -276,6 +274,7 @@ class BatchRun {
   std::uint64_t runningBytes_ = 0;
   std::optional<std::uint64_t> budget_;
   int slots_ = 1;
+  bool inProcess_ = false;  // jobs forked from the batch (options_.jobMain), not started anew
   int done_ = 0, total_ = 0;
 };
 

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "batch/batch_job.hpp"
+#include "batch/child_process.hpp"
 #include "batch/shard.hpp"
 
 namespace lathesim::batch {
@@ -21,6 +22,11 @@ struct BatchOptions {
   std::optional<std::uint64_t> memoryBytes;  // what the jobs may fill together (default: 80 % of what is free)
   Shard shard;
   std::filesystem::path binary;  // the lathesim that runs the jobs (default: this executable)
+  /// When given, a job runs in a fork of the batch that calls this with the job's arguments,
+  /// rather than in `binary` started anew — as long as the batch has no more threads than
+  /// `threadsAtStart` (threadCount() before it started any work: the libraries' own).
+  InProcessMain jobMain;
+  int threadsAtStart = 0;
 };
 
 /// The batch's exit status: 0 every job passed, 1 some failed (or the manifest is bad: its

@@ -8,7 +8,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <stdexcept>
 
 namespace lathesim::batch {
@@ -18,8 +20,10 @@ std::runtime_error failure(const std::string& what) {
   return std::runtime_error("cannot start a job: " + what + ": " + std::strerror(errno));
 }
 
-/// In the child, between fork and exec: everything here is async-signal-safe.
-[[noreturn]] void becomeJob(const char* binary, char* const* argv, int logFd, int nullFd, pid_t batch) {
+/// In the child, right after fork: its own process group, tied to the batch, signals at their
+/// defaults, stdin from /dev/null, stdout and stderr to the log, no other descriptor.
+/// Everything here is async-signal-safe.
+void prepareJob(int logFd, int nullFd, pid_t batch) {
   ::setpgid(0, 0);
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (::getppid() != batch) ::_exit(126);  // the batch is already gone
@@ -34,8 +38,34 @@ std::runtime_error failure(const std::string& what) {
   // reader waiting long after the batch ended.
   if (::syscall(SYS_close_range, 3U, ~0U, 0U) != 0)
     for (int fd = 3; fd < 1024; ++fd) ::close(fd);
-  ::execv(binary, argv);
-  ::_exit(127);
+}
+
+/// Opens the log (appended) and /dev/null, forks, and runs `job` in the child (which must
+/// not return); the parent gets the child's pid.
+template <class Job>
+pid_t forkJob(const std::filesystem::path& logFile, const Job& job) {
+  const int logFd = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (logFd < 0) throw failure("cannot open " + logFile.string());
+  const int nullFd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+  if (nullFd < 0) {
+    ::close(logFd);
+    throw failure("cannot open /dev/null");
+  }
+  const pid_t batch = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    prepareJob(logFd, nullFd, batch);
+    job();
+  }
+  const int forkErrno = errno;
+  ::close(logFd);
+  ::close(nullFd);
+  if (pid < 0) {
+    errno = forkErrno;
+    throw failure("fork");
+  }
+  ::setpgid(pid, pid);  // also here: a kill right after start must find the group
+  return pid;
 }
 
 }  // namespace
@@ -49,26 +79,42 @@ ChildProcess ChildProcess::start(const std::filesystem::path& binary, const std:
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
+  return ChildProcess(forkJob(logFile, [&] {
+    ::execv(program.c_str(), argv.data());
+    ::_exit(127);
+  }));
+}
 
-  const int logFd = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-  if (logFd < 0) throw failure("cannot open " + logFile.string());
-  const int nullFd = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
-  if (nullFd < 0) {
-    ::close(logFd);
-    throw failure("cannot open /dev/null");
-  }
-  const pid_t batch = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid == 0) becomeJob(program.c_str(), argv.data(), logFd, nullFd, batch);
-  const int forkErrno = errno;
-  ::close(logFd);
-  ::close(nullFd);
-  if (pid < 0) {
-    errno = forkErrno;
-    throw failure("fork");
-  }
-  ::setpgid(pid, pid);  // also here: a kill right after start must find the group
-  return ChildProcess(pid);
+ChildProcess ChildProcess::fork(const InProcessMain& main, const std::vector<std::string>& args,
+                                const std::filesystem::path& logFile) {
+  // What the batch has buffered would otherwise be written by the child too, into the job's log.
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  return ChildProcess(forkJob(logFile, [&] {
+    int status = 70;  // EX_SOFTWARE, should anything escape main
+    try {
+      status = main(args);
+    } catch (const std::exception& e) {
+      std::cerr << "lathesim: internal error: " << e.what() << '\n';
+    } catch (...) {
+      std::cerr << "lathesim: internal error\n";
+    }
+    // _exit, not exit: the batch's static objects (its Xvfb among them) are the batch's to end.
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    ::_exit(status);
+  }));
+}
+
+int threadCount() {
+  std::error_code ec;
+  int threads = 0;
+  for (auto it = std::filesystem::directory_iterator("/proc/self/task", ec); !ec && it != std::filesystem::directory_iterator();
+       it.increment(ec))
+    ++threads;
+  return ec ? 0 : threads;
 }
 
 ChildProcess& ChildProcess::operator=(ChildProcess&& other) noexcept {

@@ -175,6 +175,17 @@ std::unique_ptr<XvfbServer> XvfbServer::start(const std::string& program, double
   throw xvfbError(failure);
 }
 
+bool XvfbServer::running() {
+  if (pid_ <= 0) return false;
+  int status = 0;
+  const pid_t r = ::waitpid(pid_, &status, WNOHANG);
+  if (r == pid_) {
+    pid_ = -1;  // reaped: nothing left to stop
+    return false;
+  }
+  return r == 0 || ::kill(pid_, 0) == 0;  // not our child (a fork's copy of the object): is it alive?
+}
+
 XvfbServer::~XvfbServer() {
   if (pid_ <= 0) return;
   ::kill(pid_, SIGTERM);
@@ -189,10 +200,16 @@ std::string ensureDisplay() {
   // Function-local static: destroyed (server terminated) at normal process exit, after
   // everything constructed later — VTK windows are gone by then.
   static std::unique_ptr<XvfbServer> ownServer;
+  // The display last found reachable: a run asks before each picture, and connecting to ask
+  // costs a round trip to the server (a batch's forked jobs inherit the answer). Our own
+  // server is asked again only if its process has gone.
+  static std::string reached;
   const std::lock_guard<std::mutex> lock(mutex);
 
   const char* current = std::getenv("DISPLAY");
-  if (current != nullptr && displayIsReachable(current)) return current;
+  const bool ownGone = ownServer && ownServer->display() == reached && !ownServer->running();
+  if (current != nullptr && current == reached && !ownGone) return reached;
+  if (current != nullptr && displayIsReachable(current)) return reached = current;
   if (!ownServer || !displayIsReachable(ownServer->display())) {
     ownServer.reset();
     ownServer = XvfbServer::start();
@@ -201,7 +218,7 @@ std::string ensureDisplay() {
     }
   }
   ::setenv("DISPLAY", ownServer->display().c_str(), 1);
-  return ownServer->display();
+  return reached = ownServer->display();
 }
 
 }  // namespace lathesim::render

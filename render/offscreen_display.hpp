@@ -34,6 +34,8 @@ class XvfbServer {
   XvfbServer& operator=(const XvfbServer&) = delete;
 
   const std::string& display() const { return display_; }  // ":N"
+  /// False once the server's process has ended (reaped here if it is this process's child).
+  bool running();
   pid_t pid() const { return pid_; }
 
  private:
@@ -45,7 +47,8 @@ class XvfbServer {
 /// Makes sure DISPLAY names a reachable X server, for the rest of the process: keeps the
 /// user's DISPLAY if it can be connected to; otherwise starts one Xvfb for the whole
 /// process (kept in a function-local static, killed at exit) and sets DISPLAY to it.
-/// Thread-safe. Call before creating any VTK render window. Throws std::runtime_error if no
+/// A display once found reachable is not asked again (while DISPLAY names it and, if it is
+/// ours, its process lives). Thread-safe. Call before creating any VTK render window. Throws std::runtime_error if no
 /// display can be had (the message says to install `xvfb`); never lets VTK abort.
 /// Returns the display in use.
 std::string ensureDisplay();

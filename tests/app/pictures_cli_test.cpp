@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -81,6 +82,43 @@ TEST(PictureViews, EachViewAtTheSizeAskedAndABadSizeWritesNothing) {
   EXPECT_NE(refused.status, 0);
   EXPECT_NE(refused.err.find("WIDTHxHEIGHT"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(dir.path() / "bad"));
+}
+
+// --thumbnail: part.png shrunk by a whole factor, each pixel the mean of its block of part.png.
+TEST(PictureThumbnail, IsPartPngInBlockMeansAndAWidthOutOfRangeIsRefused) {
+  ScratchDir dir("thumbnail");
+  auto args = partArgs("g74-drill", dir.path() / "out");
+  args.insert(args.end(), {"--voxel", "0.5", "--size", "640x480", "--thumbnail", "100", "--outputs", "png"});
+  const auto outcome = test::runProcess(kBinary, args, dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  const Png part(dir.path() / "out" / "part.png");
+  const Png thumbnail(dir.path() / "out" / "thumbnail.png");
+  constexpr int kFactor = 6;  // 640 / 100 rounded
+  ASSERT_EQ(thumbnail.width(), 640 / kFactor);
+  ASSERT_EQ(thumbnail.height(), 480 / kFactor);
+  int differing = 0;
+  for (int y = 0; y < thumbnail.height(); y += 7)
+    for (int x = 0; x < thumbnail.width(); x += 5) {
+      int sum[3] = {0, 0, 0};
+      for (int v = 0; v < kFactor; ++v)
+        for (int u = 0; u < kFactor; ++u) {
+          const Rgb c = part.at(x * kFactor + u, y * kFactor + v);
+          sum[0] += c.r, sum[1] += c.g, sum[2] += c.b;
+        }
+      const Rgb t = thumbnail.at(x, y);
+      const double n = kFactor * kFactor;
+      // The mean, truncated or rounded: within one level.
+      if (std::abs(t.r - sum[0] / n) > 1 || std::abs(t.g - sum[1] / n) > 1 || std::abs(t.b - sum[2] / n) > 1)
+        ++differing;
+    }
+  EXPECT_EQ(differing, 0);
+
+  auto tiny = partArgs("g74-drill", dir.path() / "tiny");
+  tiny.insert(tiny.end(), {"--thumbnail", "8"});
+  const auto refused = test::runProcess(kBinary, tiny, dir.path());
+  EXPECT_EQ(refused.status, 2) << refused.err;
+  EXPECT_NE(refused.err.find("--thumbnail"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "tiny"));
 }
 
 /// Where `name` is found on this process's PATH (empty if nowhere).

@@ -7,7 +7,10 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <atomic>
 #include <chrono>
+#include <iostream>
+#include <stdexcept>
 #include <thread>
 
 #include "batch/child_process.hpp"
@@ -107,6 +110,76 @@ TEST(ChildProcess, AMissingBinaryExits127AndADroppedChildIsKilled) {
     EXPECT_TRUE(test::alive(pid));
   }
   EXPECT_FALSE(test::alive(pid));  // killed and reaped by the destructor
+}
+
+// A job forked from the batch runs the given main with its arguments, in a process of its own.
+TEST(ChildProcessForked, RunsMainWithItsArgumentsOutputInItsLogExitsWithItsStatus) {
+  ScratchDir dir("fork");
+  const fs::path log = dir.path() / "log.txt";
+  const pid_t batch = ::getpid();
+  int touchedInChild = 0;
+  ChildProcess child = ChildProcess::fork(
+      [&](const std::vector<std::string>& args) {
+        touchedInChild = 1;  // the child's copy: the batch's stays 0
+        std::cout << "args:";
+        for (const auto& a : args) std::cout << ' ' << a;
+        std::cout << '\n';
+        std::cerr << "pid differs: " << (::getpid() != batch) << ", own group: " << (::getpgrp() == ::getpid());
+        return 5;
+      },
+      {"run", "p.nc", "--out", "o"}, log);
+  const int status = child.wait();
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 5);
+  EXPECT_EQ(readFile(log), "args: run p.nc --out o\npid differs: 1, own group: 1");
+  EXPECT_EQ(touchedInChild, 0);
+}
+
+TEST(ChildProcessForked, ACrashOrAnEscapedExceptionEndsOnlyTheJob) {
+  ScratchDir dir("fork-crash");
+  ChildProcess crash = ChildProcess::fork([](const std::vector<std::string>&) -> int { std::abort(); }, {},
+                                          dir.path() / "log.txt");
+  const int crashed = crash.wait();
+  ASSERT_TRUE(WIFSIGNALED(crashed));
+  EXPECT_EQ(WTERMSIG(crashed), SIGABRT);
+  ChildProcess thrower = ChildProcess::fork(
+      [](const std::vector<std::string>&) -> int { throw std::runtime_error("escaped"); }, {}, dir.path() / "log.txt");
+  const int threw = thrower.wait();
+  ASSERT_TRUE(WIFEXITED(threw));
+  EXPECT_EQ(WEXITSTATUS(threw), 70);
+  EXPECT_EQ(readFile(dir.path() / "log.txt"), "lathesim: internal error: escaped\n");
+  // The batch goes on starting jobs.
+  ChildProcess after = ChildProcess::fork([](const std::vector<std::string>&) { return 0; }, {}, dir.path() / "log.txt");
+  EXPECT_EQ(after.wait(), 0);
+}
+
+TEST(ChildProcessForked, AForkedJobIsKilledWithItsGroupAtItsTimeLimit) {
+  ScratchDir dir("fork-kill");
+  ChildProcess child = ChildProcess::fork(
+      [](const std::vector<std::string>&) {
+        for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+        return 0;
+      },
+      {}, dir.path() / "log.txt");
+  const pid_t pid = child.pid();
+  EXPECT_TRUE(test::alive(pid));
+  child.killGroup();
+  const int status = child.wait();
+  EXPECT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGKILL);
+}
+
+TEST(ThreadCount, CountsAThreadWhileItRuns) {
+  const int before = threadCount();
+  ASSERT_GE(before, 1);
+  std::atomic<bool> stop{false};
+  std::thread other([&] {
+    while (!stop) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  });
+  EXPECT_EQ(threadCount(), before + 1);
+  stop = true;
+  other.join();
+  EXPECT_EQ(threadCount(), before);
 }
 
 }  // namespace

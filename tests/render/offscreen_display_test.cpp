@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <unistd.h>
 
 namespace lathesim::render {
 namespace {
@@ -41,6 +42,19 @@ TEST(XvfbServer, StartsReachableAndIsGoneAfterDestruction) {
   }
   EXPECT_EQ(::kill(pid, 0), -1);
   EXPECT_EQ(errno, ESRCH);
+}
+
+TEST(XvfbServer, NotRunningOnceKilled) {
+  auto server = XvfbServer::start();
+  EXPECT_TRUE(server->running());
+  ASSERT_EQ(::kill(server->pid(), SIGKILL), 0);
+  bool ended = false;
+  for (int i = 0; i < 200 && !ended; ++i) {
+    ended = !server->running();
+    if (!ended) ::usleep(10'000);
+  }
+  EXPECT_TRUE(ended);
+  EXPECT_FALSE(displayIsReachable(server->display()));
 }
 
 TEST(EnsureDisplay, ReplacesAnUnreachableDisplay) {
