@@ -50,6 +50,7 @@ class RevolvedRegion {
   RZ lowerBound() const { return lower_; }  // bounds of the polygons (r may be negative)
   RZ upperBound() const { return upper_; }
   bool empty() const { return pieces_.empty(); }
+  std::size_t pieceCount() const { return pieces_.size(); }
 
   /// The largest distance from the axis of any point of the revolved solid.
   double maxRadius() const;

@@ -55,6 +55,11 @@ struct Samples {
 
 void readSamples(const StockGrid& s, Samples& w) {
   w.phi.resize(static_cast<std::size_t>(w.rCount) * w.zCount);
+  if (s.table) {  // the stock is revolved and the table holds it: the plane y = 0 is its own
+    for (int k = 0; k < w.zCount; ++k)
+      for (int i = 0; i < w.rCount; ++i) w.phi[w.at(i, k)] = s.table->value(w.i0 + i, 0, w.k0 + k);
+    return;
+  }
   const auto accessor = s.grid->getConstAccessor();
   for (int k = 0; k < w.zCount; ++k)
     for (int i = 0; i < w.rCount; ++i) w.phi[w.at(i, k)] = accessor.getValue(Coord(w.i0 + i, 0, w.k0 + k));
@@ -282,6 +287,7 @@ std::unique_ptr<Stock> Stock::takeLoosePieces(const std::optional<ChangedArea>& 
   if (loose.empty()) return nullptr;
   if (notRevolved && !severedIn3D(*impl_)) return nullptr;
   const SideOf sideOf(section, territories(section, pieces, loose));
+  impl_->leaveTable();  // the pieces are split voxel by voxel, in the level set
 
   auto piece = std::make_unique<StockGrid>(impl_->spec, impl_->voxel);
   piece->grid = impl_->grid->deepCopy();

@@ -20,66 +20,11 @@
 #include <cstring>
 #include <vector>
 
+#include "sim/column_write.hpp"
 #include "sim/stock_grid.hpp"
 
 namespace lathesim::sim {
 namespace {
-
-// What writing one column of a leaf needs besides the values and the distances.
-struct ColumnWrite {
-  double sign;           // u = sign·φ
-  double band;           // bg: u ≤ −band is as deep in the region's state as the band allows
-  double noChange;       // smaller decreases of u are rounding, not cuts
-  double inverseVoxel;
-  double voxel;          // a ghost candidate lies within a voxel of the boundary...
-  float notMaterial;     // ...and could count as material: notMaterial < φ < ghostCeiling
-  float ghostCeiling;
-};
-
-// u ← min(u, ψ) over one column of eight voxels (values[0…7], along Z), four at a time in
-// GCC vector types (one AVX2 register in the AVX2 clone, two SSE2 ones elsewhere), without
-// branches. Returns the material voxels lost; updates the column's bits of the active mask
-// and sets those of the ghost candidates (see clearGhostSheets).
-using Double4 = double __attribute__((vector_size(32)));
-using Float4 = float __attribute__((vector_size(16)));
-using Mask4 = std::int64_t __attribute__((vector_size(32)));  // lanes −1 (true) or 0
-
-int bitsOf(const Mask4& m) { return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8)); }
-
-__attribute__((target_clones("avx2", "default"))) double writeColumn(const ColumnWrite& w, float* values,
-                                                                     const double* psi, std::uint8_t& activeBits,
-                                                                     std::uint8_t& ghostBits) {
-  double lost = 0.0;
-  int changedBits = 0, newActive = 0, newGhost = 0;
-  for (int half = 0; half < 2; ++half) {
-    Float4 stored4;
-    std::memcpy(&stored4, values + 4 * half, sizeof stored4);
-    Double4 p;
-    std::memcpy(&p, psi + 4 * half, sizeof p);
-    const Double4 old = __builtin_convertvector(stored4, Double4);
-    const Double4 uOld = w.sign * old;
-    const Mask4 open = uOld > -w.band;
-    const Mask4 change = open & (p < uOld - w.noChange);
-    const Double4 uNew = p > -w.band ? p : Double4{} - w.band;
-    stored4 = __builtin_convertvector(w.sign * (change ? uNew : uOld), Float4);  // unchanged: old exactly
-    std::memcpy(values + 4 * half, &stored4, sizeof stored4);
-    const Double4 value = __builtin_convertvector(stored4, Double4);
-    Double4 before = 0.5 - old * w.inverseVoxel, after = 0.5 - value * w.inverseVoxel;
-    before = before < 0.0 ? Double4{} : before > 1.0 ? Double4{} + 1.0 : before;
-    after = after < 0.0 ? Double4{} : after > 1.0 ? Double4{} + 1.0 : after;
-    const Double4 lost4 = before - after;
-    lost += (lost4[0] + lost4[1]) + (lost4[2] + lost4[3]);
-    const Mask4 active = (uNew < w.band) & (uNew > -w.band);
-    const Double4 distance = p < 0.0 ? -p : p;
-    const Mask4 ghost = open & (distance < w.voxel) & (value > w.notMaterial) & (value < w.ghostCeiling);
-    changedBits |= bitsOf(change) << (4 * half);
-    newActive |= bitsOf(active) << (4 * half);
-    newGhost |= bitsOf(ghost) << (4 * half);
-  }
-  activeBits = static_cast<std::uint8_t>((activeBits & ~changedBits) | (newActive & changedBits));
-  ghostBits = static_cast<std::uint8_t>(newGhost);
-  return lost;
-}
 
 enum class Reach { None, Partly, Covers };
 
@@ -201,10 +146,7 @@ class RegionWriter {
         sign_(how == RegionWrite::Add ? 1.0 : -1.0), removing_(how == RegionWrite::Remove),
         leafReach_(0.5 * std::sqrt(3.0) * (kLeafDim - 1) * h_ + bg_),
         blockReach_(0.5 * std::sqrt(3.0) * (kNode1Dim - 1) * h_ + bg_),
-        changeMargin_(bg_ + 2.0 * h_),
-        // A change smaller than noChange is rounding between the stock's float values and the
-        // region's double distance (a tool running along a face it cut before), not a cut.
-        column_{sign_, bg_, 1e-5 * h_, 1.0 / h_, h_, notMaterial(), ghostCeiling()} {}
+        changeMargin_(bg_ + 2.0 * h_), column_(ColumnWrite::of(sign_, h_, bg_)) {}
 
   double run() {
     std::vector<Task> tasks = classify();
@@ -572,8 +514,7 @@ class RegionWriter {
 
   static constexpr openvdb::Index kStride[3] = {64, 8, 1};  // offset steps along x, y, z in a leaf
 
-  float ghostCeiling() const { return static_cast<float>(0.5 * h_); }  // at and above: counts nothing
-  float notMaterial() const { return static_cast<float>(-1e-3 * h_); }  // above: rounding, not material
+  float notMaterial() const { return ColumnWrite::materialCeiling(h_); }
 
   // Voxel n of a leaf. Usually a face neighbour inside the leaf is material and settles it
   // at once; otherwise all 26 neighbours are asked, since where a surface passes exactly

@@ -124,7 +124,8 @@ double StockGrid::leafInsideVoxels(const Leaf& leaf) const {
   return insideVoxelsOf(leaf.buffer().data(), static_cast<float>(1.0 / voxel));
 }
 
-Stock::Stock(const StockSpec& spec, double voxelMm) : impl_(std::make_unique<StockGrid>(spec, voxelMm)) {
+Stock::Stock(const StockSpec& spec, double voxelMm, RevolvedWrites writes)
+    : impl_(std::make_unique<StockGrid>(spec, voxelMm)) {
   const double r = spec.diameterMm / 2.0;
   // The bar's section: a solid bar's mirrored across the axis so that it revolves into a
   // cylinder; a tube's from the bore out, so that it revolves into the tube (the distance in
@@ -135,24 +136,39 @@ Stock::Stock(const StockSpec& spec, double voxelMm) : impl_(std::make_unique<Sto
   // Every voxel takes its value from the bar's own distance: the band voxel by voxel, the
   // interior as tiles the bar covers entirely. Nothing is left for a flood fill to guess
   // (OpenVDB's signed flood fill reads a 128³ block with no leaves left in it as air).
-  writeRegion(*impl_, RevolvedRegion({ConvexPolygon::hullOf(rectangle)}), RegionWrite::Add);
+  const RevolvedRegion bar({ConvexPolygon::hullOf(rectangle)});
+  writeRegion(*impl_, bar, RegionWrite::Add);
+  if (writes == RevolvedWrites::Table) startTable(*impl_, bar);
 }
 
 Stock::~Stock() = default;
 
 double Stock::voxelMm() const { return impl_->voxel; }
 
-double Stock::remove(const RevolvedRegion& region) { return writeRegion(*impl_, region, RegionWrite::Remove); }
+double Stock::remove(const RevolvedRegion& region) {
+  if (impl_->table) return impl_->writeThroughTable(region, nullptr);
+  return writeRegion(*impl_, region, RegionWrite::Remove);
+}
 double Stock::remove(const RevolvedRegion& region, const RevolvedRegion& changes) {
+  if (impl_->table) return impl_->writeThroughTable(region, &changes);
   return writeRegion(*impl_, region, RegionWrite::Remove, &changes);
 }
-double Stock::remove(const HelicalSweep& sweep) { return writeRegion(*impl_, sweep, RegionWrite::Remove); }
-double Stock::remove(const StraightSlot& slot) { return writeRegion(*impl_, slot, RegionWrite::Remove); }
+// What is not revolved ends the table: the level set holds the stock from here on.
+double Stock::remove(const HelicalSweep& sweep) {
+  impl_->leaveTable();
+  return writeRegion(*impl_, sweep, RegionWrite::Remove);
+}
+double Stock::remove(const StraightSlot& slot) {
+  impl_->leaveTable();
+  return writeRegion(*impl_, slot, RegionWrite::Remove);
+}
 double Stock::remove(const HelicalSweep& sweep, const ThreadChangeBound& changes) {
+  impl_->leaveTable();
   return writeRegion(*impl_, sweep, RegionWrite::Remove, &changes);
 }
 
 double Stock::volumeMm3() const {
+  impl_->settle();
   const Tree& tree = impl_->grid->tree();
   const double h = impl_->voxel;
   std::vector<const Leaf*> leaves;
@@ -174,16 +190,19 @@ double Stock::volumeMm3() const {
 }
 
 double Stock::signedDistanceAt(const RZ& point) const {
+  impl_->settle();
   const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
   return sampler.wsSample(openvdb::Vec3d(point.x(), 0.0, point.y()));
 }
 
 double Stock::signedDistanceAt(double xMm, double yMm, double zMm) const {
+  impl_->settle();
   const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
   return sampler.wsSample(openvdb::Vec3d(xMm, yMm, zMm));
 }
 
 void Stock::signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const {
+  impl_->settle();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256), [&](const auto& range) {
     const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
     for (std::size_t i = range.begin(); i != range.end(); ++i)
@@ -228,10 +247,14 @@ TriangleMesh meshOf(const Grid& grid, double voxelMm, double adaptivity) {
 
 }  // namespace
 
-TriangleMesh Stock::mesh(double adaptivity) const { return meshOf(*impl_->grid, impl_->voxel, adaptivity); }
+TriangleMesh Stock::mesh(double adaptivity) const {
+  impl_->settle();
+  return meshOf(*impl_->grid, impl_->voxel, adaptivity);
+}
 
 TriangleMesh Stock::mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int subdivisions) const {
   if (subdivisions < 1) throw std::invalid_argument("Stock::mesh: subdivisions must be at least 1");
+  impl_->settle();
   // The grid is clipped a band beyond the box (cheap: what lies in the box), and then
   // intersected with the box as a level set: clip() alone leaves the material open where it
   // cuts it (its interior tiles meet the outside with no band between them to mesh).
@@ -294,6 +317,8 @@ void Stock::writeVdb(const std::filesystem::path& file, const Stock* part) const
     copy->setSaveFloatAsHalf(true);
     return copy;
   };
+  impl_->settle();
+  if (part) part->impl_->settle();
   openvdb::GridCPtrVec grids{fileCopy(*impl_, "stock")};
   if (part) grids.push_back(fileCopy(*part->impl_, "part"));
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
@@ -303,7 +328,13 @@ void Stock::writeVdb(const std::filesystem::path& file, const Stock* part) const
   if (!out) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
 }
 
-std::uint64_t Stock::activeVoxelCount() const { return impl_->grid->activeVoxelCount(); }
-std::uint64_t Stock::memoryBytes() const { return impl_->grid->memUsage(); }
+std::uint64_t Stock::activeVoxelCount() const {
+  impl_->settle();
+  return impl_->grid->activeVoxelCount();
+}
+std::uint64_t Stock::memoryBytes() const {
+  impl_->settle();
+  return impl_->grid->memUsage();
+}
 
 }  // namespace lathesim::sim

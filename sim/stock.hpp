@@ -61,10 +61,16 @@ struct ChangedArea {
   }
 };
 
+/// How turning cuts are written while the stock is still a solid of revolution: into a table
+/// by radius and Z, the level set written from it only when something reads it (the default:
+/// a move then costs what it changes in the meridian plane), or straight into the level set
+/// voxel by voxel (what the table must agree with; for tests). Both give the same stock.
+enum class RevolvedWrites { Table, Voxels };
+
 class Stock {
  public:
   /// Builds the bar's level set leaf by leaf from its analytic distance.
-  Stock(const StockSpec& spec, double voxelMm);
+  Stock(const StockSpec& spec, double voxelMm, RevolvedWrites writes = RevolvedWrites::Table);
   ~Stock();
   Stock(const Stock&) = delete;
   Stock& operator=(const Stock&) = delete;

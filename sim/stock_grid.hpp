@@ -5,10 +5,13 @@
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
+#include <memory>
+#include <mutex>
 
 #include "geometry/helical_sweep.hpp"
 #include "geometry/revolved_region.hpp"
 #include "geometry/straight_slot.hpp"
+#include "sim/revolved_table.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::sim {
@@ -32,12 +35,27 @@ struct StockGrid {
   float background;  // narrow-band half-width in mm: |φ| is clamped to it
   Grid::Ptr grid;
   openvdb::CoordBBox materialBounds;  // index box that contains all material, now and later
+  /// While the stock is a solid of revolution, the table holds it (revolved_table.hpp) and
+  /// `grid` lags behind until settle(); null once something not revolved was written.
+  std::unique_ptr<RevolvedTable> table;
 
   StockGrid(const StockSpec& s, double voxelMm);
+
+  /// Writes into `grid` what the table changed since the last settle (thread-safe: readers
+  /// that share a const stock may each call it). Nothing to do without a table.
+  void settle() const;
+  /// Settles and drops the table: before a write or an edit the table cannot hold.
+  void leaveTable();
+  /// Writes a revolved region through the table (see writeRegion); the table is left when
+  /// the write makes the stock stop being revolved.
+  double writeThroughTable(const RevolvedRegion& region, const RevolvedRegion* changes);
 
   int toIndexFloor(double mm) const;
   int toIndexCeil(double mm) const;
   double leafInsideVoxels(const Leaf& leaf) const;
+
+ private:
+  mutable std::mutex settling_;
 };
 
 /// How a region is written into the level set.
@@ -55,5 +73,9 @@ double writeRegion(StockGrid& stock, const RevolvedRegion& region, RegionWrite h
 double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how,
                    const ThreadChangeBound* changes = nullptr);
 double writeRegion(StockGrid& stock, const StraightSlot& slot, RegionWrite how);
+
+/// Gives a stock just built from `bar` (revolved) its table, when the table's memory is small
+/// beside the level set's (see revolved_stock.cpp).
+void startTable(StockGrid& stock, const RevolvedRegion& bar);
 
 }  // namespace lathesim::sim

@@ -16,6 +16,7 @@ namespace lathesim::sim {
 
 SampledSection Stock::meridianSection() const {
   const StockGrid& s = *impl_;
+  s.settle();
   const int margin = kHalfBandVoxels + 2;
   const int rLast = s.toIndexCeil(s.spec.diameterMm / 2.0) + margin;
   const int zFirst = s.toIndexFloor(s.spec.faceZMm - s.spec.lengthMm) - margin;

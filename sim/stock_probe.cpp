@@ -23,7 +23,8 @@ double Stock::materialInside(const RevolvedRegion& region, double marginMm) cons
     // The ring a meridian voxel stands for: 2πρ·h², and the axis voxel's own disc.
     const double ring = i == 0 ? std::numbers::pi * h * h * h / 4.0 : 2.0 * std::numbers::pi * rho * h * h;
     for (int k = k0; k <= k1; ++k) {
-      const double material = insideFraction(accessor.getValue(Coord(i, 0, k)), h);
+      const float phi = s.table ? s.table->value(i, 0, k) : accessor.getValue(Coord(i, 0, k));
+      const double material = insideFraction(phi, h);
       if (material == 0.0) continue;
       // Only values within a voxel of -marginMm matter, so the distance may stop there.
       const double psi = region.signedDistance(rho, k * h, marginMm + h) + marginMm;

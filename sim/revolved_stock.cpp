@@ -1,0 +1,110 @@
+// The stock while it is revolved: writes go to the table (revolved_table.hpp), and the level
+// set is written from it when something reads it.
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "sim/stock_grid.hpp"
+
+namespace lathesim::sim {
+namespace {
+
+// The most memory the table may take, as a share of the level set's estimate.
+constexpr double kMaxTableShareOfStock = 0.25;
+
+// A leaf's values and active bits as the table has them, and whether they are one inactive
+// value at or beyond the band (then the leaf is a tile, as the writer prunes it).
+struct LeafImage {
+  float values[Leaf::NUM_VALUES];
+  std::uint8_t activeBits[Leaf::NUM_VALUES / 8];  // one byte per column along Z, as Leaf's mask
+  bool uniform;
+};
+
+void imageOf(const RevolvedTable& table, const VoxelIndex& origin, float band, LeafImage& image) {
+  for (int i = 0; i < kLeafDim; ++i)
+    for (int j = 0; j < kLeafDim; ++j) {
+      const int column = (i << 6) | (j << 3);  // LeafNode<float, 3>::coordToOffset
+      std::uint8_t bits = 0;
+      if (const float* cells = table.column(origin.i + i, origin.j + j, origin.k, bits))
+        std::memcpy(image.values + column, cells, kLeafDim * sizeof(float));
+      else
+        std::fill_n(image.values + column, kLeafDim, band);
+      image.activeBits[column >> 3] = bits;
+    }
+  const float first = image.values[0];
+  image.uniform = std::abs(first) >= band;
+  for (std::size_t n = 0; n < Leaf::NUM_VALUES / 8 && image.uniform; ++n) image.uniform = image.activeBits[n] == 0;
+  for (std::size_t n = 1; n < Leaf::NUM_VALUES && image.uniform; ++n) image.uniform = image.values[n] == first;
+}
+
+}  // namespace
+
+void StockGrid::settle() const {
+  if (!table) return;
+  const std::lock_guard<std::mutex> lock(settling_);
+  const std::vector<VoxelIndex> origins = table->changedLeaves();
+  // A batch at a time: the images are computed in parallel, the tree is changed serially.
+  constexpr std::size_t kBatch = 2048;
+  std::vector<LeafImage> images(std::min(kBatch, origins.size()));
+  auto accessor = grid->getAccessor();
+  for (std::size_t start = 0; start < origins.size(); start += kBatch) {
+    const std::size_t count = std::min(kBatch, origins.size() - start);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count), [&](const auto& range) {
+      for (std::size_t n = range.begin(); n != range.end(); ++n) imageOf(*table, origins[start + n], background, images[n]);
+    });
+    for (std::size_t n = 0; n < count; ++n) {
+      const LeafImage& image = images[n];
+      const Coord origin(origins[start + n].i, origins[start + n].j, origins[start + n].k);
+      if (image.uniform) {
+        if (accessor.probeLeaf(origin) || accessor.getValue(origin) != image.values[0] || accessor.isValueOn(origin))
+          accessor.addTile(1, origin, image.values[0], false);
+        continue;
+      }
+      Leaf* leaf = accessor.touchLeaf(origin);
+      std::memcpy(leaf->buffer().data(), image.values, sizeof image.values);
+      auto& mask = leaf->getValueMask();
+      for (std::size_t b = 0; b < Leaf::NUM_VALUES / 8; ++b) mask.template getWord<std::uint8_t>(b) = image.activeBits[b];
+    }
+  }
+}
+
+void StockGrid::leaveTable() {
+  settle();
+  table.reset();
+}
+
+double StockGrid::writeThroughTable(const RevolvedRegion& region, const RevolvedRegion* changes) {
+  RevolvedTable::WriteResult result = table->write(region, false, changes);
+  if (!result.ghostsLeft.empty()) {
+    // Ghosts only some of a class's columns have: the stock is no longer revolved there.
+    leaveTable();
+    auto accessor = grid->getAccessor();
+    for (const VoxelIndex& v : result.ghostsLeft) {
+      const Coord voxel(v.i, v.j, v.k);
+      result.lostVoxels += insideFraction(accessor.getValue(voxel), this->voxel);
+      accessor.setValueOff(voxel, background);
+    }
+  }
+  return result.lostVoxels * voxel * voxel * voxel;
+}
+
+void startTable(StockGrid& stock, const RevolvedRegion& bar) {
+  const openvdb::CoordBBox& box = stock.materialBounds;
+  const int halfWidth = std::max({-box.min().x(), box.max().x(), -box.min().y(), box.max().y()});
+  // Beyond the bar's band nothing ever changes: the bar's distance there exceeds the band,
+  // and a cut never changes air.
+  const double airRadius = stock.spec.diameterMm / 2.0 + stock.background + 2.0 * stock.voxel;
+  // The table is dense in Z: on a long thin bar or a large one it could outweigh the level
+  // set, which then stays the only copy.
+  const std::uint64_t bytes = RevolvedTable::bytesFor(box.min().z(), box.max().z(), stock.voxel, airRadius);
+  if (bytes > kMaxTableShareOfStock * static_cast<double>(estimatedStockBytes(stock.spec, stock.voxel))) return;
+  stock.table = std::make_unique<RevolvedTable>(halfWidth, box.min().z(), box.max().z(), stock.voxel,
+                                                stock.background, airRadius);
+  stock.table->write(bar, true);
+  stock.table->forgetChanges();  // the level set was built from the same bar
+}
+
+}  // namespace lathesim::sim

@@ -1,0 +1,358 @@
+#include "sim/revolved_table.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "sim/column_write.hpp"
+
+namespace lathesim::sim {
+namespace {
+
+constexpr int kChunk = RevolvedRegion::kColumn;  // 8 cells along Z: one leaf's column
+static_assert(kChunk == 8);
+
+int alignDown(int k) { return k & ~(kChunk - 1); }
+
+// The largest i² + j² a column nearer the axis than airRadiusMm can have.
+std::int64_t largestSumOfSquares(double airRadiusMm, double voxelMm) {
+  const double cells = airRadiusMm / voxelMm;
+  return static_cast<std::int64_t>(std::floor(cells * cells));
+}
+
+// How many columns the orbit of (i, j), i ≥ j ≥ 0, has under the square's symmetries.
+int orbitSize(int i, int j) {
+  if (i == 0) return 1;
+  return j == 0 || j == i ? 4 : 8;
+}
+
+// A column of cells deep inside the region (ψ < −bg − h everywhere): writeColumn's result
+// without the distances. Each open cell takes the filled value u = −bg and goes inactive.
+// Returns the material voxels lost; marks the chunk and its class changed when anything did.
+double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, std::uint8_t& chunkChanged,
+            char& classChanged) {
+  const float filled = static_cast<float>(w.sign * -w.band);
+  const double filledShare = std::clamp(0.5 - filled * w.inverseVoxel, 0.0, 1.0);
+  double lost = 0.0;
+  for (int k = 0; k < kChunk; ++k) {
+    if (!(w.sign * values[k] > -w.band)) continue;  // already as deep in the region's state as the band allows
+    lost += std::clamp(0.5 - values[k] * w.inverseVoxel, 0.0, 1.0) - filledShare;
+    values[k] = filled;
+    activeBits &= static_cast<std::uint8_t>(~(1u << k));
+    chunkChanged = 1;
+    classChanged = 1;
+  }
+  return lost;
+}
+
+}  // namespace
+
+std::uint64_t RevolvedTable::bytesFor(int kFirst, int kLast, double voxelMm, double airRadiusMm) {
+  const std::int64_t nMax = largestSumOfSquares(airRadiusMm, voxelMm);
+  const int rMax = static_cast<int>(std::sqrt(static_cast<double>(nMax))) + 1;
+  std::vector<bool> seen(static_cast<std::size_t>(nMax) + 1, false);
+  std::uint64_t classes = 0;
+  for (int i = 0; i <= rMax; ++i)
+    for (int j = 0; j <= i; ++j) {
+      const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
+      if (n > nMax || seen[n]) continue;
+      seen[n] = true;
+      ++classes;
+    }
+  const std::uint64_t chunks = static_cast<std::uint64_t>((alignDown(kLast) - alignDown(kFirst)) / kChunk + 1);
+  return classes * chunks * (kChunk * sizeof(float) + 2);
+}
+
+RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm)
+    : halfWidth_(halfWidth), kBase_(alignDown(kFirst)), chunks_((alignDown(kLast) - alignDown(kFirst)) / kChunk + 1),
+      h_(voxelMm), band_(bandMm) {
+  const std::int64_t nMax = largestSumOfSquares(airRadiusMm, voxelMm);
+  const int side = 2 * halfWidth + 1;
+  // Classes in ascending i² + j², so that a range of radii is a range of classes.
+  std::vector<int> classOfSum(static_cast<std::size_t>(nMax) + 1, kAir);
+  for (int i = 0; i <= halfWidth; ++i)
+    for (int j = 0; j <= i; ++j) {
+      const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
+      if (n <= nMax) classOfSum[n] = 0;
+    }
+  for (std::int64_t n = 0; n <= nMax; ++n)
+    if (classOfSum[n] != kAir) {  // a sum of two squares within the air radius
+      classOfSum[n] = static_cast<int>(sumOfSquares_.size());
+      sumOfSquares_.push_back(n);
+    }
+  const int classes = static_cast<int>(sumOfSquares_.size());
+  rho_.assign(classes, 0.0);
+  columns_.assign(classes, 0.0);
+  orbitStart_.assign(classes + 1, 0);
+  for (int i = 0; i <= halfWidth; ++i)
+    for (int j = 0; j <= i; ++j) {
+      const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
+      if (n <= nMax) ++orbitStart_[classOfSum[n] + 1];
+    }
+  for (int c = 0; c < classes; ++c) orbitStart_[c + 1] += orbitStart_[c];
+  orbits_.resize(orbitStart_[classes]);
+  std::vector<int> filled(orbitStart_.begin(), orbitStart_.end() - 1);
+  for (int i = 0; i <= halfWidth; ++i)
+    for (int j = 0; j <= i; ++j) {
+      const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
+      if (n > nMax) continue;
+      const int c = classOfSum[n];
+      orbits_[filled[c]++] = {i, j};
+      columns_[c] += orbitSize(i, j);
+      // ρ as the level set's writer computes it for this column (its widest one, the last
+      // found: j = 0 where the class has one, so that the meridian plane y = 0 reads exactly).
+      const double x = i * h_, y = j * h_;
+      rho_[c] = std::sqrt(x * x + y * y);
+    }
+  classOfColumn_.assign(static_cast<std::size_t>(side) * side, kAir);
+  for (int i = -halfWidth; i <= halfWidth; ++i)
+    for (int j = -halfWidth; j <= halfWidth; ++j) {
+      const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
+      if (n <= nMax) classOfColumn_[static_cast<std::size_t>(i + halfWidth) * side + (j + halfWidth)] = classOfSum[n];
+    }
+  const std::size_t chunkCount = static_cast<std::size_t>(classes) * chunks_;
+  values_.assign(chunkCount * kChunk, bandMm);
+  activeBits_.assign(chunkCount, 0);
+  changed_.assign(chunkCount, 0);
+}
+
+int RevolvedTable::classOf(int i, int j) const {
+  if (i < -halfWidth_ || i > halfWidth_ || j < -halfWidth_ || j > halfWidth_) return kAir;
+  return classOfColumn_[static_cast<std::size_t>(i + halfWidth_) * (2 * halfWidth_ + 1) + (j + halfWidth_)];
+}
+
+float RevolvedTable::value(int i, int j, int k) const {
+  const int c = classOf(i, j);
+  const int cell = k - kBase_;
+  if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return band_;
+  return values_[static_cast<std::size_t>(c) * chunks_ * kChunk + cell];
+}
+
+bool RevolvedTable::active(int i, int j, int k) const {
+  const int c = classOf(i, j);
+  const int cell = k - kBase_;
+  if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return false;
+  return (activeBits_[chunkIndex(c, cell / kChunk)] >> (cell % kChunk)) & 1;
+}
+
+const float* RevolvedTable::column(int i, int j, int k0, std::uint8_t& activeBits) const {
+  const int c = classOf(i, j);
+  const int chunk = (k0 - kBase_) / kChunk;
+  if (c == kAir || k0 < kBase_ || chunk >= chunks_) return nullptr;
+  activeBits = activeBits_[chunkIndex(c, chunk)];
+  return cells(c, chunk);
+}
+
+bool RevolvedTable::isGhost(int i, int j, int k, float material) const {
+  for (int di = -1; di <= 1; ++di)
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int dk = -1; dk <= 1; ++dk)
+        if ((di || dj || dk) && value(i + di, j + dj, k + dk) <= material) return false;
+  return true;
+}
+
+RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bool adding,
+                                                const RevolvedRegion* changes) {
+  WriteResult result;
+  if (region.empty() || (changes && changes->empty()) || rho_.empty()) return result;
+  const ColumnWrite w = ColumnWrite::of(adding ? 1.0 : -1.0, h_, band_);
+  // A cell changes only where ψ < bg, and is a ghost candidate only where |ψ| < h.
+  const double reach = band_ + h_;
+  double rhoLow = std::max(0.0, region.lowerBound().x()) - reach, rhoHigh = region.maxRadius() + reach;
+  double zLow = region.lowerBound().y() - reach, zHigh = region.upperBound().y() + reach;
+  // With a change bound, within its band, and a ghost's reach beyond (region_writer.cpp).
+  const double changeMargin = band_ + 2.0 * h_;
+  if (changes) {
+    rhoLow = std::max(rhoLow, std::max(0.0, changes->lowerBound().x()) - changeMargin - h_);
+    rhoHigh = std::min(rhoHigh, changes->maxRadius() + changeMargin + h_);
+    zLow = std::max(zLow, changes->lowerBound().y() - changeMargin - h_);
+    zHigh = std::min(zHigh, changes->upperBound().y() + changeMargin + h_);
+  }
+  const int classLow = static_cast<int>(std::lower_bound(rho_.begin(), rho_.end(), rhoLow) - rho_.begin());
+  const int classHigh = static_cast<int>(std::upper_bound(rho_.begin(), rho_.end(), rhoHigh) - rho_.begin()) - 1;
+  const int chunkLow = std::max(0, static_cast<int>(std::floor((zLow / h_ - kBase_) / kChunk)));
+  const int chunkHigh = std::min(chunks_ - 1, static_cast<int>(std::floor((zHigh / h_ - kBase_) / kChunk)));
+  if (classLow > classHigh || chunkLow > chunkHigh) return result;
+
+  struct Candidates {
+    int chunk;
+    std::uint8_t bits;
+  };
+  const int classCount = classHigh - classLow + 1;
+  std::vector<double> lostOf(classCount, 0.0);
+  std::vector<std::vector<Candidates>> ghostsOf(adding ? 0 : classCount);
+  std::vector<char> changedClass(classCount, 0);
+  // Classes come in bins one voxel wide in ρ (at 22 mm about a hundred classes a bin): what
+  // depends on the place only — the region near it (RevolvedRegion::nearInto, as the writer
+  // takes it per leaf) and whether the change bound reaches it — is asked once per bin and
+  // group of chunks, for a place half a voxel wider.
+  std::vector<int> binStart{classLow};
+  for (int c = classLow + 1; c <= classHigh; ++c)
+    if (std::floor(rho_[c] / h_) != std::floor(rho_[binStart.back()] / h_)) binStart.push_back(c);
+  binStart.push_back(classHigh + 1);
+  constexpr int kGroup = 4;
+  constexpr std::size_t kFewPieces = 4;  // fewer: the whole region is as quick as a subset
+  const bool subsets = region.pieceCount() > kFewPieces;
+  const double binHalfWidth = 0.5 * h_;
+  const double groupRadius = 0.5 * kGroup * kChunk * h_ + binHalfWidth + reach;
+  const double chunkReach = 0.5 * (kChunk - 1) * h_ + binHalfWidth + changeMargin;
+  const double cellReach = std::hypot(0.5 * (kChunk - 1) * h_, binHalfWidth);
+  const double farReach = cellReach + band_ + h_;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, binStart.size() - 1), [&](const auto& range) {
+    RevolvedRegion nearby;
+    for (std::size_t bin = range.begin(); bin != range.end(); ++bin) {
+      const int first = binStart[bin], last = binStart[bin + 1];
+      const double rhoMid = (std::floor(rho_[first] / h_) + 0.5) * h_;
+      for (int group = chunkLow; group <= chunkHigh; group += kGroup) {
+        const int groupEnd = std::min(chunkHigh + 1, group + kGroup);
+        const RevolvedRegion* local = &region;
+        if (subsets) {
+          const double zMid = (kBase_ + 0.5 * (group + groupEnd) * kChunk) * h_;
+          region.nearInto(rhoMid, zMid, groupRadius, nearby);
+          if (nearby.empty()) continue;
+          local = &nearby;
+        }
+        for (int chunk = group; chunk < groupEnd; ++chunk) {
+          const int k0 = kBase_ + chunk * kChunk;
+          const double zCentre = (k0 + 0.5 * (kChunk - 1)) * h_;
+          if (changes && changes->signedDistance(rhoMid, zCentre, chunkReach + h_) > chunkReach) continue;
+          // The region's distance changes by at most the distance moved (each piece's is
+          // 1-Lipschitz, inside and out, and so is their minimum): from the place's centre to
+          // its cells, at most cellReach. Beyond reach nothing changes and nothing is a ghost
+          // candidate; deep inside, every open cell is filled, as writeColumn would fill it.
+          const double centre = local->signedDistance(rhoMid, zCentre, farReach + h_);
+          if (centre > farReach) continue;
+          const bool covered = centre < -farReach;
+          for (int c = first; c < last; ++c) {
+            float* values = cells(c, chunk);
+            if (covered) {
+              lostOf[c - classLow] += fill(values, activeBits_[chunkIndex(c, chunk)], w, changed_[chunkIndex(c, chunk)],
+                                           changedClass[c - classLow]);
+              continue;
+            }
+            bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
+            for (int k = 0; k < kChunk; ++k) anyOpen |= w.sign * values[k] > -w.band;
+            if (!anyOpen) continue;
+            double psi[kChunk];
+            local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
+            float before[kChunk];
+            std::memcpy(before, values, sizeof before);
+            std::uint8_t& active = activeBits_[chunkIndex(c, chunk)];
+            const std::uint8_t activeBefore = active;
+            std::uint8_t ghostBits = 0;
+            const int n = c - classLow;
+            lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
+            if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
+              changed_[chunkIndex(c, chunk)] = 1;
+              changedClass[n] = 1;
+            }
+            if (ghostBits && !adding) ghostsOf[n].push_back({chunk, ghostBits});
+          }
+        }
+      }
+    }
+  });
+
+  double lost = 0.0;
+  for (int n = 0; n < classCount; ++n) lost += lostOf[n] * columns_[classLow + n];
+  if (std::any_of(changedClass.begin(), changedClass.end(), [](char changed) { return changed != 0; })) {
+    changedClassLow_ = changedClassHigh_ < changedClassLow_ ? classLow : std::min(changedClassLow_, classLow);
+    changedClassHigh_ = std::max(changedClassHigh_, classHigh);
+    changedChunkLow_ = changedChunkHigh_ < changedChunkLow_ ? chunkLow : std::min(changedChunkLow_, chunkLow);
+    changedChunkHigh_ = std::max(changedChunkHigh_, chunkHigh);
+  }
+
+  // Ghosts (region_writer.cpp, step 4), only after a write that removed material. All are
+  // found before any is cleared; clearing cannot change another's verdict (a ghost is no
+  // material before or after).
+  if (!adding && lost != 0.0) {
+    const float material = w.notMaterial;
+    struct Ghost {
+      int c, cell;
+    };
+    std::vector<Ghost> ghosts;
+    for (int n = 0; n < classCount; ++n) {
+      const int c = classLow + n;
+      for (const Candidates& candidates : ghostsOf[n])
+        for (int bit = 0; bit < kChunk; ++bit) {
+          if (!((candidates.bits >> bit) & 1)) continue;
+          const int cell = candidates.chunk * kChunk + bit;
+          const int k = kBase_ + cell;
+          int ghostOrbits = 0;
+          const int orbitCount = orbitStart_[c + 1] - orbitStart_[c];
+          for (int o = orbitStart_[c]; o < orbitStart_[c + 1]; ++o)
+            ghostOrbits += isGhost(orbits_[o].first, orbits_[o].second, k, material);
+          if (ghostOrbits == 0) continue;
+          if (ghostOrbits == orbitCount) {
+            ghosts.push_back({c, cell});
+            continue;
+          }
+          // The class's columns disagree: the voxels that are ghosts are left to the level set.
+          for (int o = orbitStart_[c]; o < orbitStart_[c + 1]; ++o) {
+            const auto [i, j] = orbits_[o];
+            if (!isGhost(i, j, k, material)) continue;
+            for (const auto& [x, y] : {std::pair{i, j}, {j, i}})
+              for (int sx : {1, -1})
+                for (int sy : {1, -1}) {
+                  const VoxelIndex v{sx * x, sy * y, k};
+                  const bool repeated = std::any_of(result.ghostsLeft.begin(), result.ghostsLeft.end(), [&](const VoxelIndex& u) {
+                    return u.i == v.i && u.j == v.j && u.k == v.k;
+                  });
+                  if (!repeated) result.ghostsLeft.push_back(v);
+                }
+          }
+        }
+    }
+    for (const Ghost& ghost : ghosts) {
+      float& value = values_[static_cast<std::size_t>(ghost.c) * chunks_ * kChunk + ghost.cell];
+      lost += std::clamp(0.5 - value / h_, 0.0, 1.0) * columns_[ghost.c];
+      value = band_;
+      const std::size_t chunk = chunkIndex(ghost.c, ghost.cell / kChunk);
+      activeBits_[chunk] &= static_cast<std::uint8_t>(~(1u << (ghost.cell % kChunk)));
+      changed_[chunk] = 1;
+    }
+  }
+  result.lostVoxels = lost;
+  return result;
+}
+
+std::vector<VoxelIndex> RevolvedTable::changedLeaves() {
+  std::vector<VoxelIndex> leaves;
+  if (changedClassHigh_ < changedClassLow_) return leaves;
+  const std::int64_t nLow = sumOfSquares_[changedClassLow_], nHigh = sumOfSquares_[changedClassHigh_];
+  const int extent = std::min(halfWidth_, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(nHigh)))));
+  // The nearest and farthest i² (or j²) over the eight indices a leaf spans along one axis.
+  const auto nearest = [](int a) { return a > 0 ? std::int64_t{a} * a : a + kChunk - 1 < 0 ? std::int64_t{a + kChunk - 1} * (a + kChunk - 1) : 0; };
+  const auto farthest = [](int a) { return std::max(std::int64_t{a} * a, std::int64_t{a + kChunk - 1} * (a + kChunk - 1)); };
+  std::vector<int> classes;
+  for (int x = alignDown(-extent); x <= extent; x += kChunk)
+    for (int y = alignDown(-extent); y <= extent; y += kChunk) {
+      if (nearest(x) + nearest(y) > nHigh || farthest(x) + farthest(y) < nLow) continue;
+      classes.clear();
+      for (int i = x; i < x + kChunk; ++i)
+        for (int j = y; j < y + kChunk; ++j) {
+          const int c = classOf(i, j);
+          if (c >= changedClassLow_ && c <= changedClassHigh_) classes.push_back(c);
+        }
+      std::sort(classes.begin(), classes.end());
+      classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
+      for (int chunk = changedChunkLow_; chunk <= changedChunkHigh_; ++chunk)
+        if (std::any_of(classes.begin(), classes.end(), [&](int c) { return changed_[chunkIndex(c, chunk)] != 0; }))
+          leaves.push_back({x, y, kBase_ + chunk * kChunk});
+    }
+  forgetChanges();
+  return leaves;
+}
+
+void RevolvedTable::forgetChanges() {
+  for (int c = changedClassLow_; c <= changedClassHigh_; ++c)
+    std::fill_n(changed_.begin() + chunkIndex(c, changedChunkLow_), changedChunkHigh_ - changedChunkLow_ + 1, 0);
+  changedClassLow_ = 0;
+  changedClassHigh_ = -1;
+  changedChunkLow_ = 0;
+  changedChunkHigh_ = -1;
+}
+
+}  // namespace lathesim::sim

@@ -1,0 +1,91 @@
+#pragma once
+// Inside sim only: the stock while it is still a solid of revolution, as a table of values by
+// radius class and Z rather than voxel by voxel.
+//
+// While only revolved regions have been written (the bar or tube, then turning cuts), every
+// voxel's value is the same function of its (ρ, z): voxels (i, j, k) and (i', j', k) with
+// i² + j² = i'² + j'² went through the same writes with the same distances. The table keeps one
+// value per class of equal i² + j² (Φ50 at 0.1 mm: about 16,000 classes for 200,000 columns,
+// some thirteen columns a class) and Z, and writes a revolved region there with the level set's
+// own column write (column_write.hpp): the same values, active bits and ghost candidates, each
+// class's lost material counted as many times as it has columns. A turning move then costs its
+// changed cells, not its voxels and no tree edits; the level set is written from the table
+// only when something reads it (stock.cpp).
+//
+// A ghost (region_writer.cpp, step 4) is decided by a voxel's 26 neighbours, and columns of one
+// class can have neighbours of different classes: the table asks each of the class's columns
+// up to symmetry. When they disagree the stock stops being revolved there; the write says so
+// and the caller writes the level set and leaves the table.
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/revolved_region.hpp"
+
+namespace lathesim::sim {
+
+/// A voxel of the level set by index.
+struct VoxelIndex {
+  int i, j, k;
+};
+
+class RevolvedTable {
+ public:
+  /// The columns −halfWidth…halfWidth in X and Y, Z from kFirst to kLast (voxel indices),
+  /// all starting at φ = `bandMm` (air). Columns farther from the axis than `airRadiusMm` are
+  /// taken never to change (nothing reaches them: the caller's promise).
+  RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm);
+
+  /// Bytes the table would take for these dimensions (to decide whether to keep one).
+  static std::uint64_t bytesFor(int kFirst, int kLast, double voxelMm, double airRadiusMm);
+
+  struct WriteResult {
+    double lostVoxels = 0;  // material voxels lost (negative when added)
+    /// Ghosts the table could not clear (the class's columns disagreed): voxels to clear in the
+    /// level set once it is written from the table; the table is then no longer the stock.
+    std::vector<VoxelIndex> ghostsLeft;
+  };
+  /// Writes the revolved `region`: adding (φ ← min(φ, ψ)) or removing (φ ← max(φ, −ψ)).
+  /// `changes`, when given, bounds where the write can change anything (cut_history.hpp).
+  WriteResult write(const RevolvedRegion& region, bool adding, const RevolvedRegion* changes = nullptr);
+
+  /// The value and active bit of voxel (i, j, k): those of its class, or air beyond the table.
+  float value(int i, int j, int k) const;
+  bool active(int i, int j, int k) const;
+
+  /// The eight cells of column (i, j) from Z index k0 (a multiple of 8) and their active bits;
+  /// nullptr for a column that is always air (beyond the table or its air radius).
+  const float* column(int i, int j, int k0, std::uint8_t& activeBits) const;
+
+  /// The origins of the 8³ leaf-aligned blocks of voxels in which some value or active bit
+  /// changed since the last call (which are then forgotten).
+  std::vector<VoxelIndex> changedLeaves();
+  /// Forgets what changed (the level set was written the same way already).
+  void forgetChanges();
+
+ private:
+  static constexpr int kAir = -1;
+  int classOf(int i, int j) const;
+  float* cells(int c, int chunk) { return &values_[(static_cast<std::size_t>(c) * chunks_ + chunk) * 8]; }
+  const float* cells(int c, int chunk) const { return &values_[(static_cast<std::size_t>(c) * chunks_ + chunk) * 8]; }
+  std::size_t chunkIndex(int c, int chunk) const { return static_cast<std::size_t>(c) * chunks_ + chunk; }
+  bool isGhost(int i, int j, int k, float material) const;
+
+  int halfWidth_;
+  int kBase_;    // Z index of the first cell: a multiple of 8, as the level set's leaves
+  int chunks_;   // Z chunks of 8 cells per class
+  double h_;
+  float band_;
+  std::vector<int> classOfColumn_;        // (i + halfWidth)·(2·halfWidth + 1) + j + halfWidth → class or kAir
+  std::vector<std::int64_t> sumOfSquares_;  // per class, ascending: i² + j²
+  std::vector<double> rho_;               // per class: ρ of its widest column (i, j), i ≥ j ≥ 0, j least
+  std::vector<double> columns_;           // per class: how many columns it has
+  std::vector<int> orbitStart_;           // per class: its columns up to symmetry, orbits_[start…next)
+  std::vector<std::pair<int, int>> orbits_;  // (i, j) with i ≥ j ≥ 0
+  std::vector<float> values_;             // per class, per chunk, 8 cells along Z
+  std::vector<std::uint8_t> activeBits_;  // per class and chunk: one bit per cell
+  std::vector<std::uint8_t> changed_;     // per class and chunk: changed since changedLeaves()
+  int changedClassLow_ = 0, changedClassHigh_ = -1, changedChunkLow_ = 0, changedChunkHigh_ = -1;
+};
+
+}  // namespace lathesim::sim
