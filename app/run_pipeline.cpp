@@ -116,23 +116,30 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
 void meshPart(SimulatedRun& run, Stopwatch& clock) {
   run.progress->stage("meshing");
   RunFigures& figures = run.figures;
+  // After a part-off the stub is meshed and checked beside the part: each mesh keeps both
+  // cores busy only part of the time (the welding and the checks are serial).
+  std::future<measure::MeshCheck> stubCheck;
+  if (run.partedOff())
+    stubCheck = std::async(std::launch::async, [&run, &figures] {
+      run.stub = run.stock->mesh(kExportAdaptivity);
+      return measure::checkMesh(run.stub, figures.stubVolumeMm3, figures.voxelMm, "stub");
+    });
   run.part = run.partStock().mesh(kExportAdaptivity);
   // The level set's volume is checked against the whole mesh; crumbs thinner than a voxel
   // are then left out of the STL, and what they held is reported.
   const double partMm3 = run.partedOff() ? figures.simulation.partOffs.front().volumeMm3 : figures.finalVolumeMm3;
-  if (auto problem = measure::meshVolumeProblem(partMm3, run.part, figures.voxelMm)) warn(run, *problem);
-  figures.meshCrumbs = dropCrumbs(run.part, figures.voxelMm);
-  if (auto problem = measure::meshClosureProblem(run.part)) warn(run, *problem);
-  if (run.partedOff()) {
-    run.stub = run.stock->mesh(kExportAdaptivity);
-    if (auto problem = measure::meshVolumeProblem(figures.stubVolumeMm3, run.stub, figures.voxelMm, "stub"))
-      warn(run, *problem);
-    (void)dropCrumbs(run.stub, figures.voxelMm);
-    if (auto problem = measure::meshClosureProblem(run.stub, "stub")) warn(run, *problem);
-    figures.stubMeshVolumeMm3 = enclosedVolumeMm3(run.stub);
+  const measure::MeshCheck part = measure::checkMesh(run.part, partMm3, figures.voxelMm);
+  if (part.volumeProblem) warn(run, *part.volumeProblem);
+  figures.meshCrumbs = part.crumbs;
+  if (part.closureProblem) warn(run, *part.closureProblem);
+  if (stubCheck.valid()) {  // its warnings after the part's, as when it was meshed after it
+    const measure::MeshCheck stub = stubCheck.get();
+    if (stub.volumeProblem) warn(run, *stub.volumeProblem);
+    if (stub.closureProblem) warn(run, *stub.closureProblem);
+    figures.stubMeshVolumeMm3 = stub.volumeMm3;
   }
-  figures.meshVolumeMm3 = enclosedVolumeMm3(run.part);
-  figures.volumeToleranceMm3 = sim::volumeToleranceMm3(surfaceAreaMm2(run.part), figures.voxelMm);
+  figures.meshVolumeMm3 = part.volumeMm3;
+  figures.volumeToleranceMm3 = sim::volumeToleranceMm3(part.areaMm2, figures.voxelMm);
   figures.meshTriangles = run.part.triangles.size();
   figures.timing.meshS = clock.lap();
 }
@@ -239,7 +246,7 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   // After the pictures, not beside them: their copies of the mesh and these would add up to
   // the run's peak memory (a Φ300×600 bar at 0.2 mm: 2.53 times its grid's memory, 2.20 without).
   if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
-    run.modelGlb = render::gltfToGlb(render::partGltf(run.part, run.job.toolpath));
+    run.modelGlb = render::partGlb(run.part, run.job.toolpath);
   for (const std::string& format : options.exports) {
     out.write("part." + format, [&](const Path& file) {
       if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);

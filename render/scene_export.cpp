@@ -6,22 +6,15 @@
 #include <fstream>
 #include <stdexcept>
 #include <utility>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include <nlohmann/json.hpp>
-#include <vtkActor.h>
-#include <vtkCellArray.h>
-#include <vtkPoints.h>
-#include <vtkCamera.h>
-#include <vtkGLTFExporter.h>
 #include <vtkNew.h>
 #include <vtkOBJWriter.h>
 #include <vtkPLYWriter.h>
-#include <vtkPolyDataMapper.h>
-#include <vtkProperty.h>
-#include <vtkRenderWindow.h>
-#include <vtkRenderer.h>
 
-#include "render/offscreen_display.hpp"
 #include "render/picture_annotations.hpp"
 #include "render/scene_actors.hpp"
 #include "render/move_points.hpp"
@@ -32,28 +25,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::string decodeBase64(const std::string& text) {
-  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  int table[256];
-  std::fill(std::begin(table), std::end(table), -1);
-  for (std::size_t i = 0; i < alphabet.size(); ++i) table[static_cast<unsigned char>(alphabet[i])] = static_cast<int>(i);
-  std::string out;
-  out.reserve(text.size() * 3 / 4);
-  unsigned value = 0;
-  int bits = 0;
-  for (char c : text) {
-    const int digit = table[static_cast<unsigned char>(c)];
-    if (digit < 0) continue;  // '=' padding, line breaks
-    value = (value << 6) | static_cast<unsigned>(digit);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      out.push_back(static_cast<char>((value >> bits) & 0xFF));
-    }
-  }
-  return out;
-}
-
 /// How a move is drawn, each in its own colour as in the pictures (picture_annotations.hpp).
 enum class DrawnAs { Feed, Thread, Rapid };
 
@@ -62,112 +33,151 @@ DrawnAs drawnAs(const interp::Move& move) {
   return interp::isCutting(move.kind) ? DrawnAs::Feed : DrawnAs::Rapid;
 }
 
-/// The moves drawn as `kind` as polylines at (r, 0, z).
-vtkSmartPointer<vtkPolyData> toolpathPolyData(const interp::Toolpath& toolpath, DrawnAs kind) {
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> lines;
+/// The glTF scene's buffer and JSON, built straight from the mesh and the moves: each mesh's
+/// positions (mm, float) and indices (uint32) appended to one binary buffer.
+class GltfScene {
+ public:
+  /// A mesh of `mode` (4 triangles, 1 line segments) in `colour`.
+  void add(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices, int mode,
+           const Rgb& colour) {
+    Eigen::Vector3f low = positions.front(), high = positions.front();
+    for (const Eigen::Vector3f& p : positions) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "positions are three packed floats");
+    const int position = view(positions.data(), positions.size() * sizeof(Eigen::Vector3f));
+    accessors_.push_back({{"bufferView", position}, {"byteOffset", 0}, {"componentType", 5126},  // float
+                          {"count", positions.size()}, {"type", "VEC3"},
+                          {"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}});
+    const int index = view(indices.data(), indices.size() * sizeof(std::uint32_t));
+    accessors_.push_back({{"bufferView", index}, {"byteOffset", 0}, {"componentType", 5125},  // uint32
+                          {"count", indices.size()}, {"type", "SCALAR"}});
+    // The look VTK's glTF exporter gave the pictures' actors (specular 0.3): kept as it was.
+    materials_.push_back({{"pbrMetallicRoughness",
+                           {{"baseColorFactor", {colour[0], colour[1], colour[2], 1.0}},
+                            {"metallicFactor", 0.3},
+                            {"roughnessFactor", 1.0 / 1.06}}}});
+    const auto n = meshes_.size();
+    meshes_.push_back({{"name", "mesh" + std::to_string(n)},
+                       {"primitives", Json::array({{{"attributes", {{"POSITION", accessors_.size() - 2}}},
+                                                    {"indices", accessors_.size() - 1},
+                                                    {"material", n},
+                                                    {"mode", mode}}})}});
+  }
+
+  /// The GLB: its JSON chunk, then the binary chunk. One root in metres, glTF's Y up: part
+  /// (x, y, z) mm → glTF (z, x, y) / 1000.
+  std::string glb() const {
+    Json nodes = Json::array();
+    for (std::size_t n = 0; n < meshes_.size(); ++n) nodes.push_back({{"mesh", n}, {"name", "mesh" + std::to_string(n)}});
+    Json children = Json::array();
+    for (std::size_t n = 0; n < meshes_.size(); ++n) children.push_back(n);
+    nodes.push_back({{"name", "lathesim part"},
+                     {"matrix", {0, 0.001, 0, 0, 0, 0, 0.001, 0, 0.001, 0, 0, 0, 0, 0, 0, 1}},  // column-major
+                     {"children", children}});
+    const Json gltf = {{"asset", {{"version", "2.0"}, {"generator", "lathesim"}}},
+                       {"scene", 0},
+                       {"scenes", Json::array({{{"name", "lathesim"}, {"nodes", {meshes_.size()}}}})},
+                       {"nodes", nodes},
+                       {"meshes", meshes_},
+                       {"materials", materials_},
+                       {"accessors", accessors_},
+                       {"bufferViews", views_},
+                       {"buffers", Json::array({{{"byteLength", binary_.size()}}})}};
+    std::string json = gltf.dump();
+    while (json.size() % 4) json.push_back(' ');
+    std::string glb;
+    auto put32 = [&glb](std::uint32_t v) {
+      char bytes[4];
+      std::memcpy(bytes, &v, 4);  // GLB is little-endian, as this machine
+      glb.append(bytes, 4);
+    };
+    glb.reserve(28 + json.size() + binary_.size());
+    put32(0x46546C67);  // "glTF"
+    put32(2);
+    put32(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + binary_.size()));
+    put32(static_cast<std::uint32_t>(json.size()));
+    put32(0x4E4F534A);  // "JSON"
+    glb += json;
+    put32(static_cast<std::uint32_t>(binary_.size()));
+    put32(0x004E4942);  // "BIN\0"
+    glb += binary_;
+    return glb;
+  }
+
+ private:
+  int view(const void* data, std::size_t bytes) {  // every view's data is of 4-byte values: aligned
+    views_.push_back({{"buffer", 0}, {"byteOffset", binary_.size()}, {"byteLength", bytes}});
+    binary_.append(static_cast<const char*>(data), bytes);
+    return static_cast<int>(views_.size() - 1);
+  }
+
+  std::string binary_;
+  Json accessors_ = Json::array(), views_ = Json::array(), materials_ = Json::array(), meshes_ = Json::array();
+};
+
+/// The moves drawn as `kind` as line segments at (r, 0, z) into `scene`, if there are any.
+void addMoves(GltfScene& scene, const interp::Toolpath& toolpath, DrawnAs kind, const Rgb& colour) {
+  std::vector<Eigen::Vector3f> points;
+  std::vector<std::uint32_t> segments;
   for (const interp::Move& move : toolpath.moves) {
     if (drawnAs(move) != kind || move.kind == interp::MoveKind::Dwell) continue;
     const std::vector<RZ> drawn = movePoints(move);
-    lines->InsertNextCell(static_cast<vtkIdType>(drawn.size()));
-    for (const RZ& p : drawn) lines->InsertCellPoint(points->InsertNextPoint(p.x(), 0.0, p.y()));
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      if (i > 0) segments.insert(segments.end(), {static_cast<std::uint32_t>(points.size() - 1),
+                                                  static_cast<std::uint32_t>(points.size())});
+      points.emplace_back(static_cast<float>(drawn[i].x()), 0.0f, static_cast<float>(drawn[i].y()));
+    }
   }
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  data->SetLines(lines);
-  return data;
+  if (!segments.empty()) scene.add(points, segments, 1, colour);
 }
 
-vtkSmartPointer<vtkActor> colouredActor(vtkPolyData* data, const Rgb& colour) {
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(data);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
-  actor->GetProperty()->SetSpecular(0.3);
-  return actor;
+std::string encodeBase64(const std::string& bytes) {
+  static constexpr char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string text;
+  text.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const auto at = [&](std::size_t k) { return k < bytes.size() ? static_cast<unsigned char>(bytes[k]) : 0u; };
+    const unsigned triple = (at(i) << 16) | (at(i + 1) << 8) | at(i + 2);
+    text.push_back(alphabet[(triple >> 18) & 63]);
+    text.push_back(alphabet[(triple >> 12) & 63]);
+    text.push_back(i + 1 < bytes.size() ? alphabet[(triple >> 6) & 63] : '=');
+    text.push_back(i + 2 < bytes.size() ? alphabet[triple & 63] : '=');
+  }
+  return text;
+}
+
+std::uint32_t littleEndianWord(const std::string& bytes, std::size_t at) {
+  std::uint32_t v;
+  std::memcpy(&v, bytes.data() + at, 4);
+  return v;
 }
 
 }  // namespace
 
-std::string partGltf(const TriangleMesh& part, const interp::Toolpath& toolpath) {
-  ensureDisplay();  // a VTK window, though nothing is drawn
-  vtkNew<vtkRenderer> renderer;
-  if (!part.triangles.empty()) renderer->AddActor(colouredActor(toPolyData(part), kMetalColour));
-  for (const auto& [kind, colour] : {std::pair{DrawnAs::Feed, kFeedColour}, std::pair{DrawnAs::Thread, kThreadColour},
-                                      std::pair{DrawnAs::Rapid, kRapidColour}}) {
-    const auto lines = toolpathPolyData(toolpath, kind);
-    if (lines->GetNumberOfCells() > 0) renderer->AddActor(colouredActor(lines, colour));
+std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath) {
+  GltfScene scene;
+  if (!part.triangles.empty()) {
+    static_assert(sizeof(part.triangles.front()) == 3 * sizeof(std::uint32_t), "triangles are three packed indices");
+    const auto* first = part.triangles.front().data();
+    scene.add(part.vertices, std::vector<std::uint32_t>(first, first + 3 * part.triangles.size()), 4, kMetalColour);
   }
-  // The exporter puts the scene under a node holding the camera's view matrix: an identity
-  // camera (at the origin, looking down −Z) leaves the coordinates as they are.
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0, 0, 0);
-  camera->SetFocalPoint(0, 0, -1);
-  camera->SetViewUp(0, 1, 0);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
-  vtkNew<vtkGLTFExporter> exporter;
-  exporter->SetRenderWindow(window);
-  exporter->InlineDataOn();
-  Json gltf = Json::parse(exporter->WriteToString());
-
-  // One root in metres, glTF's Y up: part (x, y, z) mm → glTF (z, x, y) / 1000. The camera
-  // goes: a viewer frames the part itself.
-  Json& scene = gltf["scenes"][0];
-  Json root = {{"name", "lathesim part"},
-               {"matrix", {0, 0.001, 0, 0, 0, 0, 0.001, 0, 0.001, 0, 0, 0, 0, 0, 0, 1}},  // column-major
-               {"children", scene["nodes"]}};
-  for (Json& node : gltf["nodes"]) node.erase("camera");
-  gltf.erase("cameras");
-  gltf["nodes"].push_back(root);
-  scene["nodes"] = Json::array({gltf["nodes"].size() - 1});
-  gltf["asset"]["generator"] = "lathesim (VTK glTF exporter)";
-  return gltf.dump();
+  for (const auto& [kind, colour] : {std::pair{DrawnAs::Feed, kFeedColour}, std::pair{DrawnAs::Thread, kThreadColour},
+                                      std::pair{DrawnAs::Rapid, kRapidColour}})
+    addMoves(scene, toolpath, kind, colour);
+  return scene.glb();
 }
 
-std::string gltfToGlb(const std::string& text) {
-  Json gltf = Json::parse(text);
-  // Every buffer into one binary chunk, each started on a multiple of 4 bytes.
-  std::string binary;
-  std::vector<std::size_t> offsets;
-  for (const Json& buffer : gltf.value("buffers", Json::array())) {
-    const std::string uri = buffer.value("uri", "");
-    const auto comma = uri.find(',');
-    if (uri.rfind("data:", 0) != 0 || comma == std::string::npos)
-      throw std::runtime_error("glTF buffer is not inline data");
-    while (binary.size() % 4) binary.push_back('\0');
-    offsets.push_back(binary.size());
-    binary += decodeBase64(uri.substr(comma + 1));
-  }
-  while (binary.size() % 4) binary.push_back('\0');
-  for (Json& view : gltf["bufferViews"]) {
-    const std::size_t index = view.value("buffer", 0u);
-    view["byteOffset"] = offsets.at(index) + view.value("byteOffset", 0u);
-    view["buffer"] = 0;
-  }
-  gltf["buffers"] = Json::array({{{"byteLength", binary.size()}}});
-  std::string json = gltf.dump();
-  while (json.size() % 4) json.push_back(' ');
-
-  std::string glb;
-  auto put32 = [&glb](std::uint32_t v) {
-    char bytes[4];
-    std::memcpy(bytes, &v, 4);  // GLB is little-endian, as this machine
-    glb.append(bytes, 4);
-  };
-  put32(0x46546C67);  // "glTF"
-  put32(2);
-  put32(static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + binary.size()));
-  put32(static_cast<std::uint32_t>(json.size()));
-  put32(0x4E4F534A);  // "JSON"
-  glb += json;
-  put32(static_cast<std::uint32_t>(binary.size()));
-  put32(0x004E4942);  // "BIN\0"
-  glb += binary;
-  return glb;
+std::string partGltf(const TriangleMesh& part, const interp::Toolpath& toolpath) {
+  // The GLB's JSON with its binary chunk inline as a data URI.
+  const std::string glb = partGlb(part, toolpath);
+  const std::uint32_t jsonBytes = littleEndianWord(glb, 12);
+  Json gltf = Json::parse(glb.substr(20, jsonBytes));
+  const std::size_t binaryAt = 20 + jsonBytes + 8;
+  gltf["buffers"][0]["uri"] =
+      "data:application/octet-stream;base64," + encodeBase64(glb.substr(binaryAt, littleEndianWord(glb, 20 + jsonBytes)));
+  return gltf.dump();
 }
 
 void writeFileBytes(const std::string& bytes, const std::filesystem::path& file) {

@@ -1,7 +1,7 @@
 #pragma once
-// The part for other programs besides STL: glTF (the part in its metal colour and the
-// toolpath as coloured lines, as VTK's glTF exporter writes them), GLB (the same in one
-// binary file: what report.html's 3D view reads), PLY and OBJ (the part's surface alone).
+// The part for other programs besides STL: GLB (the part in its metal colour and the
+// toolpath as coloured lines, in one binary file: what report.html's 3D view reads), glTF
+// (the same as JSON), PLY and OBJ (the part's surface alone).
 
 #include <filesystem>
 #include <string>
@@ -11,13 +11,15 @@
 
 namespace lathesim::render {
 
-/// The part and toolpath as glTF 2.0 JSON with its buffers inline (base64). The scene is in
-/// metres with Y up, as glTF asks: the spindle axis (Z) along glTF's X, the part's X (the
-/// radius, up in every picture) along glTF's Y.
-std::string partGltf(const TriangleMesh& part, const interp::Toolpath& toolpath);
+/// The part and toolpath as a GLB (glTF 2.0 binary): its JSON chunk and one binary chunk
+/// holding the part's vertices and triangles as they are (no copy through VTK) and each kind
+/// of move as line segments in the pictures' colours. The scene is in metres with Y up, as
+/// glTF asks: the spindle axis (Z) along glTF's X, the part's X (the radius, up in every
+/// picture) along glTF's Y. Needs no display.
+std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath);
 
-/// The same glTF as a GLB: its JSON chunk and one binary chunk holding every buffer.
-std::string gltfToGlb(const std::string& gltf);
+/// The same scene as glTF 2.0 JSON with its buffer inline (base64).
+std::string partGltf(const TriangleMesh& part, const interp::Toolpath& toolpath);
 
 /// Each writes one file; throws std::runtime_error on failure.
 void writePartGltf(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::filesystem::path& file);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace lathesim {
 namespace {
 
@@ -83,6 +85,72 @@ TEST(TriangleMesh, MinusZeroIsTheSamePositionAsZero) {
   weldCoincidentVertices(cube);
   EXPECT_EQ(cube.vertices.size(), 8u);
   EXPECT_TRUE(isClosedAndOriented(cube));
+}
+
+// Welding against its definition, worked out the slow way: vertex v becomes the first vertex
+// at its position, and those first vertices are kept in their order. Positions drawn from a
+// small set so that most recur, some as -0.
+TEST(TriangleMesh, WeldingKeepsTheFirstVertexAtEachPositionInOrder) {
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> coordinate(-2, 2);
+  for (int round = 0; round < 20; ++round) {
+    TriangleMesh mesh;
+    const auto value = [&] { const int c = coordinate(random); return c == 0 && random() % 2 ? -0.0f : 0.5f * c; };
+    for (int v = 0; v < 300; ++v) mesh.vertices.emplace_back(value(), value(), value());
+    std::uniform_int_distribution<std::uint32_t> vertex(0, 299);
+    for (int t = 0; t < 200; ++t) mesh.triangles.push_back({vertex(random), vertex(random), vertex(random)});
+    std::vector<Eigen::Vector3f> expectedVertices;
+    std::vector<std::uint32_t> expectedIndex(mesh.vertices.size());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      std::size_t first = 0;
+      while (!(mesh.vertices[first] == mesh.vertices[v])) ++first;  // == takes -0 for +0
+      if (first == v) {
+        expectedIndex[v] = static_cast<std::uint32_t>(expectedVertices.size());
+        expectedVertices.push_back(mesh.vertices[v]);
+      } else {
+        expectedIndex[v] = expectedIndex[first];
+      }
+    }
+    auto expectedTriangles = mesh.triangles;
+    for (auto& t : expectedTriangles)
+      for (auto& corner : t) corner = expectedIndex[corner];
+    weldCoincidentVertices(mesh);
+    ASSERT_EQ(mesh.vertices.size(), expectedVertices.size());
+    for (std::size_t v = 0; v < expectedVertices.size(); ++v) EXPECT_EQ(mesh.vertices[v], expectedVertices[v]);
+    EXPECT_EQ(mesh.triangles, expectedTriangles);
+  }
+}
+
+// Closure against its definition, checked the slow way: every directed edge once and its
+// reverse once. Small random meshes over few vertices, so that every case occurs: closed
+// ones (a cube's triangles with some reversed or repeated), open, doubled, degenerate.
+TEST(TriangleMesh, ClosureIsEachDirectedEdgeOnceAndItsReverseOnce) {
+  std::mt19937 random(11);
+  const TriangleMesh cube = unitCube(1.0);
+  int closedSeen = 0, openSeen = 0;
+  for (int round = 0; round < 400; ++round) {
+    TriangleMesh mesh = cube;
+    mesh.triangles.clear();
+    for (const auto& t : cube.triangles) {
+      const unsigned change = random() % 40;
+      if (change == 0) continue;                                                          // a hole
+      if (change == 1) mesh.triangles.push_back({t[0], t[2], t[1]});                     // reversed
+      else if (change == 2) mesh.triangles.push_back({t[0], t[0], t[1]});                 // degenerate
+      else mesh.triangles.push_back(change == 3 ? std::array{t[1], t[2], t[0]} : t);      // the same, rotated or not
+      if (change == 4) mesh.triangles.push_back(t);                                       // twice
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const auto& t : mesh.triangles)
+      for (int i = 0; i < 3; ++i) edges.emplace_back(t[i], t[(i + 1) % 3]);
+    bool expected = !mesh.triangles.empty();
+    for (const auto& [a, b] : edges)
+      expected = expected && a != b && std::count(edges.begin(), edges.end(), std::pair{a, b}) == 1 &&
+                 std::count(edges.begin(), edges.end(), std::pair{b, a}) == 1;
+    EXPECT_EQ(isClosedAndOriented(mesh), expected) << "round " << round;
+    (expected ? closedSeen : openSeen)++;
+  }
+  EXPECT_GT(closedSeen, 10);
+  EXPECT_GT(openSeen, 10);
 }
 
 }  // namespace

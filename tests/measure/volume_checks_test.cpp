@@ -43,6 +43,59 @@ TEST(VolumeChecks, LevelSetAndMeshMustAgreeWithinTheToleranceOverTheMeshSurface)
   EXPECT_NE(problem->find("15.0 mm³ tolerance"), std::string::npos) << *problem;
 }
 
+// checkMesh must give what the separate checks give, to the last bit: on a real part's mesh
+// (a bar's level set meshed, tens of thousands of triangles, the terms summed across many
+// parallel chunks), with a crumb beside it, a second solid, a hole, and a level-set volume
+// that disagrees, over voxel sizes that make the crumb one or not.
+TEST(VolumeChecks, CheckMeshAgreesExactlyWithTheSeparateChecks) {
+  const sim::Stock bar(sim::StockSpec{20.0, 30.0, 0.0}, 0.5);
+  const TriangleMesh barMesh = bar.mesh(0.0);
+  ASSERT_GT(barMesh.triangles.size(), 20000u);
+  const auto with = [&](const std::vector<std::pair<Eigen::Vector3f, float>>& cubes, bool hole) {
+    TriangleMesh mesh = barMesh;
+    for (const auto& [corner, edge] : cubes) {
+      TriangleMesh c = cube(edge);
+      const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+      for (const auto& v : c.vertices) mesh.vertices.push_back(v + corner);
+      for (const auto& t : c.triangles) mesh.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+    }
+    if (hole) mesh.triangles.erase(mesh.triangles.begin() + 1234);
+    return mesh;
+  };
+  const Eigen::Vector3f far(40, 0, 0), farther(60, 0, 0);
+  const std::vector<TriangleMesh> meshes{with({}, false), with({{far, 0.3f}}, false), with({{far, 8.0f}}, false),
+                                         with({{far, 0.3f}, {farther, 6.0f}}, false), with({{far, 0.3f}}, true),
+                                         with({}, true)};
+  const double exact = M_PI * 10 * 10 * 30;
+  for (const TriangleMesh& original : meshes)
+    for (const double voxel : {0.05, 0.2, 0.5})
+      for (const double levelSet : {exact, exact * 1.01}) {
+        TriangleMesh separate = original, together = original;
+        const auto volume = meshVolumeProblem(levelSet, separate, voxel, "stub");
+        const DroppedCrumbs crumbs = dropCrumbs(separate, voxel);
+        const auto closure = meshClosureProblem(separate, "stub");
+        const MeshCheck check = checkMesh(together, levelSet, voxel, "stub");
+        EXPECT_EQ(check.volumeProblem, volume);
+        EXPECT_EQ(check.crumbs.count, crumbs.count);
+        EXPECT_EQ(check.crumbs.volumeMm3, crumbs.volumeMm3);
+        EXPECT_EQ(check.closureProblem, closure);
+        EXPECT_EQ(check.volumeMm3, enclosedVolumeMm3(separate));
+        EXPECT_EQ(check.areaMm2, surfaceAreaMm2(separate));
+        EXPECT_EQ(together.triangles, separate.triangles);
+      }
+  // What each case is: the checks above must have seen crumbs, holes and volume problems.
+  TriangleMesh crumbAndHole = meshes[4];
+  const MeshCheck seen = checkMesh(crumbAndHole, exact * 1.01, 0.5);
+  EXPECT_EQ(seen.crumbs.count, 1u);
+  EXPECT_TRUE(seen.closureProblem);
+  EXPECT_TRUE(seen.volumeProblem);
+  TriangleMesh twoSolids = meshes[2];
+  const MeshCheck both = checkMesh(twoSolids, exact + 512.0, 0.5);
+  EXPECT_EQ(both.crumbs.count, 0u);
+  EXPECT_FALSE(both.closureProblem);
+  EXPECT_NEAR(both.volumeMm3, exact + 512.0, 0.05 * 0.5 * both.areaMm2);
+}
+
 TEST(VolumeChecks, AnOpenMeshIsReported) {
   TriangleMesh box = cube(1.0f);
   EXPECT_FALSE(meshClosureProblem(box));

@@ -34,7 +34,7 @@ std::uint32_t word(const std::string& bytes, std::size_t at) {
 TEST(SceneExport, GlbHoldsThePartAndTheToolpathInMetresWithYUp) {
   ::unsetenv("DISPLAY");
   const TriangleMesh part = test::cylinder(30.0, 60.0, 48, 2);
-  const std::string glb = gltfToGlb(partGltf(part, test::rapidThenFeed()));
+  const std::string glb = partGlb(part, test::rapidThenFeed());
   ASSERT_GT(glb.size(), 20u);
   EXPECT_EQ(word(glb, 0), 0x46546C67u);  // "glTF"
   EXPECT_EQ(word(glb, 4), 2u);
@@ -65,6 +65,52 @@ TEST(SceneExport, GlbHoldsThePartAndTheToolpathInMetresWithYUp) {
   // Column-major: part x → glTF y, part y → glTF z, part z → glTF x.
   EXPECT_EQ(matrix, (std::vector<double>{0, 0.001, 0, 0, 0, 0, 0.001, 0, 0.001, 0, 0, 0, 0, 0, 0, 1}));
   EXPECT_FALSE(gltf.contains("cameras"));
+}
+
+// The GLB's buffer holds the part's vertices and triangles exactly as the mesh has them, and
+// each move as a segment from its start to its end at (r, 0, z): the feed X58 Z62 → Z10, the
+// rapid X90 Z80 → X58 Z62 (radius 29 at X58). Its glTF twin carries the same buffer inline.
+TEST(SceneExport, GlbHoldsThePartsVerticesAndTrianglesAsTheyAreAndEachMoveAsASegment) {
+  const TriangleMesh part = test::cylinder(30.0, 60.0, 24, 3);
+  const std::string glb = partGlb(part, test::rapidThenFeed());
+  const std::uint32_t jsonLength = word(glb, 12);
+  const Json gltf = Json::parse(glb.substr(20, jsonLength));
+  const std::string binary = glb.substr(20 + jsonLength + 8);
+  const auto data = [&](int accessor) {
+    const Json& view = gltf["bufferViews"][gltf["accessors"][accessor]["bufferView"].get<int>()];
+    return binary.substr(view["byteOffset"].get<std::size_t>(), view["byteLength"].get<std::size_t>());
+  };
+  const auto floats = [&](int accessor) {
+    const std::string bytes = data(accessor);
+    std::vector<float> values(bytes.size() / 4);
+    std::memcpy(values.data(), bytes.data(), bytes.size());
+    return values;
+  };
+  const Json& triangles = gltf["meshes"][0]["primitives"][0];
+  const std::vector<float> positions = floats(triangles["attributes"]["POSITION"].get<int>());
+  ASSERT_EQ(positions.size(), 3 * part.vertices.size());
+  for (std::size_t v = 0; v < part.vertices.size(); ++v)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(positions[3 * v + c], part.vertices[v][c]);
+  const std::string indices = data(triangles["indices"].get<int>());
+  ASSERT_EQ(indices.size(), 12 * part.triangles.size());
+  EXPECT_EQ(std::memcmp(indices.data(), part.triangles.data(), indices.size()), 0);
+  const auto segment = [&](int mesh) {
+    const Json& lines = gltf["meshes"][mesh]["primitives"][0];
+    EXPECT_EQ(lines["mode"], 1);
+    const std::vector<float> points = floats(lines["attributes"]["POSITION"].get<int>());
+    const std::string pair = data(lines["indices"].get<int>());
+    EXPECT_EQ(pair.size(), 8u);
+    return points;
+  };
+  EXPECT_EQ(segment(1), (std::vector<float>{29, 0, 62, 29, 0, 10}));  // the feed
+  EXPECT_EQ(segment(2), (std::vector<float>{45, 0, 80, 29, 0, 62}));  // the rapid
+  const Json twin = Json::parse(partGltf(part, test::rapidThenFeed()));
+  const std::string uri = twin["buffers"][0]["uri"];
+  const std::string prefix = "data:application/octet-stream;base64,";
+  ASSERT_EQ(uri.rfind(prefix, 0), 0u);
+  EXPECT_EQ(uri.size() - prefix.size(), (binary.size() + 2) / 3 * 4);
+  EXPECT_EQ(twin["meshes"], gltf["meshes"]);
+  EXPECT_EQ(twin["accessors"], gltf["accessors"]);
 }
 
 // Each kind of move in its own mesh and colour, as the pictures draw them: feeds blue, thread
