@@ -354,7 +354,11 @@ class RegionWriter {
       }
       block.node = accessor.template probeNode<Node1>(first.origin);
       if (!block.node) {  // the block is a tile: split it into a node holding the tile's value
-        accessor.addTile(1, first.origin, accessor.getValue(first.origin), accessor.isValueOn(first.origin));
+        // Copies: getValue returns a reference into the parent's table, and addTile puts the new
+        // node's pointer there before it reads the value (a heap address's bits as a tile).
+        const float tile = accessor.getValue(first.origin);
+        const bool active = accessor.isValueOn(first.origin);
+        accessor.addTile(1, first.origin, tile, active);
         block.node = accessor.template probeNode<Node1>(first.origin);
       }
     }
