@@ -222,7 +222,7 @@ std::optional<std::vector<std::vector<RZ>>> joinSegments(std::vector<ProfileSegm
 
 }  // namespace
 
-std::optional<TriangleMesh> profileMesh(const RevolvedTable& table, double voxelMm, double isoMm) {
+std::optional<TriangleMesh> profileMesh(const RevolvedTable& table, double voxelMm, double isoMm, ProfilePoints points) {
   if (table.classCount() < 2) return std::nullopt;
   const ProfileScan scan(table, voxelMm, isoMm);
   std::vector<ProfileSegment> segments = profileSegments(table, scan);
@@ -231,7 +231,8 @@ std::optional<TriangleMesh> profileMesh(const RevolvedTable& table, double voxel
   std::vector<std::vector<RZ>> profile;
   double largestRadiusMm = 0.0;
   for (const std::vector<RZ>& line : *joined) {
-    std::vector<RZ> simplified = simplifyPolyline(line, kProfileToleranceVoxels * voxelMm);
+    std::vector<RZ> simplified =
+        points == ProfilePoints::Simplified ? simplifyPolyline(line, kProfileToleranceVoxels * voxelMm) : line;
     // A loop thinner than twice the tolerance simplifies to a line there and back: no volume.
     if (simplified.front() == simplified.back() && simplified.size() < 4) continue;
     for (const RZ& p : simplified) largestRadiusMm = std::max(largestRadiusMm, p.x());

@@ -250,6 +250,14 @@ TriangleMesh Stock::mesh(double adaptivity) const {
   return meshOf(*impl_->grid, impl_->voxel, adaptivity);
 }
 
+TriangleMesh Stock::meshWithVertexEveryVoxel() const {
+  if (impl_->table)
+    if (std::optional<TriangleMesh> revolved =
+            profileMesh(*impl_->table, impl_->voxel, meshIsoMm(impl_->voxel), ProfilePoints::EveryCrossing))
+      return std::move(*revolved);
+  return mesh(0.0);
+}
+
 TriangleMesh Stock::mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int subdivisions) const {
   if (subdivisions < 1) throw std::invalid_argument("Stock::mesh: subdivisions must be at least 1");
   impl_->settle();

@@ -263,6 +263,41 @@ TEST_P(ProfileMesh, AgreesWithTheLevelSetsMesh) {
   }
 }
 
+// The longest edge along the profile (between two rings, not a chord of one), in the meridian.
+double longestProfileEdgeMm(const TriangleMesh& mesh) {
+  double longest = 0;
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      const Eigen::Vector3f a = mesh.vertices[t[e]], b = mesh.vertices[t[(e + 1) % 3]];
+      const RZ ma(std::hypot(a.x(), a.y()), a.z()), mb(std::hypot(b.x(), b.y()), b.z());
+      if (std::abs(ma.y() - mb.y()) < 1e-6 && std::abs(ma.x() - mb.x()) < 1e-5 * std::max(1.0, ma.x())) continue;
+      // A ring-to-ring edge may run diagonally between two angles: its meridian length is what
+      // the vertex values are blended over.
+      longest = std::max(longest, (ma - mb).norm());
+    }
+  return longest;
+}
+
+// deviation.png colours a mesh vertex by vertex: its mesh keeps every crossing of the profile
+// (a vertex within a cell's diagonal of the next), where the part's own mesh is one band of
+// facets along each straight face.
+TEST_P(ProfileMesh, MeshWithVertexEveryVoxelKeepsEveryCrossing) {
+  const double h = GetParam();
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(std::string(c.name) + " at " + std::to_string(h) + " mm voxels");
+    const Profile p = c.make(0.41 * h);
+    Stock stock(barOf(p), h);
+    for (const RevolvedRegion& cut : p.cuts) stock.remove(cut);
+    ASSERT_TRUE(stock.isRevolved());
+    const TriangleMesh dense = stock.meshWithVertexEveryVoxel(), simplified = stock.mesh(0.0);
+    EXPECT_TRUE(isClosedAndOriented(dense));
+    EXPECT_EQ(shellCount(dense), p.shells);
+    EXPECT_NEAR(enclosedVolumeMm3(dense), p.volumeMm3, 0.2 * volumeToleranceMm3(p.areaMm2, h));
+    EXPECT_LT(longestProfileEdgeMm(dense), 1.5 * h);
+    EXPECT_GT(longestProfileEdgeMm(simplified), 20 * h);  // every case has a straight face of 2 mm or more
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Voxels, ProfileMesh, ::testing::Values(0.1, 0.13, 0.2));
 
 // The untouched bar: its cylinder, ends closed by fans on the axis.
