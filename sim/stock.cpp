@@ -253,7 +253,7 @@ TriangleMesh Stock::mesh(double adaptivity) const {
 TriangleMesh Stock::meshWithVertexEveryVoxel() const {
   if (impl_->table)
     if (std::optional<TriangleMesh> revolved =
-            profileMesh(*impl_->table, impl_->voxel, meshIsoMm(impl_->voxel), ProfilePoints::EveryCrossing))
+            profileMesh(*impl_->table, impl_->voxel, meshIsoMm(impl_->voxel), ProfilePoints::EveryVoxel))
       return std::move(*revolved);
   return mesh(0.0);
 }
