@@ -271,9 +271,9 @@ bool severedIn3D(const StockGrid& s) {
   const auto interior = openvdb::tools::sdfInteriorMask(*s.grid);
   std::vector<openvdb::BoolGrid::Ptr> pieces;
   openvdb::tools::segmentActiveVoxels(*interior, pieces);
-  constexpr openvdb::Index64 kCrumbVoxels = 10;
-  return std::count_if(pieces.begin(), pieces.end(),
-                       [](const auto& piece) { return piece->activeVoxelCount() >= kCrumbVoxels; }) > 1;
+  return std::count_if(pieces.begin(), pieces.end(), [](const auto& piece) {
+           return static_cast<double>(piece->activeVoxelCount()) >= kMinPieceVoxels;
+         }) > 1;
 }
 
 }  // namespace

@@ -71,8 +71,12 @@ TEST(ConvexDifference, RandomPolygonsSplitIntoTheOverlapAndTheDifference) {
       const RZ p(coordinate(random), coordinate(random));
       bool inPiece = false;
       for (const ConvexPolygon& piece : pieces) inPiece |= piece.signedDistance(p) < -1e-9;
-      if (a.signedDistance(p) < -1e-9 && b.signedDistance(p) > 1e-9) EXPECT_TRUE(inPiece) << trial;
-      if (a.signedDistance(p) > 1e-9 || b.signedDistance(p) < -1e-9) EXPECT_FALSE(inPiece) << trial;
+      if (a.signedDistance(p) < -1e-9 && b.signedDistance(p) > 1e-9) {
+        EXPECT_TRUE(inPiece) << trial;
+      }
+      if (a.signedDistance(p) > 1e-9 || b.signedDistance(p) < -1e-9) {
+        EXPECT_FALSE(inPiece) << trial;
+      }
     }
   }
 }
