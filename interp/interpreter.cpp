@@ -17,7 +17,7 @@ namespace {
 // A file with no block to run is the wrong file or a program cut short, not a part that
 // needs no machining: said as such rather than simulated as an untouched bar.
 Status refuseEmptyProgram(const Program& program, std::string_view programText) {
-  if (!program.blocks.empty()) return success();
+  if (program.blockCount() != 0) return success();
   const bool blank = programText.find_first_not_of(" \t\r\n") == std::string_view::npos;
   return Error{0, 0,
                blank ? "the program is empty: there is no block to run"

@@ -45,7 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   for (const ReadNote& note : reader.notes()) show(Error{note.line, note.column, note.message}, text);
   const Program program = readProgram(text, /*blockDelete=*/true, Dialect::FanucA);
-  for (const ProgramBlock& block : program.blocks) {
+  for (std::size_t ordinal = 0; ordinal < program.blockCount(); ++ordinal) {
+    const ProgramBlock block = program.block(ordinal);
     if (const Error* error = program.errorOf(block)) show(*error, text);
     program.plainWords(block);  // each block of plain words read again from where it starts
   }
