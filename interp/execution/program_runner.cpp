@@ -166,7 +166,7 @@ Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro:
   const int column = program_.block(index).column;
   auto evaluated = macro::evaluateWords(block, variables_, line, NumberReading::of(options_.control, state_.inch));
   if (!evaluated.ok()) return evaluated.error();
-  const macro::BlockWords words = std::move(evaluated).value();  // owned: a call may grow the blocks
+  const macro::BlockWords words = std::move(evaluated).value();  // owned: a call may read another file
   warnLeftOut(index, words.leftOut);
   Result<std::size_t> after = index + 1;
   if (words.macroCall) {
