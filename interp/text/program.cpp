@@ -50,8 +50,16 @@ Result<SortedContent> contentOf(const std::vector<Token>& tokens, const RawBlock
   return SortedContent{std::move(parsed).value()};
 }
 
-// Which blocks a read needs: all it says, or its N and O numbers alone (a search for a label).
-enum class Reading { Whole, LabelsOnly };
+// What a read needs of a block: all it says; what reading a source through needs (its labels,
+// its machine M codes, whether it is a DO or END: the words of a block without an M are not
+// sorted); or its N and O numbers alone (a search for a label).
+enum class Reading { Whole, Survey, LabelsOnly };
+
+bool holdsLetter(const RawBlock& raw, std::string_view letters) {
+  return std::any_of(raw.chars.begin(), raw.chars.end(), [&](const SourceChar& c) {
+    return c.text.size() == 1 && letters.find(c.text[0]) != std::string_view::npos;
+  });
+}
 
 // The next block of `reader`, a reader of `text` (source `source`), as block `ordinal`, which
 // an O block makes the start of a `program`; nullopt at the end of the text.
@@ -79,15 +87,14 @@ std::optional<ReadBlock> readNext(BlockReader& reader, const SourceText& text, i
   block.skipped = raw.deleted && text.blockDelete;
   Result<SortedContent> content = Error{};
   // A search passes quickly over the many blocks that cannot hold an N or O word (':' is O).
-  const bool mayHoldLabel = reading == Reading::Whole || std::any_of(raw.chars.begin(), raw.chars.end(), [](const SourceChar& c) {
-    return c.text.size() == 1 && std::string_view("NnOo:").find(c.text[0]) != std::string_view::npos;
-  });
+  const bool mayHoldLabel = reading != Reading::LabelsOnly || holdsLetter(raw, "NnOo:");
   if (!block.skipped && mayHoldLabel) {
     auto tokens = lexBlock(raw);
     if (tokens.ok()) {
       const Status sequence = readLabel(tokens.value(), 'N', raw.line, block.sequenceNumber);
       const Status number = readLabel(tokens.value(), 'O', raw.line, block.programNumber);
-      if (reading == Reading::Whole) {
+      const bool sorted = reading == Reading::Whole || macro::needsMacroReader(tokens.value()) || holdsLetter(raw, "Mm");
+      if (reading != Reading::LabelsOnly && sorted) {
         content = !sequence.ok() ? Result<SortedContent>(sequence.error())
                   : !number.ok() ? Result<SortedContent>(number.error())
                                  : contentOf(tokens.value(), raw, text.dialect, text.machine);
@@ -312,7 +319,7 @@ std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFo
   int ordinal = first;
   int lastCheckpoint = first;  // the source's start serves as one
   std::vector<ReadNote> machineNotes;  // each machine M code, where it first appears
-  while (std::optional<ReadBlock> read = readNext(reader, text, source, ordinal, program, Reading::Whole)) {
+  while (std::optional<ReadBlock> read = readNext(reader, text, source, ordinal, program, Reading::Survey)) {
     const ProgramBlock& block = read->block;
     if (read->words) {
       for (const Code& code : read->words->machineCodes) {
