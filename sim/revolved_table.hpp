@@ -63,6 +63,30 @@ class RevolvedTable {
   /// Forgets what changed (the level set was written the same way already).
   void forgetChanges();
 
+  // Read access for the mesh drawn from the table's profile (profile_mesh.cpp): the classes
+  // in ascending ρ, each a column of cells along Z in chunks of 8 (one leaf's column).
+  int classCount() const { return static_cast<int>(rho_.size()); }
+  /// ρ of class c's columns (mm).
+  double classRadiusMm(int c) const { return rho_[c]; }
+  /// Z index of the first cell; each class has chunkCount() chunks from there.
+  int firstCellK() const { return kBase_; }
+  int chunkCount() const { return chunks_; }
+  /// The eight values of class c's chunk `chunk` (Z indices firstCellK() + 8·chunk …).
+  const float* chunkCells(int c, int chunk) const { return cells(c, chunk); }
+  /// Visits the mixed chunks of class c (those not one inactive value at ±band: the others
+  /// are plain air or solid, and no surface passes within them) in ascending Z:
+  /// fn(k0, cells, activeBits) with k0 the Z index of the chunk's first cell.
+  template <class Fn>
+  void forEachMixedChunk(int c, Fn&& fn) const {
+    for (int chunk = 0; chunk < chunks_; ++chunk) {
+      const float* values = cells(c, chunk);
+      const std::uint8_t bits = activeBits_[chunkIndex(c, chunk)];
+      bool uniform = bits == 0 && (values[0] >= band_ || values[0] <= -band_);
+      for (int k = 1; k < 8 && uniform; ++k) uniform = values[k] == values[0];
+      if (!uniform) fn(kBase_ + chunk * 8, values, bits);
+    }
+  }
+
  private:
   static constexpr int kAir = -1;
   int classOf(int i, int j) const;
