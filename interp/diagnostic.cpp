@@ -32,6 +32,27 @@ std::string format(const Diagnostic& diagnostic) {
   return text;
 }
 
+void quoteLines(std::string_view text, std::vector<Diagnostic*> diagnostics) {
+  std::stable_sort(diagnostics.begin(), diagnostics.end(),
+                   [](const Diagnostic* a, const Diagnostic* b) { return a->line < b->line; });
+  int line = 1;
+  std::size_t begin = 0;  // where `line` starts; past the text's end when it has no such line
+  for (Diagnostic* diagnostic : diagnostics) {
+    for (; line < diagnostic->line && begin <= text.size(); ++line) {
+      const std::size_t newline = text.find('\n', begin);
+      begin = newline == std::string_view::npos ? text.size() + 1 : newline + 1;
+    }
+    if (diagnostic->line <= 0 || begin > text.size()) {
+      diagnostic->sourceLine.clear();
+      continue;
+    }
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    if (end > begin && text[end - 1] == '\r') --end;
+    diagnostic->sourceLine = std::string(text.substr(begin, end - begin));
+  }
+}
+
 LineStarts::LineStarts(std::string_view text) {
   starts_.push_back(0);
   for (std::size_t at = text.find('\n'); at != std::string_view::npos; at = text.find('\n', at + 1))

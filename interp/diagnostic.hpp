@@ -25,6 +25,10 @@ std::string format(const Diagnostic& diagnostic);
 /// The text of 1-based line `line` in `text`, without its line ending; empty if absent.
 std::string lineOf(std::string_view text, int line);
 
+/// Fills the source line of each of `diagnostics` (the lines of `text` they are at, as lineOf
+/// gives them) in one pass over `text`, holding nothing for the lines no diagnostic is at.
+void quoteLines(std::string_view text, std::vector<Diagnostic*> diagnostics);
+
 /// Where each line of a text starts, found once: many diagnostics can then each quote their
 /// line without scanning the text from its start (a warning on every block of a long program
 /// made that quadratic: 40 000 blocks took 8 s). Holds offsets only, so it stays valid when

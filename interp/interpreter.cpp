@@ -17,7 +17,7 @@ namespace {
 // A file with no block to run is the wrong file or a program cut short, not a part that
 // needs no machining: said as such rather than simulated as an untouched bar.
 Status refuseEmptyProgram(const Program& program, std::string_view programText) {
-  if (!program.blocks.empty()) return success();
+  if (program.blockCount() != 0) return success();
   const bool blank = programText.find_first_not_of(" \t\r\n") == std::string_view::npos;
   return Error{0, 0,
                blank ? "the program is empty: there is no block to run"
@@ -70,26 +70,32 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
     if (status.ok()) status = pipeline.finish();
     else result.toolpath.moves = pipeline.abandon();
   }
-  // A diagnostic in the file it names: the program's own, or a subprogram's. The program's line
-  // starts (8 B a line) are found only when a diagnostic needs them.
-  std::optional<LineStarts> programLines;
-  const auto diagnostic = [&](Severity severity, const Error& e) {
-    for (const SourceText& source : program.sources)
-      if (!e.file.empty() && source.name == e.file)
-        return Diagnostic{severity, e.file, e.line, e.column, e.message, lineOf(source.text, e.line)};
-    if (!programLines) programLines.emplace(programText);
-    return Diagnostic{severity, fileName, e.line, e.column, e.message, programLines->lineOf(programText, e.line)};
+  // A diagnostic in the file it names: the program's own, or a subprogram's. The program's
+  // lines are quoted in one pass once all are known (quoteLines), holding nothing a line.
+  std::vector<std::size_t> inProgram;  // of result.diagnostics
+  const auto add = [&](Severity severity, const Error& e) {
+    for (const SourceText& source : program.sources) {
+      if (!e.file.empty() && source.name == e.file) {
+        result.diagnostics.push_back({severity, e.file, e.line, e.column, e.message, lineOf(source.text, e.line)});
+        return;
+      }
+    }
+    inProgram.push_back(result.diagnostics.size());
+    result.diagnostics.push_back({severity, fileName, e.line, e.column, e.message, ""});
   };
   if (!status.ok()) {
     // The error alone: it is what must be fixed, and nothing past it ran.
-    result.diagnostics.push_back(diagnostic(Severity::Error, status.error()));
-    return result;
+    add(Severity::Error, status.error());
+  } else {
+    std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
+      return a.line != b.line ? a.line < b.line : a.column < b.column;
+    });
+    for (const Error& warning : warnings) add(Severity::Warning, warning);
+    for (const Error& note : notes) add(Severity::Note, note);
   }
-  std::stable_sort(warnings.begin(), warnings.end(), [](const Error& a, const Error& b) {
-    return a.line != b.line ? a.line < b.line : a.column < b.column;
-  });
-  for (const Error& warning : warnings) result.diagnostics.push_back(diagnostic(Severity::Warning, warning));
-  for (const Error& note : notes) result.diagnostics.push_back(diagnostic(Severity::Note, note));
+  std::vector<Diagnostic*> quoting;
+  for (const std::size_t index : inProgram) quoting.push_back(&result.diagnostics[index]);
+  quoteLines(programText, std::move(quoting));
   return result;
 }
 

@@ -62,7 +62,8 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
                                                       job.setup.dialect, job.setup.control.parameters.machineMCodes);
   Setup& setup = job.setup;
   std::vector<int> mounted;
-  for (const interp::ProgramBlock& block : program.blocks) {
+  for (std::size_t ordinal = 0; ordinal < program.blockCount(); ++ordinal) {
+    const interp::ProgramBlock block = program.block(ordinal);
     const auto words = program.plainWords(block);
     if (!words || !words->has('T')) continue;
     const interp::Word t = words->words.at('T');

@@ -39,7 +39,7 @@ class CompoundCycle {
   }
   // A length word in mm, noted for the mixed decimal point warning.
   double length(const Word& word) {
-    state_.lengthWriting.note(word, block_.line, place_ ? place_->program.blocks[place_->index].ordinal : -1);
+    state_.lengthWriting.note(word, block_.line, place_ ? place_->program.block(place_->index).ordinal : -1);
     return lengthMm(word, NumberReading::of(options_.control, state_.inch));
   }
   Status positive(const std::optional<Word>& word, std::string_view meaning) const;
@@ -190,7 +190,7 @@ Status CompoundCycle::finishing() {
   auto span = contourSpan();
   if (!span.ok()) return span.error();
   if (span.value().first > place_->index) {
-    const ProgramBlock& ns = place_->program.blocks[span.value().first];
+    const ProgramBlock ns = place_->program.block(span.value().first);
     return errorAt(code_.column, fmt::format("{}'s contour N{} starts on line {}, after it: G70 finishes a contour "
                                              "roughed before it and must follow its blocks (GSK980TDi §3.23.4 "
                                              "note 1)",

@@ -30,8 +30,8 @@ bool allowedInContour(GGroup group, int number) {
 }
 
 std::string spanName(const Program& program, ContourSpan span) {
-  return fmt::format("N{}–N{}", *program.blocks[span.first].sequenceNumber,
-                     *program.blocks[span.last].sequenceNumber);
+  return fmt::format("N{}–N{}", *program.block(span.first).sequenceNumber,
+                     *program.block(span.last).sequenceNumber);
 }
 
 // One block of the span against the rules; `first` is whether it is the ns block.
@@ -70,21 +70,21 @@ Result<std::size_t> findSequence(const Program& program, std::size_t cycleIndex,
   auto read = labelNumberOf(word, request.line, kMaxSequenceDigits, "a sequence number (e.g. P10 for N10)");
   if (!read.ok()) return read.error();
   const int number = read.value();
-  const std::vector<std::size_t> found = program.findSequence(number, cycleIndex);
-  if (found.empty()) {
+  const SequenceBlocks found = program.findSequence(number, cycleIndex);
+  if (found.count == 0) {
     return Error{request.line, word.column,
                  fmt::format("{} {}: there is no block N{} in this program", request.cycle,
                              word.text(), number)};
   }
   // GSK980TDi §3.23.1 note 14: cycles in one program give their contours their own numbers.
-  if (found.size() > 1) {
+  if (found.count > 1) {
     return Error{request.line, word.column,
                  fmt::format("{} {}: N{} numbers two blocks, on lines {} and {}; the contours of the compound "
                              "cycles in one program need N numbers of their own",
-                             request.cycle, word.text(), number, program.blocks[found[0]].line,
-                             program.blocks[found[1]].line)};
+                             request.cycle, word.text(), number, program.block(found.first).line,
+                             program.block(found.second).line)};
   }
-  return found.front();
+  return found.first;
 }
 
 // A block that holds its N number and nothing else.
@@ -115,16 +115,19 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
     return Error{request.line, request.q->column,
                  fmt::format("{} {} {}: N{} comes before N{}; Q names the contour's last block",
                              request.cycle, request.p->text(), request.q->text(),
-                             *program.blocks[span.last].sequenceNumber,
-                             *program.blocks[span.first].sequenceNumber)};
+                             *program.block(span.last).sequenceNumber,
+                             *program.block(span.first).sequenceNumber)};
   }
   const std::string name = spanName(program, span);
-  while (span.start < span.last && (program.blocks[span.start].skipped || isLabelOnly(program, program.blocks[span.start])))
+  while (span.start < span.last) {
+    const ProgramBlock block = program.block(span.start);
+    if (!block.skipped && !isLabelOnly(program, block)) break;
     ++span.start;
+  }
   int count = 0;
   std::set<int> numbers;
   for (std::size_t i = span.first; i <= span.last; ++i) {
-    const ProgramBlock& block = program.blocks[i];
+    const ProgramBlock& block = program.block(i);
     if (block.skipped) continue;
     ++count;
     if (const auto* macroBlock = block.macroBlock(); macroBlock != nullptr && macroBlock->statement) {
@@ -156,7 +159,7 @@ Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
                                       ModalState state, const InterpreterOptions& options) {
   BlockOutcome outcome;
   for (std::size_t i = span.first; i <= span.last; ++i) {
-    const ProgramBlock& block = cycle.program.blocks[i];
+    const ProgramBlock& block = cycle.program.block(i);
     if (block.skipped) continue;
     auto words = sortedWords(cycle.program, block, cycle.variables, state, options);
     if (!words.ok()) return words.error();
@@ -179,7 +182,7 @@ Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan spa
   if (!run.ok()) return run.error();
   std::vector<Error> cornerWarnings;  // G70 gives them, when it runs the same blocks
   if (auto corners = insertCorners(run.value().moves, cornerWarnings); !corners.ok()) return corners.error();
-  const ProgramBlock& first = cycle.program.blocks[span.start];
+  const ProgramBlock& first = cycle.program.block(span.start);
   auto firstWords = sortedWords(cycle.program, first, cycle.variables, state, options);
   if (!firstWords.ok()) return firstWords.error();
   const ParsedBlock& firstParsed = firstWords.value();

@@ -22,7 +22,7 @@ namespace lathesim::interp {
 
 constexpr int kMaxContourBlocks = 200;  // GSK980TDi: at most 200 blocks from ns to nf
 
-/// Indices into Program::blocks of the ns and nf blocks. An ns block that holds nothing but
+/// Ordinals (Program::block) of the ns and nf blocks. An ns block that holds nothing but
 /// its N number (`N01;`) is a label: the contour then starts at the block after it, which
 /// must hold G00 or G01 as an ns block does.
 struct ContourSpan {

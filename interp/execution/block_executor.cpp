@@ -313,7 +313,8 @@ Status Executor::applyTool() {
   if (std::find(tools.begin(), tools.end(), tool) == tools.end() && options_.toolDefinitionHint && place_) {
     std::vector<std::string> seen;  // the program's T words, each once, where first written
     std::string used;
-    for (const ProgramBlock& b : place_->program.blocks) {
+    for (std::size_t ordinal = 0; ordinal < place_->program.blockCount(); ++ordinal) {
+      const ProgramBlock b = place_->program.block(ordinal);
       const auto words = place_->program.plainWords(b);
       if (!words || !words->has('T')) continue;
       const std::string text = words->words.at('T').text();

@@ -28,7 +28,7 @@ struct BlockOutcome {
 /// their contour blocks.
 struct BlockPlace {
   const Program& program;
-  std::size_t index;  // into program.blocks
+  std::size_t index;  // its ordinal (Program::block)
   const macro::VariableStore* variables = nullptr;  // the macro variables, for contour blocks
                                                     // whose words are expressions
 };

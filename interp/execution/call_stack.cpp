@@ -15,28 +15,28 @@ std::string localName(int sequence) { return fmt::format("N{}", sequence); }
 
 Result<std::size_t> CallStack::programStart(int programNumber, const char* code, int column,
                                             std::size_t index) const {
-  const auto start = program_.programStart.find(programNumber);
-  if (start == program_.programStart.end()) {
-    return Error{program_.blocks[index].line, column,
+  const auto start = program_.programStart(programNumber);
+  if (!start) {
+    return Error{program_.block(index).line, column,
                  fmt::format("{} calls {} but the program has no block O{}: a {} starts with its O "
                              "number and ends with M99",
                              code, programName(programNumber), programNumber,
                              std::string(code) == "G65" ? "macro" : "subprogram")};
   }
-  return start->second;
+  return *start;
 }
 
 // M97's target: the one block N… of the program the call is in.
 Result<std::size_t> CallStack::localStart(const SubprogramCall& call, std::size_t index) const {
-  const std::vector<std::size_t> found = program_.findSequence(call.programNumber, index);
-  if (found.size() == 1) return found.front();
-  return Error{program_.blocks[index].line, call.column,
-               found.empty() ? fmt::format("M97 calls N{0} but this program has no block N{0}: a local subprogram "
+  const SequenceBlocks found = program_.findSequence(call.programNumber, index);
+  if (found.count == 1) return found.first;
+  return Error{program_.block(index).line, call.column,
+               found.count == 0 ? fmt::format("M97 calls N{0} but this program has no block N{0}: a local subprogram "
                                            "starts at its N number and ends with M99",
                                            call.programNumber)
                              : fmt::format("M97 calls N{0} but this program has {1} blocks N{0} (lines {2} and {3})",
-                                           call.programNumber, found.size(), program_.blocks[found[0]].line,
-                                           program_.blocks[found[1]].line)};
+                                           call.programNumber, found.count, program_.block(found.first).line,
+                                           program_.block(found.second).line)};
 }
 
 std::string CallStack::chainTo(const std::string& called) const {
@@ -53,7 +53,7 @@ int CallStack::framesOfKind(bool macro) const {
 }
 
 Result<std::size_t> CallStack::call(const SubprogramCall& call, std::size_t index) {
-  const int line = program_.blocks[index].line;
+  const int line = program_.block(index).line;
   const char* code = call.local ? "M97" : "M98";
   auto start = call.local ? localStart(call, index) : programStart(call.programNumber, code, call.column, index);
   if (!start.ok()) return start;
@@ -86,7 +86,7 @@ Result<std::size_t> CallStack::callMacro(const macro::MacroCall& call, std::size
   // A macro may call itself (Fanuc allows it); the nesting limit bounds the recursion.
   const int levels = framesOfKind(true);
   if (levels >= kMaxMacroNesting) {
-    return Error{program_.blocks[index].line, call.column,
+    return Error{program_.block(index).line, call.column,
                  fmt::format("G65 calls {} from {} levels of macro calls ({}): the control nests at most {} "
                              "(local variable levels 0–{})",
                              programName(call.programNumber), levels, chainTo(programName(call.programNumber)),
@@ -104,13 +104,13 @@ Result<CallReturn> CallStack::giveBack(const SubprogramReturn& giveBack, std::si
   }
   std::size_t next = frame.callFrom + 1;
   if (giveBack.sequence) {
-    const std::vector<std::size_t> found = program_.findSequence(*giveBack.sequence, frame.callFrom);
-    if (found.empty()) {
-      return Error{program_.blocks[index].line, giveBack.sequenceColumn,
+    const SequenceBlocks found = program_.findSequence(*giveBack.sequence, frame.callFrom);
+    if (found.count == 0) {
+      return Error{program_.block(index).line, giveBack.sequenceColumn,
                    fmt::format("M99 P{0} returns to N{0} of the calling program, which has no block N{0}",
                                *giveBack.sequence)};
     }
-    next = found.front();
+    next = found.first;
   }
   const CallReturn back{next, false, frame.macro, frame.callFrom, frame.column};
   frames_.pop_back();
@@ -120,7 +120,7 @@ Result<CallReturn> CallStack::giveBack(const SubprogramReturn& giveBack, std::si
 std::optional<Error> CallStack::unfinished() const {
   if (frames_.empty()) return std::nullopt;
   const Frame& frame = frames_.back();
-  return Error{program_.blocks[frame.callFrom].line, frame.column,
+  return Error{program_.block(frame.callFrom).line, frame.column,
                fmt::format("{} called here has no M99: the program text ends inside it",
                            frame.local ? localName(frame.programNumber) : programName(frame.programNumber))};
 }

@@ -35,7 +35,7 @@ void MacroFlow::leaveProgram() {
 }
 
 Result<std::size_t> MacroFlow::run(std::size_t index, std::vector<Error>& stops) {
-  const ProgramBlock& block = program_.blocks[index];
+  const ProgramBlock& block = program_.block(index);
   const macro::MacroBlock& macroBlock = *block.macroBlock();
   const macro::Statement& statement = *macroBlock.statement;
   if (const auto* assignment = std::get_if<macro::Assignment>(&statement)) {
@@ -79,7 +79,7 @@ Status MacroFlow::assign(const macro::Assignment& assignment, int line, const st
 }
 
 Result<std::size_t> MacroFlow::jump(const macro::Jump& jump, std::size_t index) {
-  const int line = program_.blocks[index].line;
+  const int line = program_.block(index).line;
   auto target = macro::evaluate(jump.target, {variables_, line, std::nullopt});
   if (!target.ok()) return target.error();
   if (!target.value()) {
@@ -91,19 +91,19 @@ Result<std::size_t> MacroFlow::jump(const macro::Jump& jump, std::size_t index) 
                  fmt::format("GOTO {:g}: sequence numbers run from 1 to {} (alarm 128)", *target.value(),
                              kMaxSequenceNumber)};
   }
-  const std::vector<std::size_t> found = program_.findSequence(static_cast<int>(number), index);
-  if (found.empty()) {
+  const SequenceBlocks found = program_.findSequence(static_cast<int>(number), index);
+  if (found.count == 0) {
     return Error{line, jump.target.column,
                  fmt::format("GOTO {}: there is no block N{} in this program (alarm 128)", number, number)};
   }
   // Which of two blocks numbered alike a control jumps to (the first, the next one down …)
   // could not be checked in a manual: refuse rather than guess.
-  if (found.size() > 1) {
+  if (found.count > 1) {
     return Error{line, jump.target.column,
                  fmt::format("GOTO {}: this program has N{} twice (lines {} and {}); number the blocks apart",
-                             number, number, program_.blocks[found[0]].line, program_.blocks[found[1]].line)};
+                             number, number, program_.block(found.first).line, program_.block(found.second).line)};
   }
-  const std::size_t to = found.front();
+  const std::size_t to = found.first;
   cameTo(to);
   if (to <= index) guard_.jumpedBack(index, to, {index, jump.column});
   return to;
@@ -119,7 +119,7 @@ Result<std::size_t> MacroFlow::loopStart(const macro::LoopStart& start, std::siz
   if (!end.ok()) return end;
   bool repeat = true;  // DO alone repeats forever
   if (start.condition) {
-    auto holds = macro::evaluate(*start.condition, {variables_, program_.blocks[index].line, std::nullopt});
+    auto holds = macro::evaluate(*start.condition, {variables_, program_.block(index).line, std::nullopt});
     if (!holds.ok()) return holds.error();
     repeat = holds.value();
   }
@@ -138,12 +138,13 @@ Result<std::size_t> MacroFlow::loopEnd(const macro::LoopEnd& end, std::size_t in
   if (!start.ok()) return start;
   const auto& running = loops_.back();
   if (running.empty() || running.back().start != start.value()) {
-    return Error{program_.blocks[index].line, end.column,
+    return Error{program_.block(index).line, end.column,
                  fmt::format("END {} is reached, but its loop (DO {} of line {}) is not running: a GOTO may jump "
                              "out of a loop, not into one",
-                             end.loopNumber, end.loopNumber, program_.blocks[start.value()].line)};
+                             end.loopNumber, end.loopNumber, program_.block(start.value()).line)};
   }
-  const auto& loop = std::get<macro::LoopStart>(*program_.blocks[start.value()].macroBlock()->statement);
+  const ProgramBlock loopBlock = program_.block(start.value());
+  const auto& loop = std::get<macro::LoopStart>(*loopBlock.macroBlock()->statement);
   guard_.jumpedBack(index, start.value(), {start.value(), loop.column});
   return start.value();
 }

@@ -36,7 +36,7 @@ class ProgramRunner {
         notes_(notes),
         calls_(program),
         variables_(options.macroVariables),
-        guard_(options.maxSteps, program.blocks.size()),
+        guard_(options.maxSteps),
         flow_(program, variables_, guard_) {
     state_.frame.offsets = options.workOffsets;
     state_.position = options.startPosition - state_.frame.shift();
@@ -69,7 +69,7 @@ class ProgramRunner {
   }
   // An error or warning of block `index`, naming its file when it is a subprogram's own.
   Error inFile(Error error, std::size_t index) const {
-    const ProgramBlock& block = program_.blocks[index];
+    const ProgramBlock& block = program_.block(index);
     if (block.source != 0) error.file = program_.sources[static_cast<std::size_t>(block.source)].name;
     return error;
   }
@@ -95,7 +95,7 @@ class ProgramRunner {
 Status ProgramRunner::run() {
   if (program_.textAfterEnd) warnings_.push_back(*program_.textAfterEnd);
   std::size_t next = 0;
-  while (!state_.ended && next < program_.blocks.size()) {
+  while (!state_.ended && next < program_.blockCount()) {
     const std::size_t index = next;
     auto after = runBlock(index);
     if (!after.ok()) return after.error();
@@ -110,10 +110,9 @@ Status ProgramRunner::run() {
   return success();
 }
 
-// Runs block `index`; the block to run next, or the error located in its file. Loading a
-// called program's file grows the blocks: no reference to one is kept across a call.
+// Runs block `index`; the block to run next, or the error located in its file.
 Result<std::size_t> ProgramRunner::runBlock(std::size_t index) {
-  const ProgramBlock& block = program_.blocks[index];
+  const ProgramBlock& block = program_.block(index);
   toolpath_.blockCount = std::max(toolpath_.blockCount, block.ordinal + 1);
   if (block.skipped) return index + 1;
   if (const Error* error = program_.errorOf(block)) return inFile(*error, index);
@@ -139,21 +138,21 @@ Error ProgramRunner::stepLimitError(std::size_t index) const {
   const std::string raise = "raise the step limit with --max-steps or [macro] max_steps if the program is meant to "
                             "run longer";
   if (const auto loop = guard_.stuckLoop()) {
-    const ProgramBlock& block = program_.blocks[loop->block];
+    const ProgramBlock& block = program_.block(loop->block);
     return inFile(Error{block.line, loop->column,
                         fmt::format("the program is still in this loop after {}: it never ends, or runs longer than "
                                     "the step limit; {}",
                                     limit, raise)},
                   loop->block);
   }
-  const ProgramBlock& block = program_.blocks[index];
+  const ProgramBlock& block = program_.block(index);
   return inFile(Error{block.line, block.column,
                       fmt::format("the program has reached {} and is not finished; {}", limit, raise)},
                 index);
 }
 
 void ProgramRunner::warnLeftOut(std::size_t index, const std::vector<macro::VacantWord>& leftOut) {
-  const int line = program_.blocks[index].line;
+  const int line = program_.block(index).line;
   for (const macro::VacantWord& word : leftOut) {
     warn({line, word.column,
           fmt::format("{}: {} is vacant, so {} is left out of this block, as a Fanuc control does", word.written,
@@ -163,18 +162,18 @@ void ProgramRunner::warnLeftOut(std::size_t index, const std::vector<macro::Vaca
 }
 
 Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro::MacroBlock& block) {
-  const int line = program_.blocks[index].line;
-  const int column = program_.blocks[index].column;
+  const int line = program_.block(index).line;
+  const int column = program_.block(index).column;
   auto evaluated = macro::evaluateWords(block, variables_, line, NumberReading::of(options_.control, state_.inch));
   if (!evaluated.ok()) return evaluated.error();
-  const macro::BlockWords words = std::move(evaluated).value();  // owned: a call may grow the blocks
+  const macro::BlockWords words = std::move(evaluated).value();  // owned: a call may read another file
   warnLeftOut(index, words.leftOut);
   Result<std::size_t> after = index + 1;
   if (words.macroCall) {
     // A length argument written without a decimal point is read like any such length.
     for (const macro::MacroWord& word : block.words)
       if (!word.expression && macro::isLengthArgument(word.word.letter))
-        state_.lengthWriting.note(word.word, line, program_.blocks[index].ordinal);
+        state_.lengthWriting.note(word.word, line, program_.block(index).ordinal);
     after = callMacro(index, words.words);
   } else if (auto parsed = parseBlock(words.words, line, column, options_.dialect, options_.control.machineMCodes); parsed.ok()) {
     after = runWords(index, parsed.value());
@@ -186,14 +185,14 @@ Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro:
 }
 
 Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock& words) {
-  const int source = program_.blocks[index].source;
+  const int source = program_.block(index).source;
   const BlockPlace place{program_, index, &variables_};
-  auto outcome = executeBlock(words, state_, options_, program_.blocks[index].ordinal, &place);
+  auto outcome = executeBlock(words, state_, options_, program_.block(index).ordinal, &place);
   if (!outcome.ok()) return outcome.error();
 
   BlockOutcome& done = outcome.value();
   if (source != 0 && calls_.outermostCall()) {  // a subprogram's own file: the main program's call
-    const ProgramBlock& site = program_.blocks[*calls_.outermostCall()];
+    const ProgramBlock& site = program_.block(*calls_.outermostCall());
     for (Move& move : done.moves) std::tie(move.line, move.column) = std::pair{site.line, site.column};
     for (CycleStart& start : done.cycleStarts) std::tie(start.line, start.column) = std::pair{site.line, site.column};
   }
@@ -203,7 +202,7 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   notePartsCatcher(index, words);
   movesMade_ += done.moves.size();
   blockMoves_ = std::move(done.moves);
-  const ProgramBlock& made = program_.blocks[index];
+  const ProgramBlock& made = program_.block(index);
   if (auto tooMany = moveLimitError(movesMade_, options_.maxMoves, made.line, made.column)) return *tooMany;
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
   listStop(index, words);
@@ -219,7 +218,7 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   }
   if (flow.giveBack && !calls_.inSubprogram()) {
     // M99 in the main program: the control starts it over, forever; it is simulated once.
-    warn({program_.blocks[index].line, flow.giveBack->column,
+    warn({program_.block(index).line, flow.giveBack->column,
           "M99 ends the main program: the control runs it again from the start, forever; lathesim simulates it "
           "once"},
          index);
@@ -232,7 +231,7 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
 }
 
 Result<std::size_t> ProgramRunner::callMacro(std::size_t index, const std::vector<Word>& words) {
-  auto call = macro::readMacroCall(words, program_.blocks[index].line);
+  auto call = macro::readMacroCall(words, program_.block(index).line);
   if (!call.ok()) return call.error();
   if (auto loaded = loadProgram(call.value().programNumber, "G65", call.value().column, index); !loaded.ok()) {
     return loaded.error();
@@ -247,9 +246,9 @@ Result<std::size_t> ProgramRunner::callMacro(std::size_t index, const std::vecto
 // Where a code of block `index` at `column` is listed in the report: at its line; in a
 // subprogram's own file, at the line of the main program's call that led there.
 std::pair<int, int> ProgramRunner::listedAt(std::size_t index, int column) const {
-  const ProgramBlock& block = program_.blocks[index];
+  const ProgramBlock& block = program_.block(index);
   if (block.source == 0 || !calls_.outermostCall()) return {block.line, column};
-  const ProgramBlock& call = program_.blocks[*calls_.outermostCall()];
+  const ProgramBlock& call = program_.block(*calls_.outermostCall());
   return {call.line, call.column};
 }
 
@@ -305,13 +304,12 @@ Result<std::size_t> ProgramRunner::giveBack(const SubprogramReturn& giveBack, st
 // A program M98 or G65 calls that the text does not hold: read it from its file
 // (program_library.hpp), or say which names were looked for where.
 Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int column, std::size_t caller) {
-  if (program_.programStart.count(programNumber) != 0) return success();
+  if (program_.programStart(programNumber)) return success();
   if (auto file = findProgramFile(programNumber, options_.programDirectories)) {
     const std::string name = file->path.string();
     for (ReadNote& note : appendProgramFile(program_, name, std::move(file->text), programNumber, options_.control.blockSkip,
                                             options_.dialect, options_.control.machineMCodes))
       notes_.push_back(Error{note.line, note.column, std::move(note.message), name});
-    guard_.programGrew(program_.blocks.size());
     flow_.programGrew();
     return success();
   }
@@ -319,7 +317,7 @@ Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int 
   std::string directories;
   for (const auto& directory : options_.programDirectories)
     directories += (directories.empty() ? "" : ", ") + directory.string();
-  return inFile(Error{program_.blocks[caller].line, column,
+  return inFile(Error{program_.block(caller).line, column,
                       fmt::format("{} calls O{:04}, which is neither in this program nor in a file: "
                                   "looked for {}, {}, {} … {} in {}; give the directory of the "
                                   "control's programs with --programs DIR",

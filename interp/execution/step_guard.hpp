@@ -11,6 +11,7 @@
 // repeating a called program) until execution leaves the blocks it spans in its program.
 
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -31,16 +32,13 @@ struct LoopSite {
 
 class StepGuard {
  public:
-  /// `blockCount`: how many blocks the program has.
-  StepGuard(long long maxSteps, std::size_t blockCount) : maxSteps_(maxSteps), ran_(blockCount, false), frames_(1) {}
+  explicit StepGuard(long long maxSteps) : maxSteps_(maxSteps), frames_(1) {}
 
   /// Counts a run of block `index` of the innermost running program. True when the limit is
   /// passed: then stuckLoop() says where.
   bool step(std::size_t index);
   /// A jump back from block `from` to block `to` (≤ from) of the innermost running program.
   void jumpedBack(std::size_t from, std::size_t to, LoopSite site);
-  /// The program gained blocks (a called program read from its file): `blockCount` in all.
-  void programGrew(std::size_t blockCount) { ran_.resize(blockCount, false); }
   /// A subprogram or macro starts (it has loops of its own) or ends.
   void enterProgram() { frames_.emplace_back(); }
   void leaveProgram() { frames_.pop_back(); }
@@ -57,9 +55,13 @@ class StepGuard {
   };
   using Frame = std::vector<RunningLoop>;
 
+  bool noteRun(std::size_t index);  // whether block `index` had run before; notes that it has
+
   long long maxSteps_;
   long long steps_ = 0;     // runs of blocks that had run before
-  std::vector<bool> ran_;   // per block: it has run
+  // The blocks that have run, as runs of consecutive blocks: first → one past the last. A
+  // program run straight through is one run, however long.
+  std::map<std::size_t, std::size_t> ran_;
   std::vector<Frame> frames_;  // the main program first
 };
 

@@ -17,13 +17,14 @@ class Pairing {
   explicit Pairing(const Program& program) : program_(program) {}
 
   LoopPairs run() {
-    int segment = program_.programOf.empty() ? -1 : program_.programOf[0];
-    for (std::size_t i = 0; i < program_.blocks.size(); ++i) {
-      if (program_.programOf[i] != segment) {  // a new O program: the last one's loops end here
+    if (program_.loopBlocks == 0) return {};  // no block to pair: the text need not be read again
+    int segment = program_.blockCount() == 0 ? -1 : program_.block(0).program;
+    for (std::size_t i = 0; i < program_.blockCount(); ++i) {
+      const ProgramBlock block = program_.block(i);
+      if (block.program != segment) {  // a new O program: the last one's loops end here
         closeSegment();
-        segment = program_.programOf[i];
+        segment = block.program;
       }
-      const ProgramBlock& block = program_.blocks[i];
       const MacroBlock* macro = block.skipped ? nullptr : block.macroBlock();
       if (macro == nullptr || !macro->statement) continue;
       if (const auto* start = std::get_if<LoopStart>(&*macro->statement)) open(i, *start);
@@ -34,7 +35,7 @@ class Pairing {
   }
 
  private:
-  int lineOf(std::size_t index) const { return program_.blocks[index].line; }
+  int lineOf(std::size_t index) const { return program_.block(index).line; }
 
   void fail(std::size_t index, const Error& error) { pairs_.partner.insert_or_assign(index, error); }
 
@@ -86,7 +87,7 @@ class Pairing {
 
   void closeSegment() {
     for (const OpenLoop& loop : open_) {
-      const ProgramBlock& block = program_.blocks[loop.index];
+      const ProgramBlock block = program_.block(loop.index);
       const auto& start = std::get<LoopStart>(*block.macroBlock()->statement);
       fail(loop.index, Error{block.line, start.column,
                              fmt::format("DO {} has no END {} before the end of its program (alarm 124)",

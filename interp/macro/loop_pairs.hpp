@@ -1,5 +1,6 @@
 #pragma once
-// Which DO pairs with which END, found once for the whole program (Fanuc 0i/16i "Repetition
+// Which DO pairs with which END, found once for the whole program (its text read through
+// again, unless it has no DO or END at all) (Fanuc 0i/16i "Repetition
 // (WHILE statement)"): within one program (between O blocks), an END m closes the innermost
 // open DO m; loops may not cross (DO 1 … DO 2 … END 1 … END 2); a DO inside a loop of the
 // same number, an END with no open DO of its number and a DO with no END before the program

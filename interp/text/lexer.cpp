@@ -243,7 +243,7 @@ bool BlockReader::skipDirectiveLine() {
   if (end == std::string_view::npos) end = text_.size();
   std::string directive(text_.substr(probe, end - probe));
   while (!directive.empty() && isBlank(directive.back())) directive.pop_back();
-  directives_.push_back({line_, column_ + static_cast<int>(probe - at_), directive});
+  if (directives_++ == 0) firstDirective_ = ReadNote{line_, column_ + static_cast<int>(probe - at_), directive};
   at_ = end;
   endLine();
   return true;
@@ -272,7 +272,7 @@ void BlockReader::takeProseTail(RawBlock& block) {
   const std::size_t first = tail.find_first_not_of(" \t");
   std::string comment(tail.substr(first));
   while (!comment.empty() && (isBlank(comment.back()))) comment.pop_back();
-  prose_.push_back({line_, column_ + codePointCount(tail.substr(0, first)), comment});
+  if (prose_++ == 0) firstProse_ = ReadNote{line_, column_ + codePointCount(tail.substr(0, first)), comment};
   (block.chars.empty() ? pendingAbove_ : block.comments).push_back(std::move(comment));
   advance(end - at_);
 }
@@ -372,22 +372,22 @@ std::vector<ReadNote> BlockReader::notes() const {
     notes.push_back({leaderAt_->line, leaderAt_->column,
                      fmt::format("skipped the tape/DNC leader before the program: {}", what)});
   }
-  if (!directives_.empty()) {
-    const ReadNote& first = directives_.front();
+  if (firstDirective_) {
+    const ReadNote& first = *firstDirective_;
     notes.push_back({first.line, first.column,
                      fmt::format("a line opening with '[' is a trainer's directive, not a block: skipped "
                                  "'{}'{}",
                                  first.message,
-                                 directives_.size() > 1 ? fmt::format(" (and {} more)", directives_.size() - 1)
+                                 directives_ > 1 ? fmt::format(" (and {} more)", directives_ - 1)
                                                         : std::string())});
   }
-  if (!prose_.empty()) {
-    const ReadNote& first = prose_.front();
+  if (firstProse_) {
+    const ReadNote& first = *firstProse_;
     notes.push_back({first.line, first.column,
                      fmt::format("the text after ';' reads as prose, so it is a comment, not a block: "
                                  "'{}'{}",
                                  first.message,
-                                 prose_.size() > 1 ? fmt::format(" (and {} more like it)", prose_.size() - 1)
+                                 prose_ > 1 ? fmt::format(" (and {} more like it)", prose_ - 1)
                                                    : std::string())});
   }
   return notes;

@@ -172,8 +172,12 @@ class BlockReader {
   std::vector<std::string> pendingAbove_;  // comment-only lines since the last block
   std::vector<std::string> leaderSkipped_;  // what the leader held, e.g. "ESC", "the line '&HE:1'"
   std::optional<ReadNote> leaderAt_;
-  std::vector<ReadNote> prose_;  // each ';' tail read as a comment
-  std::vector<ReadNote> directives_;  // each '[' line skipped
+  // The first ';' tail read as a comment and the first '[' line skipped, and how many there
+  // were: a reader holds as much after a million of them as after one.
+  std::optional<ReadNote> firstProse_;
+  std::size_t prose_ = 0;
+  std::optional<ReadNote> firstDirective_;
+  std::size_t directives_ = 0;
 };
 
 /// The tokens of a block. Fails on an unexpected character, an unknown letter, a letter with

@@ -57,5 +57,18 @@ TEST(Diagnostic, LineStartsQuoteTheSameLinesAsLineOf) {
   }
 }
 
+// Lines quoted in one pass, for diagnostics in any order, two on one line, some at lines the
+// text lacks, are the lines lineOf finds.
+TEST(Diagnostic, QuotedInOnePassAsLineOfQuotes) {
+  for (const std::string_view text : {"first\r\nsecond\nthird", "", "\n\n", "a\nb\n"}) {
+    std::vector<Diagnostic> diagnostics;
+    for (const int line : {5, 2, -1, 3, 2, 0, 1, 4}) diagnostics.push_back({Severity::Warning, "f", line, 1, "m", "stale"});
+    std::vector<Diagnostic*> quoting;
+    for (Diagnostic& d : diagnostics) quoting.push_back(&d);
+    quoteLines(text, quoting);
+    for (const Diagnostic& d : diagnostics) EXPECT_EQ(d.sourceLine, lineOf(text, d.line)) << d.line;
+  }
+}
+
 }  // namespace
 }  // namespace lathesim::interp

@@ -42,8 +42,8 @@ std::vector<std::string> readInOnePass(const std::string& text, bool blockDelete
 
 std::vector<std::string> readAgain(const Program& program) {
   std::vector<std::string> blocks;
-  for (const ProgramBlock& block : program.blocks)
-    if (const auto words = program.plainWords(block)) blocks.push_back(describe(*words));
+  for (std::size_t ordinal = 0; ordinal < program.blockCount(); ++ordinal)
+    if (const auto words = program.plainWords(program.block(ordinal))) blocks.push_back(describe(*words));
   return blocks;
 }
 
@@ -71,31 +71,26 @@ TEST(ProgramBlocks, ReadAgainAsInOnePass) {
 // 9, its Z at column 9, its F at column 15.
 TEST(ProgramBlocks, ReadAgainWhereTheyStand) {
   const Program program = readProgram("G1 X10 ;Z-5.5 F0.1 (c)\n", false, Dialect::FanucA);
-  ASSERT_EQ(program.blocks.size(), 2u);
-  const auto second = program.plainWords(program.blocks[1]);
+  ASSERT_EQ(program.blockCount(), 2u);
+  const auto second = program.plainWords(program.block(1));
   ASSERT_TRUE(second);
   EXPECT_EQ(second->line, 1);
   EXPECT_EQ(second->column, 9);
   EXPECT_EQ(second->words.at('Z').number, "-5.5");
   EXPECT_EQ(second->words.at('Z').column, 9);
   EXPECT_EQ(second->words.at('F').column, 15);
-  EXPECT_FALSE(program.plainWords(program.blocks[0])->has('Z'));
+  EXPECT_FALSE(program.plainWords(program.block(0))->has('Z'));
 }
 
 // Skipped blocks, blocks that do not read and macro blocks have no plain words.
 TEST(ProgramBlocks, OnlyPlainBlocksHaveWords) {
   const Program program = readProgram("/G0 X5\nG1 X1.2.3\n#1=2\nG0 X1\n", true, Dialect::FanucA);
-  ASSERT_EQ(program.blocks.size(), 4u);
-  EXPECT_FALSE(program.plainWords(program.blocks[0]));
-  EXPECT_FALSE(program.plainWords(program.blocks[1]));
-  EXPECT_FALSE(program.plainWords(program.blocks[2]));
-  EXPECT_TRUE(program.plainWords(program.blocks[3]));
+  ASSERT_EQ(program.blockCount(), 4u);
+  EXPECT_FALSE(program.plainWords(program.block(0)));
+  EXPECT_FALSE(program.plainWords(program.block(1)));
+  EXPECT_FALSE(program.plainWords(program.block(2)));
+  EXPECT_TRUE(program.plainWords(program.block(3)));
 }
-
-// The record every block of a long program holds: its peak memory grows with it (a million
-// blocks: 64 MB at 64 B). Comments and errors are kept apart (Program::commentsOf, errorOf):
-// a field added here is paid by every block, so it must be one nearly every block needs.
-static_assert(sizeof(ProgramBlock) <= 64, "ProgramBlock is held for every block of a program");
 
 // Comments and errors are found for the blocks that have them, and only those, in programs
 // where such blocks stand first, last, in a row and apart, with and without block delete.
@@ -103,12 +98,12 @@ TEST(ProgramBlocks, CommentsAndErrorsOfTheirBlocks) {
   const Program program = readProgram(
       "(OP 10)\n(T1 ROUGH)\nT0101 (CNMG)\nG0 X1\nG1 X1.2.3\n/G1 X2 (SKIP)\nG0 X3 (A) (B)\nG1 Q\nG1 X4 (LAST",
       true, Dialect::FanucA);
-  ASSERT_EQ(program.blocks.size(), 7u);
+  ASSERT_EQ(program.blockCount(), 7u);
   const std::vector<std::vector<std::string>> own = {{"CNMG"}, {}, {}, {"SKIP"}, {"A", "B"}, {}, {}};
   const std::vector<std::vector<std::string>> above = {{"OP 10", "T1 ROUGH"}, {}, {}, {}, {}, {}, {}};
   const std::vector<int> errorLines = {0, 0, 5, 0, 0, 8, 9};  // 0: none
-  for (std::size_t i = 0; i < program.blocks.size(); ++i) {
-    const ProgramBlock& block = program.blocks[i];
+  for (std::size_t i = 0; i < program.blockCount(); ++i) {
+    const ProgramBlock block = program.block(i);
     EXPECT_EQ(block.ordinal, static_cast<int>(i));
     EXPECT_EQ(program.commentsOf(block).own, own[i]) << i;
     EXPECT_EQ(program.commentsOf(block).above, above[i]) << i;
@@ -116,8 +111,8 @@ TEST(ProgramBlocks, CommentsAndErrorsOfTheirBlocks) {
     EXPECT_EQ(error != nullptr ? error->line : 0, errorLines[i]) << i;
     EXPECT_EQ(error == nullptr && !block.skipped, block.plain()) << i;
   }
-  EXPECT_TRUE(program.blocks[3].skipped);
-  EXPECT_NE(program.errorOf(program.blocks[6])->message.find("comment"), std::string::npos);
+  EXPECT_TRUE(program.block(3).skipped);
+  EXPECT_NE(program.errorOf(program.block(6))->message.find("comment"), std::string::npos);
 }
 
 // A subprogram file's text is held by the Program: read again after the caller's copy is gone.
@@ -127,12 +122,12 @@ TEST(ProgramBlocks, SubprogramFileHeldByTheProgram) {
     std::string file = "O1234\nG1 X7 Z-3 (FILE)\nM99\n";
     (void)appendProgramFile(program, "O1234.nc", std::move(file), 1234, false, Dialect::FanucA);
   }
-  ASSERT_EQ(program.blocks.size(), 5u);
-  const auto words = program.plainWords(program.blocks[3]);
+  ASSERT_EQ(program.blockCount(), 5u);
+  const auto words = program.plainWords(program.block(3));
   ASSERT_TRUE(words);
   EXPECT_EQ(words->words.at('X').number, "7");
-  EXPECT_EQ(program.commentsOf(program.blocks[3]).own, std::vector<std::string>{"FILE"});
-  EXPECT_EQ(program.programStart.at(1234), 2u);
+  EXPECT_EQ(program.commentsOf(program.block(3)).own, std::vector<std::string>{"FILE"});
+  EXPECT_EQ(program.programStart(1234), 2u);
 }
 
 }  // namespace
