@@ -30,9 +30,8 @@ int orbitSize(int i, int j) {
 
 // A column of cells deep inside the region (ψ < −bg − h everywhere): writeColumn's result
 // without the distances. Each open cell takes the filled value u = −bg and goes inactive.
-// Returns the material voxels lost; marks the chunk and its class changed when anything did.
-double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, std::uint8_t& chunkChanged,
-            char& classChanged) {
+// Returns the material voxels lost; sets `changed` when anything did.
+double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool& changed) {
   const float filled = static_cast<float>(w.sign * -w.band);
   const double filledShare = std::clamp(0.5 - filled * w.inverseVoxel, 0.0, 1.0);
   double lost = 0.0;
@@ -41,29 +40,12 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, std::
     lost += std::clamp(0.5 - values[k] * w.inverseVoxel, 0.0, 1.0) - filledShare;
     values[k] = filled;
     activeBits &= static_cast<std::uint8_t>(~(1u << k));
-    chunkChanged = 1;
-    classChanged = 1;
+    changed = true;
   }
   return lost;
 }
 
 }  // namespace
-
-std::uint64_t RevolvedTable::bytesFor(int kFirst, int kLast, double voxelMm, double airRadiusMm) {
-  const std::int64_t nMax = largestSumOfSquares(airRadiusMm, voxelMm);
-  const int rMax = static_cast<int>(std::sqrt(static_cast<double>(nMax))) + 1;
-  std::vector<bool> seen(static_cast<std::size_t>(nMax) + 1, false);
-  std::uint64_t classes = 0;
-  for (int i = 0; i <= rMax; ++i)
-    for (int j = 0; j <= i; ++j) {
-      const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
-      if (n > nMax || seen[n]) continue;
-      seen[n] = true;
-      ++classes;
-    }
-  const std::uint64_t chunks = static_cast<std::uint64_t>((alignDown(kLast) - alignDown(kFirst)) / kChunk + 1);
-  return classes * chunks * (kChunk * sizeof(float) + 2);
-}
 
 RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm)
     : halfWidth_(halfWidth), kBase_(alignDown(kFirst)), chunks_((alignDown(kLast) - alignDown(kFirst)) / kChunk + 1),
@@ -112,10 +94,100 @@ RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelM
       const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
       if (n <= nMax) classOfColumn_[static_cast<std::size_t>(i + halfWidth) * side + (j + halfWidth)] = classOfSum[n];
     }
-  const std::size_t chunkCount = static_cast<std::size_t>(classes) * chunks_;
-  values_.assign(chunkCount * kChunk, bandMm);
-  activeBits_.assign(chunkCount, 0);
-  changed_.assign(chunkCount, 0);
+  std::fill_n(airCells_, kChunk, bandMm);
+  std::fill_n(solidCells_, kChunk, -bandMm);
+  classes_.resize(classes);
+  for (ClassChunks& row : classes_) row.runs.push_back({0, kAirRun});
+  changedWords_ = (chunks_ + 63) / 64;
+  changed_.assign(static_cast<std::size_t>(classes) * changedWords_, 0);
+}
+
+std::uint64_t RevolvedTable::bytes() const {
+  std::uint64_t total = sizeof *this + classes_.capacity() * sizeof(ClassChunks) + changed_.capacity() * sizeof(std::uint64_t) +
+                        classOfColumn_.capacity() * sizeof(int) + sumOfSquares_.capacity() * sizeof(std::int64_t) +
+                        (rho_.capacity() + columns_.capacity()) * sizeof(double) + orbitStart_.capacity() * sizeof(int) +
+                        orbits_.capacity() * sizeof(orbits_[0]);
+  for (const ClassChunks& row : classes_)
+    total += row.runs.capacity() * sizeof(Run) + row.pool.capacity() * sizeof(MixedChunk) +
+             row.freeSlots.capacity() * sizeof(std::int32_t);
+  return total;
+}
+
+std::size_t RevolvedTable::runAt(const ClassChunks& row, int chunk) const {
+  // The last run starting at or before `chunk` (the first starts at 0).
+  const auto after = std::upper_bound(row.runs.begin(), row.runs.end(), chunk,
+                                      [](int c, const Run& run) { return c < run.firstChunk; });
+  return static_cast<std::size_t>(after - row.runs.begin()) - 1;
+}
+
+const float* RevolvedTable::cellsOf(int c, int chunk, std::uint8_t& activeBits) const {
+  const ClassChunks& row = classes_[c];
+  const Run& run = row.runs[runAt(row, chunk)];
+  if (run.slot >= 0) {
+    activeBits = row.pool[run.slot].activeBits;
+    return row.pool[run.slot].values;
+  }
+  activeBits = 0;
+  return run.slot == kAirRun ? airCells_ : solidCells_;
+}
+
+void RevolvedTable::open(ClassChunks& row, int chunk, ChunkCells& cells) const {
+  cells.run = runAt(row, chunk);
+  const std::int32_t slot = row.runs[cells.run].slot;
+  if (slot >= 0) {
+    cells.values = row.pool[slot].values;
+    cells.activeBits = &row.pool[slot].activeBits;
+    return;
+  }
+  std::fill_n(cells.copy, kChunk, slot == kAirRun ? band_ : -band_);
+  cells.copyBits = 0;
+  cells.values = cells.copy;
+  cells.activeBits = &cells.copyBits;
+}
+
+void RevolvedTable::store(ClassChunks& row, int chunk, ChunkCells& cells) const {
+  const std::int32_t slot = row.runs[cells.run].slot;
+  const float first = cells.values[0];
+  bool uniform = *cells.activeBits == 0 && (first == band_ || first == -band_);
+  for (int k = 1; k < kChunk && uniform; ++k) uniform = cells.values[k] == first;
+  if (uniform) {
+    const std::int32_t run = first == band_ ? kAirRun : kSolidRun;
+    if (slot == run) return;
+    if (slot >= 0) row.freeSlots.push_back(slot);
+    setRun(row, cells.run, chunk, run);
+    return;
+  }
+  if (slot >= 0) return;  // written in place
+  std::int32_t mixed;
+  if (!row.freeSlots.empty()) {
+    mixed = row.freeSlots.back();
+    row.freeSlots.pop_back();
+  } else {
+    mixed = static_cast<std::int32_t>(row.pool.size());
+    row.pool.emplace_back();
+  }
+  std::memcpy(row.pool[mixed].values, cells.values, sizeof cells.copy);
+  row.pool[mixed].activeBits = *cells.activeBits;
+  setRun(row, cells.run, chunk, mixed);
+}
+
+void RevolvedTable::setRun(ClassChunks& row, std::size_t r, int chunk, std::int32_t slot) const {
+  std::vector<Run>& runs = row.runs;
+  const std::int32_t old = runs[r].slot;
+  const int start = runs[r].firstChunk;
+  const int end = r + 1 < runs.size() ? runs[r + 1].firstChunk : chunks_;
+  // The run splits around the chunk (a mixed run is one chunk: nothing to split)...
+  Run pieces[3];
+  std::size_t n = 0;
+  if (start < chunk) pieces[n++] = {start, old};
+  pieces[n++] = {chunk, slot};
+  if (chunk + 1 < end) pieces[n++] = {chunk + 1, old};
+  runs[r] = pieces[0];
+  runs.insert(runs.begin() + static_cast<std::ptrdiff_t>(r) + 1, pieces + 1, pieces + n);
+  // ...and uniform runs alike that now meet become one.
+  const std::size_t low = r == 0 ? 0 : r - 1;
+  for (std::size_t m = std::min(runs.size() - 1, r + n); m > low; --m)
+    if (runs[m].slot < 0 && runs[m].slot == runs[m - 1].slot) runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(m));
 }
 
 int RevolvedTable::classOf(int i, int j) const {
@@ -127,22 +199,24 @@ float RevolvedTable::value(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return band_;
-  return values_[static_cast<std::size_t>(c) * chunks_ * kChunk + cell];
+  std::uint8_t bits;
+  return cellsOf(c, cell / kChunk, bits)[cell % kChunk];
 }
 
 bool RevolvedTable::active(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return false;
-  return (activeBits_[chunkIndex(c, cell / kChunk)] >> (cell % kChunk)) & 1;
+  std::uint8_t bits;
+  cellsOf(c, cell / kChunk, bits);
+  return (bits >> (cell % kChunk)) & 1;
 }
 
 const float* RevolvedTable::column(int i, int j, int k0, std::uint8_t& activeBits) const {
   const int c = classOf(i, j);
   const int chunk = (k0 - kBase_) / kChunk;
   if (c == kAir || k0 < kBase_ || chunk >= chunks_) return nullptr;
-  activeBits = activeBits_[chunkIndex(c, chunk)];
-  return cells(c, chunk);
+  return cellsOf(c, chunk, activeBits);
 }
 
 bool RevolvedTable::isGhost(int i, int j, int k, float material) const {
@@ -226,10 +300,19 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
           if (centre > farReach) continue;
           const bool covered = centre < -farReach;
           for (int c = first; c < last; ++c) {
-            float* values = cells(c, chunk);
+            const int n = c - classLow;
+            ClassChunks& row = classes_[c];
+            ChunkCells cells;
+            open(row, chunk, cells);
+            float* values = cells.values;
             if (covered) {
-              lostOf[c - classLow] += fill(values, activeBits_[chunkIndex(c, chunk)], w, changed_[chunkIndex(c, chunk)],
-                                           changedClass[c - classLow]);
+              bool changed = false;
+              lostOf[n] += fill(values, *cells.activeBits, w, changed);
+              if (changed) {
+                markChanged(c, chunk);
+                changedClass[n] = 1;
+                store(row, chunk, cells);
+              }
               continue;
             }
             bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
@@ -239,14 +322,14 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
             local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
             float before[kChunk];
             std::memcpy(before, values, sizeof before);
-            std::uint8_t& active = activeBits_[chunkIndex(c, chunk)];
+            std::uint8_t& active = *cells.activeBits;
             const std::uint8_t activeBefore = active;
             std::uint8_t ghostBits = 0;
-            const int n = c - classLow;
             lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
             if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
-              changed_[chunkIndex(c, chunk)] = 1;
+              markChanged(c, chunk);
               changedClass[n] = 1;
+              store(row, chunk, cells);
             }
             if (ghostBits && !adding) ghostsOf[n].push_back({chunk, ghostBits});
           }
@@ -306,12 +389,16 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
         }
     }
     for (const Ghost& ghost : ghosts) {
-      float& value = values_[static_cast<std::size_t>(ghost.c) * chunks_ * kChunk + ghost.cell];
+      ClassChunks& row = classes_[ghost.c];
+      const int chunk = ghost.cell / kChunk, bit = ghost.cell % kChunk;
+      ChunkCells cells;
+      open(row, chunk, cells);
+      float& value = cells.values[bit];
       lost += std::clamp(0.5 - value / h_, 0.0, 1.0) * columns_[ghost.c];
       value = band_;
-      const std::size_t chunk = chunkIndex(ghost.c, ghost.cell / kChunk);
-      activeBits_[chunk] &= static_cast<std::uint8_t>(~(1u << (ghost.cell % kChunk)));
-      changed_[chunk] = 1;
+      *cells.activeBits &= static_cast<std::uint8_t>(~(1u << bit));
+      markChanged(ghost.c, chunk);
+      store(row, chunk, cells);
     }
   }
   result.lostVoxels = lost;
@@ -339,7 +426,7 @@ std::vector<VoxelIndex> RevolvedTable::changedLeaves() {
       std::sort(classes.begin(), classes.end());
       classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
       for (int chunk = changedChunkLow_; chunk <= changedChunkHigh_; ++chunk)
-        if (std::any_of(classes.begin(), classes.end(), [&](int c) { return changed_[chunkIndex(c, chunk)] != 0; }))
+        if (std::any_of(classes.begin(), classes.end(), [&](int c) { return isChanged(c, chunk); }))
           leaves.push_back({x, y, kBase_ + chunk * kChunk});
     }
   forgetChanges();
@@ -348,7 +435,8 @@ std::vector<VoxelIndex> RevolvedTable::changedLeaves() {
 
 void RevolvedTable::forgetChanges() {
   for (int c = changedClassLow_; c <= changedClassHigh_; ++c)
-    std::fill_n(changed_.begin() + chunkIndex(c, changedChunkLow_), changedChunkHigh_ - changedChunkLow_ + 1, 0);
+    for (int word = changedChunkLow_ / 64; word <= changedChunkHigh_ / 64; ++word)
+      changed_[static_cast<std::size_t>(c) * changedWords_ + word] = 0;
   changedClassLow_ = 0;
   changedClassHigh_ = -1;
   changedChunkLow_ = 0;

@@ -36,8 +36,8 @@ class RevolvedTable {
   /// taken never to change (nothing reaches them: the caller's promise).
   RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm);
 
-  /// Bytes the table would take for these dimensions (to decide whether to keep one).
-  static std::uint64_t bytesFor(int kFirst, int kLast, double voxelMm, double airRadiusMm);
+  /// Bytes the table takes now (its chunks, runs and indices; what the allocator adds aside).
+  std::uint64_t bytes() const;
 
   struct WriteResult {
     double lostVoxels = 0;  // material voxels lost (negative when added)
@@ -63,12 +63,53 @@ class RevolvedTable {
   /// Forgets what changed (the level set was written the same way already).
   void forgetChanges();
 
+ /// Visits the mixed chunks of class `classIndex` (those not one inactive value at ±band) in
+  /// ascending Z: fn(k0, cells, activeBits) with k0 the Z index of the chunk's first cell.
+  template <class Fn>
+  void forEachMixedChunk(int classIndex, Fn&& fn) const {
+    const ClassChunks& row = classes_[classIndex];
+    for (const Run& run : row.runs)
+      if (run.slot >= 0) fn(kBase_ + run.firstChunk * kChunkCells, row.pool[run.slot].values, row.pool[run.slot].activeBits);
+  }
+
  private:
   static constexpr int kAir = -1;
+  static constexpr int kChunkCells = 8;
+  // Along Z a class is a sequence of runs of chunks (8 cells each, one leaf's column): a run of
+  // uniform chunks (every cell the same inactive value, +band: air, or −band: solid) up to the
+  // next run, or one mixed chunk whose cells are in the class's pool. So the table follows the
+  // band of the profile, not classes × Z (OpenVDB's tiles, in one dimension).
+  static constexpr std::int32_t kAirRun = -1, kSolidRun = -2;
+  struct Run {
+    std::int32_t firstChunk;
+    std::int32_t slot;  // ≥ 0: a mixed chunk in the pool; kAirRun or kSolidRun: uniform
+  };
+  struct MixedChunk {
+    float values[kChunkCells];
+    std::uint8_t activeBits;
+  };
+  struct ClassChunks {
+    std::vector<Run> runs;  // ascending firstChunk, the first at 0; no two uniform runs alike in a row
+    std::vector<MixedChunk> pool;
+    std::vector<std::int32_t> freeSlots;
+  };
+  // The cells of one chunk while it is written: the pool's, or a copy of a uniform run's.
+  struct ChunkCells {
+    float* values;
+    std::uint8_t* activeBits;
+    std::size_t run;
+    float copy[kChunkCells];
+    std::uint8_t copyBits;
+  };
+
   int classOf(int i, int j) const;
-  float* cells(int c, int chunk) { return &values_[(static_cast<std::size_t>(c) * chunks_ + chunk) * 8]; }
-  const float* cells(int c, int chunk) const { return &values_[(static_cast<std::size_t>(c) * chunks_ + chunk) * 8]; }
-  std::size_t chunkIndex(int c, int chunk) const { return static_cast<std::size_t>(c) * chunks_ + chunk; }
+  std::size_t runAt(const ClassChunks& row, int chunk) const;
+  const float* cellsOf(int c, int chunk, std::uint8_t& activeBits) const;
+  void open(ClassChunks& row, int chunk, ChunkCells& cells) const;
+  void store(ClassChunks& row, int chunk, ChunkCells& cells) const;
+  void setRun(ClassChunks& row, std::size_t r, int chunk, std::int32_t slot) const;
+  void markChanged(int c, int chunk) { changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] |= std::uint64_t{1} << (chunk % 64); }
+  bool isChanged(int c, int chunk) const { return (changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] >> (chunk % 64)) & 1; }
   bool isGhost(int i, int j, int k, float material) const;
 
   int halfWidth_;
@@ -76,15 +117,16 @@ class RevolvedTable {
   int chunks_;   // Z chunks of 8 cells per class
   double h_;
   float band_;
+  float airCells_[kChunkCells], solidCells_[kChunkCells];  // a uniform run's cells
   std::vector<int> classOfColumn_;        // (i + halfWidth)·(2·halfWidth + 1) + j + halfWidth → class or kAir
   std::vector<std::int64_t> sumOfSquares_;  // per class, ascending: i² + j²
   std::vector<double> rho_;               // per class: ρ of its widest column (i, j), i ≥ j ≥ 0, j least
   std::vector<double> columns_;           // per class: how many columns it has
   std::vector<int> orbitStart_;           // per class: its columns up to symmetry, orbits_[start…next)
   std::vector<std::pair<int, int>> orbits_;  // (i, j) with i ≥ j ≥ 0
-  std::vector<float> values_;             // per class, per chunk, 8 cells along Z
-  std::vector<std::uint8_t> activeBits_;  // per class and chunk: one bit per cell
-  std::vector<std::uint8_t> changed_;     // per class and chunk: changed since changedLeaves()
+  std::vector<ClassChunks> classes_;
+  int changedWords_;                      // per class: chunks changed since changedLeaves(), a bit each
+  std::vector<std::uint64_t> changed_;
   int changedClassLow_ = 0, changedClassHigh_ = -1, changedChunkLow_ = 0, changedChunkHigh_ = -1;
 };
 
