@@ -97,6 +97,7 @@ void startTable(StockGrid& stock, const RevolvedRegion& bar) {
   // Beyond the bar's band nothing ever changes: the bar's distance there exceeds the band,
   // and a cut never changes air.
   const double airRadius = stock.spec.diameterMm / 2.0 + stock.background + 2.0 * stock.voxel;
+  if ((box.max().z() - box.min().z()) / kLeafDim + 2 > RevolvedTable::kMaxChunks) return;
   auto table = std::make_unique<RevolvedTable>(halfWidth, box.min().z(), box.max().z(), stock.voxel, stock.background,
                                                airRadius);
   table->write(bar, true);

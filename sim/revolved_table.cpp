@@ -97,97 +97,67 @@ RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelM
   std::fill_n(airCells_, kChunk, bandMm);
   std::fill_n(solidCells_, kChunk, -bandMm);
   classes_.resize(classes);
-  for (ClassChunks& row : classes_) row.runs.push_back({0, kAirRun});
+  slots_.assign(static_cast<std::size_t>(classes) * chunks_, kAirChunk);
   changedWords_ = (chunks_ + 63) / 64;
   changed_.assign(static_cast<std::size_t>(classes) * changedWords_, 0);
 }
 
 std::uint64_t RevolvedTable::bytes() const {
-  std::uint64_t total = sizeof *this + classes_.capacity() * sizeof(ClassChunks) + changed_.capacity() * sizeof(std::uint64_t) +
+  std::uint64_t total = sizeof *this + classes_.capacity() * sizeof(ClassChunks) + slots_.capacity() * sizeof(std::uint16_t) + changed_.capacity() * sizeof(std::uint64_t) +
                         classOfColumn_.capacity() * sizeof(int) + sumOfSquares_.capacity() * sizeof(std::int64_t) +
                         (rho_.capacity() + columns_.capacity()) * sizeof(double) + orbitStart_.capacity() * sizeof(int) +
                         orbits_.capacity() * sizeof(orbits_[0]);
   for (const ClassChunks& row : classes_)
-    total += row.runs.capacity() * sizeof(Run) + row.pool.capacity() * sizeof(MixedChunk) +
-             row.freeSlots.capacity() * sizeof(std::int32_t);
+    total += row.pool.capacity() * sizeof(MixedChunk) + row.freeSlots.capacity() * sizeof(std::uint16_t);
   return total;
 }
 
-std::size_t RevolvedTable::runAt(const ClassChunks& row, int chunk) const {
-  // The last run starting at or before `chunk` (the first starts at 0).
-  const auto after = std::upper_bound(row.runs.begin(), row.runs.end(), chunk,
-                                      [](int c, const Run& run) { return c < run.firstChunk; });
-  return static_cast<std::size_t>(after - row.runs.begin()) - 1;
-}
-
 const float* RevolvedTable::cellsOf(int c, int chunk, std::uint8_t& activeBits) const {
-  const ClassChunks& row = classes_[c];
-  const Run& run = row.runs[runAt(row, chunk)];
-  if (run.slot >= 0) {
-    activeBits = row.pool[run.slot].activeBits;
-    return row.pool[run.slot].values;
+  const std::uint16_t slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+  if (slot < kSolidChunk) {
+    const MixedChunk& mixed = classes_[c].pool[slot];
+    activeBits = mixed.activeBits;
+    return mixed.values;
   }
   activeBits = 0;
-  return run.slot == kAirRun ? airCells_ : solidCells_;
+  return slot == kAirChunk ? airCells_ : solidCells_;
 }
 
-void RevolvedTable::open(ClassChunks& row, int chunk, ChunkCells& cells) const {
-  cells.run = runAt(row, chunk);
-  const std::int32_t slot = row.runs[cells.run].slot;
-  if (slot >= 0) {
-    cells.values = row.pool[slot].values;
-    cells.activeBits = &row.pool[slot].activeBits;
+void RevolvedTable::open(int c, int chunk, ChunkCells& cells) {
+  cells.slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+  if (cells.slot < kSolidChunk) {
+    MixedChunk& mixed = classes_[c].pool[cells.slot];
+    cells.values = mixed.values;
+    cells.activeBits = &mixed.activeBits;
     return;
   }
-  std::fill_n(cells.copy, kChunk, slot == kAirRun ? band_ : -band_);
+  std::fill_n(cells.copy, kChunk, cells.slot == kAirChunk ? band_ : -band_);
   cells.copyBits = 0;
   cells.values = cells.copy;
   cells.activeBits = &cells.copyBits;
 }
 
-void RevolvedTable::store(ClassChunks& row, int chunk, ChunkCells& cells) const {
-  const std::int32_t slot = row.runs[cells.run].slot;
+void RevolvedTable::store(int c, int chunk, ChunkCells& cells) {
+  ClassChunks& row = classes_[c];
+  std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
   const float first = cells.values[0];
   bool uniform = *cells.activeBits == 0 && (first == band_ || first == -band_);
   for (int k = 1; k < kChunk && uniform; ++k) uniform = cells.values[k] == first;
   if (uniform) {
-    const std::int32_t run = first == band_ ? kAirRun : kSolidRun;
-    if (slot == run) return;
-    if (slot >= 0) row.freeSlots.push_back(slot);
-    setRun(row, cells.run, chunk, run);
+    if (slot < kSolidChunk) row.freeSlots.push_back(slot);  // the chunk is a tag again
+    slot = first == band_ ? kAirChunk : kSolidChunk;
     return;
   }
-  if (slot >= 0) return;  // written in place
-  std::int32_t mixed;
+  if (slot < kSolidChunk) return;  // written in place
   if (!row.freeSlots.empty()) {
-    mixed = row.freeSlots.back();
+    slot = row.freeSlots.back();
     row.freeSlots.pop_back();
   } else {
-    mixed = static_cast<std::int32_t>(row.pool.size());
+    slot = static_cast<std::uint16_t>(row.pool.size());
     row.pool.emplace_back();
   }
-  std::memcpy(row.pool[mixed].values, cells.values, sizeof cells.copy);
-  row.pool[mixed].activeBits = *cells.activeBits;
-  setRun(row, cells.run, chunk, mixed);
-}
-
-void RevolvedTable::setRun(ClassChunks& row, std::size_t r, int chunk, std::int32_t slot) const {
-  std::vector<Run>& runs = row.runs;
-  const std::int32_t old = runs[r].slot;
-  const int start = runs[r].firstChunk;
-  const int end = r + 1 < runs.size() ? runs[r + 1].firstChunk : chunks_;
-  // The run splits around the chunk (a mixed run is one chunk: nothing to split)...
-  Run pieces[3];
-  std::size_t n = 0;
-  if (start < chunk) pieces[n++] = {start, old};
-  pieces[n++] = {chunk, slot};
-  if (chunk + 1 < end) pieces[n++] = {chunk + 1, old};
-  runs[r] = pieces[0];
-  runs.insert(runs.begin() + static_cast<std::ptrdiff_t>(r) + 1, pieces + 1, pieces + n);
-  // ...and uniform runs alike that now meet become one.
-  const std::size_t low = r == 0 ? 0 : r - 1;
-  for (std::size_t m = std::min(runs.size() - 1, r + n); m > low; --m)
-    if (runs[m].slot < 0 && runs[m].slot == runs[m - 1].slot) runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(m));
+  std::memcpy(row.pool[slot].values, cells.values, sizeof cells.copy);
+  row.pool[slot].activeBits = *cells.activeBits;
 }
 
 int RevolvedTable::classOf(int i, int j) const {
@@ -220,10 +190,25 @@ const float* RevolvedTable::column(int i, int j, int k0, std::uint8_t& activeBit
 }
 
 bool RevolvedTable::isGhost(int i, int j, int k, float material) const {
+  // Air never counts as material: only the neighbouring columns in the table are read, a
+  // chunk at a time.
+  const int cellLow = k - 1 - kBase_, cellHigh = k + 1 - kBase_;
   for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int dk = -1; dk <= 1; ++dk)
-        if ((di || dj || dk) && value(i + di, j + dj, k + dk) <= material) return false;
+    for (int dj = -1; dj <= 1; ++dj) {
+      const int c = classOf(i + di, j + dj);
+      if (c == kAir) continue;
+      int chunk = -1;
+      const float* values = nullptr;
+      std::uint8_t bits;
+      for (int cell = std::max(0, cellLow); cell <= std::min(cellHigh, chunks_ * kChunk - 1); ++cell) {
+        if ((di || dj || cell != k - kBase_) == false) continue;
+        if (cell / kChunk != chunk) {
+          chunk = cell / kChunk;
+          values = cellsOf(c, chunk, bits);
+        }
+        if (values[cell % kChunk] <= material) return false;
+      }
+    }
   return true;
 }
 
@@ -301,9 +286,8 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
           const bool covered = centre < -farReach;
           for (int c = first; c < last; ++c) {
             const int n = c - classLow;
-            ClassChunks& row = classes_[c];
             ChunkCells cells;
-            open(row, chunk, cells);
+            open(c, chunk, cells);
             float* values = cells.values;
             if (covered) {
               bool changed = false;
@@ -311,7 +295,7 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
               if (changed) {
                 markChanged(c, chunk);
                 changedClass[n] = 1;
-                store(row, chunk, cells);
+                store(c, chunk, cells);
               }
               continue;
             }
@@ -329,7 +313,7 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
             if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
               markChanged(c, chunk);
               changedClass[n] = 1;
-              store(row, chunk, cells);
+              store(c, chunk, cells);
             }
             if (ghostBits && !adding) ghostsOf[n].push_back({chunk, ghostBits});
           }
@@ -389,16 +373,15 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
         }
     }
     for (const Ghost& ghost : ghosts) {
-      ClassChunks& row = classes_[ghost.c];
       const int chunk = ghost.cell / kChunk, bit = ghost.cell % kChunk;
       ChunkCells cells;
-      open(row, chunk, cells);
+      open(ghost.c, chunk, cells);
       float& value = cells.values[bit];
       lost += std::clamp(0.5 - value / h_, 0.0, 1.0) * columns_[ghost.c];
       value = band_;
       *cells.activeBits &= static_cast<std::uint8_t>(~(1u << bit));
       markChanged(ghost.c, chunk);
-      store(row, chunk, cells);
+      store(ghost.c, chunk, cells);
     }
   }
   result.lostVoxels = lost;

@@ -36,7 +36,7 @@ class RevolvedTable {
   /// taken never to change (nothing reaches them: the caller's promise).
   RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm);
 
-  /// Bytes the table takes now (its chunks, runs and indices; what the allocator adds aside).
+  /// Bytes the table takes now (its chunks and indices; what the allocator adds aside).
   std::uint64_t bytes() const;
 
   struct WriteResult {
@@ -68,46 +68,47 @@ class RevolvedTable {
   template <class Fn>
   void forEachMixedChunk(int classIndex, Fn&& fn) const {
     const ClassChunks& row = classes_[classIndex];
-    for (const Run& run : row.runs)
-      if (run.slot >= 0) fn(kBase_ + run.firstChunk * kChunkCells, row.pool[run.slot].values, row.pool[run.slot].activeBits);
+    const std::uint16_t* slots = &slots_[static_cast<std::size_t>(classIndex) * chunks_];
+    for (int chunk = 0; chunk < chunks_; ++chunk)
+      if (slots[chunk] < kSolidChunk)
+        fn(kBase_ + chunk * kChunkCells, row.pool[slots[chunk]].values, row.pool[slots[chunk]].activeBits);
   }
 
  private:
   static constexpr int kAir = -1;
   static constexpr int kChunkCells = 8;
-  // Along Z a class is a sequence of runs of chunks (8 cells each, one leaf's column): a run of
-  // uniform chunks (every cell the same inactive value, +band: air, or −band: solid) up to the
-  // next run, or one mixed chunk whose cells are in the class's pool. So the table follows the
-  // band of the profile, not classes × Z (OpenVDB's tiles, in one dimension).
-  static constexpr std::int32_t kAirRun = -1, kSolidRun = -2;
-  struct Run {
-    std::int32_t firstChunk;
-    std::int32_t slot;  // ≥ 0: a mixed chunk in the pool; kAirRun or kSolidRun: uniform
-  };
+  // Per class and chunk of 8 cells along Z (one leaf's column), two bytes: a tag when the chunk
+  // is uniform (every cell the same inactive value: +band, air, or −band, solid), else the slot
+  // of its cells in the class's pool. So the cells follow the band of the profile, and the
+  // index costs 2 bytes a chunk, not 34 (OpenVDB's tiles, in one dimension).
+  static constexpr std::uint16_t kAirChunk = 0xFFFF, kSolidChunk = 0xFFFE;
+
+ public:
+  /// The most chunks of 8 cells along Z a table can have.
+  static constexpr int kMaxChunks = kSolidChunk;
+
+ private:
   struct MixedChunk {
     float values[kChunkCells];
     std::uint8_t activeBits;
   };
   struct ClassChunks {
-    std::vector<Run> runs;  // ascending firstChunk, the first at 0; no two uniform runs alike in a row
     std::vector<MixedChunk> pool;
-    std::vector<std::int32_t> freeSlots;
+    std::vector<std::uint16_t> freeSlots;
   };
   // The cells of one chunk while it is written: the pool's, or a copy of a uniform run's.
   struct ChunkCells {
     float* values;
     std::uint8_t* activeBits;
-    std::size_t run;
+    std::uint16_t slot;
     float copy[kChunkCells];
     std::uint8_t copyBits;
   };
 
   int classOf(int i, int j) const;
-  std::size_t runAt(const ClassChunks& row, int chunk) const;
   const float* cellsOf(int c, int chunk, std::uint8_t& activeBits) const;
-  void open(ClassChunks& row, int chunk, ChunkCells& cells) const;
-  void store(ClassChunks& row, int chunk, ChunkCells& cells) const;
-  void setRun(ClassChunks& row, std::size_t r, int chunk, std::int32_t slot) const;
+  void open(int c, int chunk, ChunkCells& cells);
+  void store(int c, int chunk, ChunkCells& cells);
   void markChanged(int c, int chunk) { changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] |= std::uint64_t{1} << (chunk % 64); }
   bool isChanged(int c, int chunk) const { return (changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] >> (chunk % 64)) & 1; }
   bool isGhost(int i, int j, int k, float material) const;
@@ -125,6 +126,7 @@ class RevolvedTable {
   std::vector<int> orbitStart_;           // per class: its columns up to symmetry, orbits_[start…next)
   std::vector<std::pair<int, int>> orbits_;  // (i, j) with i ≥ j ≥ 0
   std::vector<ClassChunks> classes_;
+  std::vector<std::uint16_t> slots_;      // per class, per chunk: kAirChunk, kSolidChunk or a slot in its pool
   int changedWords_;                      // per class: chunks changed since changedLeaves(), a bit each
   std::vector<std::uint64_t> changed_;
   int changedClassLow_ = 0, changedClassHigh_ = -1, changedChunkLow_ = 0, changedChunkHigh_ = -1;
