@@ -279,8 +279,13 @@ int checkCommand(const CheckOptions& options) {
   run->figures.timing.writeS += stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options.run, out, clock);
   std::filesystem::path deviationPng;
-  if (options.run.outputs.png)
-    deviationPng = stageDeviationImages(options, run->part, section, part, *drawing, deviation, threadZones, out, run->pictures);
+  if (options.run.outputs.png) {
+    // Coloured vertex by vertex: a revolved part's mesh may have a straight face's two ends only.
+    std::optional<TriangleMesh> everyVoxel;
+    if (run->partStock().isRevolved()) everyVoxel = run->partStock().meshWithVertexEveryVoxel();
+    deviationPng = stageDeviationImages(options, everyVoxel ? *everyVoxel : run->part, section, part, *drawing, deviation,
+                                        threadZones, out, run->pictures);
+  }
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   run->figures.timing.totalS = clock.total();

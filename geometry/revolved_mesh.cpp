@@ -16,10 +16,17 @@ TriangleMesh revolvedMesh(const std::vector<std::vector<RZ>>& polylines, int ang
   for (int k = 0; k < n; ++k) cosines[k] = std::cos(2.0 * M_PI * k / n), sines[k] = std::sin(2.0 * M_PI * k / n);
   TriangleMesh mesh;
   for (const auto& line : polylines) {
+    // A loop's last point repeats its first: it joins the first ring, so the mesh stays
+    // closed, and has no ring of its own (two vertices at one point).
+    const bool loop = line.size() > 2 && line.front() == line.back();
     // The first vertex of each point's ring (one vertex for a point on the axis).
     std::vector<std::uint32_t> ring(line.size());
     for (std::size_t i = 0; i < line.size(); ++i) {
       ring[i] = static_cast<std::uint32_t>(mesh.vertices.size());
+      if (loop && i + 1 == line.size()) {
+        ring[i] = ring[0];
+        continue;
+      }
       const RZ& p = line[i];
       if (p.x() <= kOnAxisMm) {
         mesh.vertices.emplace_back(0.0f, 0.0f, static_cast<float>(p.y()));
@@ -29,13 +36,10 @@ TriangleMesh revolvedMesh(const std::vector<std::vector<RZ>>& polylines, int ang
         mesh.vertices.emplace_back(static_cast<float>(p.x() * cosines[k]), static_cast<float>(p.x() * sines[k]),
                                    static_cast<float>(p.y()));
     }
-    // A loop's last point repeats its first: join to the first ring, so the mesh stays closed.
-    const bool loop = line.size() > 2 && line.front() == line.back();
-    auto ringOf = [&](std::size_t i) { return loop && i + 1 == line.size() ? ring[0] : ring[i]; };
     for (std::size_t i = 0; i + 1 < line.size(); ++i) {
       const bool aAxis = line[i].x() <= kOnAxisMm, bAxis = line[i + 1].x() <= kOnAxisMm;
       if (aAxis && bAxis) continue;  // along the axis: no surface
-      const std::uint32_t a = ringOf(i), b = ringOf(i + 1);
+      const std::uint32_t a = ring[i], b = ring[i + 1];
       for (int k = 0; k < n; ++k) {
         const int next = (k + 1) % n;
         // Corners (s, θ): (a, k) (b, k) (b, k+1) (a, k+1), counter-clockwise from outside

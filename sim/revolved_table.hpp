@@ -63,12 +63,26 @@ class RevolvedTable {
   /// Forgets what changed (the level set was written the same way already).
   void forgetChanges();
 
- /// Visits the mixed chunks of class `classIndex` (those not one inactive value at ±band) in
+  // Read access for the mesh drawn from the table's profile (profile_mesh.cpp): the classes
+  // in ascending ρ, each a column of cells along Z in chunks of 8 (one leaf's column).
+  int classCount() const { return static_cast<int>(rho_.size()); }
+  /// ρ of class c's columns (mm).
+  double classRadiusMm(int c) const { return rho_[c]; }
+  /// Z index of the first cell; each class has chunkCount() chunks from there.
+  int firstCellK() const { return kBase_; }
+  int chunkCount() const { return chunks_; }
+  /// The eight values of class c's chunk `chunk` (Z indices firstCellK() + 8·chunk …).
+  const float* chunkCells(int c, int chunk) const {
+    std::uint8_t bits;
+    return cellsOf(c, chunk, bits);
+  }
+  /// Visits the mixed chunks of class c (those not one inactive value at ±band: the others
+  /// are plain air or solid, and no surface passes within them; only these hold cells) in
   /// ascending Z: fn(k0, cells, activeBits) with k0 the Z index of the chunk's first cell.
   template <class Fn>
-  void forEachMixedChunk(int classIndex, Fn&& fn) const {
-    const ClassChunks& row = classes_[classIndex];
-    const std::uint16_t* slots = &slots_[static_cast<std::size_t>(classIndex) * chunks_];
+  void forEachMixedChunk(int c, Fn&& fn) const {
+    const ClassChunks& row = classes_[c];
+    const std::uint16_t* slots = &slots_[static_cast<std::size_t>(c) * chunks_];
     for (int chunk = 0; chunk < chunks_; ++chunk)
       if (slots[chunk] < kSolidChunk)
         fn(kBase_ + chunk * kChunkCells, row.pool[slots[chunk]].values, row.pool[slots[chunk]].activeBits);

@@ -21,6 +21,7 @@
 #include <stdexcept>
 #include <numbers>
 
+#include "sim/profile_mesh.hpp"
 #include "sim/stock_grid.hpp"
 
 namespace lathesim::sim {
@@ -227,15 +228,7 @@ TriangleMesh meshOf(const Grid& grid, double voxelMm, double adaptivity) {
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
-  // Where the surface passes exactly through voxel centres (round dimensions on round
-  // voxels: a Φ10 drill at 0.2 mm, a cone's tip on the axis), φ is exactly 0 there, and
-  // volumeToMesh puts the vertices of several cells around such a voxel on its centre: one
-  // point, many vertices. An STL stores positions, so a reader glues them into one, and
-  // edges come out shared by 4–10 triangles. The surface is taken a small irrational
-  // fraction of a voxel inside instead: no round dimension lands on it, and it moves those
-  // vertices apart by several float steps of a coordinate (0.16 % of a voxel: 8e-5 mm at
-  // 0.05 mm voxels) while the volume moves by 0.16 % of a voxel layer.
-  const double isoMm = -voxelMm * (std::numbers::sqrt2 - 1.0) / 256.0;
+  const double isoMm = meshIsoMm(voxelMm);
   openvdb::tools::volumeToMesh(grid, points, triangles, quads, isoMm, adaptivity);
   TriangleMesh mesh;
   mesh.vertices.reserve(points.size());
@@ -258,8 +251,21 @@ TriangleMesh meshOf(const Grid& grid, double voxelMm, double adaptivity) {
 }  // namespace
 
 TriangleMesh Stock::mesh(double adaptivity) const {
+  // While the table holds the stock, the mesh is its revolved profile (profile_mesh.cpp):
+  // already as coarse as its tolerances allow, whatever the adaptivity.
+  if (impl_->table)
+    if (std::optional<TriangleMesh> revolved = profileMesh(*impl_->table, impl_->voxel, meshIsoMm(impl_->voxel)))
+      return std::move(*revolved);
   impl_->settle();
   return meshOf(*impl_->grid, impl_->voxel, adaptivity);
+}
+
+TriangleMesh Stock::meshWithVertexEveryVoxel() const {
+  if (impl_->table)
+    if (std::optional<TriangleMesh> revolved =
+            profileMesh(*impl_->table, impl_->voxel, meshIsoMm(impl_->voxel), ProfilePoints::EveryCrossing))
+      return std::move(*revolved);
+  return mesh(0.0);
 }
 
 TriangleMesh Stock::mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int subdivisions) const {
@@ -337,6 +343,8 @@ void Stock::writeVdb(const std::filesystem::path& file, const Stock* part) const
   out.close();
   if (!out) throw std::runtime_error("cannot write " + file.string() + ": " + std::strerror(errno));
 }
+
+bool Stock::isRevolved() const { return impl_->table != nullptr; }
 
 std::uint64_t Stock::activeVoxelCount() const {
   impl_->settle();

@@ -114,10 +114,20 @@ class Stock {
   /// The same at many points at once (one accessor for all): out[i] for points[i].
   void signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const;
 
-  /// Closed surface just inside φ = 0 (0.16 % of a voxel: see stock.cpp), outward normals,
-  /// vertices merged by position as an STL reader merges them. adaptivity 0 keeps every
-  /// voxel's facets; larger values (up to 1) merge facets on flat and gently curved areas.
+  /// Closed surface just inside φ = 0 (0.16 % of a voxel: see stock_grid.hpp), outward
+  /// normals, vertices merged by position as an STL reader merges them. While the stock is
+  /// revolved (isRevolved), its profile revolved about Z, to within a twentieth of a voxel,
+  /// enclosing the profile's own volume (profile_mesh.cpp), its profile simplified (a straight
+  /// face is one band of facets). Otherwise the level set's: adaptivity 0 keeps every voxel's
+  /// facets; larger values (up to 1) merge facets on flat and gently curved areas.
   TriangleMesh mesh(double adaptivity) const;
+  /// The same surface with a vertex about every voxel along it, for values carried by the
+  /// vertices and blended between them (deviation.png's colours, which on a simplified face
+  /// would blend its two ends' colours over a step the drawing has and the part lacks).
+  TriangleMesh meshWithVertexEveryVoxel() const;
+  /// Whether the stock is still a solid of revolution held by radius and Z (only turning cuts
+  /// so far: a thread, a cut with the spindle stopped or a part-off ends it for good).
+  bool isRevolved() const;
   /// The same surface (adaptivity 0) within the box x `low.x()`…`high.x()` × y … × z … (mm)
   /// only, closed by the box's faces where it cuts the material, and `subdivisions` (≥ 1)
   /// times finer than the voxels: φ sampled trilinearly near the surface on voxels that

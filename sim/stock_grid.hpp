@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <memory>
 #include <mutex>
+#include <numbers>
 
 #include "geometry/helical_sweep.hpp"
 #include "geometry/revolved_region.hpp"
@@ -28,6 +29,16 @@ inline constexpr int kNode1Dim = static_cast<int>(Node1::DIM);  // 128
 /// The share of a voxel inside the material: a ramp one voxel wide across φ = 0, exact
 /// for a plane and unbiased on average for any smooth surface.
 inline double insideFraction(float value, double voxel) { return std::clamp(0.5 - value / voxel, 0.0, 1.0); }
+
+/// The level the stock's surface is meshed at (mm): a small irrational fraction of a voxel
+/// inside φ = 0. Where the surface passes exactly through voxel centres (round dimensions on
+/// round voxels: a Φ10 drill at 0.2 mm, a cone's tip on the axis), φ is exactly 0 there, and a
+/// mesher puts the vertices of several cells around such a voxel on its centre: one point,
+/// many vertices. An STL stores positions, so a reader glues them into one, and edges come out
+/// shared by 4–10 triangles. No round dimension lands on this level; it moves those vertices
+/// apart by several float steps of a coordinate (0.16 % of a voxel: 8e-5 mm at 0.05 mm voxels)
+/// while the volume moves by 0.16 % of a voxel layer.
+inline double meshIsoMm(double voxelMm) { return -voxelMm * (std::numbers::sqrt2 - 1.0) / 256.0; }
 
 struct StockGrid {
   StockSpec spec;
