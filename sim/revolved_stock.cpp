@@ -12,7 +12,7 @@
 namespace lathesim::sim {
 namespace {
 
-// The most memory the table may take, as a share of the level set's estimate.
+// The most memory the table may take, as a share of the level set's.
 constexpr double kMaxTableShareOfStock = 0.25;
 
 // A leaf's values and active bits as the table has them, and whether they are one inactive
@@ -97,13 +97,15 @@ void startTable(StockGrid& stock, const RevolvedRegion& bar) {
   // Beyond the bar's band nothing ever changes: the bar's distance there exceeds the band,
   // and a cut never changes air.
   const double airRadius = stock.spec.diameterMm / 2.0 + stock.background + 2.0 * stock.voxel;
-  // The table is dense in Z: on a long thin bar or a large one it could outweigh the level
-  // set, which then stays the only copy.
-  const std::uint64_t bytes = RevolvedTable::bytesFor(box.min().z(), box.max().z(), stock.voxel, airRadius);
-  if (bytes > kMaxTableShareOfStock * static_cast<double>(estimatedStockBytes(stock.spec, stock.voxel))) return;
-  stock.table = std::make_unique<RevolvedTable>(halfWidth, box.min().z(), box.max().z(), stock.voxel,
-                                                stock.background, airRadius);
-  stock.table->write(bar, true);
+  if ((box.max().z() - box.min().z()) / kLeafDim + 2 > RevolvedTable::kMaxChunks) return;
+  auto table = std::make_unique<RevolvedTable>(halfWidth, box.min().z(), box.max().z(), stock.voxel, stock.background,
+                                               airRadius);
+  table->write(bar, true);
+  // The table follows the profile's band, as the level set does its surface's; should it
+  // still outweigh its share of the level set (a bar so short or so fine that the per-class
+  // indices dominate), the level set stays the only copy.
+  if (static_cast<double>(table->bytes()) > kMaxTableShareOfStock * static_cast<double>(stock.grid->memUsage())) return;
+  stock.table = std::move(table);
   stock.table->forgetChanges();  // the level set was built from the same bar
 }
 

@@ -30,9 +30,8 @@ int orbitSize(int i, int j) {
 
 // A column of cells deep inside the region (ψ < −bg − h everywhere): writeColumn's result
 // without the distances. Each open cell takes the filled value u = −bg and goes inactive.
-// Returns the material voxels lost; marks the chunk and its class changed when anything did.
-double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, std::uint8_t& chunkChanged,
-            char& classChanged) {
+// Returns the material voxels lost; sets `changed` when anything did.
+double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool& changed) {
   const float filled = static_cast<float>(w.sign * -w.band);
   const double filledShare = std::clamp(0.5 - filled * w.inverseVoxel, 0.0, 1.0);
   double lost = 0.0;
@@ -41,29 +40,12 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, std::
     lost += std::clamp(0.5 - values[k] * w.inverseVoxel, 0.0, 1.0) - filledShare;
     values[k] = filled;
     activeBits &= static_cast<std::uint8_t>(~(1u << k));
-    chunkChanged = 1;
-    classChanged = 1;
+    changed = true;
   }
   return lost;
 }
 
 }  // namespace
-
-std::uint64_t RevolvedTable::bytesFor(int kFirst, int kLast, double voxelMm, double airRadiusMm) {
-  const std::int64_t nMax = largestSumOfSquares(airRadiusMm, voxelMm);
-  const int rMax = static_cast<int>(std::sqrt(static_cast<double>(nMax))) + 1;
-  std::vector<bool> seen(static_cast<std::size_t>(nMax) + 1, false);
-  std::uint64_t classes = 0;
-  for (int i = 0; i <= rMax; ++i)
-    for (int j = 0; j <= i; ++j) {
-      const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
-      if (n > nMax || seen[n]) continue;
-      seen[n] = true;
-      ++classes;
-    }
-  const std::uint64_t chunks = static_cast<std::uint64_t>((alignDown(kLast) - alignDown(kFirst)) / kChunk + 1);
-  return classes * chunks * (kChunk * sizeof(float) + 2);
-}
 
 RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm)
     : halfWidth_(halfWidth), kBase_(alignDown(kFirst)), chunks_((alignDown(kLast) - alignDown(kFirst)) / kChunk + 1),
@@ -112,10 +94,70 @@ RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelM
       const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
       if (n <= nMax) classOfColumn_[static_cast<std::size_t>(i + halfWidth) * side + (j + halfWidth)] = classOfSum[n];
     }
-  const std::size_t chunkCount = static_cast<std::size_t>(classes) * chunks_;
-  values_.assign(chunkCount * kChunk, bandMm);
-  activeBits_.assign(chunkCount, 0);
-  changed_.assign(chunkCount, 0);
+  std::fill_n(airCells_, kChunk, bandMm);
+  std::fill_n(solidCells_, kChunk, -bandMm);
+  classes_.resize(classes);
+  slots_.assign(static_cast<std::size_t>(classes) * chunks_, kAirChunk);
+  changedWords_ = (chunks_ + 63) / 64;
+  changed_.assign(static_cast<std::size_t>(classes) * changedWords_, 0);
+}
+
+std::uint64_t RevolvedTable::bytes() const {
+  std::uint64_t total = sizeof *this + classes_.capacity() * sizeof(ClassChunks) + slots_.capacity() * sizeof(std::uint16_t) + changed_.capacity() * sizeof(std::uint64_t) +
+                        classOfColumn_.capacity() * sizeof(int) + sumOfSquares_.capacity() * sizeof(std::int64_t) +
+                        (rho_.capacity() + columns_.capacity()) * sizeof(double) + orbitStart_.capacity() * sizeof(int) +
+                        orbits_.capacity() * sizeof(orbits_[0]);
+  for (const ClassChunks& row : classes_)
+    total += row.pool.capacity() * sizeof(MixedChunk) + row.freeSlots.capacity() * sizeof(std::uint16_t);
+  return total;
+}
+
+const float* RevolvedTable::cellsOf(int c, int chunk, std::uint8_t& activeBits) const {
+  const std::uint16_t slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+  if (slot < kSolidChunk) {
+    const MixedChunk& mixed = classes_[c].pool[slot];
+    activeBits = mixed.activeBits;
+    return mixed.values;
+  }
+  activeBits = 0;
+  return slot == kAirChunk ? airCells_ : solidCells_;
+}
+
+void RevolvedTable::open(int c, int chunk, ChunkCells& cells) {
+  cells.slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+  if (cells.slot < kSolidChunk) {
+    MixedChunk& mixed = classes_[c].pool[cells.slot];
+    cells.values = mixed.values;
+    cells.activeBits = &mixed.activeBits;
+    return;
+  }
+  std::fill_n(cells.copy, kChunk, cells.slot == kAirChunk ? band_ : -band_);
+  cells.copyBits = 0;
+  cells.values = cells.copy;
+  cells.activeBits = &cells.copyBits;
+}
+
+void RevolvedTable::store(int c, int chunk, ChunkCells& cells) {
+  ClassChunks& row = classes_[c];
+  std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+  const float first = cells.values[0];
+  bool uniform = *cells.activeBits == 0 && (first == band_ || first == -band_);
+  for (int k = 1; k < kChunk && uniform; ++k) uniform = cells.values[k] == first;
+  if (uniform) {
+    if (slot < kSolidChunk) row.freeSlots.push_back(slot);  // the chunk is a tag again
+    slot = first == band_ ? kAirChunk : kSolidChunk;
+    return;
+  }
+  if (slot < kSolidChunk) return;  // written in place
+  if (!row.freeSlots.empty()) {
+    slot = row.freeSlots.back();
+    row.freeSlots.pop_back();
+  } else {
+    slot = static_cast<std::uint16_t>(row.pool.size());
+    row.pool.emplace_back();
+  }
+  std::memcpy(row.pool[slot].values, cells.values, sizeof cells.copy);
+  row.pool[slot].activeBits = *cells.activeBits;
 }
 
 int RevolvedTable::classOf(int i, int j) const {
@@ -127,29 +169,46 @@ float RevolvedTable::value(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return band_;
-  return values_[static_cast<std::size_t>(c) * chunks_ * kChunk + cell];
+  std::uint8_t bits;
+  return cellsOf(c, cell / kChunk, bits)[cell % kChunk];
 }
 
 bool RevolvedTable::active(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return false;
-  return (activeBits_[chunkIndex(c, cell / kChunk)] >> (cell % kChunk)) & 1;
+  std::uint8_t bits;
+  cellsOf(c, cell / kChunk, bits);
+  return (bits >> (cell % kChunk)) & 1;
 }
 
 const float* RevolvedTable::column(int i, int j, int k0, std::uint8_t& activeBits) const {
   const int c = classOf(i, j);
   const int chunk = (k0 - kBase_) / kChunk;
   if (c == kAir || k0 < kBase_ || chunk >= chunks_) return nullptr;
-  activeBits = activeBits_[chunkIndex(c, chunk)];
-  return cells(c, chunk);
+  return cellsOf(c, chunk, activeBits);
 }
 
 bool RevolvedTable::isGhost(int i, int j, int k, float material) const {
+  // Air never counts as material: only the neighbouring columns in the table are read, a
+  // chunk at a time.
+  const int cellLow = k - 1 - kBase_, cellHigh = k + 1 - kBase_;
   for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int dk = -1; dk <= 1; ++dk)
-        if ((di || dj || dk) && value(i + di, j + dj, k + dk) <= material) return false;
+    for (int dj = -1; dj <= 1; ++dj) {
+      const int c = classOf(i + di, j + dj);
+      if (c == kAir) continue;
+      int chunk = -1;
+      const float* values = nullptr;
+      std::uint8_t bits;
+      for (int cell = std::max(0, cellLow); cell <= std::min(cellHigh, chunks_ * kChunk - 1); ++cell) {
+        if ((di || dj || cell != k - kBase_) == false) continue;
+        if (cell / kChunk != chunk) {
+          chunk = cell / kChunk;
+          values = cellsOf(c, chunk, bits);
+        }
+        if (values[cell % kChunk] <= material) return false;
+      }
+    }
   return true;
 }
 
@@ -226,10 +285,18 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
           if (centre > farReach) continue;
           const bool covered = centre < -farReach;
           for (int c = first; c < last; ++c) {
-            float* values = cells(c, chunk);
+            const int n = c - classLow;
+            ChunkCells cells;
+            open(c, chunk, cells);
+            float* values = cells.values;
             if (covered) {
-              lostOf[c - classLow] += fill(values, activeBits_[chunkIndex(c, chunk)], w, changed_[chunkIndex(c, chunk)],
-                                           changedClass[c - classLow]);
+              bool changed = false;
+              lostOf[n] += fill(values, *cells.activeBits, w, changed);
+              if (changed) {
+                markChanged(c, chunk);
+                changedClass[n] = 1;
+                store(c, chunk, cells);
+              }
               continue;
             }
             bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
@@ -239,14 +306,14 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
             local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
             float before[kChunk];
             std::memcpy(before, values, sizeof before);
-            std::uint8_t& active = activeBits_[chunkIndex(c, chunk)];
+            std::uint8_t& active = *cells.activeBits;
             const std::uint8_t activeBefore = active;
             std::uint8_t ghostBits = 0;
-            const int n = c - classLow;
             lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
             if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
-              changed_[chunkIndex(c, chunk)] = 1;
+              markChanged(c, chunk);
               changedClass[n] = 1;
+              store(c, chunk, cells);
             }
             if (ghostBits && !adding) ghostsOf[n].push_back({chunk, ghostBits});
           }
@@ -306,12 +373,15 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
         }
     }
     for (const Ghost& ghost : ghosts) {
-      float& value = values_[static_cast<std::size_t>(ghost.c) * chunks_ * kChunk + ghost.cell];
+      const int chunk = ghost.cell / kChunk, bit = ghost.cell % kChunk;
+      ChunkCells cells;
+      open(ghost.c, chunk, cells);
+      float& value = cells.values[bit];
       lost += std::clamp(0.5 - value / h_, 0.0, 1.0) * columns_[ghost.c];
       value = band_;
-      const std::size_t chunk = chunkIndex(ghost.c, ghost.cell / kChunk);
-      activeBits_[chunk] &= static_cast<std::uint8_t>(~(1u << (ghost.cell % kChunk)));
-      changed_[chunk] = 1;
+      *cells.activeBits &= static_cast<std::uint8_t>(~(1u << bit));
+      markChanged(ghost.c, chunk);
+      store(ghost.c, chunk, cells);
     }
   }
   result.lostVoxels = lost;
@@ -339,7 +409,7 @@ std::vector<VoxelIndex> RevolvedTable::changedLeaves() {
       std::sort(classes.begin(), classes.end());
       classes.erase(std::unique(classes.begin(), classes.end()), classes.end());
       for (int chunk = changedChunkLow_; chunk <= changedChunkHigh_; ++chunk)
-        if (std::any_of(classes.begin(), classes.end(), [&](int c) { return changed_[chunkIndex(c, chunk)] != 0; }))
+        if (std::any_of(classes.begin(), classes.end(), [&](int c) { return isChanged(c, chunk); }))
           leaves.push_back({x, y, kBase_ + chunk * kChunk});
     }
   forgetChanges();
@@ -348,7 +418,8 @@ std::vector<VoxelIndex> RevolvedTable::changedLeaves() {
 
 void RevolvedTable::forgetChanges() {
   for (int c = changedClassLow_; c <= changedClassHigh_; ++c)
-    std::fill_n(changed_.begin() + chunkIndex(c, changedChunkLow_), changedChunkHigh_ - changedChunkLow_ + 1, 0);
+    for (int word = changedChunkLow_ / 64; word <= changedChunkHigh_ / 64; ++word)
+      changed_[static_cast<std::size_t>(c) * changedWords_ + word] = 0;
   changedClassLow_ = 0;
   changedClassHigh_ = -1;
   changedChunkLow_ = 0;

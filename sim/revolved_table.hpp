@@ -36,8 +36,8 @@ class RevolvedTable {
   /// taken never to change (nothing reaches them: the caller's promise).
   RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm);
 
-  /// Bytes the table would take for these dimensions (to decide whether to keep one).
-  static std::uint64_t bytesFor(int kFirst, int kLast, double voxelMm, double airRadiusMm);
+  /// Bytes the table takes now (its chunks and indices; what the allocator adds aside).
+  std::uint64_t bytes() const;
 
   struct WriteResult {
     double lostVoxels = 0;  // material voxels lost (negative when added)
@@ -72,27 +72,59 @@ class RevolvedTable {
   int firstCellK() const { return kBase_; }
   int chunkCount() const { return chunks_; }
   /// The eight values of class c's chunk `chunk` (Z indices firstCellK() + 8·chunk …).
-  const float* chunkCells(int c, int chunk) const { return cells(c, chunk); }
+  const float* chunkCells(int c, int chunk) const {
+    std::uint8_t bits;
+    return cellsOf(c, chunk, bits);
+  }
   /// Visits the mixed chunks of class c (those not one inactive value at ±band: the others
-  /// are plain air or solid, and no surface passes within them) in ascending Z:
-  /// fn(k0, cells, activeBits) with k0 the Z index of the chunk's first cell.
+  /// are plain air or solid, and no surface passes within them; only these hold cells) in
+  /// ascending Z: fn(k0, cells, activeBits) with k0 the Z index of the chunk's first cell.
   template <class Fn>
   void forEachMixedChunk(int c, Fn&& fn) const {
-    for (int chunk = 0; chunk < chunks_; ++chunk) {
-      const float* values = cells(c, chunk);
-      const std::uint8_t bits = activeBits_[chunkIndex(c, chunk)];
-      bool uniform = bits == 0 && (values[0] >= band_ || values[0] <= -band_);
-      for (int k = 1; k < 8 && uniform; ++k) uniform = values[k] == values[0];
-      if (!uniform) fn(kBase_ + chunk * 8, values, bits);
-    }
+    const ClassChunks& row = classes_[c];
+    const std::uint16_t* slots = &slots_[static_cast<std::size_t>(c) * chunks_];
+    for (int chunk = 0; chunk < chunks_; ++chunk)
+      if (slots[chunk] < kSolidChunk)
+        fn(kBase_ + chunk * kChunkCells, row.pool[slots[chunk]].values, row.pool[slots[chunk]].activeBits);
   }
 
  private:
   static constexpr int kAir = -1;
+  static constexpr int kChunkCells = 8;
+  // Per class and chunk of 8 cells along Z (one leaf's column), two bytes: a tag when the chunk
+  // is uniform (every cell the same inactive value: +band, air, or −band, solid), else the slot
+  // of its cells in the class's pool. So the cells follow the band of the profile, and the
+  // index costs 2 bytes a chunk, not 34 (OpenVDB's tiles, in one dimension).
+  static constexpr std::uint16_t kAirChunk = 0xFFFF, kSolidChunk = 0xFFFE;
+
+ public:
+  /// The most chunks of 8 cells along Z a table can have.
+  static constexpr int kMaxChunks = kSolidChunk;
+
+ private:
+  struct MixedChunk {
+    float values[kChunkCells];
+    std::uint8_t activeBits;
+  };
+  struct ClassChunks {
+    std::vector<MixedChunk> pool;
+    std::vector<std::uint16_t> freeSlots;
+  };
+  // The cells of one chunk while it is written: the pool's, or a copy of a uniform run's.
+  struct ChunkCells {
+    float* values;
+    std::uint8_t* activeBits;
+    std::uint16_t slot;
+    float copy[kChunkCells];
+    std::uint8_t copyBits;
+  };
+
   int classOf(int i, int j) const;
-  float* cells(int c, int chunk) { return &values_[(static_cast<std::size_t>(c) * chunks_ + chunk) * 8]; }
-  const float* cells(int c, int chunk) const { return &values_[(static_cast<std::size_t>(c) * chunks_ + chunk) * 8]; }
-  std::size_t chunkIndex(int c, int chunk) const { return static_cast<std::size_t>(c) * chunks_ + chunk; }
+  const float* cellsOf(int c, int chunk, std::uint8_t& activeBits) const;
+  void open(int c, int chunk, ChunkCells& cells);
+  void store(int c, int chunk, ChunkCells& cells);
+  void markChanged(int c, int chunk) { changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] |= std::uint64_t{1} << (chunk % 64); }
+  bool isChanged(int c, int chunk) const { return (changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] >> (chunk % 64)) & 1; }
   bool isGhost(int i, int j, int k, float material) const;
 
   int halfWidth_;
@@ -100,15 +132,17 @@ class RevolvedTable {
   int chunks_;   // Z chunks of 8 cells per class
   double h_;
   float band_;
+  float airCells_[kChunkCells], solidCells_[kChunkCells];  // a uniform run's cells
   std::vector<int> classOfColumn_;        // (i + halfWidth)·(2·halfWidth + 1) + j + halfWidth → class or kAir
   std::vector<std::int64_t> sumOfSquares_;  // per class, ascending: i² + j²
   std::vector<double> rho_;               // per class: ρ of its widest column (i, j), i ≥ j ≥ 0, j least
   std::vector<double> columns_;           // per class: how many columns it has
   std::vector<int> orbitStart_;           // per class: its columns up to symmetry, orbits_[start…next)
   std::vector<std::pair<int, int>> orbits_;  // (i, j) with i ≥ j ≥ 0
-  std::vector<float> values_;             // per class, per chunk, 8 cells along Z
-  std::vector<std::uint8_t> activeBits_;  // per class and chunk: one bit per cell
-  std::vector<std::uint8_t> changed_;     // per class and chunk: changed since changedLeaves()
+  std::vector<ClassChunks> classes_;
+  std::vector<std::uint16_t> slots_;      // per class, per chunk: kAirChunk, kSolidChunk or a slot in its pool
+  int changedWords_;                      // per class: chunks changed since changedLeaves(), a bit each
+  std::vector<std::uint64_t> changed_;
   int changedClassLow_ = 0, changedClassHigh_ = -1, changedChunkLow_ = 0, changedChunkHigh_ = -1;
 };
 

@@ -190,16 +190,26 @@ double Stock::volumeMm3() const {
   return (leafVoxels + tileVoxels) * h * h * h;
 }
 
-double Stock::signedDistanceAt(const RZ& point) const {
-  impl_->settle();
-  const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
-  return sampler.wsSample(openvdb::Vec3d(point.x(), 0.0, point.y()));
-}
+namespace {
+
+// The table read as a tree by OpenVDB's sampler: the values the grid has once settled.
+struct TableValues {
+  using ValueType = float;
+  const RevolvedTable& table;
+  float getValue(const Coord& ijk) const { return table.value(ijk.x(), ijk.y(), ijk.z()); }
+};
+
+}  // namespace
+
+double Stock::signedDistanceAt(const RZ& point) const { return signedDistanceAt(point.x(), 0.0, point.y()); }
 
 double Stock::signedDistanceAt(double xMm, double yMm, double zMm) const {
-  impl_->settle();
+  const openvdb::Vec3d world(xMm, yMm, zMm);
+  // One point (a move's start, checked for a warning) need not settle the whole grid.
+  if (impl_->table)
+    return openvdb::tools::BoxSampler::sample(TableValues{*impl_->table}, impl_->grid->transform().worldToIndex(world));
   const openvdb::tools::GridSampler<Grid, openvdb::tools::BoxSampler> sampler(*impl_->grid);
-  return sampler.wsSample(openvdb::Vec3d(xMm, yMm, zMm));
+  return sampler.wsSample(world);
 }
 
 void Stock::signedDistancesAt(std::span<const Eigen::Vector3d> points, std::span<double> out) const {

@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "geometry/convex_polygon.hpp"
+#include "sim/revolved_table.hpp"
 #include "sim/simulate.hpp"
 #include "test_moves.hpp"
 
@@ -83,17 +85,60 @@ interp::Toolpath program(const Case& c) {
   return p.toolpath;
 }
 
-// φ at every voxel centre of every third Z layer over the bar (mm).
-std::vector<double> valuesAtVoxelCentres(const Stock& stock, double voxelMm) {
-  const int r = static_cast<int>(std::ceil(10.0 / voxelMm)) + 4;
-  const int zLow = static_cast<int>(std::floor(-16.0 / voxelMm)) - 4, zHigh = static_cast<int>(std::ceil(0.0 / voxelMm)) + 4;
+// φ at every voxel centre of every `step`-th Z layer over the bar (mm).
+std::vector<double> valuesAtVoxelCentres(const Stock& stock, const StockSpec& spec, double voxelMm, int step) {
+  const int r = static_cast<int>(std::ceil(spec.diameterMm / 2.0 / voxelMm)) + 4;
+  const int zLow = static_cast<int>(std::floor((spec.faceZMm - spec.lengthMm) / voxelMm)) - 4;
+  const int zHigh = static_cast<int>(std::ceil(spec.faceZMm / voxelMm)) + 4;
   std::vector<Eigen::Vector3d> points;
-  for (int k = zLow; k <= zHigh; k += 3)
+  for (int k = zLow; k <= zHigh; k += step)
     for (int i = -r; i <= r; ++i)
       for (int j = -r; j <= r; ++j) points.emplace_back(i * voxelMm, j * voxelMm, k * voxelMm);
   std::vector<double> values(points.size());
   stock.signedDistancesAt(points, values);
   return values;
+}
+
+// Simulates `toolpath` on `spec` through the table and voxel by voxel and compares every
+// block's volume, the warnings and collisions, and φ at voxel centres.
+void expectTheSameStock(const StockSpec& spec, double voxelMm, const interp::Toolpath& toolpath, int layerStep) {
+  Stock byTable(spec, voxelMm, RevolvedWrites::Table);
+  Stock byVoxels(spec, voxelMm, RevolvedWrites::Voxels);
+  const SimulationResult table = simulate(toolpath, tools(), byTable);
+  const SimulationResult voxels = simulate(toolpath, tools(), byVoxels);
+
+  // Rounding: the table sums a class's columns as one product, the level set voxel by voxel;
+  // and the columns of a class compute ρ = √(x² + y²) to within an ulp of each other, so a
+  // stored float can round one step apart (1.2e-7 of the band: 3.6e-7 of a voxel's share).
+  const double voxelVolume = voxelMm * voxelMm * voxelMm;
+  ASSERT_EQ(table.blocks.size(), voxels.blocks.size());
+  double removed = 0.0;
+  for (std::size_t b = 0; b < table.blocks.size(); ++b) {
+    EXPECT_NEAR(table.blocks[b].removedMm3, voxels.blocks[b].removedMm3,
+                1e-8 * std::abs(voxels.blocks[b].removedMm3) + 1e-5 * voxelVolume)
+        << "block " << b;
+    removed += voxels.blocks[b].removedMm3;
+  }
+  EXPECT_GT(removed, 100.0);  // the program cuts
+  EXPECT_EQ(table.warnings.size(), voxels.warnings.size());
+  EXPECT_EQ(table.collisions.size(), voxels.collisions.size());
+  EXPECT_NEAR(byTable.volumeMm3(), byVoxels.volumeMm3(), 1e-8 * byVoxels.volumeMm3());
+  EXPECT_EQ(byTable.activeVoxelCount(), byVoxels.activeVoxelCount());
+
+  const std::vector<double> fromTable = valuesAtVoxelCentres(byTable, spec, voxelMm, layerStep);
+  const std::vector<double> fromVoxels = valuesAtVoxelCentres(byVoxels, spec, voxelMm, layerStep);
+  // Every value lies in the band, on both routes: a block split from a tile once took a
+  // heap address's bits as its value (region_writer.cpp, restructure), a leaf of garbage
+  // deep inside the material in about one run in five.
+  const double band = kHalfBandVoxels * voxelMm * (1.0 + 1e-6);
+  double largest = 0.0;
+  std::size_t outOfBand = 0;
+  for (std::size_t n = 0; n < fromTable.size(); ++n) {
+    outOfBand += !(std::abs(fromVoxels[n]) <= band) + !(std::abs(fromTable[n]) <= band);
+    largest = std::max(largest, std::abs(fromTable[n] - fromVoxels[n]));
+  }
+  EXPECT_EQ(outOfBand, 0u);
+  EXPECT_LE(largest, 1e-5 * voxelMm);
 }
 
 TEST(RevolvedTable, GivesWhatTheLevelSetWrittenVoxelByVoxelGives) {
@@ -102,46 +147,101 @@ TEST(RevolvedTable, GivesWhatTheLevelSetWrittenVoxelByVoxelGives) {
   for (const Case& c : cases) {
     SCOPED_TRACE(testing::Message() << "voxel " << c.voxelMm << " mm, bore " << c.boreMm << ", shift " << c.shiftMm
                                     << (c.slotMidway ? ", a slot midway" : ""));
-    const StockSpec spec{20.0, 16.0, 0.0, c.boreMm};
-    const interp::Toolpath toolpath = program(c);
-    Stock byTable(spec, c.voxelMm, RevolvedWrites::Table);
-    Stock byVoxels(spec, c.voxelMm, RevolvedWrites::Voxels);
-    const SimulationResult table = simulate(toolpath, tools(), byTable);
-    const SimulationResult voxels = simulate(toolpath, tools(), byVoxels);
-
-    // Rounding: the table sums a class's columns as one product, the level set voxel by voxel;
-    // and the columns of a class compute ρ = √(x² + y²) to within an ulp of each other, so a
-    // stored float can round one step apart (1.2e-7 of the band: 3.6e-7 of a voxel's share).
-    const double voxelVolume = c.voxelMm * c.voxelMm * c.voxelMm;
-    ASSERT_EQ(table.blocks.size(), voxels.blocks.size());
-    double removed = 0.0;
-    for (std::size_t b = 0; b < table.blocks.size(); ++b) {
-      EXPECT_NEAR(table.blocks[b].removedMm3, voxels.blocks[b].removedMm3,
-                  1e-8 * std::abs(voxels.blocks[b].removedMm3) + 1e-5 * voxelVolume)
-          << "block " << b;
-      removed += voxels.blocks[b].removedMm3;
-    }
-    EXPECT_GT(removed, 100.0);  // the program cuts
-    EXPECT_EQ(table.warnings.size(), voxels.warnings.size());
-    EXPECT_EQ(table.collisions.size(), voxels.collisions.size());
-    EXPECT_NEAR(byTable.volumeMm3(), byVoxels.volumeMm3(), 1e-8 * byVoxels.volumeMm3());
-    EXPECT_EQ(byTable.activeVoxelCount(), byVoxels.activeVoxelCount());
-
-    const std::vector<double> fromTable = valuesAtVoxelCentres(byTable, c.voxelMm);
-    const std::vector<double> fromVoxels = valuesAtVoxelCentres(byVoxels, c.voxelMm);
-    // Every value lies in the band, on both routes: a block split from a tile once took a
-    // heap address's bits as its value (region_writer.cpp, restructure), a leaf of garbage
-    // deep inside the material in about one run in five.
-    const double band = kHalfBandVoxels * c.voxelMm * (1.0 + 1e-6);
-    double largest = 0.0;
-    std::size_t outOfBand = 0;
-    for (std::size_t n = 0; n < fromTable.size(); ++n) {
-      outOfBand += !(std::abs(fromVoxels[n]) <= band) + !(std::abs(fromTable[n]) <= band);
-      largest = std::max(largest, std::abs(fromTable[n] - fromVoxels[n]));
-    }
-    EXPECT_EQ(outOfBand, 0u);
-    EXPECT_LE(largest, 1e-5 * c.voxelMm);
+    expectTheSameStock(StockSpec{20.0, 16.0, 0.0, c.boreMm}, c.voxelMm, program(c), 3);
   }
+}
+
+// A longer bar, Φ44 × 90 with 1 mm to face: faced to X0 twice (whole solid chunks turn to air,
+// chunks near the old face from mixed back to uniform), turned in steps down to Φ12 (the
+// steps' faces and shoulders), a long taper and a face cut through a step. Its table holds
+// cells only near the profile: most of its chunks are uniform, and they change.
+interp::Toolpath steppedBar(double s) {
+  Path p;
+  p.feed({23.0, 0.4 + s}, {-0.5, 0.4 + s});  // G94 to X0: the first face
+  p.feed({23.0, 0.0}, {-0.5, 0.0});          // the finish face, on Z0 exactly
+  for (const auto& [radius, zEnd] : {std::pair{19.0, -70.0}, {15.5 + s, -45.0}, {11.0 + s, -20.0}, {6.0 + s, -8.0}}) {
+    p.feed({radius, 1.0}, {radius, zEnd + s});
+    p.feed({radius, zEnd + s}, {23.0, zEnd + s});  // up the shoulder
+  }
+  p.feed({19.0, -72.0 + s}, {16.0 + s, -85.0});   // a taper into the bar
+  p.feed({23.0, -30.0 + s}, {-0.5, -30.0 + s}, kGroovingTool);  // a face cut through a step, to X0
+  return p.toolpath;
+}
+
+TEST(RevolvedTable, GivesWhatTheLevelSetGivesOnALongerBarFacedAndStepped) {
+  for (const auto& [voxelMm, shiftMm] : {std::pair{0.25, 0.0}, {0.17, 0.043}, {0.31, 0.11}}) {
+    SCOPED_TRACE(testing::Message() << "voxel " << voxelMm << " mm, shift " << shiftMm);
+    expectTheSameStock(StockSpec{44.0, 91.0, 1.0, 0.0}, voxelMm, steppedBar(shiftMm), 7);
+  }
+}
+
+// The table's cells follow the band of the profile: on a Φ40 × 120 bar at 0.1 mm a chunk of 8
+// cells holds cells exactly where some cell lies nearer the surface than the band (worked out
+// here from the rectangle's own distance), and the table weighs a small part of what one float
+// per class and Z cell would.
+TEST(RevolvedTable, HoldsCellsOnlyWhereTheBandIs) {
+  constexpr double kVoxel = 0.1, kRadius = 20.0, kFaceZ = 0.0, kBackZ = -120.0;
+  const float band = static_cast<float>(kHalfBandVoxels * kVoxel);
+  const int halfWidth = static_cast<int>(std::ceil(kRadius / kVoxel)) + 5;
+  const int kFirst = static_cast<int>(std::floor(kBackZ / kVoxel)) - 5, kLast = static_cast<int>(std::ceil(kFaceZ / kVoxel)) + 5;
+  RevolvedTable table(halfWidth, kFirst, kLast, kVoxel, band, kRadius + band + 2.0 * kVoxel);
+  const std::vector<RZ> section{{-kRadius, kBackZ}, {kRadius, kBackZ}, {kRadius, kFaceZ}, {-kRadius, kFaceZ}};
+  table.write(RevolvedRegion({ConvexPolygon::hullOf(section)}), true);
+
+  // The bar's signed distance in the meridian plane at (ρ, z).
+  const auto distance = [&](double rho, double z) {
+    const double outRho = rho - kRadius, outZ = std::max(z - kFaceZ, kBackZ - z);
+    if (outRho <= 0.0 && outZ <= 0.0) return std::max(outRho, outZ);
+    return std::hypot(std::max(outRho, 0.0), std::max(outZ, 0.0));
+  };
+  const int kBase = kFirst & ~7;
+  std::size_t mixed = 0, chunks = 0, surelyMixed = 0, wronglyMixed = 0, wronglyUniform = 0, wronglyValued = 0;
+  // The classes in ascending i² + j² up to the air radius, as the table numbers them; each
+  // read through one of its columns.
+  const double airCells = (kRadius + band + 2.0 * kVoxel) / kVoxel;
+  const int largestSum = static_cast<int>(std::floor(airCells * airCells));
+  std::vector<int> columnOfSum(largestSum + 1, -1);
+  for (int i = 0; i <= halfWidth; ++i)
+    for (int j = 0; j <= i && i * i + j * j <= largestSum; ++j) columnOfSum[i * i + j * j] = i * (halfWidth + 1) + j;
+  int classes = 0;
+  for (int n = 0; n <= largestSum; ++n) {
+    if (columnOfSum[n] < 0) continue;
+    ++classes;
+    const int i = columnOfSum[n] / (halfWidth + 1), j = columnOfSum[n] % (halfWidth + 1);
+    const double rho = std::hypot(i * kVoxel, j * kVoxel);
+      for (int k0 = kBase; k0 <= kLast; k0 += 8) {
+        ++chunks;
+        double nearest = 1e9;
+        for (int k = k0; k < k0 + 8; ++k) nearest = std::min(nearest, std::abs(distance(rho, k * kVoxel)));
+        std::uint8_t bits = 0;
+        const float* cells = table.column(i, j, k0, bits);
+        bool isMixed = bits != 0;
+        for (int k = 0; k < 8 && cells; ++k) isMixed |= cells[k] != cells[0] || std::abs(cells[k]) < band;
+        mixed += isMixed;
+        // Rounding at the band's edge aside, a cell nearer than the band is active.
+        if (nearest < band - 1e-4) {
+          ++surelyMixed;
+          wronglyUniform += !isMixed;
+        } else if (nearest > band + 1e-4) {
+          wronglyMixed += isMixed;
+          // Uniform: air outside the bar, solid inside it.
+          const float expected = distance(rho, (k0 + 4) * kVoxel) > 0.0 ? band : -band;
+          wronglyValued += (cells ? cells[0] : band) != expected;
+        }
+      }
+  }
+  std::size_t stored = 0;
+  for (int c = 0; c < classes; ++c) table.forEachMixedChunk(c, [&](int, const float*, std::uint8_t) { ++stored; });
+  EXPECT_EQ(stored, mixed);  // exactly the chunks not uniform hold cells
+  EXPECT_GT(classes, 1000);
+  EXPECT_GT(surelyMixed, 10000u);
+  EXPECT_EQ(wronglyUniform, 0u);
+  EXPECT_EQ(wronglyMixed, 0u);
+  EXPECT_EQ(wronglyValued, 0u);
+  // A tenth of the chunks at most are mixed here (the band is 0.6 mm of a 20 mm radius).
+  EXPECT_LT(mixed, chunks / 10);
+  const double dense = static_cast<double>(chunks) * (8 * sizeof(float) + 2);
+  EXPECT_LT(static_cast<double>(table.bytes()), dense / 4);
 }
 
 }  // namespace
