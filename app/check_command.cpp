@@ -276,7 +276,7 @@ int checkCommand(const CheckOptions& options) {
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);
-  run->figures.timing.writeS += stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
+  finishStockFile(*run, stockFile);  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options.run, out, clock);
   std::filesystem::path deviationPng;
   if (options.run.outputs.png) {

@@ -13,7 +13,7 @@ int runCommand(const RunOptions& options) {
   if (!run) return job::kExitBadInput;
   std::future<double> stockFile = stageStockFile(*run, out);
   meshPart(*run, clock);
-  run->figures.timing.writeS += stockFile.get();  // before the other files: they are written in one order, whatever the machine's speed
+  finishStockFile(*run, stockFile);  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options, out, clock);
   RunFigures& figures = run->figures;
   figures.peakMemoryMb = peakMemoryMb();

@@ -79,8 +79,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   Stopwatch bar;
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
   figures.timing.barS = bar.lap();
-  constexpr double kMb = 1024.0 * 1024.0;
-  figures.gridMemoryMb = static_cast<double>(run.stock->memoryBytes()) / kMb;
+  noteStockMemory(run);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
   if (auto problem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
@@ -96,8 +95,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     figures.timing.animateS = recording->secondsSpent();
   }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
-  const std::uint64_t finalGridBytes = run.stock->memoryBytes() + (run.partedOff() ? run.partStock().memoryBytes() : 0);
-  figures.gridMemoryMb = std::max(figures.gridMemoryMb, static_cast<double>(finalGridBytes) / kMb);
+  noteStockMemory(run);
   if (run.partedOff()) {  // what is left is the stub and the pieces that fell
     figures.stubVolumeMm3 = figures.finalVolumeMm3;
     for (const auto& off : figures.simulation.partOffs) figures.finalVolumeMm3 += off.volumeMm3;
@@ -142,6 +140,17 @@ void meshPart(SimulatedRun& run, Stopwatch& clock) {
   figures.volumeToleranceMm3 = sim::volumeToleranceMm3(part.areaMm2, figures.voxelMm);
   figures.meshTriangles = run.part.triangles.size();
   figures.timing.meshS = clock.lap();
+}
+
+void noteStockMemory(SimulatedRun& run) {
+  constexpr double kMb = 1024.0 * 1024.0;
+  const std::uint64_t bytes = run.stock->memoryBytes() + (run.partedOff() ? run.partStock().memoryBytes() : 0);
+  run.figures.gridMemoryMb = std::max(run.figures.gridMemoryMb, static_cast<double>(bytes) / kMb);
+}
+
+void finishStockFile(SimulatedRun& run, std::future<double>& stockFile) {
+  run.figures.timing.writeS += stockFile.get();
+  noteStockMemory(run);  // writing it may have built the level set
 }
 
 std::future<double> stageStockFile(const SimulatedRun& run, StagedOutput& out) {

@@ -63,9 +63,14 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
 /// volumes, triangles, time).
 void meshPart(SimulatedRun& run, Stopwatch& clock);
 
-/// Stages stock.vdb in a thread of its own, while the part is meshed: get() the future
-/// before staging the other files (it rethrows a failure); it gives the seconds writing took.
+/// Stages stock.vdb in a thread of its own, while the part is meshed: finishStockFile before
+/// staging the other files.
 std::future<double> stageStockFile(const SimulatedRun& run, StagedOutput& out);
+/// Waits for stock.vdb (rethrowing a failure), adds its time to the writing, and notes the
+/// stock's memory again: writing it may have built the level set (noteStockMemory).
+void finishStockFile(SimulatedRun& run, std::future<double>& stockFile);
+/// Raises figures.gridMemoryMb to what the stock (and the part taken from it) hold now.
+void noteStockMemory(SimulatedRun& run);
 
 /// Stages the run's other files into `out` (the pictures as options.pictures asks, the exports;
 /// stub.stl too after a part-off): the pictures are drawn (timing.renderS) while the files are

@@ -13,17 +13,27 @@ part=parts/seed000-face-taper
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
+# The floor: building the bar as a level set once from its analytic distance (Google
+# Benchmark: BM_Floor for seed 000's bar, BM_LargeBarFloor for the large one; wall time, mean
+# of three), measured in this run just before the run it is the floor of.
+floor_of() {  # benchmark, voxel in mm
+  local um
+  um=$(awk -v v="$2" 'BEGIN { printf "%d", v * 1000 + 0.5 }')
+  build/lathesim_bench --benchmark_filter="^$1/$um\$" --benchmark_format=csv 2>/dev/null |
+    awk -F, -v name="\"$1/$um/" 'index($1, name) == 1 { print $3 }'
+}
+
 # One `lathesim run` with every output: each step's own wall time from its report.json (steps
 # overlap: stock.vdb is written while the part is meshed, the pictures drawn while the files
 # are written), the whole process's wall and CPU time (user + sys) from outside, and each as a
-# ratio to the floor measured in the same run: building the bar's level set once (timing_s.bar).
+# ratio to the floor.
 field() { grep -o "\"$1\": [-0-9.e+]*" "$tmp/run/report.json" | head -1 | awk '{print $2}'; }
-run_figures() {  # label, then the run's arguments
-  local label=$1 TIMEFORMAT='%R %U %S' times
-  shift
+run_figures() {  # label, floor in seconds, then the run's arguments
+  local label=$1 floor=$2 TIMEFORMAT='%R %U %S' times
+  shift 2
   rm -rf "$tmp/run"
   times=$( { time build/lathesim run "$@" --out "$tmp/run" >/dev/null 2>&1; } 2>&1 )
-  awk -v label="$label" -v floor="$(field bar)" -v simulate="$(field simulate)" -v mesh="$(field mesh)" \
+  awk -v label="$label" -v floor="$floor" -v simulate="$(field simulate)" -v mesh="$(field mesh)" \
       -v render="$(field render)" -v write="$(field write)" -v times="$times" 'BEGIN {
     split(times, t, " ")
     n = split(simulate " " mesh " " render " " write " " t[1] " " t[2] + t[3], step, " ")
@@ -44,10 +54,10 @@ header() {
   printf '%-10s %8s  %14s  %14s  %14s  %14s  %14s  %14s\n' voxel_mm floor_s simulate mesh render write "whole (wall)" "whole (cpu)"
 }
 
-echo "== lathesim run on $part, every output: seconds and ratio to the floor (building the bar once, same run)"
+echo "== lathesim run on $part, every output: seconds and ratio to the floor (building the bar's level set once, same run)"
 header
 for voxel in 0.1 0.05; do
-  run_figures $voxel $part/program.nc --setup $part/setup.toml --voxel $voxel
+  run_figures $voxel "$(floor_of BM_Floor $voxel)" $part/program.nc --setup $part/setup.toml --voxel $voxel
 done
 closed=closed
 grep -q "not closed" "$tmp/run/report.json" && closed="NOT CLOSED"
@@ -83,7 +93,7 @@ number = 1
 polygon = [[0, 0], [10, 1], [12, 12], [1, 10]]
 TOML
 header
-run_figures 0.2 "$tmp/large.nc" --setup "$tmp/large.toml" --voxel 0.2
+run_figures 0.2 "$(floor_of BM_LargeBarFloor 0.2)" "$tmp/large.nc" --setup "$tmp/large.toml" --voxel 0.2
 echo "  $(memory_line) (asked <= 2.5x); $(volume_line)"
 
 echo

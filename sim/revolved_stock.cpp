@@ -14,6 +14,9 @@ namespace {
 
 // The most memory the table may take, as a share of the level set's.
 constexpr double kMaxTableShareOfStock = 0.25;
+// The most air voxels the table keeps apart (about 100 bytes each) before it hands the stock to
+// the level set: seed 000 makes 324.
+constexpr std::size_t kMaxAirVoxels = std::size_t{1} << 18;
 
 // A leaf's values and active bits as the table has them, and whether they are one inactive
 // value at or beyond the band (then the leaf is a tile, as the writer prunes it).
@@ -34,6 +37,7 @@ void imageOf(const RevolvedTable& table, const VoxelIndex& origin, float band, L
         std::fill_n(image.values + column, kLeafDim, band);
       image.activeBits[column >> 3] = bits;
     }
+  table.applyAirVoxels(origin, image.values, image.activeBits);
   const float first = image.values[0];
   image.uniform = std::abs(first) >= band;
   for (std::size_t n = 0; n < Leaf::NUM_VALUES / 8 && image.uniform; ++n) image.uniform = image.activeBits[n] == 0;
@@ -45,6 +49,12 @@ void imageOf(const RevolvedTable& table, const VoxelIndex& origin, float band, L
 void StockGrid::settle() const {
   if (!table) return;
   const std::lock_guard<std::mutex> lock(settling_);
+  if (unbuiltBar_) {
+    // The level set is a copy of the table's stock, made when first read: its bar, then what
+    // the table changed since (the table forgot the bar's own changes when it wrote it).
+    writeRegion(const_cast<StockGrid&>(*this), *unbuiltBar_, RegionWrite::Add);
+    unbuiltBar_.reset();
+  }
   const std::vector<VoxelIndex> origins = table->changedLeaves();
   // A batch at a time: the images are computed in parallel, the tree is changed serially.
   constexpr std::size_t kBatch = 2048;
@@ -77,36 +87,31 @@ void StockGrid::leaveTable() {
 }
 
 double StockGrid::writeThroughTable(const RevolvedRegion& region, const RevolvedRegion* changes) {
-  RevolvedTable::WriteResult result = table->write(region, false, changes);
-  if (!result.ghostsLeft.empty()) {
-    // Ghosts only some of a class's columns have: the stock is no longer revolved there.
-    leaveTable();
-    auto accessor = grid->getAccessor();
-    for (const VoxelIndex& v : result.ghostsLeft) {
-      const Coord voxel(v.i, v.j, v.k);
-      result.lostVoxels += insideFraction(accessor.getValue(voxel), this->voxel);
-      accessor.setValueOff(voxel, background);
-    }
-  }
-  return result.lostVoxels * voxel * voxel * voxel;
+  const double lost = table->write(region, false, changes);
+  tableInsideVoxels -= lost;
+  if (table->airVoxelCount() > kMaxAirVoxels) leaveTable();  // settling makes them air in the level set
+  return lost * voxel * voxel * voxel;
 }
 
-void startTable(StockGrid& stock, const RevolvedRegion& bar) {
-  const openvdb::CoordBBox& box = stock.materialBounds;
+bool StockGrid::startTable(const RevolvedRegion& bar) {
+  const openvdb::CoordBBox& box = materialBounds;
   const int halfWidth = std::max({-box.min().x(), box.max().x(), -box.min().y(), box.max().y()});
   // Beyond the bar's band nothing ever changes: the bar's distance there exceeds the band,
   // and a cut never changes air.
-  const double airRadius = stock.spec.diameterMm / 2.0 + stock.background + 2.0 * stock.voxel;
-  if ((box.max().z() - box.min().z()) / kLeafDim + 2 > RevolvedTable::kMaxChunks) return;
-  auto table = std::make_unique<RevolvedTable>(halfWidth, box.min().z(), box.max().z(), stock.voxel, stock.background,
-                                               airRadius);
-  table->write(bar, true);
+  const double airRadius = spec.diameterMm / 2.0 + background + 2.0 * voxel;
+  if ((box.max().z() - box.min().z()) / kLeafDim + 2 > RevolvedTable::kMaxChunks) return false;
+  auto built = std::make_unique<RevolvedTable>(halfWidth, box.min().z(), box.max().z(), voxel, background, airRadius);
+  const double added = -built->write(bar, true);
   // The table follows the profile's band, as the level set does its surface's; should it
   // still outweigh its share of the level set (a bar so short or so fine that the per-class
-  // indices dominate), the level set stays the only copy.
-  if (static_cast<double>(table->bytes()) > kMaxTableShareOfStock * static_cast<double>(stock.grid->memUsage())) return;
-  stock.table = std::move(table);
-  stock.table->forgetChanges();  // the level set was built from the same bar
+  // indices dominate), the level set is built now and stays the only copy.
+  if (static_cast<double>(built->bytes()) > kMaxTableShareOfStock * static_cast<double>(estimatedBarBytes(spec, voxel)))
+    return false;
+  built->forgetChanges();  // the level set, when built, starts from the same bar
+  table = std::move(built);
+  tableInsideVoxels = added;
+  unbuiltBar_ = bar;
+  return true;
 }
 
 }  // namespace lathesim::sim

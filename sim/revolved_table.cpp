@@ -97,6 +97,7 @@ RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelM
   std::fill_n(airCells_, kChunk, bandMm);
   std::fill_n(solidCells_, kChunk, -bandMm);
   classes_.resize(classes);
+  classHasAirVoxels_.assign(classes, 0);
   slots_.assign(static_cast<std::size_t>(classes) * chunks_, kAirChunk);
   changedWords_ = (chunks_ + 63) / 64;
   changed_.assign(static_cast<std::size_t>(classes) * changedWords_, 0);
@@ -169,6 +170,7 @@ float RevolvedTable::value(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return band_;
+  if (classHasAirVoxels_[c] && airVoxels_.count(keyOf(i, j, k))) return band_;
   std::uint8_t bits;
   return cellsOf(c, cell / kChunk, bits)[cell % kChunk];
 }
@@ -177,9 +179,56 @@ bool RevolvedTable::active(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return false;
+  if (classHasAirVoxels_[c] && airVoxels_.count(keyOf(i, j, k))) return false;
   std::uint8_t bits;
   cellsOf(c, cell / kChunk, bits);
   return (bits >> (cell % kChunk)) & 1;
+}
+
+std::uint64_t RevolvedTable::keyOf(int i, int j, int k) {
+  // 21 bits for i and j, 22 for k: a stock spans at most a million voxels (stock.cpp).
+  return (static_cast<std::uint64_t>(i + (1 << 20)) << 43) | (static_cast<std::uint64_t>(j + (1 << 20)) << 22) |
+         static_cast<std::uint64_t>(k + (1 << 21));
+}
+
+int RevolvedTable::airVoxelsIn(int c, int cell) const {
+  if (!classHasAirVoxels_[c]) return 0;
+  const auto found = airVoxelsInCell_.find(cellKeyOf(c, cell));
+  return found == airVoxelsInCell_.end() ? 0 : found->second;
+}
+
+void RevolvedTable::addAirVoxel(const VoxelIndex& v, int c, int cell) {
+  if (!airVoxels_.insert(keyOf(v.i, v.j, v.k)).second) return;
+  ++airVoxelsInCell_[cellKeyOf(c, cell)];
+  airVoxelsInLeaf_[keyOf(v.i & ~(kChunk - 1), v.j & ~(kChunk - 1), v.k & ~(kChunk - 1))].push_back(v);
+  classHasAirVoxels_[c] = 1;
+}
+
+// The class's cell is air now: its air voxels are air as it is.
+void RevolvedTable::dropAirVoxels(int c, int cell) {
+  if (airVoxelsInCell_.erase(cellKeyOf(c, cell)) == 0) return;
+  const int k = kBase_ + cell;
+  for (int o = orbitStart_[c]; o < orbitStart_[c + 1]; ++o)
+    for (const auto& [x, y] : {orbits_[o], std::pair{orbits_[o].second, orbits_[o].first}})
+      for (const int sx : {1, -1})
+        for (const int sy : {1, -1}) {
+          const int i = sx * x, j = sy * y;
+          if (airVoxels_.erase(keyOf(i, j, k)) == 0) continue;
+          auto leaf = airVoxelsInLeaf_.find(keyOf(i & ~(kChunk - 1), j & ~(kChunk - 1), k & ~(kChunk - 1)));
+          std::erase_if(leaf->second, [&](const VoxelIndex& v) { return v.i == i && v.j == j && v.k == k; });
+          if (leaf->second.empty()) airVoxelsInLeaf_.erase(leaf);
+        }
+}
+
+void RevolvedTable::applyAirVoxels(const VoxelIndex& origin, float* values, std::uint8_t* activeBits) const {
+  if (airVoxelsInLeaf_.empty()) return;
+  const auto found = airVoxelsInLeaf_.find(keyOf(origin.i, origin.j, origin.k));
+  if (found == airVoxelsInLeaf_.end()) return;
+  for (const VoxelIndex& v : found->second) {
+    const int column = ((v.i - origin.i) << 6) | ((v.j - origin.j) << 3);
+    values[column + (v.k - origin.k)] = band_;
+    activeBits[column >> 3] &= static_cast<std::uint8_t>(~(1u << (v.k - origin.k)));
+  }
 }
 
 const float* RevolvedTable::column(int i, int j, int k0, std::uint8_t& activeBits) const {
@@ -212,10 +261,8 @@ bool RevolvedTable::isGhost(int i, int j, int k, float material) const {
   return true;
 }
 
-RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bool adding,
-                                                const RevolvedRegion* changes) {
-  WriteResult result;
-  if (region.empty() || (changes && changes->empty()) || rho_.empty()) return result;
+double RevolvedTable::write(const RevolvedRegion& region, bool adding, const RevolvedRegion* changes) {
+  if (region.empty() || (changes && changes->empty()) || rho_.empty()) return 0.0;
   const ColumnWrite w = ColumnWrite::of(adding ? 1.0 : -1.0, h_, band_);
   // A cell changes only where ψ < bg, and is a ghost candidate only where |ψ| < h.
   const double reach = band_ + h_;
@@ -233,7 +280,7 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
   const int classHigh = static_cast<int>(std::upper_bound(rho_.begin(), rho_.end(), rhoHigh) - rho_.begin()) - 1;
   const int chunkLow = std::max(0, static_cast<int>(std::floor((zLow / h_ - kBase_) / kChunk)));
   const int chunkHigh = std::min(chunks_ - 1, static_cast<int>(std::floor((zHigh / h_ - kBase_) / kChunk)));
-  if (classLow > classHigh || chunkLow > chunkHigh) return result;
+  if (classLow > classHigh || chunkLow > chunkHigh) return 0.0;
 
   struct Candidates {
     int chunk;
@@ -241,6 +288,8 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
   };
   const int classCount = classHigh - classLow + 1;
   std::vector<double> lostOf(classCount, 0.0);
+  // Air voxels lost nothing when their class's cell did: per class, voxels to take back.
+  std::vector<double> airVoxelsLost(classCount, 0.0);
   std::vector<std::vector<Candidates>> ghostsOf(adding ? 0 : classCount);
   std::vector<char> changedClass(classCount, 0);
   // Classes come in bins one voxel wide in ρ (at 22 mm about a hundred classes a bin): what
@@ -286,13 +335,34 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
           const bool covered = centre < -farReach;
           for (int c = first; c < last; ++c) {
             const int n = c - classLow;
+            if (covered) {  // a uniform chunk turns over whole: what fill() would do, without its cells
+              std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+              if (slot == (adding ? kSolidChunk : kAirChunk)) continue;  // already so
+              if (slot == (adding ? kAirChunk : kSolidChunk)) {  // no air voxels: they are in mixed chunks
+                slot = adding ? kSolidChunk : kAirChunk;
+                lostOf[n] += adding ? -kChunk : kChunk;
+                markChanged(c, chunk);
+                changedClass[n] = 1;
+                continue;
+              }
+            }
             ChunkCells cells;
             open(c, chunk, cells);
             float* values = cells.values;
+            float before[kChunk];
+            std::memcpy(before, values, sizeof before);
+            const auto takeBackAirVoxels = [&] {
+              if (!classHasAirVoxels_[c]) return;
+              for (int k = 0; k < kChunk; ++k)
+                if (const int air = airVoxelsIn(c, chunk * kChunk + k))
+                  airVoxelsLost[n] += air * (std::clamp(0.5 - before[k] * w.inverseVoxel, 0.0, 1.0) -
+                                             std::clamp(0.5 - values[k] * w.inverseVoxel, 0.0, 1.0));
+            };
             if (covered) {
               bool changed = false;
               lostOf[n] += fill(values, *cells.activeBits, w, changed);
               if (changed) {
+                takeBackAirVoxels();
                 markChanged(c, chunk);
                 changedClass[n] = 1;
                 store(c, chunk, cells);
@@ -304,13 +374,12 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
             if (!anyOpen) continue;
             double psi[kChunk];
             local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
-            float before[kChunk];
-            std::memcpy(before, values, sizeof before);
             std::uint8_t& active = *cells.activeBits;
             const std::uint8_t activeBefore = active;
             std::uint8_t ghostBits = 0;
             lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
             if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
+              takeBackAirVoxels();
               markChanged(c, chunk);
               changedClass[n] = 1;
               store(c, chunk, cells);
@@ -323,7 +392,7 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
   });
 
   double lost = 0.0;
-  for (int n = 0; n < classCount; ++n) lost += lostOf[n] * columns_[classLow + n];
+  for (int n = 0; n < classCount; ++n) lost += lostOf[n] * columns_[classLow + n] - airVoxelsLost[n];
   if (std::any_of(changedClass.begin(), changedClass.end(), [](char changed) { return changed != 0; })) {
     changedClassLow_ = changedClassHigh_ < changedClassLow_ ? classLow : std::min(changedClassLow_, classLow);
     changedClassHigh_ = std::max(changedClassHigh_, classHigh);
@@ -339,7 +408,8 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
     struct Ghost {
       int c, cell;
     };
-    std::vector<Ghost> ghosts;
+    std::vector<Ghost> ghosts;                            // the whole class's cell
+    std::vector<std::pair<Ghost, VoxelIndex>> airVoxels;  // some of its columns only
     for (int n = 0; n < classCount; ++n) {
       const int c = classLow + n;
       for (const Candidates& candidates : ghostsOf[n])
@@ -356,36 +426,40 @@ RevolvedTable::WriteResult RevolvedTable::write(const RevolvedRegion& region, bo
             ghosts.push_back({c, cell});
             continue;
           }
-          // The class's columns disagree: the voxels that are ghosts are left to the level set.
+          // The class's columns disagree: the voxels of the ghosts' orbits become air voxels.
           for (int o = orbitStart_[c]; o < orbitStart_[c + 1]; ++o) {
             const auto [i, j] = orbits_[o];
             if (!isGhost(i, j, k, material)) continue;
             for (const auto& [x, y] : {std::pair{i, j}, {j, i}})
-              for (int sx : {1, -1})
-                for (int sy : {1, -1}) {
-                  const VoxelIndex v{sx * x, sy * y, k};
-                  const bool repeated = std::any_of(result.ghostsLeft.begin(), result.ghostsLeft.end(), [&](const VoxelIndex& u) {
-                    return u.i == v.i && u.j == v.j && u.k == v.k;
-                  });
-                  if (!repeated) result.ghostsLeft.push_back(v);
-                }
+              for (const int sx : {1, -1})
+                for (const int sy : {1, -1}) airVoxels.push_back({{c, cell}, {sx * x, sy * y, k}});
           }
         }
+    }
+    const auto valueOf = [this](const Ghost& ghost) {
+      std::uint8_t bits;
+      return cellsOf(ghost.c, ghost.cell / kChunk, bits)[ghost.cell % kChunk];
+    };
+    for (const auto& [ghost, voxel] : airVoxels) {
+      if (airVoxels_.count(keyOf(voxel.i, voxel.j, voxel.k))) continue;  // an orbit's image seen twice
+      lost += std::clamp(0.5 - valueOf(ghost) / h_, 0.0, 1.0);
+      addAirVoxel(voxel, ghost.c, ghost.cell);
+      markChanged(ghost.c, ghost.cell / kChunk);
     }
     for (const Ghost& ghost : ghosts) {
       const int chunk = ghost.cell / kChunk, bit = ghost.cell % kChunk;
       ChunkCells cells;
       open(ghost.c, chunk, cells);
       float& value = cells.values[bit];
-      lost += std::clamp(0.5 - value / h_, 0.0, 1.0) * columns_[ghost.c];
+      lost += std::clamp(0.5 - value / h_, 0.0, 1.0) * (columns_[ghost.c] - airVoxelsIn(ghost.c, ghost.cell));
+      dropAirVoxels(ghost.c, ghost.cell);
       value = band_;
       *cells.activeBits &= static_cast<std::uint8_t>(~(1u << bit));
       markChanged(ghost.c, chunk);
       store(ghost.c, chunk, cells);
     }
   }
-  result.lostVoxels = lost;
-  return result;
+  return lost;
 }
 
 std::vector<VoxelIndex> RevolvedTable::changedLeaves() {

@@ -14,10 +14,16 @@
 //
 // A ghost (region_writer.cpp, step 4) is decided by a voxel's 26 neighbours, and columns of one
 // class can have neighbours of different classes: the table asks each of the class's columns
-// up to symmetry. When they disagree the stock stops being revolved there; the write says so
-// and the caller writes the level set and leaves the table.
+// up to symmetry. When they disagree, the voxels found ghosts become *air voxels*: kept apart,
+// air whatever their class's cell says. That cell is then not material (a ghost candidate lies
+// above the material ceiling) and later removals only raise it, so it stays not material: no
+// ghost verdict of a neighbour changes, and an air voxel is air for good. The table stays the
+// stock, voxel for voxel as the level set's writer would leave it (seed 000 makes 324 such
+// voxels in one write), and its volume counts them once.
 
 #include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "geometry/revolved_region.hpp"
@@ -39,23 +45,25 @@ class RevolvedTable {
   /// Bytes the table takes now (its chunks and indices; what the allocator adds aside).
   std::uint64_t bytes() const;
 
-  struct WriteResult {
-    double lostVoxels = 0;  // material voxels lost (negative when added)
-    /// Ghosts the table could not clear (the class's columns disagreed): voxels to clear in the
-    /// level set once it is written from the table; the table is then no longer the stock.
-    std::vector<VoxelIndex> ghostsLeft;
-  };
   /// Writes the revolved `region`: adding (φ ← min(φ, ψ)) or removing (φ ← max(φ, −ψ)).
   /// `changes`, when given, bounds where the write can change anything (cut_history.hpp).
-  WriteResult write(const RevolvedRegion& region, bool adding, const RevolvedRegion* changes = nullptr);
+  /// Returns the material voxels lost (negative when added).
+  double write(const RevolvedRegion& region, bool adding, const RevolvedRegion* changes = nullptr);
 
-  /// The value and active bit of voxel (i, j, k): those of its class, or air beyond the table.
+  /// The value and active bit of voxel (i, j, k): those of its class (air for an air voxel), or
+  /// air beyond the table.
   float value(int i, int j, int k) const;
   bool active(int i, int j, int k) const;
 
-  /// The eight cells of column (i, j) from Z index k0 (a multiple of 8) and their active bits;
-  /// nullptr for a column that is always air (beyond the table or its air radius).
+  /// The eight cells of column (i, j)'s class from Z index k0 (a multiple of 8) and their
+  /// active bits; nullptr for a column that is always air (beyond the table or its air radius).
+  /// Air voxels are not applied: see applyAirVoxels.
   const float* column(int i, int j, int k0, std::uint8_t& activeBits) const;
+  /// Makes the air voxels of the 8³ leaf at `origin` air in its image: `values` and
+  /// `activeBits` laid out as OpenVDB's leaf ((i << 6) | (j << 3) | k; a byte per column).
+  void applyAirVoxels(const VoxelIndex& origin, float* values, std::uint8_t* activeBits) const;
+  /// How many air voxels there are (each kept apart: see the top of this file).
+  std::size_t airVoxelCount() const { return airVoxels_.size(); }
 
   /// The origins of the 8³ leaf-aligned blocks of voxels in which some value or active bit
   /// changed since the last call (which are then forgotten).
@@ -64,7 +72,9 @@ class RevolvedTable {
   void forgetChanges();
 
   // Read access for the mesh drawn from the table's profile (profile_mesh.cpp): the classes
-  // in ascending ρ, each a column of cells along Z in chunks of 8 (one leaf's column).
+  // in ascending ρ, each a column of cells along Z in chunks of 8 (one leaf's column). Air
+  // voxels are not in it: each is one column of its class at one Z, at most a voxel off the
+  // surface, and not material either way.
   int classCount() const { return static_cast<int>(rho_.size()); }
   /// ρ of class c's columns (mm).
   double classRadiusMm(int c) const { return rho_[c]; }
@@ -126,6 +136,12 @@ class RevolvedTable {
   void markChanged(int c, int chunk) { changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] |= std::uint64_t{1} << (chunk % 64); }
   bool isChanged(int c, int chunk) const { return (changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] >> (chunk % 64)) & 1; }
   bool isGhost(int i, int j, int k, float material) const;
+  // Air voxels (see the top of this file).
+  static std::uint64_t keyOf(int i, int j, int k);
+  std::uint64_t cellKeyOf(int c, int cell) const { return static_cast<std::uint64_t>(c) * chunks_ * kChunkCells + cell; }
+  int airVoxelsIn(int c, int cell) const;
+  void addAirVoxel(const VoxelIndex& v, int c, int cell);
+  void dropAirVoxels(int c, int cell);
 
   int halfWidth_;
   int kBase_;    // Z index of the first cell: a multiple of 8, as the level set's leaves
@@ -144,6 +160,10 @@ class RevolvedTable {
   int changedWords_;                      // per class: chunks changed since changedLeaves(), a bit each
   std::vector<std::uint64_t> changed_;
   int changedClassLow_ = 0, changedClassHigh_ = -1, changedChunkLow_ = 0, changedChunkHigh_ = -1;
+  std::unordered_set<std::uint64_t> airVoxels_;                      // keyOf(i, j, k)
+  std::unordered_map<std::uint64_t, int> airVoxelsInCell_;           // cellKeyOf(c, cell) → how many
+  std::unordered_map<std::uint64_t, std::vector<VoxelIndex>> airVoxelsInLeaf_;  // keyOf(leaf origin) → its
+  std::vector<std::uint8_t> classHasAirVoxels_;                      // per class
 };
 
 }  // namespace lathesim::sim

@@ -43,9 +43,12 @@ void initializeOpenVdbOnce() {
 
 }  // namespace
 
+std::uint64_t estimatedBarBytes(const StockSpec& spec, double voxelMm) {
+  return static_cast<std::uint64_t>(surfaceAreaMm2(spec) / (voxelMm * voxelMm) * kBytesPerSurfaceVoxel);
+}
+
 std::uint64_t estimatedStockBytes(const StockSpec& spec, double voxelMm) {
-  return static_cast<std::uint64_t>(surfaceAreaMm2(spec) / (voxelMm * voxelMm) * kBytesPerSurfaceVoxel *
-                                    kSurfaceGrowthAllowance);
+  return static_cast<std::uint64_t>(static_cast<double>(estimatedBarBytes(spec, voxelMm)) * kSurfaceGrowthAllowance);
 }
 
 std::optional<std::string> gridProblem(const StockSpec& spec, double voxelMm) {
@@ -138,8 +141,8 @@ Stock::Stock(const StockSpec& spec, double voxelMm, RevolvedWrites writes)
   // interior as tiles the bar covers entirely. Nothing is left for a flood fill to guess
   // (OpenVDB's signed flood fill reads a 128³ block with no leaves left in it as air).
   const RevolvedRegion bar({ConvexPolygon::hullOf(rectangle)});
+  if (writes == RevolvedWrites::Table && impl_->startTable(bar)) return;  // the level set waits until read
   writeRegion(*impl_, bar, RegionWrite::Add);
-  if (writes == RevolvedWrites::Table) startTable(*impl_, bar);
 }
 
 Stock::~Stock() = default;
@@ -169,9 +172,9 @@ double Stock::remove(const HelicalSweep& sweep, const ThreadChangeBound& changes
 }
 
 double Stock::volumeMm3() const {
-  impl_->settle();
-  const Tree& tree = impl_->grid->tree();
   const double h = impl_->voxel;
+  if (impl_->table) return impl_->tableInsideVoxels * h * h * h;
+  const Tree& tree = impl_->grid->tree();
   std::vector<const Leaf*> leaves;
   leaves.reserve(tree.leafCount());
   for (auto it = tree.cbeginLeaf(); it; ++it) leaves.push_back(&*it);
@@ -351,8 +354,7 @@ std::uint64_t Stock::activeVoxelCount() const {
   return impl_->grid->activeVoxelCount();
 }
 std::uint64_t Stock::memoryBytes() const {
-  impl_->settle();
-  return impl_->grid->memUsage();
+  return impl_->grid->memUsage() + (impl_->table ? impl_->table->bytes() : 0);
 }
 
 }  // namespace lathesim::sim

@@ -69,7 +69,9 @@ enum class RevolvedWrites { Table, Voxels };
 
 class Stock {
  public:
-  /// Builds the bar's level set leaf by leaf from its analytic distance.
+  /// Builds the bar from its analytic distance: into the revolved table (RevolvedWrites::Table,
+  /// when the table is small beside the level set), the level set then built from it when
+  /// first read; or into the level set, leaf by leaf.
   Stock(const StockSpec& spec, double voxelMm, RevolvedWrites writes = RevolvedWrites::Table);
   ~Stock();
   Stock(const Stock&) = delete;
@@ -156,6 +158,9 @@ class Stock {
   void writeVdb(const std::filesystem::path& file, const Stock* part = nullptr) const;
 
   std::uint64_t activeVoxelCount() const;
+  /// Bytes the stock holds now: its table while it is revolved, and its level set as far as it
+  /// is built (it is built when first read: a mesh or a volume do not read it while revolved;
+  /// stock.vdb, a thread or a slot do).
   std::uint64_t memoryBytes() const;
 
  private:

@@ -8,6 +8,7 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <optional>
 
 #include "geometry/helical_sweep.hpp"
 #include "geometry/revolved_region.hpp"
@@ -47,13 +48,22 @@ struct StockGrid {
   Grid::Ptr grid;
   openvdb::CoordBBox materialBounds;  // index box that contains all material, now and later
   /// While the stock is a solid of revolution, the table holds it (revolved_table.hpp) and
-  /// `grid` lags behind until settle(); null once something not revolved was written.
+  /// `grid` lags behind until settle(): it is not even built until something reads it. Null
+  /// once something not revolved was written.
   std::unique_ptr<RevolvedTable> table;
+  /// While the table holds the stock: its material voxels, Σ clamp(½ − φ/h, 0, 1) over every
+  /// voxel, kept as the writes report what they lose (the volume needs no pass over anything).
+  double tableInsideVoxels = 0.0;
 
   StockGrid(const StockSpec& s, double voxelMm);
 
-  /// Writes into `grid` what the table changed since the last settle (thread-safe: readers
-  /// that share a const stock may each call it). Nothing to do without a table.
+  /// Gives a stock not built yet the bar as a table (revolved_table.hpp), when the table's
+  /// memory is small beside what the level set's would be; the level set is then built at the
+  /// first settle. Returns false, leaving the stock as it was, when the table is not kept.
+  bool startTable(const RevolvedRegion& bar);
+  /// Writes into `grid` what the table changed since the last settle, building the level set
+  /// first if it was never built (thread-safe: readers that share a const stock may each call
+  /// it). Nothing to do without a table.
   void settle() const;
   /// Settles and drops the table: before a write or an edit the table cannot hold.
   void leaveTable();
@@ -67,6 +77,8 @@ struct StockGrid {
 
  private:
   mutable std::mutex settling_;
+  /// The bar, while the level set is not built yet (the table holds the stock).
+  mutable std::optional<RevolvedRegion> unbuiltBar_;
 };
 
 /// How a region is written into the level set.
@@ -85,8 +97,7 @@ double writeRegion(StockGrid& stock, const HelicalSweep& sweep, RegionWrite how,
                    const ThreadChangeBound* changes = nullptr);
 double writeRegion(StockGrid& stock, const StraightSlot& slot, RegionWrite how);
 
-/// Gives a stock just built from `bar` (revolved) its table, when the table's memory is small
-/// beside the level set's (see revolved_stock.cpp).
-void startTable(StockGrid& stock, const RevolvedRegion& bar);
+/// Bytes the level set of the stock's bar takes, estimated from its surface (stock.cpp).
+std::uint64_t estimatedBarBytes(const StockSpec& spec, double voxelMm);
 
 }  // namespace lathesim::sim

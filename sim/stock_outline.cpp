@@ -16,7 +16,6 @@ namespace lathesim::sim {
 
 SampledSection Stock::meridianSection() const {
   const StockGrid& s = *impl_;
-  s.settle();
   const int margin = kHalfBandVoxels + 2;
   const int rLast = s.toIndexCeil(s.spec.diameterMm / 2.0) + margin;
   const int zFirst = s.toIndexFloor(s.spec.faceZMm - s.spec.lengthMm) - margin;
@@ -29,10 +28,15 @@ SampledSection Stock::meridianSection() const {
   section.zCount = zLast - zFirst + 1;
   section.clampMm = s.background;
   section.phi.resize(static_cast<std::size_t>(section.rCount) * section.zCount);
+  const auto at = [&](int i, int k) -> float& { return section.phi[static_cast<std::size_t>(k) * section.rCount + i]; };
+  if (s.table) {  // revolved: the table holds the plane y = 0 as the level set would
+    for (int k = 0; k < section.zCount; ++k)
+      for (int i = 0; i < section.rCount; ++i) at(i, k) = s.table->value(i, 0, zFirst + k);
+    return section;
+  }
   const auto accessor = s.grid->getConstAccessor();
   for (int k = 0; k < section.zCount; ++k)
-    for (int i = 0; i < section.rCount; ++i)
-      section.phi[static_cast<std::size_t>(k) * section.rCount + i] = accessor.getValue(Coord(i, 0, zFirst + k));
+    for (int i = 0; i < section.rCount; ++i) at(i, k) = accessor.getValue(Coord(i, 0, zFirst + k));
   return section;
 }
 
