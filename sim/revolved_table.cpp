@@ -408,33 +408,48 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     struct Ghost {
       int c, cell;
     };
-    std::vector<Ghost> ghosts;                            // the whole class's cell
-    std::vector<std::pair<Ghost, VoxelIndex>> airVoxels;  // some of its columns only
+    // Each candidate's verdict for each of its class's orbits, in parallel (reads only).
+    struct Candidate {
+      Ghost at;
+      std::size_t firstVerdict;  // in ghostOrbit: one per orbit of its class
+    };
+    std::vector<Candidate> candidates;
+    std::size_t verdicts = 0;
     for (int n = 0; n < classCount; ++n) {
       const int c = classLow + n;
-      for (const Candidates& candidates : ghostsOf[n])
-        for (int bit = 0; bit < kChunk; ++bit) {
-          if (!((candidates.bits >> bit) & 1)) continue;
-          const int cell = candidates.chunk * kChunk + bit;
-          const int k = kBase_ + cell;
-          int ghostOrbits = 0;
-          const int orbitCount = orbitStart_[c + 1] - orbitStart_[c];
-          for (int o = orbitStart_[c]; o < orbitStart_[c + 1]; ++o)
-            ghostOrbits += isGhost(orbits_[o].first, orbits_[o].second, k, material);
-          if (ghostOrbits == 0) continue;
-          if (ghostOrbits == orbitCount) {
-            ghosts.push_back({c, cell});
-            continue;
+      for (const Candidates& found : ghostsOf[n])
+        for (int bit = 0; bit < kChunk; ++bit)
+          if ((found.bits >> bit) & 1) {
+            candidates.push_back({{c, found.chunk * kChunk + bit}, verdicts});
+            verdicts += orbitStart_[c + 1] - orbitStart_[c];
           }
-          // The class's columns disagree: the voxels of the ghosts' orbits become air voxels.
-          for (int o = orbitStart_[c]; o < orbitStart_[c + 1]; ++o) {
-            const auto [i, j] = orbits_[o];
-            if (!isGhost(i, j, k, material)) continue;
-            for (const auto& [x, y] : {std::pair{i, j}, {j, i}})
-              for (const int sx : {1, -1})
-                for (const int sy : {1, -1}) airVoxels.push_back({{c, cell}, {sx * x, sy * y, k}});
-          }
-        }
+    }
+    std::vector<std::uint8_t> ghostOrbit(verdicts);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64), [&](const auto& range) {
+      for (std::size_t m = range.begin(); m != range.end(); ++m) {
+        const auto& [at, first] = candidates[m];
+        for (int o = orbitStart_[at.c]; o < orbitStart_[at.c + 1]; ++o)
+          ghostOrbit[first + (o - orbitStart_[at.c])] = isGhost(orbits_[o].first, orbits_[o].second, kBase_ + at.cell, material);
+      }
+    });
+    std::vector<Ghost> ghosts;                            // the whole class's cell
+    std::vector<std::pair<Ghost, VoxelIndex>> airVoxels;  // some of its columns only
+    for (const auto& [at, first] : candidates) {
+      const int orbitCount = orbitStart_[at.c + 1] - orbitStart_[at.c];
+      const int ghostOrbits = static_cast<int>(std::count(ghostOrbit.begin() + first, ghostOrbit.begin() + first + orbitCount, 1));
+      if (ghostOrbits == 0) continue;
+      if (ghostOrbits == orbitCount) {
+        ghosts.push_back(at);
+        continue;
+      }
+      // The class's columns disagree: the voxels of the ghosts' orbits become air voxels.
+      for (int o = 0; o < orbitCount; ++o) {
+        if (!ghostOrbit[first + o]) continue;
+        const auto [i, j] = orbits_[orbitStart_[at.c] + o];
+        for (const auto& [x, y] : {std::pair{i, j}, {j, i}})
+          for (const int sx : {1, -1})
+            for (const int sy : {1, -1}) airVoxels.push_back({at, {sx * x, sy * y, kBase_ + at.cell}});
+      }
     }
     const auto valueOf = [this](const Ghost& ghost) {
       std::uint8_t bits;
