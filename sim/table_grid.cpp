@@ -59,23 +59,37 @@ class ChunkKinds {
 };
 
 ChunkKinds::ChunkKinds(const RevolvedTable& table) : runs_(table.chunkCount()) {
-  // Each task runs along its own classes' chunks (the table keeps a class's chunks together);
-  // its runs are then joined per chunk in class order.
+  // Each task goes through its own classes, each class's chunks at once (the table keeps them
+  // together), and starts a run wherever a class's chunk differs from the class before; the
+  // tasks' runs are then joined per chunk in class order.
   constexpr int kClassesPerTask = 2048;
   const int classes = table.classCount(), chunks = table.chunkCount();
   const int tasks = (classes + kClassesPerTask - 1) / kClassesPerTask;
   std::vector<std::vector<std::vector<Run>>> runsOfTask(tasks, std::vector<std::vector<Run>>(chunks));
   tbb::parallel_for(0, tasks, [&](int task) {
     std::vector<std::vector<Run>>& runs = runsOfTask[task];
-    std::vector<char> mixed(chunks);
-    for (int c = task * kClassesPerTask; c < std::min(classes, (task + 1) * kClassesPerTask); ++c) {
-      std::fill(mixed.begin(), mixed.end(), 0);
-      table.forEachMixedChunk(c, [&](int k0, const float*, std::uint8_t) { mixed[(k0 - table.firstCellK()) / kLeafDim] = 1; });
-      for (int chunk = 0; chunk < chunks; ++chunk) {
-        // A chunk that holds no cells is one inactive value: +band (air) or −band (solid).
-        const Kind kind = mixed[chunk] ? Kind::Mixed : table.chunkCells(c, chunk)[0] > 0.0f ? Kind::Air : Kind::Solid;
-        if (runs[chunk].empty() || runs[chunk].back().kind != kind) runs[chunk].push_back({c, kind});
-      }
+    std::vector<Kind> kinds(chunks), before(chunks);
+    const int first = task * kClassesPerTask, end = std::min(classes, first + kClassesPerTask);
+    for (int c = first; c < end; ++c) {
+      // The chunks between two mixed ones (or the table's ends) hold no cells: one inactive
+      // value each, and all the same one, +band (air) or −band (solid), since φ changes by a
+      // voxel at most from cell to cell and from air to solid by six. One of them tells.
+      int uniformFrom = 0;
+      const auto uniformUpTo = [&](int chunk) {
+        if (uniformFrom < chunk)
+          std::fill(kinds.begin() + uniformFrom, kinds.begin() + chunk,
+                    table.chunkCells(c, uniformFrom)[0] > 0.0f ? Kind::Air : Kind::Solid);
+      };
+      table.forEachMixedChunk(c, [&](int k0, const float*, std::uint8_t) {
+        const int chunk = (k0 - table.firstCellK()) / kLeafDim;
+        uniformUpTo(chunk);
+        kinds[chunk] = Kind::Mixed;
+        uniformFrom = chunk + 1;
+      });
+      uniformUpTo(chunks);
+      for (int chunk = 0; chunk < chunks; ++chunk)
+        if (c == first || kinds[chunk] != before[chunk]) runs[chunk].push_back({c, kinds[chunk]});
+      std::swap(kinds, before);
     }
   });
   tbb::parallel_for(0, chunks, [&](int chunk) {
