@@ -1,4 +1,4 @@
-// The whole level set from the revolved table (table_grid.hpp), a 128³ block per task.
+// The whole level set from the revolved table (table_grid.hpp), a 128³ block at a time.
 //
 // Most of a bar's blocks are one value: air beyond its band, solid deep inside. The table says
 // which without a voxel being read: each class's chunk of eight Z cells is air, solid or mixed
