@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "sim/table_leaf_image.hpp"
@@ -195,6 +196,10 @@ class GridBuilder {
 }  // namespace
 
 void writeGridFromTable(StockGrid& stock) {
+  // Nodes are linked where the table has something, and the background left elsewhere: over
+  // an older tree that would keep whatever the table now has as air.
+  if (!stock.table || !stock.grid->tree().empty())
+    throw std::logic_error("writeGridFromTable needs a table and an empty grid");
   const RevolvedTable& table = *stock.table;
   if (table.classCount() > 0) {
     const GridBuilder builder(table, stock.voxel, stock.background);

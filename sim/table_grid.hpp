@@ -11,7 +11,7 @@ namespace lathesim::sim {
 /// leaf becomes a level-1 tile, a uniform 128³ block a level-2 tile, and air is left to the
 /// background. Then the table's changes are forgotten: the grid is up to date with it.
 /// Precondition: `stock.grid` holds only its background (an empty tree) and `stock.table` the
-/// stock.
+/// stock; std::logic_error otherwise.
 void writeGridFromTable(StockGrid& stock);
 
 }  // namespace lathesim::sim

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
@@ -194,6 +195,19 @@ TEST(TableGrid, BuildsWhatTheBarAndSettleBuildOverManyBlocks) {
     SCOPED_TRACE(cuts ? "cut" : "uncut");
     expectTheSameGrid(c);
   }
+}
+
+// Over a grid already built, what the table now holds as air would keep the old values.
+TEST(TableGrid, RefusesAGridAlreadyBuilt) {
+  const StockSpec spec{20.0, 16.0, 0.0, 0.0};
+  StockGrid stock(spec, 0.2);
+  const RevolvedRegion bar = barOf(spec);
+  writeRegion(stock, bar, RegionWrite::Add);
+  startTable(stock, bar);
+  ASSERT_TRUE(stock.table);
+  EXPECT_THROW(writeGridFromTable(stock), std::logic_error);
+  StockGrid withoutTable(spec, 0.2);
+  EXPECT_THROW(writeGridFromTable(withoutTable), std::logic_error);
 }
 
 }  // namespace
