@@ -4,10 +4,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 
 #include "sim/stock_grid.hpp"
+#include "sim/table_grid.hpp"
+#include "sim/table_leaf_image.hpp"
 
 namespace lathesim::sim {
 namespace {
@@ -18,42 +19,17 @@ constexpr double kMaxTableShareOfStock = 0.25;
 // the level set: seed 000 makes 324.
 constexpr std::size_t kMaxAirVoxels = std::size_t{1} << 18;
 
-// A leaf's values and active bits as the table has them, and whether they are one inactive
-// value at or beyond the band (then the leaf is a tile, as the writer prunes it).
-struct LeafImage {
-  float values[Leaf::NUM_VALUES];
-  std::uint8_t activeBits[Leaf::NUM_VALUES / 8];  // one byte per column along Z, as Leaf's mask
-  bool uniform;
-};
-
-void imageOf(const RevolvedTable& table, const VoxelIndex& origin, float band, LeafImage& image) {
-  for (int i = 0; i < kLeafDim; ++i)
-    for (int j = 0; j < kLeafDim; ++j) {
-      const int column = (i << 6) | (j << 3);  // LeafNode<float, 3>::coordToOffset
-      std::uint8_t bits = 0;
-      if (const float* cells = table.column(origin.i + i, origin.j + j, origin.k, bits))
-        std::memcpy(image.values + column, cells, kLeafDim * sizeof(float));
-      else
-        std::fill_n(image.values + column, kLeafDim, band);
-      image.activeBits[column >> 3] = bits;
-    }
-  table.applyAirVoxels(origin, image.values, image.activeBits);
-  const float first = image.values[0];
-  image.uniform = std::abs(first) >= band;
-  for (std::size_t n = 0; n < Leaf::NUM_VALUES / 8 && image.uniform; ++n) image.uniform = image.activeBits[n] == 0;
-  for (std::size_t n = 1; n < Leaf::NUM_VALUES && image.uniform; ++n) image.uniform = image.values[n] == first;
-}
-
 }  // namespace
 
 void StockGrid::settle() const {
   if (!table) return;
   const std::lock_guard<std::mutex> lock(settling_);
-  if (unbuiltBar_) {
-    // The level set is a copy of the table's stock, made when first read: its bar, then what
-    // the table changed since (the table forgot the bar's own changes when it wrote it).
-    writeRegion(const_cast<StockGrid&>(*this), *unbuiltBar_, RegionWrite::Add);
-    unbuiltBar_.reset();
+  if (!gridBuilt_) {
+    // The level set is a copy of the table's stock, made whole when first read (table_grid.hpp);
+    // it then only takes the table's changes.
+    writeGridFromTable(const_cast<StockGrid&>(*this));
+    gridBuilt_ = true;
+    return;
   }
   const std::vector<VoxelIndex> origins = table->changedLeaves();
   // A batch at a time: the images are computed in parallel, the tree is changed serially.
@@ -107,10 +83,9 @@ bool StockGrid::startTable(const RevolvedRegion& bar) {
   // indices dominate), the level set is built now and stays the only copy.
   if (static_cast<double>(built->bytes()) > kMaxTableShareOfStock * static_cast<double>(estimatedBarBytes(spec, voxel)))
     return false;
-  built->forgetChanges();  // the level set, when built, starts from the same bar
   table = std::move(built);
   tableInsideVoxels = added;
-  unbuiltBar_ = bar;
+  gridBuilt_ = false;
   return true;
 }
 

@@ -8,7 +8,6 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
-#include <optional>
 
 #include "geometry/helical_sweep.hpp"
 #include "geometry/revolved_region.hpp"
@@ -77,8 +76,8 @@ struct StockGrid {
 
  private:
   mutable std::mutex settling_;
-  /// The bar, while the level set is not built yet (the table holds the stock).
-  mutable std::optional<RevolvedRegion> unbuiltBar_;
+  /// False while the level set is not built yet (the table holds the stock).
+  mutable bool gridBuilt_ = true;
 };
 
 /// How a region is written into the level set.

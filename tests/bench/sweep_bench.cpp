@@ -11,12 +11,17 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 
 #include "job/job.hpp"
 #include "job/setup.hpp"
 #include "interp/interpreter.hpp"
+#include "sim/move_sweep.hpp"
 #include "sim/simulate.hpp"
+#include "sim/stock_grid.hpp"
+#include "sim/table_grid.hpp"
 
 namespace {
 
@@ -249,6 +254,65 @@ void BM_MoveLength(benchmark::State& state) {
   state.counters["ms_per_mm"] = 1e3 * perMoveS / stepMm;
 }
 
+// The whole level set built from the revolved table (sim/table_grid.hpp) against the route it
+// replaces, the bar's level set built and the table's changes settled into it: on seed 000's
+// bar after seed 000's cuts, written into its table move by move (the ghosts it leaves to the
+// level set left out: both routes read the table alone). Both start from a copy of that table
+// (not timed), and neither's grid is freed within the timing.
+struct CutBar {
+  RevolvedRegion bar;  // as Stock's constructor writes it: the section mirrored across the axis
+  std::unique_ptr<sim::RevolvedTable> table;
+};
+
+const CutBar& seed000CutBar(double voxel) {
+  static std::map<double, CutBar> cut;
+  CutBar& c = cut[voxel];
+  if (c.table) return c;
+  const sim::StockSpec& spec = seed000().setup.stock;
+  const double r = spec.diameterMm / 2.0, back = spec.faceZMm - spec.lengthMm;
+  const std::vector<RZ> section{{-r, back}, {r, back}, {r, spec.faceZMm}, {-r, spec.faceZMm}};
+  c.bar = RevolvedRegion({ConvexPolygon::hullOf(section)});
+  sim::StockGrid stock(spec, voxel);
+  stock.startTable(c.bar);
+  for (const interp::Move& move : seed000().toolpath.moves) {
+    const std::vector<ConvexPolygon> pieces = sim::sweptPieces(move, seed000().tools.at(move.tool), voxel);
+    if (!pieces.empty()) stock.table->write(RevolvedRegion(pieces), false);
+  }
+  c.table = std::move(stock.table);
+  return c;
+}
+
+// Runs `build` on a fresh stock holding a copy of the cut table, an empty grid beside it.
+template <class Build>
+void buildFromCutTable(benchmark::State& state, Build build) {
+  const double voxel = state.range(0) / 1000.0;
+  const CutBar& cut = seed000CutBar(voxel);
+  std::unique_ptr<sim::StockGrid> stock;
+  for (auto _ : state) {
+    state.PauseTiming();
+    stock.reset();
+    stock = std::make_unique<sim::StockGrid>(seed000().setup.stock, voxel);
+    stock->table = std::make_unique<sim::RevolvedTable>(*cut.table);
+    state.ResumeTiming();
+    build(*stock, cut.bar);
+    benchmark::DoNotOptimize(stock->grid.get());
+    benchmark::ClobberMemory();
+  }
+  state.counters["leaves"] = static_cast<double>(stock->grid->tree().leafCount());
+  state.counters["grid_mb"] = static_cast<double>(stock->grid->tree().memUsage()) / 1e6;
+}
+
+void BM_GridBarThenSettle(benchmark::State& state) {
+  buildFromCutTable(state, [](sim::StockGrid& stock, const RevolvedRegion& bar) {
+    sim::writeRegion(stock, bar, sim::RegionWrite::Add);
+    stock.settle();
+  });
+}
+
+void BM_GridFromTable(benchmark::State& state) {
+  buildFromCutTable(state, [](sim::StockGrid& stock, const RevolvedRegion&) { sim::writeGridFromTable(stock); });
+}
+
 // Wall time decides; the CPU column is the whole process's (all threads), which is steadier
 // than wall time when other work shares the machine.
 BENCHMARK(BM_Floor)->Arg(200)->Arg(100)->Arg(50)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(3);
@@ -262,6 +326,8 @@ BENCHMARK(BM_ShortPasses)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->Me
 BENCHMARK(BM_LongFloor)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(3);
 BENCHMARK(BM_Contour2000)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(1);
 BENCHMARK(BM_CamProgram)->Arg(100)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(1);
+BENCHMARK(BM_GridBarThenSettle)->Arg(100)->Arg(50)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(3);
+BENCHMARK(BM_GridFromTable)->Arg(100)->Arg(50)->Unit(benchmark::kSecond)->UseRealTime()->MeasureProcessCPUTime()->Iterations(3);
 BENCHMARK(BM_MoveLength)->Arg(10)->Arg(30)->Arg(100)->Arg(300)->Arg(1000)->Arg(3000)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
