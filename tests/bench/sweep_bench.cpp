@@ -256,8 +256,8 @@ void BM_MoveLength(benchmark::State& state) {
 
 // The whole level set built from the revolved table (sim/table_grid.hpp) against the route it
 // replaces, the bar's level set built and the table's changes settled into it: on seed 000's
-// bar after seed 000's cuts, written into its table move by move (the ghosts it leaves to the
-// level set left out: both routes read the table alone). Both start from a copy of that table
+// bar after seed 000's cuts, written into its table move by move (its air voxels with it: both
+// routes read the table alone). Both start from a copy of that table
 // (not timed), and neither's grid is freed within the timing.
 struct CutBar {
   RevolvedRegion bar;  // as Stock's constructor writes it: the section mirrored across the axis
