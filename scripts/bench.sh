@@ -14,21 +14,22 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # The floor: building the bar as a level set once from its analytic distance (Google
-# Benchmark: BM_Floor for seed 000's bar, BM_LargeBarFloor for the large one; wall time, mean
-# of three), measured in this run just before the run it is the floor of.
+# Benchmark: BM_Floor for seed 000's bar, BM_LargeBarFloor for the large one; its wall time and
+# its process's CPU time, means of three), measured in this run just before the run it is the
+# floor of.
 floor_of() {  # benchmark, voxel in mm
   local um
   um=$(awk -v v="$2" 'BEGIN { printf "%d", v * 1000 + 0.5 }')
-  build/lathesim_bench --benchmark_filter="^$1/$um\$" --benchmark_format=csv 2>/dev/null |
-    awk -F, -v name="\"$1/$um/" 'index($1, name) == 1 { print $3 }'
+  build/lathesim_bench --benchmark_filter="^$1/$um/" --benchmark_format=csv 2>/dev/null |
+    awk -F, -v name="\"$1/$um/" 'index($1, name) == 1 { print $3, $4 }'
 }
 
 # One `lathesim run` with every output: each step's own wall time from its report.json (steps
 # overlap: stock.vdb is written while the part is meshed, the pictures drawn while the files
 # are written), the whole process's wall and CPU time (user + sys) from outside, and each as a
-# ratio to the floor.
+# ratio to the floor's: wall to wall, CPU to CPU (the steadier on a shared machine).
 field() { grep -o "\"$1\": [-0-9.e+]*" "$tmp/run/report.json" | head -1 | awk '{print $2}'; }
-run_figures() {  # label, floor in seconds, then the run's arguments
+run_figures() {  # label, the floor's "wall CPU" seconds, then the run's arguments
   local label=$1 floor=$2 TIMEFORMAT='%R %U %S' times
   shift 2
   rm -rf "$tmp/run"
@@ -36,10 +37,11 @@ run_figures() {  # label, floor in seconds, then the run's arguments
   awk -v label="$label" -v floor="$floor" -v simulate="$(field simulate)" -v mesh="$(field mesh)" \
       -v render="$(field render)" -v write="$(field write)" -v times="$times" 'BEGIN {
     split(times, t, " ")
-    n = split(simulate " " mesh " " render " " write " " t[1] " " t[2] + t[3], step, " ")
-    printf "%-10s %8.2f", label, floor
-    for (i = 1; i <= n; i++) printf "  %7.2f %5.1fx", step[i], step[i] / floor
-    printf "\n"
+    split(floor, f, " ")
+    n = split(simulate " " mesh " " render " " write " " t[1], step, " ")
+    printf "%-10s %8.2f", label, f[1]
+    for (i = 1; i <= n; i++) printf "  %7.2f %5.1fx", step[i], step[i] / f[1]
+    printf "  %7.2f %5.1fx (floor %.2f)\n", t[2] + t[3], (t[2] + t[3]) / f[2], f[2]
   }'
 }
 memory_line() {
