@@ -50,7 +50,8 @@ bool copyAll(int from, int to) {
     if (copied > 0) continue;
     if (copied == 0) return true;
     if (errno == EINTR) continue;
-    if (errno != EINVAL && errno != EXDEV && errno != ENOSYS && errno != EOPNOTSUPP && errno != EBADF) return false;
+    // Whatever the kernel refuses (a pipe, another filesystem, an old kernel), the buffered copy
+    // below goes on from where it stopped and meets a real failure (EIO, ENOSPC) itself.
     break;
   }
   std::array<char, std::size_t{64} << 10> buffer;
