@@ -38,7 +38,7 @@ ToolpathAtLine toolpathAtLine(const interp::Toolpath& toolpath, int line, int so
 
 bool cutAtLine(std::optional<int> atLine, job::Job& job) {
   if (!atLine) return true;
-  const std::string& text = job.programText;
+  const std::string_view text = job.programText.text().view();
   const auto lineCount = static_cast<int>(std::count(text.begin(), text.end(), '\n') +
                                           (text.empty() || text.back() == '\n' ? 0 : 1));
   ToolpathAtLine cut = toolpathAtLine(job.toolpath, *atLine, lineCount);

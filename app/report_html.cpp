@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <sstream>
+#include <string_view>
 #include <stdexcept>
 
 #include "app/staged_output.hpp"
@@ -97,12 +97,15 @@ std::string pngSizeAttributes(const std::string& png) {
   return "width=\"" + std::to_string(bigEndian(16)) + "\" height=\"" + std::to_string(bigEndian(20)) + "\" ";
 }
 
-std::vector<std::string> linesOf(const std::string& text) {
+std::vector<std::string> linesOf(std::string_view text) {
   std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(line);
+  for (std::size_t begin = 0; begin < text.size();) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(begin, end - begin);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    lines.emplace_back(line);
+    begin = end + 1;
   }
   return lines;
 }
@@ -192,7 +195,7 @@ std::string threadsSection(const Json& r) {
 /// The program, one row per source line: its number, text, machine time and removed volume
 /// (its blocks' sums), a bar for the time and a warm tint for the removal; lines with a
 /// collision or a warning flagged at their number.
-std::string listing(const Json& r, const std::string& programText) {
+std::string listing(const Json& r, std::string_view programText) {
   struct LineFigures {
     double timeS = 0, removedMm3 = 0;
   };
@@ -237,7 +240,7 @@ std::string listing(const Json& r, const std::string& programText) {
 
 }  // namespace
 
-void writeReportHtml(const Json& report, const std::string& programText, const std::vector<HtmlPicture>& pictures,
+void writeReportHtml(const Json& report, std::string_view programText, const std::vector<HtmlPicture>& pictures,
                      const std::string& glb, const std::filesystem::path& html) {
   const std::string program = report.value("program", "");
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"

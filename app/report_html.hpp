@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lathesim::app {
@@ -18,7 +19,7 @@ struct HtmlPicture {
 
 /// Writes the page for the run `report` (report.json's content) of the program `programText`,
 /// with `pictures` and the 3D model `glb` (empty: no 3D view).
-void writeReportHtml(const nlohmann::ordered_json& report, const std::string& programText,
+void writeReportHtml(const nlohmann::ordered_json& report, std::string_view programText,
                      const std::vector<HtmlPicture>& pictures, const std::string& glb, const std::filesystem::path& html);
 
 }  // namespace lathesim::app

@@ -280,7 +280,7 @@ void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report,
   out.write("report.json", [&](const Path& file) { writeJson(report, file); });
   if (run.outputs.html)
     out.write("report.html",
-            [&](const Path& file) { writeReportHtml(report, run.job.programText, run.pictures, run.modelGlb, file); });
+            [&](const Path& file) { writeReportHtml(report, run.job.programText.text().view(), run.pictures, run.modelGlb, file); });
 }
 
 double peakMemoryMb() {

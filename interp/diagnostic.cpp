@@ -32,13 +32,15 @@ std::string format(const Diagnostic& diagnostic) {
   return text;
 }
 
-void quoteLines(std::string_view text, std::vector<Diagnostic*> diagnostics) {
+void quoteLines(PagedText paged, std::vector<Diagnostic*> diagnostics) {
+  const std::string_view text = paged.view();
   std::stable_sort(diagnostics.begin(), diagnostics.end(),
                    [](const Diagnostic* a, const Diagnostic* b) { return a->line < b->line; });
   int line = 1;
   std::size_t begin = 0;  // where `line` starts; past the text's end when it has no such line
   for (Diagnostic* diagnostic : diagnostics) {
     for (; line < diagnostic->line && begin <= text.size(); ++line) {
+      paged.readingAt(begin);
       const std::size_t newline = text.find('\n', begin);
       begin = newline == std::string_view::npos ? text.size() + 1 : newline + 1;
     }
@@ -53,10 +55,13 @@ void quoteLines(std::string_view text, std::vector<Diagnostic*> diagnostics) {
   }
 }
 
-LineStarts::LineStarts(std::string_view text) {
+LineStarts::LineStarts(PagedText paged) {
+  const std::string_view text = paged.view();
   starts_.push_back(0);
-  for (std::size_t at = text.find('\n'); at != std::string_view::npos; at = text.find('\n', at + 1))
+  for (std::size_t at = text.find('\n'); at != std::string_view::npos; at = text.find('\n', at + 1)) {
+    paged.readingAt(at);
     starts_.push_back(at + 1);
+  }
 }
 
 std::string LineStarts::lineOf(std::string_view text, int line) const {
@@ -69,10 +74,12 @@ std::string LineStarts::lineOf(std::string_view text, int line) const {
   return std::string(text.substr(begin, end - begin));
 }
 
-std::string lineOf(std::string_view text, int line) {
+std::string lineOf(PagedText paged, int line) {
+  const std::string_view text = paged.view();
   if (line <= 0) return {};
   std::size_t begin = 0;
   for (int current = 1; current < line; ++current) {
+    paged.readingAt(begin);
     const std::size_t newline = text.find('\n', begin);
     if (newline == std::string_view::npos) return {};
     begin = newline + 1;

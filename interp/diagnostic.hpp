@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "interp/text/paged_text.hpp"
+
 namespace lathesim::interp {
 
 enum class Severity { Error, Warning, Note };  // a note: something read differently, said once
@@ -23,11 +25,11 @@ struct Diagnostic {
 std::string format(const Diagnostic& diagnostic);
 
 /// The text of 1-based line `line` in `text`, without its line ending; empty if absent.
-std::string lineOf(std::string_view text, int line);
+std::string lineOf(PagedText text, int line);
 
 /// Fills the source line of each of `diagnostics` (the lines of `text` they are at, as lineOf
 /// gives them) in one pass over `text`, holding nothing for the lines no diagnostic is at.
-void quoteLines(std::string_view text, std::vector<Diagnostic*> diagnostics);
+void quoteLines(PagedText text, std::vector<Diagnostic*> diagnostics);
 
 /// Where each line of a text starts, found once: many diagnostics can then each quote their
 /// line without scanning the text from its start (a warning on every block of a long program
@@ -36,7 +38,7 @@ void quoteLines(std::string_view text, std::vector<Diagnostic*> diagnostics);
 class LineStarts {
  public:
   LineStarts() = default;
-  explicit LineStarts(std::string_view text);
+  explicit LineStarts(PagedText text);
   /// As lineOf(text, line), for the text this was made from.
   std::string lineOf(std::string_view text, int line) const;
 

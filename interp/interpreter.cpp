@@ -26,7 +26,7 @@ Status refuseEmptyProgram(const Program& program, std::string_view programText) 
 }
 
 // A program of another control family is refused as a whole, naming the family.
-Status refuseForeignProgram(std::string_view programText) {
+Status refuseForeignProgram(PagedText programText) {
   const auto foreign = recogniseForeignProgram(programText);
   if (!foreign) return success();
   return Error{foreign->line, foreign->column,
@@ -43,7 +43,7 @@ bool InterpretResult::ok() const {
                       [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
-InterpretResult interpret(std::string_view programText, const std::string& fileName,
+InterpretResult interpret(PagedText programText, const std::string& fileName,
                           const InterpreterOptions& options) {
   std::vector<Move> moves;
   MoveCollector collector(moves);
@@ -53,7 +53,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   return result;
 }
 
-InterpretResult interpret(std::string_view programText, const std::string& fileName,
+InterpretResult interpret(PagedText programText, const std::string& fileName,
                           const InterpreterOptions& options, MoveSink& moves) {
   InterpretResult result;
   result.toolpath.programName = fileName;
@@ -63,7 +63,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
   Program program = readProgram(programText, options.control.blockSkip, options.dialect, options.control.machineMCodes);
   for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
-  if (status.ok()) status = refuseEmptyProgram(program, programText);
+  if (status.ok()) status = refuseEmptyProgram(program, programText.view());
   MovePipeline pipeline(options, moves, warnings);
   if (status.ok()) {
     status = runProgram(program, options, result.toolpath, pipeline, warnings, notes);

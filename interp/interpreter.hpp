@@ -17,6 +17,7 @@
 #include "interp/move.hpp"
 #include "interp/move_sink.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/text/paged_text.hpp"
 #include "interp/execution/work_frame.hpp"
 
 namespace lathesim::interp {
@@ -63,7 +64,7 @@ struct InterpretResult {
 };
 
 /// The moves in `result.toolpath.moves`.
-InterpretResult interpret(std::string_view programText, const std::string& fileName,
+InterpretResult interpret(PagedText programText, const std::string& fileName,
                           const InterpreterOptions& options);
 
 /// The moves handed to `moves` as they are made, in order, each once nothing can change it:
@@ -71,7 +72,7 @@ InterpretResult interpret(std::string_view programText, const std::string& fileN
 /// program that fails may have handed on moves before its error: the consumer drops them; the
 /// moves made before the error and not handed on are left in `result.toolpath.moves`, as
 /// their blocks made them (what `interpret` without a sink gives after those handed on).
-InterpretResult interpret(std::string_view programText, const std::string& fileName,
+InterpretResult interpret(PagedText programText, const std::string& fileName,
                           const InterpreterOptions& options, MoveSink& moves);
 
 }  // namespace lathesim::interp

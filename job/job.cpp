@@ -1,9 +1,8 @@
 #include "job/job.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <iostream>
-#include <sstream>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -30,24 +29,6 @@ bool hasError(const std::vector<interp::Diagnostic>& diagnostics) {
   return false;
 }
 
-// All of `in`. A file is read in one piece at its size: a stream's buffer, grown by doubling
-// and then copied, would hold a long program's text up to three times over. A pipe has no size.
-std::string wholeText(std::ifstream& in) {
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  if (size < 0 || !in) {
-    in.clear();
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-  std::string text(static_cast<std::size_t>(size), '\0');
-  in.read(text.data(), size);
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  return text;
-}
-
 // The TOML that defines tool `number`, for the error of a T word nothing defines.
 std::string toolDefinitionHint(int number) {
   return fmt::format(
@@ -58,7 +39,7 @@ std::string toolDefinitionHint(int number) {
 
 // T words no setup defines, mounted from what their blocks' comments name (comment_tools.hpp).
 void mountToolsNamedInComments(Job& job, const std::string& programName) {
-  const interp::Program program = interp::readProgram(job.programText, job.setup.control.parameters.blockSkip,
+  const interp::Program program = interp::readProgram(job.programText.text(), job.setup.control.parameters.blockSkip,
                                                       job.setup.dialect, job.setup.control.parameters.machineMCodes);
   Setup& setup = job.setup;
   std::vector<int> mounted;
@@ -87,7 +68,7 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
                                         number, comment, named->description);
       for (const std::string& w : named->warnings) message += "; " + w;
       job.warnings.push_back({interp::Severity::Warning, programName, block.line, t.column, message,
-                              interp::lineOf(job.programText, block.line)});
+                              interp::lineOf(job.programText.text(), block.line)});
       print({job.warnings.back()});
       break;
     }
@@ -131,9 +112,9 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
 }
 
 interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
-  if (!programLines) programLines.emplace(programText);
+  if (!programLines) programLines.emplace(programText.text());
   return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
-          programLines->lineOf(programText, line)};
+          programLines->lineOf(programText.text().view(), line)};
 }
 
 std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
@@ -180,12 +161,13 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
   if (!setup) return std::nullopt;
   job.setup = std::move(*setup);
 
-  std::ifstream in(program, std::ios::binary);
-  if (!in) {
-    std::cerr << interp::printable(program.string()) << ": error: cannot read the program file\n";
+  try {
+    job.programText = interp::FileText::read(program);
+  } catch (const std::system_error& error) {
+    std::cerr << interp::printable(program.string()) << ": error: cannot read the program file ("
+              << interp::printable(error.code().message()) << ")\n";
     return std::nullopt;
   }
-  job.programText = wholeText(in);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {
@@ -196,13 +178,13 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
     job.setup.stockGiven = true;
     job.setup.sourceName += " with --stock " + *request.stock;
   } else if (!job.setup.stockGiven) {
-    if (const auto stated = interp::stockStatedIn(job.programText)) {
+    if (const auto stated = interp::stockStatedIn(job.programText.text())) {
       job.setup.stock = sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
       job.notes.push_back({interp::Severity::Note, program.string(), stated->line, stated->column,
                            fmt::format("the bar is Φ{:g} × {:g}, its face at Z0, as the program states it: "
                                        "{} (no setup gives the stock)",
                                        stated->diameterMm, stated->lengthMm, stated->text),
-                           interp::lineOf(job.programText, stated->line)});
+                           interp::lineOf(job.programText.text(), stated->line)});
       print({job.notes.back()});
     }
   }
@@ -212,7 +194,7 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
   options.programDirectories = request.programDirectories;
   options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());
   TimedMoves timed(job.setup.machine, moves);
-  interp::InterpretResult result = interp::interpret(job.programText, program.string(), options, timed);
+  interp::InterpretResult result = interp::interpret(job.programText.text(), program.string(), options, timed);
   print(result.diagnostics);
   if (!result.ok()) return std::nullopt;
   for (auto& d : result.diagnostics)

@@ -12,6 +12,7 @@
 #include "interp/interpreter.hpp"
 #include "interp/move.hpp"
 #include "interp/move_sink.hpp"
+#include "interp/text/file_text.hpp"
 
 namespace lathesim::job {
 
@@ -20,7 +21,7 @@ struct Job {
   interp::Toolpath toolpath;  // every move's timeS filled in; no moves when loadJob handed them on
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
-  std::string programText;
+  interp::FileText programText;  // read where it lies, not held (file_text.hpp)
   // Of programText, found by the first warningAt (8 B a line, not held while the interpreter
   // reads a long program unless a warning needs it): a warning per block stays linear.
   mutable std::optional<interp::LineStarts> programLines;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -579,7 +580,8 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
     return errorAt(code ? code->column : block_.column, *problem);
   const std::size_t before = moves_.size();
   emit(feed ? MoveKind::Feed : MoveKind::Rapid, from, to, 0);
-  if (corner.value() && moves_.size() > before) moves_.back().cornerAfter = corner.value();
+  if (corner.value() && moves_.size() > before)
+    moves_.back().cornerAfter = std::make_shared<const CornerRequest>(std::move(*corner.value()));
   state_.position = to;
   return success();
 }

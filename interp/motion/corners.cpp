@@ -23,8 +23,8 @@ Error errorAt(const Move& move, std::string message) {
 }  // namespace
 
 Status insertCorners(std::vector<Move>& moves, std::vector<Error>& warnings) {
-  // Most programs ask for none: their moves are not copied (a copy of a million moves is 336 MB).
-  if (std::none_of(moves.begin(), moves.end(), [](const Move& m) { return m.cornerAfter.has_value(); }))
+  // Most programs ask for none: their moves are not copied (a copy of a million moves is 272 MB).
+  if (std::none_of(moves.begin(), moves.end(), [](const Move& m) { return m.cornerAfter != nullptr; }))
     return success();
   std::vector<Move> out;
   out.reserve(moves.size());

@@ -64,11 +64,13 @@ const std::array<Sign, 6>& signs() {
 
 }  // namespace
 
-std::optional<ForeignProgram> recogniseForeignProgram(std::string_view text) {
+std::optional<ForeignProgram> recogniseForeignProgram(PagedText paged) {
+  const std::string_view text = paged.view();
   int lineNumber = 0;
   bool firstLine = true;
   std::size_t begin = 0;
   while (begin <= text.size()) {
+    paged.readingAt(begin);
     std::size_t end = text.find('\n', begin);
     if (end == std::string_view::npos) end = text.size();
     ++lineNumber;

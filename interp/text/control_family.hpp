@@ -13,6 +13,8 @@
 #include <string>
 #include <string_view>
 
+#include "interp/text/paged_text.hpp"
+
 namespace lathesim::interp {
 
 struct ForeignProgram {
@@ -22,6 +24,6 @@ struct ForeignProgram {
   std::string evidence;  // what gave it away, as written
 };
 
-std::optional<ForeignProgram> recogniseForeignProgram(std::string_view text);
+std::optional<ForeignProgram> recogniseForeignProgram(PagedText text);
 
 }  // namespace lathesim::interp

@@ -79,6 +79,7 @@ std::optional<ReadBlock> readNext(BlockReader& reader, const SourceText& text, i
     return read;
   }
   if (!next.value()) return std::nullopt;
+  text.text.readingAt(reader.blockStart().at);
   RawBlock& raw = *next.value();
   if (raw.skipFrom && text.blockDelete) raw.chars.resize(*raw.skipFrom);
   block.line = raw.line;
@@ -156,9 +157,10 @@ Program::Cursor Program::cursorBefore(int source, std::size_t ordinal) const {
                                       [](std::size_t wanted, const ReadCheckpoint& checkpoint) {
                                         return wanted < static_cast<std::size_t>(checkpoint.ordinal);
                                       });
-  if (after == text.checkpoints.begin()) return Cursor{source, BlockReader(text.text), text.firstOrdinal, text.leadingProgram};
+  if (after == text.checkpoints.begin())
+    return Cursor{source, BlockReader(text.text.view()), text.firstOrdinal, text.leadingProgram};
   const ReadCheckpoint& checkpoint = *std::prev(after);
-  return Cursor{source, BlockReader(text.text, checkpoint.at), checkpoint.ordinal, checkpoint.program};
+  return Cursor{source, BlockReader(text.text.view(), checkpoint.at), checkpoint.ordinal, checkpoint.program};
 }
 
 // Block `ordinal` as read: from the window, read on from its last block, or read on from the
@@ -236,8 +238,8 @@ void Program::scan(int source, std::size_t from, const LabelFilter& filter, Visi
   for (;; ++run) {
     const int runEnd = run < checkpoints.size() ? checkpoints[run].ordinal : end;
     if (filter.mayHold(run == 0 ? text.headLabels : checkpoints[run - 1].labels)) {
-      Cursor cursor = run == 0 ? Cursor{source, BlockReader(text.text), text.firstOrdinal, text.leadingProgram}
-                               : Cursor{source, BlockReader(text.text, checkpoints[run - 1].at),
+      Cursor cursor = run == 0 ? Cursor{source, BlockReader(text.text.view()), text.firstOrdinal, text.leadingProgram}
+                               : Cursor{source, BlockReader(text.text.view(), checkpoints[run - 1].at),
                                         checkpoints[run - 1].ordinal, checkpoints[run - 1].program};
       for (; cursor.next < runEnd; ++cursor.next) {
         std::optional<ReadBlock> read =
@@ -314,7 +316,7 @@ std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFo
                                            sources[static_cast<std::size_t>(source) - 1].blockCount;
   text.firstOrdinal = first;
   text.checkpointSpacing = kFirstCheckpointSpacing;
-  BlockReader reader(text.text);
+  BlockReader reader(text.text.view());
   int program = -1;
   int ordinal = first;
   int lastCheckpoint = first;  // the source's start serves as one
@@ -384,18 +386,18 @@ std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFo
   return {};
 }
 
-Program readProgram(std::string_view text, bool blockDelete, Dialect dialect, MachineMCodes machine) {
+Program readProgram(PagedText text, bool blockDelete, Dialect dialect, MachineMCodes machine) {
   Program program;
   program.sources.push_back({"", text, nullptr, blockDelete, dialect, machine});
   program.readThrough(0);
   return program;
 }
 
-std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, std::string text, int number,
+std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, FileText text, int number,
                                         bool blockDelete, Dialect dialect, MachineMCodes machine) {
-  auto file = std::make_shared<const std::string>(std::move(text));
-  const std::string_view view = *file;
-  program.sources.push_back({name, view, std::move(file), blockDelete, dialect, machine});
+  auto file = std::make_shared<const FileText>(std::move(text));
+  const PagedText paged = file->text();
+  program.sources.push_back({name, paged, std::move(file), blockDelete, dialect, machine});
   return program.readThrough(static_cast<int>(program.sources.size()) - 1, number);
 }
 

@@ -34,7 +34,9 @@
 
 #include "interp/macro/statement.hpp"
 #include "interp/text/block_parser.hpp"
+#include "interp/text/file_text.hpp"
 #include "interp/text/lexer.hpp"
+#include "interp/text/paged_text.hpp"
 #include "interp/result.hpp"
 
 namespace lathesim::interp {
@@ -96,12 +98,12 @@ struct ReadCheckpoint {
 };
 
 /// A text the blocks are read from: the program's own (name empty) or a subprogram's file,
-/// and how it is read. The program's own text is the caller's, read where it lies; a file M98
-/// reads is held by the Program.
+/// and how it is read. The program's own text is the caller's; a file M98 reads is the
+/// Program's. Each is read where it lies (paged_text.hpp: the readers say where they read).
 struct SourceText {
   std::string name;
-  std::string_view text;                    // the program's own (readProgram), or *file
-  std::shared_ptr<const std::string> file;  // a subprogram file's text; null for the program's own
+  PagedText text;                        // the program's own (readProgram), or *file's
+  std::shared_ptr<const FileText> file;  // a subprogram file's text; null for the program's own
   bool blockDelete = false;
   Dialect dialect = Dialect::FanucA;
   MachineMCodes machine = MachineMCodes::Gsk980tdi;
@@ -220,7 +222,7 @@ class Program {
 /// error; a comment left open ends the text with a block carrying that error. The Program
 /// reads `text` again as it runs and does not copy it: the caller keeps `text` alive as long
 /// as the Program.
-Program readProgram(std::string_view text, bool blockDelete, Dialect dialect,
+Program readProgram(PagedText text, bool blockDelete, Dialect dialect,
                     MachineMCodes machine = MachineMCodes::Gsk980tdi);
 /// A temporary string would be gone before the Program reads it again.
 template <class Text>
@@ -233,7 +235,7 @@ Program readProgram(Text&& text, bool blockDelete, Dialect dialect,
 /// has none (a file named for its program often leaves the O line out). Returns the notes of
 /// the machine M codes the file names first (each code is noted once, in whichever file names
 /// it first), located in the file.
-std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, std::string text, int number,
+std::vector<ReadNote> appendProgramFile(Program& program, const std::string& name, FileText text, int number,
                        bool blockDelete, Dialect dialect, MachineMCodes machine = MachineMCodes::Gsk980tdi);
 
 }  // namespace lathesim::interp

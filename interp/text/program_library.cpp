@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -50,10 +48,10 @@ std::optional<ProgramFile> findProgramFile(int number, const std::vector<std::fi
     for (const std::string& name : names) {
       const auto found = files.find(lowerCase(name));
       if (found == files.end()) continue;
-      std::ifstream in(found->second, std::ios::binary);
-      std::ostringstream text;
-      text << in.rdbuf();
-      if (in) return ProgramFile{found->second, text.str()};
+      try {
+        return ProgramFile{found->second, FileText::read(found->second)};
+      } catch (const std::system_error&) {  // unreadable: the next name may be
+      }
     }
   }
   return std::nullopt;

@@ -14,11 +14,13 @@
 #include <string_view>
 #include <vector>
 
+#include "interp/text/file_text.hpp"
+
 namespace lathesim::interp {
 
 struct ProgramFile {
   std::filesystem::path path;
-  std::string text;
+  FileText text;
 };
 
 /// The file names tried for program `number`, in order.
@@ -28,7 +30,7 @@ std::vector<std::string> programFileNames(int number);
 /// for some n, in any case): a batch counts such files beside a program among its inputs.
 bool isProgramFileName(std::string_view fileName);
 
-/// The first file holding program `number` in `directories`, or nullopt.
+/// The first file holding program `number` in `directories` that can be read, or nullopt.
 std::optional<ProgramFile> findProgramFile(int number, const std::vector<std::filesystem::path>& directories);
 
 }  // namespace lathesim::interp

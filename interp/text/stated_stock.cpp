@@ -42,10 +42,12 @@ std::optional<StatedStock> stockComment(const std::string& comment) {
 
 }  // namespace
 
-std::optional<StatedStock> stockStatedIn(std::string_view programText) {
+std::optional<StatedStock> stockStatedIn(PagedText paged) {
+  const std::string_view programText = paged.view();
   int lineNumber = 0;
   std::size_t begin = 0;
   while (begin < programText.size()) {
+    paged.readingAt(begin);
     std::size_t end = programText.find('\n', begin);
     if (end == std::string_view::npos) end = programText.size();
     ++lineNumber;

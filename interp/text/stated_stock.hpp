@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "interp/text/paged_text.hpp"
+
 namespace lathesim::interp {
 
 struct StatedStock {
@@ -20,6 +22,6 @@ struct StatedStock {
   std::string text;  // the statement as written
 };
 
-std::optional<StatedStock> stockStatedIn(std::string_view programText);
+std::optional<StatedStock> stockStatedIn(PagedText programText);
 
 }  // namespace lathesim::interp

@@ -120,7 +120,7 @@ TEST(ProgramBlocks, SubprogramFileHeldByTheProgram) {
   Program program = readProgram("M98 P1234\nM30\n", false, Dialect::FanucA);
   {
     std::string file = "O1234\nG1 X7 Z-3 (FILE)\nM99\n";
-    (void)appendProgramFile(program, "O1234.nc", std::move(file), 1234, false, Dialect::FanucA);
+    (void)appendProgramFile(program, "O1234.nc", FileText(std::move(file)), 1234, false, Dialect::FanucA);
   }
   ASSERT_EQ(program.blockCount(), 5u);
   const auto words = program.plainWords(program.block(3));
