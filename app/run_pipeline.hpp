@@ -14,6 +14,7 @@
 #include "app/report_html.hpp"
 #include "app/staged_output.hpp"
 #include "geometry/triangle_mesh.hpp"
+#include "render/rgb_image.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::app {
@@ -44,6 +45,7 @@ struct SimulatedRun {
   TriangleMesh stub;   // after a part-off: the stub's mesh (meshPart)
   std::vector<HtmlPicture> pictures;  // staged, for report.html
   std::string modelGlb;               // the part and toolpath for report.html's 3D view
+  render::RgbImage partPixels;        // part.png's, kept for thumbnail.png when --thumbnail asks
   OutputSelection outputs;            // the files to write (--outputs)
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
@@ -72,8 +74,9 @@ std::future<double> stageStockFile(const SimulatedRun& run, StagedOutput& out);
 /// written (timing.writeS).
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock);
 
-/// Stages thumbnail.png, `picture` (a staged PNG) shrunk, when options.pictures asks for it.
-void stageThumbnail(const RunOptions& options, const std::filesystem::path& picture, StagedOutput& out);
+/// Stages thumbnail.png, `picture` (part.png's or deviation.png's pixels) shrunk, when
+/// options.pictures asks for it and there is a picture.
+void stageThumbnail(const RunOptions& options, const render::RgbImage& picture, StagedOutput& out);
 
 /// Stages report.json (`report`) and report.html.
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out);
