@@ -289,6 +289,7 @@ int checkCommand(const CheckOptions& options) {
     if (run->partStock().isRevolved()) everyVoxel = run->partStock().meshWithVertexEveryVoxel();
     deviationPixels = stageDeviationImages(options, everyVoxel ? *everyVoxel : run->part, section, part, *drawing,
                                            deviation, threadZones, out, run->pictures);
+    out.syncWritten();
   }
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();

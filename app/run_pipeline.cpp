@@ -263,6 +263,7 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
       if (format == "obj") render::writePartObj(run.part, file);
     });
   }
+  out.syncWritten();  // under way since each file was written: most are done by now
   timing.writeS += writing.lap();
   clock.lap();
 }

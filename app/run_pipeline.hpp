@@ -71,7 +71,7 @@ std::future<double> stageStockFile(const SimulatedRun& run, StagedOutput& out);
 
 /// Stages the run's other files into `out` (the pictures as options.pictures asks, the exports;
 /// stub.stl too after a part-off): the pictures are drawn (timing.renderS) while the files are
-/// written (timing.writeS).
+/// written (timing.writeS), and returns once every file staged so far is on the disk.
 void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& out, Stopwatch& clock);
 
 /// Stages thumbnail.png, `picture` (part.png's or deviation.png's pixels) shrunk, when
