@@ -129,7 +129,7 @@ class BatchRun {
       killOverdue();
       std::vector<Ended> ended = reapEnded();
       loadDrawingLibraries();
-      startWhatFits();  // before the thumbnails and stamps: no CPU waits on the batch's own work
+      startWhatFits();  // before the stamps: no CPU waits on the batch's own work
       for (const Ended& e : ended) finish(e.job, e.waitStatus);
     }
     if (stoppedBy) stopAll();
