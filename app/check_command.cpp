@@ -304,6 +304,7 @@ int checkCommand(const CheckOptions& options) {
   run->progress->finish();
 
   printSummary(options, deviation, threadChecks);
+  keepUntilExit(std::move(*run));
   return allWithin(deviation, threadChecks) ? job::kExitOk : job::kExitOutOfTolerance;
 }
 

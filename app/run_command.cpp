@@ -37,6 +37,7 @@ int runCommand(const RunOptions& options) {
   for (const auto& c : figures.simulation.collisions)
     std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
   for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';
+  keepUntilExit(std::move(*run));
   return job::kExitOk;
 }
 
