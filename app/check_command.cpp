@@ -18,6 +18,7 @@
 #include "app/run_pipeline.hpp"
 #include "geometry/mesh_slice.hpp"
 #include "render/deviation_image.hpp"
+#include "render/scene_export.hpp"
 #include "render/stl_reader.hpp"
 
 namespace lathesim::app {
@@ -219,19 +220,21 @@ render::SectionImage sectionImage(const std::string& title, const SampledSection
   return image;
 }
 
-/// Stages deviation.png and section.png; returns deviation.png's staged path.
-std::filesystem::path stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
-                          const MeridianProfile& part, const MeridianProfile& drawing, const measure::DeviationReport& d,
-                          const std::vector<measure::ZRange>& threadZones, StagedOutput& out,
-                          std::vector<HtmlPicture>& pictures) {
+/// Stages deviation.png and section.png; returns deviation.png's pixels (for a thumbnail).
+render::RgbImage stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
+                                      const MeridianProfile& part, const MeridianProfile& drawing,
+                                      const measure::DeviationReport& d, const std::vector<measure::ZRange>& threadZones,
+                                      StagedOutput& out, std::vector<HtmlPicture>& pictures) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   render::DeviationImageOptions image;
   image.title = options.run.program.string() + " against " + target;
   image.toleranceMm = d.toleranceMm;
   image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
                   " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
+  render::RgbImage deviationPixels;
   const auto deviationPng = out.write("deviation.png", [&](const std::filesystem::path& file) {
-    render::writeDeviationImagePng(mesh, vertexDeviations(mesh, drawing, threadZones), image, file);
+    deviationPixels = render::deviationImage(mesh, vertexDeviations(mesh, drawing, threadZones), image);
+    render::writeFileBytes(render::encodePng(deviationPixels), file);
   });
   pictures.push_back({"deviation.png: the part coloured by its deviation from the drawing", deviationPng});
   render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d, threadZones);
@@ -239,7 +242,7 @@ std::filesystem::path stageDeviationImages(const CheckOptions& options, const Tr
   const auto sectionPng =
       out.write("section.png", [&](const std::filesystem::path& file) { render::writeSectionImagePng(half, file); });
   pictures.push_back({"section.png: the half-section against the drawing", sectionPng});
-  return deviationPng;
+  return deviationPixels;
 }
 
 }  // namespace
@@ -278,19 +281,21 @@ int checkCommand(const CheckOptions& options) {
   meshPart(*run, clock);
   finishStockFile(*run, stockFile);  // before the other files: they are written in one order, whatever the machine's speed
   stageRunFiles(*run, options.run, out, clock);
-  std::filesystem::path deviationPng;
+  run->partPixels = {};  // the thumbnail is of deviation.png
+  render::RgbImage deviationPixels;
   if (options.run.outputs.png) {
     // Coloured vertex by vertex: a revolved part's mesh may have a straight face's two ends only.
     std::optional<TriangleMesh> everyVoxel;
     if (run->partStock().isRevolved()) everyVoxel = run->partStock().meshWithVertexEveryVoxel();
-    deviationPng = stageDeviationImages(options, everyVoxel ? *everyVoxel : run->part, section, part, *drawing, deviation,
-                                        threadZones, out, run->pictures);
+    deviationPixels = stageDeviationImages(options, everyVoxel ? *everyVoxel : run->part, section, part, *drawing,
+                                           deviation, threadZones, out, run->pictures);
+    out.syncWritten();
   }
   run->figures.timing.renderS += clock.lap();
   run->figures.peakMemoryMb = peakMemoryMb();
   run->figures.timing.totalS = clock.total();
   // Outside the timings: a batch's own work, which its benchmark counts as per-job overhead.
-  if (!deviationPng.empty()) stageThumbnail(options.run, deviationPng, out);
+  stageThumbnail(options.run, deviationPixels, out);
   Json report = reportJson(run->figures);
   report["check"] = checkJson(options, deviation, threadChecks, process, checkS);
   stageReports(*run, report, out);
@@ -299,6 +304,7 @@ int checkCommand(const CheckOptions& options) {
   run->progress->finish();
 
   printSummary(options, deviation, threadChecks);
+  keepUntilExit(std::move(*run));
   return allWithin(deviation, threadChecks) ? job::kExitOk : job::kExitOutOfTolerance;
 }
 

@@ -19,7 +19,7 @@ int runCommand(const RunOptions& options) {
   figures.peakMemoryMb = peakMemoryMb();
   figures.timing.totalS = clock.total();
   // Outside the timings: a batch's own work, which its benchmark counts as per-job overhead.
-  if (!run->pictures.empty()) stageThumbnail(options, run->pictures.front().png, out);  // part.png
+  stageThumbnail(options, run->partPixels, out);
   stageReports(*run, reportJson(figures), out);
   out.commit();
   run->progress->stage("done");
@@ -37,6 +37,7 @@ int runCommand(const RunOptions& options) {
   for (const auto& c : figures.simulation.collisions)
     std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
   for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';
+  keepUntilExit(std::move(*run));
   return job::kExitOk;
 }
 

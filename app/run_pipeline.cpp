@@ -172,9 +172,14 @@ struct DrawnPicture {
   std::string png;          // the encoded picture
 };
 
+struct DrawnPictures {
+  std::vector<DrawnPicture> files;
+  render::RgbImage partPixels;  // part.png's, when a thumbnail is asked
+};
+
 // part.png, the views asked for, and a thread's close-up, drawn into memory.
-std::vector<DrawnPicture> drawPictures(const SimulatedRun& run, const RunOptions& options) {
-  std::vector<DrawnPicture> drawn;
+DrawnPictures drawPictures(const SimulatedRun& run, const RunOptions& options) {
+  DrawnPictures drawn;
   const PictureRequest& pictures = options.pictures;
   render::PartImageOptions image =
       partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
@@ -184,8 +189,10 @@ std::vector<DrawnPicture> drawPictures(const SimulatedRun& run, const RunOptions
     if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);
   for (const render::PartView view : views) {
     image.view = view;
-    drawn.push_back({pictureFileName(view), pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view",
-                     render::partImagePng(run.part, run.job.toolpath, image)});
+    render::RgbImage pixels = render::partImage(run.part, run.job.toolpath, image);
+    drawn.files.push_back({pictureFileName(view), pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view",
+                           render::encodePng(pixels)});
+    if (view == render::PartView::Iso && pictures.thumbnailWidthPx) drawn.partPixels = std::move(pixels);
   }
   // A close-up of the first thread measured: six pitches around the middle of its grooves,
   // from a pitch inside its root to half a pitch outside its crest, seen from the front so
@@ -206,8 +213,8 @@ std::vector<DrawnPicture> drawPictures(const SimulatedRun& run, const RunOptions
     // Its own mesh, of what the picture shows only, finer than the voxels.
     const render::CloseUpRegion region = render::closeUpRegion(box, pictures.widthPx, pictures.heightPx, run.figures.voxelMm);
     const TriangleMesh closeUpMesh = run.partStock().mesh(region.low, region.high, region.subdivisions);
-    drawn.push_back({"thread.png", "thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line),
-                     render::partImagePng(closeUpMesh, run.job.toolpath, closeUp)});
+    drawn.files.push_back({"thread.png", "thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line),
+                           render::encodePng(render::partImage(closeUpMesh, run.job.toolpath, closeUp))});
     break;
   }
   return drawn;
@@ -224,12 +231,12 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   // staged after them, so that the files are written in one order whatever the machine's
   // speed. The display is made sure of from this thread: an Xvfb started from the drawing
   // thread would end with it (it dies with the thread that started it).
-  std::future<std::vector<DrawnPicture>> drawing;
+  std::future<DrawnPictures> drawing;
   if (wanted.png) {
     render::ensureDisplay();
     drawing = std::async(std::launch::async, [&run, &options, &timing] {
       Stopwatch drawClock;
-      std::vector<DrawnPicture> drawn = drawPictures(run, options);
+      DrawnPictures drawn = drawPictures(run, options);
       timing.renderS = drawClock.lap();
       return drawn;
     });
@@ -245,9 +252,10 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   if (wanted.vtp) out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
   timing.writeS += writing.lap();
   if (drawing.valid()) {
-    const std::vector<DrawnPicture> drawn = drawing.get();
+    DrawnPictures drawn = drawing.get();
     writing.lap();  // not the wait for the pictures
-    for (const DrawnPicture& picture : drawn) {
+    run.partPixels = std::move(drawn.partPixels);
+    for (const DrawnPicture& picture : drawn.files) {
       const Path png = out.write(picture.file, [&](const Path& file) { render::writeFileBytes(picture.png, file); });
       run.pictures.push_back({picture.description, png});
     }
@@ -264,14 +272,15 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
       if (format == "obj") render::writePartObj(run.part, file);
     });
   }
+  out.syncWritten();  // under way since each file was written: most are done by now
   timing.writeS += writing.lap();
   clock.lap();
 }
 
-void stageThumbnail(const RunOptions& options, const std::filesystem::path& picture, StagedOutput& out) {
-  if (!options.pictures.thumbnailWidthPx) return;
+void stageThumbnail(const RunOptions& options, const render::RgbImage& picture, StagedOutput& out) {
+  if (!options.pictures.thumbnailWidthPx || picture.rgb.empty()) return;
   out.write("thumbnail.png", [&](const std::filesystem::path& file) {
-    render::writeThumbnailPng(picture, file, *options.pictures.thumbnailWidthPx);
+    render::writeFileBytes(render::thumbnailPng(picture, *options.pictures.thumbnailWidthPx), file);
   });
 }
 
@@ -281,6 +290,11 @@ void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report,
   if (run.outputs.html)
     out.write("report.html",
             [&](const Path& file) { writeReportHtml(report, run.job.programText.text().view(), run.pictures, run.modelGlb, file); });
+}
+
+void keepUntilExit(SimulatedRun run) {
+  static const SimulatedRun* const kept = new SimulatedRun(std::move(run));
+  (void)kept;
 }
 
 double peakMemoryMb() {

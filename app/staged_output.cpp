@@ -41,6 +41,15 @@ void syncFile(const fs::path& file) {
   if (synced != 0) throw std::runtime_error(std::strerror(err));
 }
 
+/// A failure to write `temp`, named by `final`, the file the user will look for (the writers
+/// name the file they were given).
+std::runtime_error writeFailure(const fs::path& final, const fs::path& temp, std::string reason) {
+  for (std::size_t at; (at = reason.find(temp.string())) != std::string::npos;)
+    reason.replace(at, temp.string().size(), final.string());
+  if (reason.find(final.string()) == std::string::npos) reason = "cannot write " + final.string() + ": " + reason;
+  return std::runtime_error(reason + "; no output was written");
+}
+
 }  // namespace
 
 StagedOutput::StagedOutput(fs::path folder) : folder_(std::move(folder)) {
@@ -66,6 +75,8 @@ StagedOutput::StagedOutput(fs::path folder) : folder_(std::move(folder)) {
 }
 
 StagedOutput::~StagedOutput() {
+  for (auto& sync : syncs_)  // before their files go
+    if (sync.done.valid()) sync.done.wait();
   std::error_code ignored;
   for (const auto& [temp, final] : staged_) {
     fs::remove(temp, ignored);
@@ -90,20 +101,35 @@ fs::path StagedOutput::write(const std::string& name, const std::function<void(c
   const fs::path temp = stage(name);
   try {
     writer(temp);
-    syncFile(temp);
-    return temp;
   } catch (const std::exception& e) {
-    // The writers name the file they were given: name the one the user will look for.
-    const fs::path final = folder_ / name;
-    std::string reason = e.what();
-    for (std::size_t at; (at = reason.find(temp.string())) != std::string::npos;)
-      reason.replace(at, temp.string().size(), final.string());
-    if (reason.find(final.string()) == std::string::npos) reason = "cannot write " + final.string() + ": " + reason;
-    throw std::runtime_error(reason + "; no output was written");
+    throw writeFailure(folder_ / name, temp, e.what());
+  }
+  // Synced beside the rest of the run rather than before it goes on: each fsync waits for a
+  // journal commit, ~1–3 ms alone and up to a second while other processes write a lot, and
+  // syncs under way together share one.
+  std::future<void> done = std::async(std::launch::async, [temp] { syncFile(temp); });
+  const std::lock_guard<std::mutex> lock(stagedMutex_);
+  syncs_.push_back({folder_ / name, temp, std::move(done)});
+  return temp;
+}
+
+void StagedOutput::syncWritten() {
+  std::vector<Sync> syncs;
+  {
+    const std::lock_guard<std::mutex> lock(stagedMutex_);
+    syncs.swap(syncs_);
+  }
+  for (auto& sync : syncs) {  // on a failure, the others are waited for as they are dropped
+    try {
+      sync.done.get();
+    } catch (const std::exception& e) {
+      throw writeFailure(sync.final, sync.temp, e.what());
+    }
   }
 }
 
 void StagedOutput::commit() {
+  syncWritten();  // every file on the disk before any is renamed into place: a failure leaves nothing
   struct Committing {  // a signal meanwhile waits until every file is in place
     Committing() { InterruptCleanup::beginCommit(); }
     ~Committing() { InterruptCleanup::endCommit(); }

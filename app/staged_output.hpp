@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <mutex>
 #include <ostream>
 #include <string>
@@ -23,21 +24,29 @@ class StagedOutput {
   StagedOutput& operator=(const StagedOutput&) = delete;
 
   /// Writes `folder/name` through `writer`, given the temporary path, and returns that path
-  /// (several threads may write at once, each its own file);
-  /// a failure (an exception, a full disk found when the file is synced) throws
-  /// std::runtime_error naming the final file.
+  /// (several threads may write at once, each its own file); the writer's failure (an
+  /// exception, a full disk) throws std::runtime_error naming the final file. The file is
+  /// synced to the disk in the background: syncWritten() and commit() wait for it.
   std::filesystem::path write(const std::string& name, const std::function<void(const std::filesystem::path&)>& writer);
   /// Where to write the file that will become `folder/name`, for a writer that another
   /// process runs (ffmpeg); write() when lathesim writes it.
   std::filesystem::path stage(const std::string& name);
-  /// Renames every staged file into place.
+  /// Waits until every file written so far is on the disk. A file that could not be synced
+  /// (a full disk found at write-back, a quota) throws std::runtime_error naming it.
+  void syncWritten();
+  /// syncWritten(), then renames every staged file into place (nothing, if a sync failed).
   void commit();
 
  private:
   std::filesystem::path folder_;
   std::vector<std::filesystem::path> madeFolders_;  // outermost first
-  std::mutex stagedMutex_;  // over staged_: files are written from several threads
+  std::mutex stagedMutex_;  // over staged_ and syncs_: files are written from several threads
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temp, final
+  struct Sync {
+    std::filesystem::path final, temp;
+    std::future<void> done;
+  };
+  std::vector<Sync> syncs_;  // of the files write() wrote
 };
 
 /// Writes `file` through a stream; throws std::runtime_error with the system's reason (a

@@ -19,6 +19,7 @@
 #include "batch/manifest.hpp"
 #include "batch/resources.hpp"
 #include "batch/summary.hpp"
+#include "render/drawing_libraries.hpp"
 #include "render/offscreen_display.hpp"
 
 namespace lathesim::batch {
@@ -101,6 +102,7 @@ class BatchRun {
     // start some when they are loaded (log4cplus, under OpenVDB, a pool that stays idle):
     // those were there before the batch began, and a job does not use them.
     inProcess_ = options_.jobMain && threadCount() > 0 && threadCount() == options_.threadsAtStart;
+    if (inProcess_) drawingLibraries_.emplace();  // learnt while the first jobs run
     if (options_.memoryBytes) {
       budget_ = options_.memoryBytes;
     } else if (auto free = availableMemoryBytes()) {
@@ -126,7 +128,8 @@ class BatchRun {
       }
       killOverdue();
       std::vector<Ended> ended = reapEnded();
-      startWhatFits();  // before the thumbnails and stamps: no CPU waits on the batch's own work
+      loadDrawingLibraries();
+      startWhatFits();  // before the stamps: no CPU waits on the batch's own work
       for (const Ended& e : ended) finish(e.job, e.waitStatus);
     }
     if (stoppedBy) stopAll();
@@ -178,6 +181,15 @@ class BatchRun {
                                              std::chrono::duration<double>(*job.settings.timeLimitS));
     runningBytes_ += running.bytes;
     running_.push_back(std::move(running));
+  }
+
+  /// Once the child learning them has ended, the libraries that drawing loads (the GL driver,
+  /// LLVM) are loaded here, so that each job forked from then on finds them loaded. They start
+  /// no thread; should one have, the next jobs are started anew instead.
+  void loadDrawingLibraries() {
+    if (!drawingLibraries_ || !drawingLibraries_->loadIfDone()) return;
+    drawingLibraries_.reset();
+    inProcess_ = threadCount() == options_.threadsAtStart;
   }
 
   /// Until the next deadline, and at most half a second (a missed wake-up costs no more).
@@ -275,6 +287,7 @@ class BatchRun {
   std::optional<std::uint64_t> budget_;
   int slots_ = 1;
   bool inProcess_ = false;  // jobs forked from the batch (options_.jobMain), not started anew
+  std::optional<render::DrawingLibrariesPreload> drawingLibraries_;  // while it is learning them
   int done_ = 0, total_ = 0;
 };
 

@@ -24,6 +24,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "render/offscreen_display.hpp"
+#include "render/scene_export.hpp"
 #include "render/vtk_scene.hpp"
 
 namespace lathesim::render {
@@ -128,8 +129,8 @@ vtkSmartPointer<vtkActor> lineActor(const std::vector<Segment>& segments, const 
 
 }  // namespace
 
-void writeDeviationImagePng(const TriangleMesh& part, const std::vector<float>& deviationMm,
-                            const DeviationImageOptions& options, const std::filesystem::path& png) {
+RgbImage deviationImage(const TriangleMesh& part, const std::vector<float>& deviationMm,
+                        const DeviationImageOptions& options) {
   if (deviationMm.size() != part.vertices.size())
     throw std::runtime_error("deviation image: " + std::to_string(deviationMm.size()) + " deviations for " +
                              std::to_string(part.vertices.size()) + " vertices");
@@ -212,7 +213,12 @@ void writeDeviationImagePng(const TriangleMesh& part, const std::vector<float>& 
   window->AddRenderer(paper);
   window->AddRenderer(scene);
   window->AddRenderer(overlay);
-  writeWindowPng(window, png);
+  return windowImage(window);
+}
+
+void writeDeviationImagePng(const TriangleMesh& part, const std::vector<float>& deviationMm,
+                            const DeviationImageOptions& options, const std::filesystem::path& png) {
+  writeFileBytes(encodePng(deviationImage(part, deviationMm, options)), png);
 }
 
 SectionFrame sectionFrame(const SectionImage& image) {

@@ -8,6 +8,7 @@
 
 #include "geometry/meridian_profile.hpp"
 #include "geometry/triangle_mesh.hpp"
+#include "render/rgb_image.hpp"
 
 namespace lathesim::render {
 
@@ -28,6 +29,10 @@ struct DeviationImageOptions {
 /// The shaded part, each vertex coloured by `deviationMm` (one per mesh vertex; > 0 excess,
 /// < 0 gouge): green within ±tolerance, blue shades for gouge and red shades for excess, up
 /// to the largest |deviation| (at least twice the tolerance), with a labelled colour bar.
+/// Throws std::runtime_error unless there is one deviation per vertex.
+RgbImage deviationImage(const TriangleMesh& part, const std::vector<float>& deviationMm,
+                        const DeviationImageOptions& options);
+/// The same picture as the PNG file `png`.
 void writeDeviationImagePng(const TriangleMesh& part, const std::vector<float>& deviationMm,
                             const DeviationImageOptions& options, const std::filesystem::path& png);
 

@@ -10,9 +10,9 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
   picture.writePng(png);
 }
 
-std::string partImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options) {
+RgbImage partImage(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options) {
   PartPicture picture(options, toolpath, part);
-  return picture.png();
+  return picture.image();
 }
 
 }  // namespace lathesim::render

@@ -13,6 +13,7 @@
 #include "geometry/part_dimensions.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "interp/move.hpp"
+#include "render/rgb_image.hpp"
 
 namespace lathesim::render {
 
@@ -87,8 +88,8 @@ struct PartImageOptions {
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,
                        const PartImageOptions& options, const std::filesystem::path& png);
-/// The same picture encoded as a PNG in memory: to draw it in one thread and write it in
-/// another.
-std::string partImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);
+/// The same picture's pixels in memory: to draw it in one thread and write it in another, and
+/// to shrink it into a thumbnail without reading the PNG back.
+RgbImage partImage(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);
 
 }  // namespace lathesim::render

@@ -306,7 +306,7 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
 }
 
 void PartPicture::writePng(const std::filesystem::path& png) { writeWindowPng(scene_->window, png); }
-std::string PartPicture::png() { return windowPng(scene_->window); }
+RgbImage PartPicture::image() { return windowImage(scene_->window); }
 
 void PartPicture::readRgb(std::vector<unsigned char>& rgb) {
   vtkRenderWindow* window = scene_->window;

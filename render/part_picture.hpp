@@ -13,6 +13,7 @@
 #include "interp/motion/toolpath_clock.hpp"
 #include "render/part_image.hpp"
 #include "render/picture_frame.hpp"
+#include "render/rgb_image.hpp"
 
 namespace lathesim::render {
 
@@ -35,7 +36,7 @@ class PartPicture {
             const std::string& caption);
 
   void writePng(const std::filesystem::path& png);
-  std::string png();  // the picture encoded as a PNG
+  RgbImage image();  // the picture's pixels
   /// The picture as rows of RGB bytes, top row first (as video encoders take them).
   void readRgb(std::vector<unsigned char>& rgb);
 

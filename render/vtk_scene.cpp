@@ -3,21 +3,19 @@
 #include "render/vtk_scene.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
-#include <vtkPNGWriter.h>
+#include <vtkImageData.h>
 #include <vtkPoints.h>
 #include <vtkPolyDataNormals.h>
 #include <vtkTextProperty.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
+
+#include "render/scene_export.hpp"
 
 namespace lathesim::render {
 
@@ -116,32 +114,26 @@ vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx,
   return actor;
 }
 
-std::string windowPng(vtkRenderWindow* window) {
+RgbImage windowImage(vtkRenderWindow* window) {
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->ShouldRerenderOff();  // the back buffer holds the frame just rendered: a second render would cost as much again
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->WriteToMemoryOn();
-  writer->Write();
-  vtkUnsignedCharArray* bytes = writer->GetResult();
-  if (bytes == nullptr || bytes->GetNumberOfValues() == 0) {
-    throw std::runtime_error("cannot encode the image as PNG");
-  }
-  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+  grab->Update();
+  vtkImageData* grabbed = grab->GetOutput();
+  const int* size = grabbed->GetDimensions();
+  const auto* pixels = static_cast<const unsigned char*>(grabbed->GetScalarPointer());
+  RgbImage image{size[0], size[1], {}};
+  image.rgb.assign(pixels, pixels + static_cast<std::size_t>(size[0]) * static_cast<std::size_t>(size[1]) * 3);
+  return image;
 }
 
 void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png) {
   // Encoded in memory and written here, so a bad path gives our message, not VTK's
   // ("Ran out of disk space") on stderr.
-  const std::string bytes = windowPng(window);
-  std::ofstream out(png, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + png.string() + ": " + std::strerror(errno));
+  writeFileBytes(encodePng(windowImage(window)), png);
 }
 
 }  // namespace lathesim::render

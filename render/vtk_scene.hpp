@@ -17,6 +17,7 @@
 
 #include "geometry/triangle_mesh.hpp"
 #include "render/picture_frame.hpp"
+#include "render/rgb_image.hpp"
 
 namespace lathesim::render {
 
@@ -38,11 +39,11 @@ void applyFrame(vtkCamera* camera, const PictureFrame& f);
 
 vtkNew<vtkTextActor> cornerText(const std::string& text, int fontPx, const std::array<double, 3>& colour);
 
-/// Renders `window` (off-screen, already sized and populated) and returns it encoded as a
-/// PNG. Throws std::runtime_error if it cannot be encoded.
-std::string windowPng(vtkRenderWindow* window);
+/// Renders `window` (off-screen, already sized and populated) and returns its pixels.
+RgbImage windowImage(vtkRenderWindow* window);
 
-/// The same, written to `png`. Throws std::runtime_error if it cannot be encoded or written.
+/// The same, encoded as a PNG and written to `png`. Throws std::runtime_error if it cannot be
+/// encoded or written.
 void writeWindowPng(vtkRenderWindow* window, const std::filesystem::path& png);
 
 }  // namespace lathesim::render
