@@ -181,6 +181,77 @@ void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, doub
   }
 }
 
+int RevolvedRegion::ColumnPlan::plannedPieces() const {
+  return static_cast<int>(std::count_if(edgeOf_.begin(), edgeOf_.end(), [](const auto& edges) { return edges[0] != kWhole; }));
+}
+
+void RevolvedRegion::planColumn(double rhoLow, double rhoHigh, double z0, double dz, ColumnPlan& plan) const {
+  // An edge must lead the next one by more than rounding can take back anywhere between.
+  constexpr double kMargin = 1e-9;
+  plan.z0_ = z0;
+  plan.dz_ = dz;
+  plan.edgeOf_.resize(pieces_.size());
+  for (std::size_t p = 0; p < pieces_.size(); ++p) {
+    const Piece& piece = pieces_[p];
+    std::array<int, kColumn>& edgeOf = plan.edgeOf_[p];
+    edgeOf.fill(ColumnPlan::kWhole);
+    if (!piece.isArea || piece.crossesAxis) continue;
+    bool planned = true;
+    for (int k = 0; k < kColumn && planned; ++k) {
+      const double z = static_cast<double>(k) * dz + z0;
+      int farthestAt[2] = {-1, -2};
+      for (int end = 0; end < 2; ++end) {
+        const double r = end == 0 ? rhoLow : rhoHigh;
+        double first = -std::numeric_limits<double>::infinity(), second = first;
+        for (int i = piece.firstEdge; i < piece.firstEdge + piece.edgeCount; ++i) {
+          const Edge& e = edges_[i];
+          const double d = (e.nx * (r - e.ax) - e.nz * e.az) + e.nz * z;
+          if (d > first) {
+            second = first;
+            first = d;
+            farthestAt[end] = i;
+          } else {
+            second = std::max(second, d);
+          }
+        }
+        planned &= first - second > kMargin;
+      }
+      planned &= farthestAt[0] == farthestAt[1];
+      if (planned) edgeOf[k] = farthestAt[0];
+    }
+    if (!planned) edgeOf.fill(ColumnPlan::kWhole);
+  }
+}
+
+void RevolvedRegion::signedDistanceColumn(const ColumnPlan& plan, double rho, double cap, double (&out)[kColumn]) const {
+  for (double& v : out) v = std::numeric_limits<double>::infinity();
+  for (std::size_t p = 0; p < pieces_.size(); ++p) {
+    const Piece& piece = pieces_[p];
+    const std::array<int, kColumn>& edgeOf = plan.edgeOf_[p];
+    if (edgeOf[0] == ColumnPlan::kWhole) {
+      pieceDistanceColumn(edges_.data(), piece, rho, plan.z0_, plan.dz_, cap, out);
+      if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, plan.z0_, plan.dz_, cap, out);
+      continue;
+    }
+    // pieceDistanceColumn's arithmetic, for the one edge that is farthest out at each point.
+    for (int k = 0; k < kColumn; ++k) {
+      const Edge& e = edges_[edgeOf[k]];
+      const double z = static_cast<double>(k) * plan.dz_ + plan.z0_;
+      const double line = (e.nx * (rho - e.ax) - e.nz * e.az) + e.nz * z;
+      double distance = line;
+      if (line > 0.0 && line < cap) {
+        const double along = (-e.nz * (rho - e.ax) - e.nx * e.az) + e.nx * z;
+        double past = -along;
+        const double beyond = along - e.length;
+        past = beyond > past ? beyond : past;
+        past = past > 0.0 ? past : 0.0;
+        distance = std::sqrt(line * line + past * past);
+      }
+      out[k] = distance < out[k] ? distance : out[k];
+    }
+  }
+}
+
 double RevolvedRegion::planarDistance(double r, double z, double cap) const {
   double d = std::numeric_limits<double>::infinity();
   for (const Piece& piece : pieces_) d = std::min(d, pieceDistance(edges_.data(), piece, r, z, cap));

@@ -9,6 +9,7 @@
 // Outside the union the value is the exact distance; inside it is a lower bound of the
 // depth, which is all a max-based removal needs.
 
+#include <array>
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
@@ -29,6 +30,27 @@ class RevolvedRegion {
   /// them together lets the compiler vectorise the edge loops.
   static constexpr int kColumn = 8;
   void signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const;
+
+  /// The points (ρ, z0 + k·dz), k = 0…kColumn−1, made ready for every ρ in [ρLow, ρHigh]
+  /// (voxel columns of many radii can share one place): per convex piece and point, the one
+  /// edge whose line lies farthest out. Where an edge is so at both ends, by a margin, it is so
+  /// throughout — the farthest of the lines is convex in ρ and meets that edge's line at both
+  /// ends — and it alone gives the piece's distance there, inside or out.
+  class ColumnPlan {
+   public:
+    /// How many pieces are read one edge a point (the others are searched whole).
+    int plannedPieces() const;
+
+   private:
+    friend class RevolvedRegion;
+    static constexpr int kWhole = -1;  // the piece is searched whole at every point
+    double z0_ = 0.0, dz_ = 0.0;
+    std::vector<std::array<int, kColumn>> edgeOf_;  // per piece: per point, its edge; or kWhole
+  };
+  void planColumn(double rhoLow, double rhoHigh, double z0, double dz, ColumnPlan& plan) const;
+  /// signedDistanceColumn(ρ, plan's z0 and dz, cap, out) for ρ within the plan's range, to the
+  /// last bit: the planned pieces read one edge a point, computed as the whole search does.
+  void signedDistanceColumn(const ColumnPlan& plan, double rho, double cap, double (&out)[kColumn]) const;
 
   /// The plain 2D signed distance of (r, z) to the union of the polygons, r any sign: no
   /// revolution, no mirror image (for regions that are not revolved: a thread's tool outline,
