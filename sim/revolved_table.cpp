@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <mutex>
 
 #include "sim/column_write.hpp"
 
@@ -12,6 +13,11 @@ namespace lathesim::sim {
 namespace {
 
 constexpr int kChunk = RevolvedRegion::kColumn;  // 8 cells along Z: one leaf's column
+// Below these a write's cells (classes by chunks of its box) or its ghost verdicts (orbits)
+// are done on this thread: waking another and waiting for it costs more (measured on a CAM
+// contour's 0.03 mm steps, which write a few thousand cells each).
+constexpr std::size_t kParallelWork = 20000;
+constexpr std::size_t kParallelVerdicts = 2000;
 static_assert(kChunk == 8);
 
 int alignDown(int k) { return k & ~(kChunk - 1); }
@@ -282,114 +288,149 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   const int chunkHigh = std::min(chunks_ - 1, static_cast<int>(std::floor((zHigh / h_ - kBase_) / kChunk)));
   if (classLow > classHigh || chunkLow > chunkHigh) return 0.0;
 
+  // A chunk's ghost candidates, gathered by each task and then put in class and chunk order,
+  // the order in which a single thread would have found them.
   struct Candidates {
-    int chunk;
+    int n, chunk;
     std::uint8_t bits;
   };
   const int classCount = classHigh - classLow + 1;
   std::vector<double> lostOf(classCount, 0.0);
   // Air voxels lost nothing when their class's cell did: per class, voxels to take back.
   std::vector<double> airVoxelsLost(classCount, 0.0);
-  std::vector<std::vector<Candidates>> ghostsOf(adding ? 0 : classCount);
+  std::vector<Candidates> ghostCandidates;
+  std::mutex ghostCandidatesMutex;
   std::vector<char> changedClass(classCount, 0);
   // Classes come in bins one voxel wide in ρ (at 22 mm about a hundred classes a bin): what
-  // depends on the place only — the region near it (RevolvedRegion::nearInto, as the writer
-  // takes it per leaf) and whether the change bound reaches it — is asked once per bin and
-  // group of chunks, for a place half a voxel wider.
+  // depends on the place only — whether the change bound reaches it, the region near it
+  // (RevolvedRegion::nearInto, as the writer takes it per leaf: only the pieces and edges that
+  // can be nearest there), whether the region is far or covers it — is asked once per bin and
+  // chunk, for a place half a voxel wider. Then the bin's classes are written one after
+  // another, each along its chunks: a class's slots and cells lie together in memory.
   std::vector<int> binStart{classLow};
   for (int c = classLow + 1; c <= classHigh; ++c)
     if (std::floor(rho_[c] / h_) != std::floor(rho_[binStart.back()] / h_)) binStart.push_back(c);
   binStart.push_back(classHigh + 1);
-  constexpr int kGroup = 4;
-  constexpr std::size_t kFewPieces = 4;  // fewer: the whole region is as quick as a subset
-  const bool subsets = region.pieceCount() > kFewPieces;
+  const bool subsets = true;
   const double binHalfWidth = 0.5 * h_;
-  const double groupRadius = 0.5 * kGroup * kChunk * h_ + binHalfWidth + reach;
-  const double chunkReach = 0.5 * (kChunk - 1) * h_ + binHalfWidth + changeMargin;
+  const double placeRadius = 0.5 * kChunk * h_ + binHalfWidth + reach;
+  const double changeReach = binHalfWidth + changeMargin;
   const double cellReach = std::hypot(0.5 * (kChunk - 1) * h_, binHalfWidth);
   const double farReach = cellReach + band_ + h_;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, binStart.size() - 1), [&](const auto& range) {
-    RevolvedRegion nearby;
+  // A bin of this many classes or more reads the region through a plan of its place (see
+  // RevolvedRegion::planColumn): one edge a piece and cell rather than all of them.
+  constexpr int kPlannedClasses = 4;
+  struct Place {
+    int chunk;
+    bool covered;  // deep inside the region: every open cell is filled
+    const RevolvedRegion* local;
+    const RevolvedRegion::ColumnPlan* plan;  // or none
+  };
+  const auto writeBins = [&](const tbb::blocked_range<std::size_t>& range) {
+    std::vector<RevolvedRegion> nearby(subsets ? chunkHigh - chunkLow + 1 : 0);
+    std::vector<RevolvedRegion::ColumnPlan> plans(chunkHigh - chunkLow + 1);
+    std::vector<Place> places;
+    std::vector<Candidates> found;
     for (std::size_t bin = range.begin(); bin != range.end(); ++bin) {
       const int first = binStart[bin], last = binStart[bin + 1];
       const double rhoMid = (std::floor(rho_[first] / h_) + 0.5) * h_;
-      for (int group = chunkLow; group <= chunkHigh; group += kGroup) {
-        const int groupEnd = std::min(chunkHigh + 1, group + kGroup);
+      places.clear();
+      for (int chunk = chunkLow; chunk <= chunkHigh; ++chunk) {
+        const int k0 = kBase_ + chunk * kChunk;
+        if (changes) {
+          // At the chunk's own cells rather than its centre: a chunk is 8 voxels tall, and a
+          // move's sliver of change is often thinner than that.
+          double toChanges[kChunk];
+          changes->signedDistanceColumn(rhoMid, k0 * h_, h_, changeReach + h_, toChanges);
+          if (*std::min_element(toChanges, toChanges + kChunk) > changeReach) continue;
+        }
         const RevolvedRegion* local = &region;
         if (subsets) {
-          const double zMid = (kBase_ + 0.5 * (group + groupEnd) * kChunk) * h_;
-          region.nearInto(rhoMid, zMid, groupRadius, nearby);
-          if (nearby.empty()) continue;
-          local = &nearby;
+          RevolvedRegion& near = nearby[chunk - chunkLow];
+          region.nearInto(rhoMid, (k0 + 0.5 * kChunk) * h_, placeRadius, near);
+          if (near.empty()) continue;
+          local = &near;
         }
-        for (int chunk = group; chunk < groupEnd; ++chunk) {
+        // The region's distance changes by at most the distance moved (each piece's is
+        // 1-Lipschitz, inside and out, and so is their minimum): from the place's centre to
+        // its cells, at most cellReach. Beyond reach nothing changes and nothing is a ghost
+        // candidate; deep inside, every open cell is filled, as writeColumn would fill it.
+        const double centre = local->signedDistance(rhoMid, (k0 + 0.5 * (kChunk - 1)) * h_, farReach + h_);
+        if (centre > farReach) continue;
+        const bool covered = centre < -farReach;
+        RevolvedRegion::ColumnPlan* plan = nullptr;
+        if (!covered && last - first >= kPlannedClasses) {
+          plan = &plans[chunk - chunkLow];
+          local->planColumn(rho_[first], rho_[last - 1], k0 * h_, h_, *plan);
+        }
+        places.push_back({chunk, covered, local, plan});
+      }
+      for (int c = first; c < last; ++c) {
+        const int n = c - classLow;
+        for (const auto& [chunk, covered, local, plan] : places) {
           const int k0 = kBase_ + chunk * kChunk;
-          const double zCentre = (k0 + 0.5 * (kChunk - 1)) * h_;
-          if (changes && changes->signedDistance(rhoMid, zCentre, chunkReach + h_) > chunkReach) continue;
-          // The region's distance changes by at most the distance moved (each piece's is
-          // 1-Lipschitz, inside and out, and so is their minimum): from the place's centre to
-          // its cells, at most cellReach. Beyond reach nothing changes and nothing is a ghost
-          // candidate; deep inside, every open cell is filled, as writeColumn would fill it.
-          const double centre = local->signedDistance(rhoMid, zCentre, farReach + h_);
-          if (centre > farReach) continue;
-          const bool covered = centre < -farReach;
-          for (int c = first; c < last; ++c) {
-            const int n = c - classLow;
-            if (covered) {  // a uniform chunk turns over whole: what fill() would do, without its cells
-              std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
-              if (slot == (adding ? kSolidChunk : kAirChunk)) continue;  // already so
-              if (slot == (adding ? kAirChunk : kSolidChunk)) {  // no air voxels: they are in mixed chunks
-                slot = adding ? kSolidChunk : kAirChunk;
-                lostOf[n] += adding ? -kChunk : kChunk;
-                markChanged(c, chunk);
-                changedClass[n] = 1;
-                continue;
-              }
-            }
-            ChunkCells cells;
-            open(c, chunk, cells);
-            float* values = cells.values;
-            float before[kChunk];
-            std::memcpy(before, values, sizeof before);
-            const auto takeBackAirVoxels = [&] {
-              if (!classHasAirVoxels_[c]) return;
-              for (int k = 0; k < kChunk; ++k)
-                if (const int air = airVoxelsIn(c, chunk * kChunk + k))
-                  airVoxelsLost[n] += air * (std::clamp(0.5 - before[k] * w.inverseVoxel, 0.0, 1.0) -
-                                             std::clamp(0.5 - values[k] * w.inverseVoxel, 0.0, 1.0));
-            };
-            if (covered) {
-              bool changed = false;
-              lostOf[n] += fill(values, *cells.activeBits, w, changed);
-              if (changed) {
-                takeBackAirVoxels();
-                markChanged(c, chunk);
-                changedClass[n] = 1;
-                store(c, chunk, cells);
-              }
+          if (covered) {  // a uniform chunk turns over whole: what fill() would do, without its cells
+            std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+            if (slot == (adding ? kSolidChunk : kAirChunk)) continue;  // already so
+            if (slot == (adding ? kAirChunk : kSolidChunk)) {  // no air voxels: they are in mixed chunks
+              slot = adding ? kSolidChunk : kAirChunk;
+              lostOf[n] += adding ? -kChunk : kChunk;
+              markChanged(c, chunk);
+              changedClass[n] = 1;
               continue;
             }
-            bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
-            for (int k = 0; k < kChunk; ++k) anyOpen |= w.sign * values[k] > -w.band;
-            if (!anyOpen) continue;
-            double psi[kChunk];
-            local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
-            std::uint8_t& active = *cells.activeBits;
-            const std::uint8_t activeBefore = active;
-            std::uint8_t ghostBits = 0;
-            lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
-            if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
+          }
+          ChunkCells cells;
+          open(c, chunk, cells);
+          float* values = cells.values;
+          float before[kChunk];
+          std::memcpy(before, values, sizeof before);
+          const auto takeBackAirVoxels = [&] {
+            if (!classHasAirVoxels_[c]) return;
+            for (int k = 0; k < kChunk; ++k)
+              if (const int air = airVoxelsIn(c, chunk * kChunk + k))
+                airVoxelsLost[n] += air * (std::clamp(0.5 - before[k] * w.inverseVoxel, 0.0, 1.0) -
+                                           std::clamp(0.5 - values[k] * w.inverseVoxel, 0.0, 1.0));
+          };
+          if (covered) {
+            bool changed = false;
+            lostOf[n] += fill(values, *cells.activeBits, w, changed);
+            if (changed) {
               takeBackAirVoxels();
               markChanged(c, chunk);
               changedClass[n] = 1;
               store(c, chunk, cells);
             }
-            if (ghostBits && !adding) ghostsOf[n].push_back({chunk, ghostBits});
+            continue;
           }
+          bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
+          for (int k = 0; k < kChunk; ++k) anyOpen |= w.sign * values[k] > -w.band;
+          if (!anyOpen) continue;
+          double psi[kChunk];
+          if (plan) local->signedDistanceColumn(*plan, rho_[c], band_, psi);
+          else local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
+          std::uint8_t& active = *cells.activeBits;
+          const std::uint8_t activeBefore = active;
+          std::uint8_t ghostBits = 0;
+          lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
+          if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
+            takeBackAirVoxels();
+            markChanged(c, chunk);
+            changedClass[n] = 1;
+            store(c, chunk, cells);
+          }
+          if (ghostBits && !adding) found.push_back({n, chunk, ghostBits});
         }
       }
     }
-  });
+    if (found.empty()) return;
+    const std::lock_guard<std::mutex> lock(ghostCandidatesMutex);
+    ghostCandidates.insert(ghostCandidates.end(), found.begin(), found.end());
+  };
+  const std::size_t work = static_cast<std::size_t>(classCount) * (chunkHigh - chunkLow + 1);
+  const tbb::blocked_range<std::size_t> bins(0, binStart.size() - 1);
+  if (work < kParallelWork) writeBins(bins);
+  else tbb::parallel_for(bins, writeBins);
 
   double lost = 0.0;
   for (int n = 0; n < classCount; ++n) lost += lostOf[n] * columns_[classLow + n] - airVoxelsLost[n];
@@ -415,23 +456,27 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     };
     std::vector<Candidate> candidates;
     std::size_t verdicts = 0;
-    for (int n = 0; n < classCount; ++n) {
-      const int c = classLow + n;
-      for (const Candidates& found : ghostsOf[n])
-        for (int bit = 0; bit < kChunk; ++bit)
-          if ((found.bits >> bit) & 1) {
-            candidates.push_back({{c, found.chunk * kChunk + bit}, verdicts});
-            verdicts += orbitStart_[c + 1] - orbitStart_[c];
-          }
+    std::sort(ghostCandidates.begin(), ghostCandidates.end(),
+              [](const Candidates& a, const Candidates& b) { return a.n != b.n ? a.n < b.n : a.chunk < b.chunk; });
+    for (const Candidates& found : ghostCandidates) {
+      const int c = classLow + found.n;
+      for (int bit = 0; bit < kChunk; ++bit)
+        if ((found.bits >> bit) & 1) {
+          candidates.push_back({{c, found.chunk * kChunk + bit}, verdicts});
+          verdicts += orbitStart_[c + 1] - orbitStart_[c];
+        }
     }
     std::vector<std::uint8_t> ghostOrbit(verdicts);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64), [&](const auto& range) {
+    const auto decide = [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t m = range.begin(); m != range.end(); ++m) {
         const auto& [at, first] = candidates[m];
         for (int o = orbitStart_[at.c]; o < orbitStart_[at.c + 1]; ++o)
           ghostOrbit[first + (o - orbitStart_[at.c])] = isGhost(orbits_[o].first, orbits_[o].second, kBase_ + at.cell, material);
       }
-    });
+    };
+    const tbb::blocked_range<std::size_t> all(0, candidates.size(), 64);
+    if (verdicts < kParallelVerdicts) decide(all);
+    else tbb::parallel_for(all, decide);
     std::vector<Ghost> ghosts;                            // the whole class's cell
     std::vector<std::pair<Ghost, VoxelIndex>> airVoxels;  // some of its columns only
     for (const auto& [at, first] : candidates) {
