@@ -6,7 +6,9 @@
 #
 #   scripts/sanitize.sh          the whole suite (ctest)
 #   scripts/sanitize.sh ci       what the test command runs (scripts/test.sh), within CI's
-#                                time: every geometry, interp, job and measure test, and the
+#                                time: every geometry, interp, job and measure test, the
+#                                turning writes' route (sim_table_tests: the revolved table,
+#                                its air voxels and the level set built from it), and the
 #                                command's bad-input, exit-status and output-safety tests
 #
 # SANITIZE_JOBS sets the build's parallelism (default: the CPUs).
@@ -44,12 +46,14 @@ fi
 app_filter='ExitStatus.*:CommandLine.*:TerminalSafety.*:OutputFolder.*:OutputFailure.FileSize*:InterruptedRun.*'
 app_filter+=':Cli.BadNumber*:Cli.O0006*:Cli.UnknownSetupKey*:Cli.VoxelTooFine*:Cli.AtLineThatDoesNotExist*'
 app_filter+=':CheckCommand.*'
-cmake --build "$build" --parallel "$jobs" --target geometry_tests interp_tests job_tests measure_tests app_tests lathesim
+cmake --build "$build" --parallel "$jobs" --target geometry_tests interp_tests job_tests measure_tests sim_table_tests app_tests lathesim
 status=0
 for suite in geometry interp job measure; do
   echo "sanitize: ${suite}_tests"
   "$build/tests/$suite/${suite}_tests" --gtest_brief=1 || status=1
 done
+echo "sanitize: sim_table_tests"
+"$build/tests/sim/sim_table_tests" --gtest_brief=1 || status=1
 echo "sanitize: app_tests ($app_filter)"
 "$build/tests/app/app_tests" --gtest_brief=1 --gtest_filter="$app_filter" || status=1
 exit $status
