@@ -8,22 +8,10 @@
 #include "app/tool_picture.hpp"
 #include "geometry/profile_polylines.hpp"
 #include "geometry/revolved_mesh.hpp"
+#include "interp/text/text_lines.hpp"
 
 namespace lathesim::app {
 namespace {
-
-std::vector<std::string> linesOf(std::string_view text) {
-  std::vector<std::string> lines;
-  for (std::size_t begin = 0; begin < text.size();) {
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(begin, end - begin);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    lines.emplace_back(line);
-    begin = end + 1;
-  }
-  return lines;
-}
 
 std::string clockText(double clock, interp::Pace pace) {
   char text[32];
@@ -51,7 +39,7 @@ CutRecording::CutRecording(const job::Job& job, const AnimationRequest& request,
   options.mp4 = out.stage("cut.mp4");
   if (request.gif) options.gif = out.stage("cut.gif");
 
-  const auto lines = std::make_shared<std::vector<std::string>>(linesOf(job.programText.text().view()));
+  const auto lines = std::make_shared<std::vector<std::string>>(interp::linesOf(job.programText.text().view()));
   const double total = interp::ToolpathClock(job.toolpath, request.pace).total();
   const interp::Pace pace = request.pace;
   auto caption = [this, lines, total, pace](const interp::ToolpathInstant& instant, double clock) {

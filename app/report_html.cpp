@@ -11,6 +11,7 @@
 
 #include "app/staged_output.hpp"
 #include "batch/html_text.hpp"
+#include "interp/text/text_lines.hpp"
 #include "viewer/viewer_script.hpp"
 
 namespace lathesim::app {
@@ -95,19 +96,6 @@ std::string pngSizeAttributes(const std::string& png) {
     return value;
   };
   return "width=\"" + std::to_string(bigEndian(16)) + "\" height=\"" + std::to_string(bigEndian(20)) + "\" ";
-}
-
-std::vector<std::string> linesOf(std::string_view text) {
-  std::vector<std::string> lines;
-  for (std::size_t begin = 0; begin < text.size();) {
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(begin, end - begin);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    lines.emplace_back(line);
-    begin = end + 1;
-  }
-  return lines;
 }
 
 std::string summary(const Json& r) {
@@ -217,7 +205,7 @@ std::string listing(const Json& r, std::string_view programText) {
       "the more)</span><span><span class=\"swatch\" style=\"background:#c5221f\"></span>collision</span><span><span "
       "class=\"swatch\" style=\"background:#e37400\"></span>warning</span></p>\n<table class=\"listing\">\n"
       "<tr><th class=\"num\">line</th><th class=\"num\">time, s</th><th class=\"num\">removed, mm³</th><th>program</th></tr>\n";
-  const std::vector<std::string> lines = linesOf(programText);
+  const std::vector<std::string> lines = interp::linesOf(programText);
   for (std::size_t n = 0; n < lines.size(); ++n) {
     const int line = static_cast<int>(n) + 1;
     const auto figures = byLine.find(line);
