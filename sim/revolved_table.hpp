@@ -152,6 +152,8 @@ class RevolvedTable {
   std::vector<int> classOfColumn_;        // (i + halfWidth)·(2·halfWidth + 1) + j + halfWidth → class or kAir
   std::vector<std::int64_t> sumOfSquares_;  // per class, ascending: i² + j²
   std::vector<double> rho_;               // per class: ρ of its widest column (i, j), i ≥ j ≥ 0, j least
+  std::vector<int> binFirst_;             // per bin of classes one voxel wide in ρ: its first class; then the class count
+  std::vector<int> binOfClass_;           // per class: its bin
   std::vector<double> columns_;           // per class: how many columns it has
   std::vector<int> orbitStart_;           // per class: its columns up to symmetry, orbits_[start…next)
   std::vector<std::pair<int, int>> orbits_;  // (i, j) with i ≥ j ≥ 0
