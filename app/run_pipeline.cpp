@@ -292,9 +292,13 @@ void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report,
             [&](const Path& file) { writeReportHtml(report, run.job.programText.text().view(), run.pictures, run.modelGlb, file); });
 }
 
+// The run keepUntilExit keeps. A variable other files could read, so that the compiler keeps
+// the pointer stored and leak checkers find the run reachable from it: a function's static that
+// nothing reads was optimised away, and LeakSanitizer reported the run as lost.
+const SimulatedRun* keptUntilExit = nullptr;
+
 void keepUntilExit(SimulatedRun run) {
-  static const SimulatedRun* const kept = new SimulatedRun(std::move(run));
-  (void)kept;
+  if (keptUntilExit == nullptr) keptUntilExit = new SimulatedRun(std::move(run));
 }
 
 double peakMemoryMb() {
