@@ -161,15 +161,6 @@ TEST(CheckSeed001, AgainstAnStlOfTheDesign) {
   EXPECT_EQ(right.outcome.status, 0) << right.outcome.out << right.outcome.err;
 }
 
-TEST(CheckCommand, AnStlThatIsNotOneIsAnError) {
-  ScratchDir dir("check-bad-stl");
-  test::writeFile(dir.path() / "design.stl", "this is not an STL");
-  const CheckRun run = check(dir, seed001("r24") + std::vector<std::string>{"--target", (dir.path() / "design.stl").string()});
-  EXPECT_EQ(run.outcome.status, 1);
-  EXPECT_NE(run.outcome.err.find("design.stl: error: not an STL file with triangles"), std::string::npos)
-      << run.outcome.err;
-}
-
 // A Φ50 × 40 bar (face Z0). Drawn: Φ40 from Z0 to Z-30, a shoulder, Φ50 to Z-40. The program
 // turns Φ40 but runs its first 10 mm at Φ39 — 0.5 mm under the radius — on line 3:
 //   1 G00 X100 Z5 / 2 G00 X39 Z2 / 3 G01 Z-10 / 4 G01 X40 / 5 G01 Z-30 / 6 G01 X52 / 7 G00 X100 Z5
@@ -246,23 +237,6 @@ TEST(CheckThread, WrongHandAndPitchFail) {
   EXPECT_FALSE(items[2].at("within").get<bool>());
   EXPECT_FALSE(run.check.at("within_tolerance").get<bool>());
   EXPECT_NE(run.outcome.out.find("hand right (expected left)"), std::string::npos) << run.outcome.out;
-}
-
-TEST(CheckCommand, BadDrawingIsAnErrorWithItsLine) {
-  ScratchDir dir("check-bad");
-  test::writeFile(dir.path() / "drawing.toml", "[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 50\nzz = -20\n");
-  const CheckRun run = check(dir, seed001("r24") + std::vector<std::string>{"--target", (dir.path() / "drawing.toml").string()});
-  EXPECT_EQ(run.outcome.status, 1);
-  EXPECT_NE(run.outcome.err.find("drawing.toml:6:1: error: unknown profile key 'zz'"), std::string::npos)
-      << run.outcome.err;
-  EXPECT_FALSE(fs::exists(dir.path() / "out"));
-}
-
-TEST(CheckCommand, NeedsATarget) {
-  ScratchDir dir("check-none");
-  const CheckRun run = check(dir, seed001("r24"));
-  EXPECT_EQ(run.outcome.status, 2);  // a bad command line
-  EXPECT_NE(run.outcome.err.find("--target"), std::string::npos) << run.outcome.err;
 }
 
 }  // namespace

@@ -258,44 +258,6 @@ TEST_F(RunSeed001, PartPngIs1600By1200) {
   EXPECT_EQ(bigEndian32(bytes, 20), 1200u);
 }
 
-// ---------------------------------------------------------------------------------------
-// Bad input: exit status 1, the diagnostic on stderr, nothing written.
-
-TEST(Cli, BadNumberIsReportedWithItsLocationAndCaretAndWritesNothing) {
-  TempDir dir("bad");
-  const fs::path program = dir.path() / "bad.nc";
-  writeFile(program, "G00 X60 Z5;\nG00 X20.3. Z5;\n");
-  const fs::path out = dir.path() / "out";
-  const Outcome outcome = lathesim({"run", program.string(), "--out", out.string(), "--voxel", "0.5"}, dir.path());
-  EXPECT_EQ(outcome.status, 1);
-  const auto lines = linesOf(outcome.err);
-  ASSERT_GE(lines.size(), 3u) << outcome.err;
-  EXPECT_EQ(lines[0], program.string() +
-                         ":2:5: error: malformed number in X20.3.: expected an optional sign, then digits with "
-                         "at most one decimal point");
-  EXPECT_EQ(lines[1], "G00 X20.3. Z5;");
-  EXPECT_EQ(lines[2], "    ^");  // under the X at column 5
-  EXPECT_TRUE(noOutputs(out));
-}
-
-// The O0006 part (parts/seed004-o0006): with W = +3 alarms at N40's R word.
-TEST(Cli, O0006AlarmsAtN40AndWritesNothing) {
-  TempDir dir("o0006");
-  const fs::path program = kPartsDir / "seed004-o0006" / "program.nc";
-  const fs::path out = dir.path() / "out";
-  const Outcome outcome = lathesim({"run", program.string(), "--setup", (kPartsDir / "seed004-o0006" / "setup.toml").string(),
-                                    "--out", out.string(), "--voxel", "0.5"},
-                                   dir.path());
-  EXPECT_EQ(outcome.status, 1);
-  const auto lines = linesOf(outcome.err);
-  ASSERT_GE(lines.size(), 3u) << outcome.err;
-  EXPECT_EQ(lines[0].rfind(program.string() + ":5:21: error: R-5.5 and W3 have opposite signs and |R| > |W|", 0), 0u)
-      << lines[0];
-  EXPECT_EQ(lines[1], "N40 G94 X20 .0 Z5.0 R-5 .5 F100;");
-  EXPECT_EQ(lines[2], std::string(20, ' ') + "^");
-  EXPECT_TRUE(noOutputs(out));
-}
-
 // --outputs writes exactly the files it names and report.json; each selection over the seven
 // files a plain run writes, and an export named there as --export would write it.
 TEST(Cli, OutputsWritesExactlyTheFilesNamedAndTheReport) {
@@ -426,33 +388,6 @@ TEST(Cli, ReportListsTheProgramStops) {
   EXPECT_NEAR(r.at("cycle_time_s").get<double>(), 13.205, 1e-9);  // the stop adds nothing
 }
 
-TEST(Cli, UnknownSetupKeyIsNamedAndWritesNothing) {
-  TempDir dir("setup");
-  const fs::path setup = dir.path() / "setup.toml";
-  writeFile(setup, "[stock]\ndiameter = 50\nlength = 60\nface_z = 0\ncolour = \"red\"\n");
-  const fs::path out = dir.path() / "out";
-  const Outcome outcome = lathesim({"run", (kPartsDir / kPart / "program.nc").string(), "--setup", setup.string(),
-                                    "--out", out.string(), "--voxel", "0.5"},
-                                   dir.path());
-  EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.err.find("unknown key 'stock.colour'"), std::string::npos) << outcome.err;
-  EXPECT_EQ(outcome.err.rfind(setup.string() + ":5:", 0), 0u) << outcome.err;
-  EXPECT_TRUE(noOutputs(out));
-}
-
-TEST(Cli, VoxelTooFineForMemoryIsRefusedAndWritesNothing) {
-  TempDir dir("voxel");
-  const fs::path out = dir.path() / "out";
-  // No --setup: the default Φ125 × 112 bar, which at 1 µm would need terabytes.
-  const Outcome outcome = lathesim(
-      {"run", (kPartsDir / "seed000-face-taper" / "program.nc").string(), "--out", out.string(), "--voxel", "0.001"},
-      dir.path());
-  EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.err.find("lathesim: error: a 0.001 mm voxel needs about"), std::string::npos) << outcome.err;
-  EXPECT_NE(outcome.err.find("GiB"), std::string::npos) << outcome.err;
-  EXPECT_TRUE(noOutputs(out));
-}
-
 // Seed 001's bar (Φ50, face Z0), the spindle turning (stopped, the rapid would cut a slot,
 // not a ring). The tool goes to X54 Z5, clear of the bar, then rapids
 // straight to X30 Z-10. The default tool's body lies at r ≥ tip, z ≥ tip and contains the
@@ -527,22 +462,6 @@ TEST(Cli, AtLineOfASubprogramStopsAfterItsFirstRun) {
   const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
   EXPECT_EQ(r.at("moves"), 4);
   EXPECT_NEAR(r.at("final_volume_mm3").get<double>(), 19568.0 * M_PI, volumeToleranceMm3(40.0, 50.0, 0.25));
-}
-
-TEST(Cli, AtLineThatDoesNotExistOrMakesNoMoveIsNamedAndWritesNothing) {
-  TempDir dir("at-line-bad");
-  const fs::path out = dir.path() / "out";
-  // The program has 10 lines.
-  Outcome outcome = runSeed000AtLine(dir, "11", out);
-  EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.err.find("--at-line 11: the program has no line 11 (it has lines 1 to 10)"), std::string::npos)
-      << outcome.err;
-  EXPECT_TRUE(noOutputs(out));
-  // Line 10 is M30.
-  outcome = runSeed000AtLine(dir, "10", out);
-  EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.err.find("--at-line 10: line 10 makes no move"), std::string::npos) << outcome.err;
-  EXPECT_TRUE(noOutputs(out));
 }
 
 }  // namespace

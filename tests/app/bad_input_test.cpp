@@ -1,0 +1,160 @@
+// Bad input given to `lathesim run` and `lathesim check`: a malformed number, a cycle's alarm,
+// an unknown setup key, a grid too fine for memory, a line --at-line cannot stop at, a drawing
+// or STL that is not one. Each exits 1 (2 for a command line short of what it needs), says
+// where and what, and writes nothing. No test here simulates a whole part, so these run under
+// the sanitizers within CI's time (scripts/sanitize.sh ci).
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/lathesim_process.hpp"
+
+namespace lathesim::app {
+namespace {
+
+namespace fs = std::filesystem;
+using test::ProcessOutcome;
+using test::ScratchDir;
+using test::writeFile;
+
+const fs::path kBinary = LATHESIM_BINARY;
+const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+
+ProcessOutcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
+  return test::runProcess(kBinary, args, scratch);
+}
+
+std::string part(const std::string& name, const std::string& file) { return (kPartsDir / name / file).string(); }
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+/// Nothing was written: the folder does not exist, or it is empty.
+bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_empty(folder); }
+
+TEST(BadInput, MalformedNumberIsReportedWithItsLocationAndCaretAndWritesNothing) {
+  ScratchDir dir("bad");
+  const fs::path program = dir.path() / "bad.nc";
+  writeFile(program, "G00 X60 Z5;\nG00 X20.3. Z5;\n");
+  const fs::path out = dir.path() / "out";
+  const ProcessOutcome outcome = lathesim({"run", program.string(), "--out", out.string(), "--voxel", "0.5"}, dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  const auto lines = linesOf(outcome.err);
+  ASSERT_GE(lines.size(), 3u) << outcome.err;
+  EXPECT_EQ(lines[0], program.string() +
+                         ":2:5: error: malformed number in X20.3.: expected an optional sign, then digits with "
+                         "at most one decimal point");
+  EXPECT_EQ(lines[1], "G00 X20.3. Z5;");
+  EXPECT_EQ(lines[2], "    ^");  // under the X at column 5
+  EXPECT_TRUE(noOutputs(out));
+}
+
+// The O0006 part (parts/seed004-o0006): with W = +3 alarms at N40's R word.
+TEST(BadInput, O0006AlarmsAtN40AndWritesNothing) {
+  ScratchDir dir("o0006");
+  const std::string program = part("seed004-o0006", "program.nc");
+  const fs::path out = dir.path() / "out";
+  const ProcessOutcome outcome = lathesim(
+      {"run", program, "--setup", part("seed004-o0006", "setup.toml"), "--out", out.string(), "--voxel", "0.5"},
+      dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  const auto lines = linesOf(outcome.err);
+  ASSERT_GE(lines.size(), 3u) << outcome.err;
+  EXPECT_EQ(lines[0].rfind(program + ":5:21: error: R-5.5 and W3 have opposite signs and |R| > |W|", 0), 0u)
+      << lines[0];
+  EXPECT_EQ(lines[1], "N40 G94 X20 .0 Z5.0 R-5 .5 F100;");
+  EXPECT_EQ(lines[2], std::string(20, ' ') + "^");
+  EXPECT_TRUE(noOutputs(out));
+}
+
+TEST(BadInput, UnknownSetupKeyIsNamedAndWritesNothing) {
+  ScratchDir dir("setup");
+  const fs::path setup = dir.path() / "setup.toml";
+  writeFile(setup, "[stock]\ndiameter = 50\nlength = 60\nface_z = 0\ncolour = \"red\"\n");
+  const fs::path out = dir.path() / "out";
+  const ProcessOutcome outcome = lathesim({"run", part("seed001-taper-r24", "program.nc"), "--setup", setup.string(),
+                                           "--out", out.string(), "--voxel", "0.5"},
+                                          dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("unknown key 'stock.colour'"), std::string::npos) << outcome.err;
+  EXPECT_EQ(outcome.err.rfind(setup.string() + ":5:", 0), 0u) << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+}
+
+TEST(BadInput, VoxelTooFineForMemoryIsRefusedAndWritesNothing) {
+  ScratchDir dir("voxel");
+  const fs::path out = dir.path() / "out";
+  // No --setup: the default Φ125 × 112 bar, which at 1 µm would need terabytes.
+  const ProcessOutcome outcome =
+      lathesim({"run", part("seed000-face-taper", "program.nc"), "--out", out.string(), "--voxel", "0.001"}, dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("lathesim: error: a 0.001 mm voxel needs about"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("GiB"), std::string::npos) << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+}
+
+// parts/seed000-face-taper's program has 10 lines, the last an M30.
+TEST(BadInput, AtLineThatDoesNotExistOrMakesNoMoveIsNamedAndWritesNothing) {
+  ScratchDir dir("at-line-bad");
+  const fs::path out = dir.path() / "out";
+  const auto atLine = [&](const std::string& line) {
+    return lathesim({"run", part("seed000-face-taper", "program.nc"), "--setup", part("seed000-face-taper", "setup.toml"),
+                     "--out", out.string(), "--voxel", "0.5", "--at-line", line},
+                    dir.path());
+  };
+  ProcessOutcome outcome = atLine("11");
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("--at-line 11: the program has no line 11 (it has lines 1 to 10)"), std::string::npos)
+      << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+  outcome = atLine("10");
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("--at-line 10: line 10 makes no move"), std::string::npos) << outcome.err;
+  EXPECT_TRUE(noOutputs(out));
+}
+
+/// `lathesim check` of seed 001's R-24 program at 0.25 mm with `extra` arguments, into dir/out.
+ProcessOutcome checkSeed001(const ScratchDir& dir, const std::vector<std::string>& extra) {
+  std::vector<std::string> args{"check",   part("seed001-taper-r24", "program.nc"),
+                                "--setup", part("seed001-taper-r24", "setup.toml"),
+                                "--voxel", "0.25",
+                                "--out",   (dir.path() / "out").string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return lathesim(args, dir.path());
+}
+
+TEST(BadInput, CheckAgainstAnStlThatIsNotOneIsAnError) {
+  ScratchDir dir("check-bad-stl");
+  writeFile(dir.path() / "design.stl", "this is not an STL");
+  const ProcessOutcome outcome = checkSeed001(dir, {"--target", (dir.path() / "design.stl").string()});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("design.stl: error: not an STL file with triangles"), std::string::npos) << outcome.err;
+  EXPECT_TRUE(noOutputs(dir.path() / "out"));
+}
+
+TEST(BadInput, CheckAgainstABadDrawingIsAnErrorWithItsLine) {
+  ScratchDir dir("check-bad");
+  writeFile(dir.path() / "drawing.toml", "[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 50\nzz = -20\n");
+  const ProcessOutcome outcome = checkSeed001(dir, {"--target", (dir.path() / "drawing.toml").string()});
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("drawing.toml:6:1: error: unknown profile key 'zz'"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(BadInput, CheckWithoutATargetIsABadCommandLine) {
+  ScratchDir dir("check-none");
+  const ProcessOutcome outcome = checkSeed001(dir, {});
+  EXPECT_EQ(outcome.status, 2);
+  EXPECT_NE(outcome.err.find("--target"), std::string::npos) << outcome.err;
+}
+
+}  // namespace
+}  // namespace lathesim::app
