@@ -78,9 +78,12 @@ std::string messageHtml(const JobResult& r) {
     if (m.column > 0) where.append(":").append(std::to_string(m.column));
     where += ' ';
   }
-  std::string html = "<span class=\"" + m.kind + "\">" + escaped(where + m.kind + ": ") + "</span>" + escaped(m.text);
+  // A long message is cut to a few lines so that one row does not fill the screen; the whole
+  // of it shows on hover (and in the job's report).
+  std::string html = "<div class=\"clamp\" title=\"" + escaped(where + m.kind + ": " + m.text) + "\"><span class=\"" +
+                     m.kind + "\">" + escaped(where + m.kind + ": ") + "</span>" + escaped(m.text) + "</div>";
   if (m.kind == "warning" && r.warnings > 1)
-    html += " <span class=\"more\">(+" + std::to_string(r.warnings - 1) + " more)</span>";
+    html += "<span class=\"more\">(+" + std::to_string(r.warnings - 1) + " more)</span>";
   return html;
 }
 
@@ -135,7 +138,8 @@ th[aria-sort=ascending]::after { content: " \25B2"; }
 th[aria-sort=descending]::after { content: " \25BC"; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 td.bad { color: #b00020; font-weight: 600; }
-td.message { max-width: 24em; }
+td.message { max-width: 28em; }
+.clamp { display: -webkit-box; -webkit-box-orient: vertical; -webkit-line-clamp: 4; overflow: hidden; }
 .path { color: #777; font-size: .85em; }
 .error { color: #b00020; font-weight: 600; }
 .warning { color: #8a5a00; font-weight: 600; }

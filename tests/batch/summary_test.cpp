@@ -142,6 +142,9 @@ TEST(SummaryHtml, OneRowPerJobWithItsThumbnailInside) {
   EXPECT_EQ(html.find("<b>&"), std::string::npos);  // the message is escaped
   EXPECT_NE(html.find("&lt;b&gt;&amp;&quot;bad&quot;&lt;/b&gt;"), std::string::npos);
   EXPECT_NE(html.find("line 5:21 error: "), std::string::npos);
+  // Cut to a few lines in the table, whole on hover.
+  EXPECT_NE(html.find("<div class=\"clamp\" title=\"line 5:21 error: &lt;b&gt;&amp;&quot;bad&quot;&lt;/b&gt;\">"),
+            std::string::npos);
   const std::regex image(R"re(src="data:image/png;base64,([A-Za-z0-9+/=]*)")re");
   std::vector<std::string> embedded;
   for (std::sregex_iterator m(html.begin(), html.end(), image), end; m != end; ++m) embedded.push_back((*m)[1]);
