@@ -83,6 +83,7 @@ class TimedMoves final : public interp::MoveSink {
     timer_.time(move);
     next_.take(std::move(move));
   }
+  void recordingIn(const interp::Toolpath& toolpath) override { next_.recordingIn(toolpath); }
   const std::vector<interp::Error>& warnings() const { return timer_.warnings(); }
 
  private:
