@@ -286,10 +286,12 @@ void stageThumbnail(const RunOptions& options, const render::RgbImage& picture, 
 
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
   using Path = std::filesystem::path;
-  out.write("report.json", [&](const Path& file) { writeJson(report, file); });
+  const std::vector<sim::BlockRemoval>& blocks = run.figures.simulation.blocks;
+  out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
   if (run.outputs.html)
-    out.write("report.html",
-            [&](const Path& file) { writeReportHtml(report, run.job.programText.text().view(), run.pictures, run.modelGlb, file); });
+    out.write("report.html", [&](const Path& file) {
+      writeReportHtml(report, blocks, run.job.programText.text().view(), run.pictures, run.modelGlb, file);
+    });
 }
 
 // The run keepUntilExit keeps. A variable other files could read, so that the compiler keeps
