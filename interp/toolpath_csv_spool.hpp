@@ -1,15 +1,12 @@
 #pragma once
-// toolpath.csv written as the moves stream past (toolpath_csv.hpp's rows) into an unnamed
-// temporary file, gone when closed or when the process ends however it ends, and copied out
-// whole once the run is known to be good: the toolpath is never held in memory, and a
-// program that fails at its last block leaves no CSV.
+// toolpath.csv written as the moves stream past (toolpath_csv.hpp's rows) into a spool file,
+// and copied out whole once the run is known to be good: the toolpath is never held in
+// memory, and a program that fails at its last block leaves no CSV.
 
-#include <cstdio>
-#include <memory>
 #include <ostream>
-#include <string>
 
 #include "interp/move_sink.hpp"
+#include "interp/spool_file.hpp"
 
 namespace lathesim::interp {
 
@@ -21,12 +18,10 @@ class ToolpathCsvSpool final : public MoveSink {
 
   /// Everything written (the header and a row a move), to `out`; throws std::runtime_error if
   /// the temporary file failed (a full disk). `out`'s own failure is the caller's to check.
-  void copyTo(std::ostream& out);
+  void copyTo(std::ostream& out) const;
 
  private:
-  void write(const std::string& text);
-
-  std::unique_ptr<std::FILE, decltype(&std::fclose)> file_;
+  SpoolFile file_{"the toolpath"};
 };
 
 }  // namespace lathesim::interp
