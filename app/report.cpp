@@ -159,8 +159,7 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
 }
 
 
-void writeReport(const nlohmann::ordered_json& report, const std::vector<sim::BlockRemoval>& blocks,
-                 const std::filesystem::path& file) {
+void writeReport(const nlohmann::ordered_json& report, const sim::BlockRows& blocks, const std::filesystem::path& file) {
   // Text a program quoted (a comment in a note) need not be UTF-8: such bytes become U+FFFD.
   const std::string text = report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
   // The rows go where the dump has the empty array, as nlohmann would indent them inside it. A
@@ -171,20 +170,20 @@ void writeReport(const nlohmann::ordered_json& report, const std::vector<sim::Bl
   const std::size_t rowsAt = at + kEmptyBlocks.size() - 1;  // before the "]"
   writeTextFile(file, [&](std::ostream& out) {
     const std::string_view all(text);
-    if (blocks.empty()) {
-      out << all << '\n';
-      return;
-    }
-    out << all.substr(0, rowsAt);
-    for (std::size_t i = 0; i < blocks.size(); ++i) {
-      const sim::BlockRemoval& b = blocks[i];
+    bool first = true;
+    blocks.forEach([&](const sim::BlockRemoval& b) {
       const nlohmann::ordered_json row{
           {"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}};
-      out << (i == 0 ? "\n    " : ",\n    ");
+      out << (first ? all.substr(0, rowsAt) : ",") << "\n    ";
+      first = false;
       for (const char c : row.dump(2)) {
         out.put(c);
         if (c == '\n') out << "    ";
       }
+    });
+    if (first) {  // no row: the empty array stays
+      out << all << '\n';
+      return;
     }
     out << "\n  " << all.substr(rowsAt) << '\n';
   });

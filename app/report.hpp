@@ -12,6 +12,7 @@
 #include "interp/diagnostic.hpp"
 #include "measure/thread_measure.hpp"
 #include "interp/move.hpp"
+#include "sim/block_rows.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::app {
@@ -64,7 +65,6 @@ std::string threadSummary(const measure::MeasuredThread& thread);
 
 /// Writes report.json: `report` (reportJson's), its `blocks` filled with a row for each of
 /// `blocks`, as if they had been in the tree.
-void writeReport(const nlohmann::ordered_json& report, const std::vector<sim::BlockRemoval>& blocks,
-                 const std::filesystem::path& file);
+void writeReport(const nlohmann::ordered_json& report, const sim::BlockRows& blocks, const std::filesystem::path& file);
 
 }  // namespace lathesim::app

@@ -183,16 +183,16 @@ std::string threadsSection(const Json& r) {
 /// The program, one row per source line: its number, text, machine time and removed volume
 /// (its blocks' sums), a bar for the time and a warm tint for the removal; lines with a
 /// collision or a warning flagged at their number.
-std::string listing(const Json& r, const std::vector<sim::BlockRemoval>& blocks, std::string_view programText) {
+std::string listing(const Json& r, const sim::BlockRows& blocks, std::string_view programText) {
   struct LineFigures {
     double timeS = 0, removedMm3 = 0;
   };
   std::map<int, LineFigures> byLine;
-  for (const sim::BlockRemoval& b : blocks) {
+  blocks.forEach([&](const sim::BlockRemoval& b) {
     LineFigures& f = byLine[b.line];
     f.timeS += b.timeS;
     f.removedMm3 += b.removedMm3;
-  }
+  });
   double mostTime = 0, mostRemoved = 0;
   for (const auto& [line, f] : byLine) mostTime = std::max(mostTime, f.timeS), mostRemoved = std::max(mostRemoved, f.removedMm3);
   std::map<int, std::string> flags;
@@ -228,7 +228,7 @@ std::string listing(const Json& r, const std::vector<sim::BlockRemoval>& blocks,
 
 }  // namespace
 
-void writeReportHtml(const Json& report, const std::vector<sim::BlockRemoval>& blocks, std::string_view programText,
+void writeReportHtml(const Json& report, const sim::BlockRows& blocks, std::string_view programText,
                      const std::vector<HtmlPicture>& pictures, const std::string& glb, const std::filesystem::path& html) {
   const std::string program = report.value("program", "");
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"

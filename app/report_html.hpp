@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "sim/simulate.hpp"
+#include "sim/block_rows.hpp"
 
 namespace lathesim::app {
 
@@ -21,7 +21,7 @@ struct HtmlPicture {
 
 /// Writes the page for the run `report` (reportJson's, its rows `blocks` apart) of the program
 /// `programText`, with `pictures` and the 3D model `glb` (empty: no 3D view).
-void writeReportHtml(const nlohmann::ordered_json& report, const std::vector<sim::BlockRemoval>& blocks,
+void writeReportHtml(const nlohmann::ordered_json& report, const sim::BlockRows& blocks,
                      std::string_view programText, const std::vector<HtmlPicture>& pictures, const std::string& glb,
                      const std::filesystem::path& html);
 

@@ -141,6 +141,8 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup));
     if (options.outputs.csv && out) run.csv = std::make_unique<interp::ToolpathCsvSpool>();
     std::vector<interp::Move> threadMoves;
+    run.blockRows = std::make_unique<sim::SpooledBlockRows>();
+    simulation.sendBlocksTo([rows = run.blockRows.get()](const sim::BlockRemoval& row) { rows->add(row); });
     StreamedMoves moves(simulation, run.csv.get(), threadMoves);
     if (!job::interpretJob(run.job, request, moves)) return std::nullopt;
     figures.moves = moves.count;
@@ -359,7 +361,8 @@ void stageThumbnail(const RunOptions& options, const render::RgbImage& picture, 
 
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
   using Path = std::filesystem::path;
-  const std::vector<sim::BlockRemoval>& blocks = run.figures.simulation.blocks;
+  const sim::HeldBlockRows held(run.figures.simulation.blocks);
+  const sim::BlockRows& blocks = run.blockRows ? static_cast<const sim::BlockRows&>(*run.blockRows) : held;
   out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
   if (run.outputs.html)
     out.write("report.html", [&](const Path& file) {

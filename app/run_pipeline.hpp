@@ -16,6 +16,7 @@
 #include "geometry/triangle_mesh.hpp"
 #include "interp/toolpath_csv_spool.hpp"
 #include "render/rgb_image.hpp"
+#include "sim/block_rows.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::app {
@@ -51,6 +52,8 @@ struct SimulatedRun {
   // toolpath.csv's rows, spooled as a streamed run's moves passed (job.toolpath has no moves
   // then); null when the moves were kept, or no CSV is asked for.
   std::unique_ptr<interp::ToolpathCsvSpool> csv;
+  // A streamed run's report rows (figures.simulation.blocks is empty then); null otherwise.
+  std::unique_ptr<sim::SpooledBlockRows> blockRows;
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
   /// The finished part: the piece that parted off, or else the stock.

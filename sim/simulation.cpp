@@ -92,20 +92,27 @@ SimulationResult Simulation::finish(const interp::Toolpath& recorded) {
     cutGroup();
     if (progress_) progress_(block + 1, recorded_->blockCount);
   }
+  if (block_) finishBlock();
   return std::move(result_);
+}
+
+void Simulation::finishBlock() {
+  if (blockSink_) blockSink_(*block_);
+  else result_.blocks.push_back(*block_);
 }
 
 void Simulation::cutGroup() {
   const interp::Move& head = group_.front();
   Stock& stock = stock_;
   SimulationResult& result = result_;
-  if (result.blocks.empty() || result.blocks.back().block != head.block) {
-    result.blocks.push_back({head.block, head.line, head.column, 0.0, 0.0});
+  if (!block_ || block_->block != head.block) {
+    if (block_) finishBlock();
+    block_ = BlockRemoval{head.block, head.line, head.column, 0.0, 0.0};
     const auto& cycleStarts = recorded_->cycleStarts;
     for (; nextCycleStart_ < cycleStarts.size() && cycleStarts[nextCycleStart_].block <= head.block; ++nextCycleStart_)
       if (auto warning = cycleStartInStock(cycleStarts[nextCycleStart_], stock)) result.warnings.push_back(*warning);
   }
-  BlockRemoval& block = result.blocks.back();
+  BlockRemoval& block = *block_;
   if (head.kind != interp::MoveKind::Dwell && head.workShift != frame_) {
     frame_ = head.workShift;
     checkShift_ = true;

@@ -5,6 +5,7 @@
 // one move) and the move before it.
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -25,6 +26,10 @@ class Simulation final : public interp::MoveSink {
   Simulation(const interp::Toolpath& recorded, ToolOutlines tools, Stock& stock, BlockProgress progress = {},
              const CollisionChecks* checks = nullptr, ToolThicknesses thicknesses = {}, CutObserver observer = {});
 
+  /// Each block's row to `sink` once the block is finished, instead of into the result's
+  /// blocks (which finish then leaves empty). Before the first move.
+  void sendBlocksTo(std::function<void(const BlockRemoval&)> sink) { blockSink_ = std::move(sink); }
+
   void recordingIn(const interp::Toolpath& toolpath) override { recorded_ = &toolpath; }
   /// The next move of the toolpath: the group before it is cut once the move cannot join it.
   void take(interp::Move move) override;
@@ -35,6 +40,8 @@ class Simulation final : public interp::MoveSink {
  private:
   /// Writes group_ into the stock and clears it.
   void cutGroup();
+  /// block_ to the sink or the result.
+  void finishBlock();
 
   const interp::Toolpath* recorded_;
   ToolOutlines tools_;
@@ -45,6 +52,8 @@ class Simulation final : public interp::MoveSink {
   CutObserver observer_;
 
   SimulationResult result_;
+  std::function<void(const BlockRemoval&)> blockSink_;
+  std::optional<BlockRemoval> block_;    // the row of the block being cut
   std::vector<interp::Move> group_;      // the moves written together next
   std::size_t groupFirst_ = 0;           // the toolpath's index of group_'s first move
   std::optional<interp::Move> previous_;  // the last move cut (a thread pass may continue it)
