@@ -12,6 +12,7 @@
 
 #include "interp/interpreter.hpp"
 #include "sim/block_rows.hpp"
+#include "test_moves.hpp"
 
 namespace lathesim::sim {
 namespace {
@@ -29,22 +30,15 @@ interp::InterpreterOptions options() {
   return options;
 }
 
-ToolOutlines squareTool() {
-  const std::vector<RZ> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
-  ToolOutlines tools;
-  tools.emplace(1, *ConvexPolygon::fromOutline(square).polygon);
-  return tools;
-}
-
 TEST(Simulation, FedFromTheInterpreterFindsWhatTheWholeToolpathGives) {
   const interp::InterpretResult whole = interp::interpret(kProgram, "streamed.nc", options());
   ASSERT_TRUE(whole.ok());
   Stock wholeStock({40.0, 30.0, 0.0}, 0.5);
-  const SimulationResult expected = simulate(whole.toolpath, squareTool(), wholeStock);
+  const SimulationResult expected = simulate(whole.toolpath, test::squareTool(2.0), wholeStock);
 
   Stock stock({40.0, 30.0, 0.0}, 0.5);
   const interp::Toolpath none;
-  Simulation simulation(none, squareTool(), stock);
+  Simulation simulation(none, test::squareTool(2.0), stock);
   SpooledBlockRows rows;
   simulation.sendBlocksTo([&](const BlockRemoval& row) { rows.add(row); });
   const interp::InterpretResult streamed = interp::interpret(kProgram, "streamed.nc", options(), simulation);
