@@ -68,7 +68,7 @@ std::optional<MeridianProfile> simulateTarget(const CheckOptions& options, doubl
   RunOptions target = options.run;
   target.program = *options.targetProgram;
   target.voxelMm = voxelMm;
-  std::optional<SimulatedRun> run = simulateProgram(target, clock);
+  std::optional<SimulatedRun> run = simulateProgram(target, clock, nullptr, keepsMoves(target));
   if (!run) return std::nullopt;
   return MeridianProfile::fromSection(run->partStock().meridianSection());
 }
@@ -255,7 +255,8 @@ int checkCommand(const CheckOptions& options) {
     return job::kExitBadInput;  // before the long part
   Stopwatch clock;
   StagedOutput out(options.run.out);
-  std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out);
+  // The gouges' causes and the process figures read every move.
+  std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out, true);
   if (!run) return job::kExitBadInput;
   std::future<double> stockFile = stageStockFile(*run, out);
   const double voxel = run->figures.voxelMm;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <cstdio>
 #include <stdexcept>
+#include <string_view>
 
 namespace lathesim::app {
 namespace {
@@ -132,9 +133,7 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   auto& collisions = report["collisions"] = nlohmann::ordered_json::array();
   for (const auto& c : f.simulation.collisions)
     collisions.push_back({{"line", c.line}, {"column", c.column}, {"kind", c.kind}, {"volume_mm3", c.volumeMm3}});
-  auto& blocks = report["blocks"] = nlohmann::ordered_json::array();
-  for (const auto& b : f.simulation.blocks)
-    blocks.push_back({{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}});
+  report["blocks"] = nlohmann::ordered_json::array();  // its rows are streamed by writeReport
   auto& threads = report["threads"] = nlohmann::ordered_json::array();
   for (const auto& t : f.threads) threads.push_back(threadJson(t));
   auto& stops = report["stops"] = nlohmann::ordered_json::array();
@@ -160,10 +159,34 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
 }
 
 
-void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file) {
+void writeReport(const nlohmann::ordered_json& report, const sim::BlockRows& blocks, const std::filesystem::path& file) {
   // Text a program quoted (a comment in a note) need not be UTF-8: such bytes become U+FFFD.
   const std::string text = report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
-  writeTextFile(file, [&](std::ostream& out) { out << text << '\n'; });
+  // The rows go where the dump has the empty array, as nlohmann would indent them inside it. A
+  // string cannot hold the marker: the dump writes a newline in a string as \n.
+  constexpr std::string_view kEmptyBlocks = "\n  \"blocks\": []";
+  const std::size_t at = text.find(kEmptyBlocks);
+  if (at == std::string::npos) throw std::logic_error("report.json has no blocks to fill in");
+  const std::size_t rowsAt = at + kEmptyBlocks.size() - 1;  // before the "]"
+  writeTextFile(file, [&](std::ostream& out) {
+    const std::string_view all(text);
+    bool first = true;
+    blocks.forEach([&](const sim::BlockRemoval& b) {
+      const nlohmann::ordered_json row{
+          {"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}};
+      out << (first ? all.substr(0, rowsAt) : ",") << "\n    ";
+      first = false;
+      for (const char c : row.dump(2)) {
+        out.put(c);
+        if (c == '\n') out << "    ";
+      }
+    });
+    if (first) {  // no row: the empty array stays
+      out << all << '\n';
+      return;
+    }
+    out << "\n  " << all.substr(rowsAt) << '\n';
+  });
 }
 
 }  // namespace lathesim::app

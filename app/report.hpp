@@ -12,6 +12,7 @@
 #include "interp/diagnostic.hpp"
 #include "measure/thread_measure.hpp"
 #include "interp/move.hpp"
+#include "sim/block_rows.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::app {
@@ -54,12 +55,16 @@ struct RunFigures {
   RunTimings timing;
 };
 
-/// The report as JSON, for commands that add their own section (check adds "check").
+/// The report as JSON, for commands that add their own section (check adds "check"), with
+/// `blocks` empty: writeReport writes its rows one by one (a row as a JSON tree takes
+/// hundreds of bytes, and a long program has a row a block).
 nlohmann::ordered_json reportJson(const RunFigures& figures);
 
 /// One line for the terminal naming a thread and what was measured of it.
 std::string threadSummary(const measure::MeasuredThread& thread);
 
-void writeJson(const nlohmann::ordered_json& report, const std::filesystem::path& file);
+/// Writes report.json: `report` (reportJson's), its `blocks` filled with a row for each of
+/// `blocks`, as if they had been in the tree.
+void writeReport(const nlohmann::ordered_json& report, const sim::BlockRows& blocks, const std::filesystem::path& file);
 
 }  // namespace lathesim::app

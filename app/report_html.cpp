@@ -183,16 +183,16 @@ std::string threadsSection(const Json& r) {
 /// The program, one row per source line: its number, text, machine time and removed volume
 /// (its blocks' sums), a bar for the time and a warm tint for the removal; lines with a
 /// collision or a warning flagged at their number.
-std::string listing(const Json& r, std::string_view programText) {
+std::string listing(const Json& r, const sim::BlockRows& blocks, std::string_view programText) {
   struct LineFigures {
     double timeS = 0, removedMm3 = 0;
   };
   std::map<int, LineFigures> byLine;
-  for (const Json& b : r.at("blocks")) {
-    LineFigures& f = byLine[b.value("line", 0)];
-    f.timeS += b.value("time_s", 0.0);
-    f.removedMm3 += b.value("removed_volume_mm3", 0.0);
-  }
+  blocks.forEach([&](const sim::BlockRemoval& b) {
+    LineFigures& f = byLine[b.line];
+    f.timeS += b.timeS;
+    f.removedMm3 += b.removedMm3;
+  });
   double mostTime = 0, mostRemoved = 0;
   for (const auto& [line, f] : byLine) mostTime = std::max(mostTime, f.timeS), mostRemoved = std::max(mostRemoved, f.removedMm3);
   std::map<int, std::string> flags;
@@ -228,8 +228,8 @@ std::string listing(const Json& r, std::string_view programText) {
 
 }  // namespace
 
-void writeReportHtml(const Json& report, std::string_view programText, const std::vector<HtmlPicture>& pictures,
-                     const std::string& glb, const std::filesystem::path& html) {
+void writeReportHtml(const Json& report, const sim::BlockRows& blocks, std::string_view programText,
+                     const std::vector<HtmlPicture>& pictures, const std::string& glb, const std::filesystem::path& html) {
   const std::string program = report.value("program", "");
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
                      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>lathesim: " +
@@ -257,7 +257,7 @@ void writeReportHtml(const Json& report, std::string_view programText, const std
   }
   page += threadsSection(report);
   page += checkSection(report);
-  page += listing(report, programText);
+  page += listing(report, blocks, programText);
   page += "</main>\n";
   if (!glb.empty()) {
     page += "<script type=\"application/octet-stream\" id=\"part-model\">" + batch::base64(glb) + "</script>\n<script>";

@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "sim/block_rows.hpp"
+
 namespace lathesim::app {
 
 struct HtmlPicture {
@@ -17,9 +19,10 @@ struct HtmlPicture {
   std::filesystem::path png;  // read and carried in the page
 };
 
-/// Writes the page for the run `report` (report.json's content) of the program `programText`,
-/// with `pictures` and the 3D model `glb` (empty: no 3D view).
-void writeReportHtml(const nlohmann::ordered_json& report, std::string_view programText,
-                     const std::vector<HtmlPicture>& pictures, const std::string& glb, const std::filesystem::path& html);
+/// Writes the page for the run `report` (reportJson's, its rows `blocks` apart) of the program
+/// `programText`, with `pictures` and the 3D model `glb` (empty: no 3D view).
+void writeReportHtml(const nlohmann::ordered_json& report, const sim::BlockRows& blocks,
+                     std::string_view programText, const std::vector<HtmlPicture>& pictures, const std::string& glb,
+                     const std::filesystem::path& html);
 
 }  // namespace lathesim::app

@@ -13,6 +13,8 @@
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/toolpath_csv.hpp"
+#include "interp/toolpath_csv_spool.hpp"
+#include "measure/thread_moves.hpp"
 #include "measure/thread_measure.hpp"
 #include "render/close_up_region.hpp"
 #include "render/mesh_files.hpp"
@@ -21,6 +23,7 @@
 #include "render/scene_export.hpp"
 #include "render/thumbnail.hpp"
 #include "sim/simulate.hpp"
+#include "sim/simulation.hpp"
 
 namespace lathesim::app {
 
@@ -48,31 +51,75 @@ sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
   return thicknesses;
 }
 
-std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out) {
-  std::optional<job::Job> loaded = job::loadJob(jobRequestOf(options));
-  if (!loaded || !cutAtLine(options.atLine, *loaded)) return std::nullopt;
+bool keepsMoves(const RunOptions& options) {
+  const auto exported = [&](const char* format) {
+    return std::find(options.exports.begin(), options.exports.end(), format) != options.exports.end();
+  };
+  return options.outputs.png || options.outputs.html || options.outputs.vtp || exported("gltf") || exported("glb") ||
+         options.animation.mp4 || options.atLine;
+}
+
+namespace {
+
+// A streamed run's moves, each handed on as the interpreter makes it: to the simulation, to
+// toolpath.csv's spool when the CSV is written, and to the moves kept for measuring threads;
+// counted, and their machine time summed in program order (as cycleTimeS sums them).
+class StreamedMoves final : public interp::MoveSink {
+ public:
+  StreamedMoves(sim::Simulation& simulation, interp::ToolpathCsvSpool* csv, std::vector<interp::Move>& threadMoves)
+      : simulation_(simulation), csv_(csv), threads_(threadMoves) {}
+  void recordingIn(const interp::Toolpath& toolpath) override { simulation_.recordingIn(toolpath); }
+  void take(interp::Move move) override {
+    ++count;
+    cycleTimeS += move.timeS;
+    if (csv_) csv_->take(move);
+    threads_.take(move);
+    simulation_.take(std::move(move));
+  }
+
+  std::size_t count = 0;
+  double cycleTimeS = 0;
+
+ private:
+  sim::Simulation& simulation_;
+  interp::ToolpathCsvSpool* csv_;
+  measure::ThreadMoveCollector threads_;
+};
+
+}  // namespace
+
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out,
+                                            bool keepMoves) {
+  const job::JobRequest request = jobRequestOf(options);
+  std::optional<job::Job> opened = job::openJob(request);
+  if (!opened) return std::nullopt;
+  const double voxel = options.voxelMm.value_or(opened->setup.voxelMm.value_or(kDefaultVoxelMm));
+  const auto gridProblem = sim::gridProblem(opened->setup.stock, voxel);
+  // A bad grid is said after the program's errors (and --at-line's): the program runs first.
+  const bool streams = !keepMoves && !keepsMoves(options) && !gridProblem;
+  if (!streams) {
+    std::vector<interp::Move> moves;
+    interp::MoveCollector collect(moves);
+    if (!job::interpretJob(*opened, request, collect)) return std::nullopt;
+    opened->toolpath.moves = std::move(moves);
+    if (!cutAtLine(options.atLine, *opened)) return std::nullopt;
+  }
+  if (gridProblem) {
+    std::cerr << "lathesim: error: " << *gridProblem << '\n';
+    return std::nullopt;
+  }
   SimulatedRun run;
-  run.job = std::move(*loaded);
+  run.job = std::move(*opened);
   RunFigures& figures = run.figures;
   figures.atLine = options.atLine;
   figures.timing.parseS = clock.lap();
 
   const job::Setup& setup = run.job.setup;
-  const double voxel = options.voxelMm.value_or(setup.voxelMm.value_or(kDefaultVoxelMm));
-  if (const auto problem = sim::gridProblem(setup.stock, voxel)) {
-    std::cerr << "lathesim: error: " << *problem << '\n';
-    return std::nullopt;
-  }
   figures.program = options.program.string();
   figures.setup = setup.sourceName;
   figures.control = setup.control;
   figures.travel = job::travelOf(setup);
   figures.voxelMm = voxel;
-  figures.moves = run.job.toolpath.moves.size();
-  figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
-  figures.warnings = run.job.warnings;
-  figures.notes = run.job.notes;
-  figures.stops = run.job.toolpath.stops;
 
   run.outputs = options.outputs;
   run.progress = std::make_unique<Progress>(figures.program);
@@ -81,14 +128,39 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.timing.barS = bar.lap();
   noteStockMemory(run);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
-  if (auto problem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel)) warn(run, *problem);
+  const auto barProblem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel);
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
+  const sim::ToolOutlines outlines = outlinesOf(setup);
+  const sim::BlockProgress progress = [&](int done, int total) { run.progress->update(done, total); };
   std::unique_ptr<CutRecording> recording;
   if (options.animation.mp4 && out)
     recording = std::make_unique<CutRecording>(run.job, options.animation, figures.program, *out);
-  figures.simulation = sim::simulate(run.job.toolpath, outlinesOf(setup), *run.stock,
-                                     [&](int done, int total) { run.progress->update(done, total); }, &checks,
-                                     thicknessesOf(setup), recording ? recording->observer() : sim::CutObserver{});
+  // A streamed run's toolpath for measuring threads: its thread moves (thread_moves.hpp).
+  interp::Toolpath threadToolpath;
+  if (streams) {
+    sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup));
+    if (options.outputs.csv && out) run.csv = std::make_unique<interp::ToolpathCsvSpool>();
+    std::vector<interp::Move> threadMoves;
+    run.blockRows = std::make_unique<sim::SpooledBlockRows>();
+    simulation.sendBlocksTo([rows = run.blockRows.get()](const sim::BlockRemoval& row) { rows->add(row); });
+    StreamedMoves moves(simulation, run.csv.get(), threadMoves);
+    if (!job::interpretJob(run.job, request, moves)) return std::nullopt;
+    figures.moves = moves.count;
+    figures.cycleTimeS = moves.cycleTimeS;
+    if (barProblem) warn(run, *barProblem);  // after the program's warnings, as when it ran first
+    figures.simulation = simulation.finish(run.job.toolpath);
+    threadToolpath = run.job.toolpath;
+    threadToolpath.moves = std::move(threadMoves);
+  } else {
+    figures.moves = run.job.toolpath.moves.size();
+    figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
+    if (barProblem) warn(run, *barProblem);
+    figures.simulation = sim::simulate(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup),
+                                       recording ? recording->observer() : sim::CutObserver{});
+  }
+  figures.warnings.insert(figures.warnings.begin(), run.job.warnings.begin(), run.job.warnings.end());
+  figures.notes = run.job.notes;
+  figures.stops = run.job.toolpath.stops;
   if (recording) {
     run.progress->stage("finishing the video");
     recording->finish(*run.stock);
@@ -100,9 +172,9 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     figures.stubVolumeMm3 = figures.finalVolumeMm3;
     for (const auto& off : figures.simulation.partOffs) figures.finalVolumeMm3 += off.volumeMm3;
   }
-  const sim::ToolOutlines outlines = outlinesOf(setup);
   // A thread is measured on the part: after a part-off, on the piece that fell.
-  figures.threads = measure::measureThreads(run.partStock(), run.job.toolpath, outlines, setup.dialect);
+  figures.threads =
+      measure::measureThreads(run.partStock(), streams ? threadToolpath : run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap() - figures.timing.animateS;
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
   for (const auto& thread : figures.threads)
@@ -247,7 +319,10 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
     out.write("stub.stl", [&](const Path& file) { render::writeBinaryStl(run.stub, file); });
   if (wanted.csv)
     out.write("toolpath.csv", [&](const Path& file) {
-      writeTextFile(file, [&](std::ostream& csv) { interp::writeToolpathCsv(run.job.toolpath, csv); });
+      writeTextFile(file, [&](std::ostream& csv) {
+        if (run.csv) run.csv->copyTo(csv);
+        else interp::writeToolpathCsv(run.job.toolpath, csv);
+      });
     });
   if (wanted.vtp) out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
   timing.writeS += writing.lap();
@@ -286,10 +361,13 @@ void stageThumbnail(const RunOptions& options, const render::RgbImage& picture, 
 
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
   using Path = std::filesystem::path;
-  out.write("report.json", [&](const Path& file) { writeJson(report, file); });
+  const sim::HeldBlockRows held(run.figures.simulation.blocks);
+  const sim::BlockRows& blocks = run.blockRows ? static_cast<const sim::BlockRows&>(*run.blockRows) : held;
+  out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
   if (run.outputs.html)
-    out.write("report.html",
-            [&](const Path& file) { writeReportHtml(report, run.job.programText.text().view(), run.pictures, run.modelGlb, file); });
+    out.write("report.html", [&](const Path& file) {
+      writeReportHtml(report, blocks, run.job.programText.text().view(), run.pictures, run.modelGlb, file);
+    });
 }
 
 // The run keepUntilExit keeps. A variable other files could read, so that the compiler keeps

@@ -14,7 +14,9 @@
 #include "app/report_html.hpp"
 #include "app/staged_output.hpp"
 #include "geometry/triangle_mesh.hpp"
+#include "interp/toolpath_csv_spool.hpp"
 #include "render/rgb_image.hpp"
+#include "sim/block_rows.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::app {
@@ -47,6 +49,11 @@ struct SimulatedRun {
   std::string modelGlb;               // the part and toolpath for report.html's 3D view
   render::RgbImage partPixels;        // part.png's, kept for thumbnail.png when --thumbnail asks
   OutputSelection outputs;            // the files to write (--outputs)
+  // toolpath.csv's rows, spooled as a streamed run's moves passed (job.toolpath has no moves
+  // then); null when the moves were kept, or no CSV is asked for.
+  std::unique_ptr<interp::ToolpathCsvSpool> csv;
+  // A streamed run's report rows (figures.simulation.blocks is empty then); null otherwise.
+  std::unique_ptr<sim::SpooledBlockRows> blockRows;
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
   /// The finished part: the piece that parted off, or else the stock.
@@ -56,10 +63,19 @@ struct SimulatedRun {
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
 sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
 
+/// Whether the files `options` asks for need every move once the simulation is done (the
+/// pictures and report.html draw the toolpath, toolpath.vtp and glTF/GLB hold it, --animate
+/// and --at-line read it whole).
+bool keepsMoves(const RunOptions& options);
+
 /// Reads the setup and program, checks the grid and simulates (progress on a terminal);
-/// records the cut into `out` when options.animation asks and `out` is given.
+/// records the cut into `out` when options.animation asks and `out` is given. The moves are
+/// kept in run.job.toolpath when `keepMoves` or keepsMoves(options) says; otherwise they
+/// stream from the interpreter into the simulation (and toolpath.csv's spool), and nothing is
+/// held for each (what is held for each block: its report row, sim::BlockRemoval).
 /// Bad input: the diagnostics are printed and nullopt returned.
-std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out = nullptr);
+std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out,
+                                            bool keepMoves);
 
 /// Meshes the part into run.part, and after a part-off the stub into run.stub (figures: mesh
 /// volumes, triangles, time).

@@ -65,6 +65,7 @@ InterpretResult interpret(PagedText programText, const std::string& fileName,
   Status status = refuseForeignProgram(programText);
   if (status.ok()) status = refuseEmptyProgram(program, programText.view());
   MovePipeline pipeline(options, moves, warnings);
+  moves.recordingIn(result.toolpath);
   if (status.ok()) {
     status = runProgram(program, options, result.toolpath, pipeline, warnings, notes);
     if (status.ok()) status = pipeline.finish();

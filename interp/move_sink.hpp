@@ -14,6 +14,11 @@ class MoveSink {
   virtual ~MoveSink() = default;
   /// The next move of the toolpath, final (in the setup's frame, compensated, offset).
   virtual void take(Move move) = 0;
+  /// The toolpath the interpreter records into as it runs (its cycle starts, stops, parts
+  /// catcher commands and block count; not its moves), for a sink that reads them beside the
+  /// moves: told before the first move; each is recorded before its block's moves come. Valid
+  /// until the interpreter returns.
+  virtual void recordingIn(const Toolpath& /*toolpath*/) {}
 };
 
 /// The sink that keeps every move, for the callers that need the whole toolpath at once.

@@ -83,6 +83,7 @@ class TimedMoves final : public interp::MoveSink {
     timer_.time(move);
     next_.take(std::move(move));
   }
+  void recordingIn(const interp::Toolpath& toolpath) override { next_.recordingIn(toolpath); }
   const std::vector<interp::Error>& warnings() const { return timer_.warnings(); }
 
  private:
@@ -146,6 +147,12 @@ std::optional<Job> loadJob(const JobRequest& request) {
 }
 
 std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
+  std::optional<Job> job = openJob(request);
+  if (!job || !interpretJob(*job, request, moves)) return std::nullopt;
+  return job;
+}
+
+std::optional<Job> openJob(const JobRequest& request) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
   Job job{defaultSetup(), {}, {}, {}, {}, {}};
@@ -189,6 +196,11 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
     }
   }
   mountToolsNamedInComments(job, program.string());
+  return job;
+}
+
+bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves) {
+  const std::filesystem::path& program = request.program;
   interp::InterpreterOptions options = interpreterOptionsOf(job.setup);
   options.toolDefinitionHint = toolDefinitionHint;
   options.programDirectories = request.programDirectories;
@@ -196,7 +208,7 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
   TimedMoves timed(job.setup.machine, moves);
   interp::InterpretResult result = interp::interpret(job.programText.text(), program.string(), options, timed);
   print(result.diagnostics);
-  if (!result.ok()) return std::nullopt;
+  if (!result.ok()) return false;
   for (auto& d : result.diagnostics)
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
     else if (d.severity == interp::Severity::Note) job.notes.push_back(std::move(d));
@@ -205,7 +217,7 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
     print({job.warnings.back()});
   }
-  return job;
+  return true;
 }
 
 }  // namespace lathesim::job

@@ -66,4 +66,13 @@ std::optional<Job> loadJob(const JobRequest& request);
 /// handed on moves before its error: the consumer drops them.
 std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves);
 
+/// loadJob's first step: the setup read (with the command line's overrides, the bar and the
+/// tools the program's comments name) and the program opened, not yet interpreted; for a
+/// consumer of the moves that needs the setup before the first move (a simulation's stock).
+std::optional<Job> openJob(const JobRequest& request);
+
+/// loadJob's second step: the opened job's program interpreted, the moves timed and handed
+/// to `moves`; false (the errors printed) for a program with errors.
+bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves);
+
 }  // namespace lathesim::job

@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Peak memory of `lathesim expand` on long programs: 100 000, 300 000 and 1 000 000 one-move
-# G01 blocks, and 1 000 000 blocks with a G71/G70 cycle and a subprogram called every 1000
-# blocks. Prints each program's size, blocks, CSV rows, wall time and peak RSS (max resident
-# set, /usr/bin/time -v), and the peak a block above the 100 000-block program's.
-# Usage: scripts/long_program_memory.sh [LATHESIM]   (default build/lathesim)
+# Peak memory of `lathesim expand` (or `run`) on long programs: 100 000, 300 000 and 1 000 000
+# one-move G01 blocks, and 1 000 000 blocks with a G71/G70 cycle and a subprogram called every
+# 1000 blocks. Prints each program's size, blocks, rows (expand: the CSV's; run: report.json's
+# blocks), wall time and peak RSS (max resident set, /usr/bin/time -v).
+# Usage: scripts/long_program_memory.sh [LATHESIM [expand | run [OUTPUTS]]]
+#   (default build/lathesim expand; run simulates at 0.5 mm voxels and writes OUTPUTS, default
+#   report: `--outputs OUTPUTS`)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 lathesim=${1:-build/lathesim}
+command=${2:-expand}
+outputs=${3:-report}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -28,12 +32,23 @@ cycles_and_calls() {  # blocks
     print "M30"; print "O1000"; print "G01 U-2. F0.1"; print "G00 U2."; print "M99" }'
 }
 
+rows() {  # what the command wrote for each move or block
+  if [ "$command" = expand ]; then echo $(( $(wc -l <"$tmp/out.csv") - 1 ))
+  else grep -c '"removed_volume_mm3"' "$tmp/run/report.json"; fi
+}
+
 measure() {  # label, program file
   local out
-  /usr/bin/time -v "$lathesim" expand "$2" >"$tmp/out.csv" 2>"$tmp/time.txt" || { tail -3 "$tmp/time.txt"; exit 1; }
+  if [ "$command" = expand ]; then
+    /usr/bin/time -v "$lathesim" expand "$2" >"$tmp/out.csv" 2>"$tmp/time.txt" || { tail -3 "$tmp/time.txt"; exit 1; }
+  else
+    rm -rf "$tmp/run"
+    /usr/bin/time -v "$lathesim" run "$2" --voxel 0.5 --outputs "$outputs" --out "$tmp/run" >/dev/null 2>"$tmp/time.txt" ||
+      { tail -3 "$tmp/time.txt"; exit 1; }
+  fi
   out=$(awk -F': ' '/Maximum resident/ {rss = $2} /Elapsed/ {wall = $2} END {print rss, wall}' "$tmp/time.txt")
   printf '%-22s %5.0f MB program %8d blocks %8d rows  %s s  peak %6.1f MB\n' "$1" \
-    "$(( $(stat -c %s "$2") ))e-6" "$(wc -l <"$2")" "$(( $(wc -l <"$tmp/out.csv") - 1 ))" \
+    "$(( $(stat -c %s "$2") ))e-6" "$(wc -l <"$2")" "$(rows)" \
     "$(echo "$out" | cut -d' ' -f2)" "$(echo "$out" | awk '{print $1 / 1024}')"
 }
 

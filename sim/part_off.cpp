@@ -9,25 +9,27 @@ namespace {
 
 // The Z where the group's cut went deepest: the end of its move nearest the axis (or
 // furthest past it), where a parting blade stands when the piece falls.
-double deepestZ(const std::vector<interp::Move>& moves, std::size_t first, std::size_t end) {
-  const auto deepest = std::min_element(moves.begin() + first, moves.begin() + end,
+double deepestZ(std::span<const interp::Move> group) {
+  const auto deepest = std::min_element(group.begin(), group.end(),
                                         [](const interp::Move& a, const interp::Move& b) { return a.to.x() < b.to.x(); });
   return deepest->to.y();
 }
 
-std::optional<interp::PartsCatcherCommand> catcherInForce(const interp::Toolpath& toolpath, std::size_t move) {
+std::optional<interp::PartsCatcherCommand> catcherInForce(const std::vector<interp::PartsCatcherCommand>& catchers,
+                                                          std::size_t move) {
   std::optional<interp::PartsCatcherCommand> inForce;
-  for (const auto& command : toolpath.partsCatcher)
+  for (const auto& command : catchers)
     if (command.movesBefore <= move) inForce = command;
   return inForce;
 }
 
 }  // namespace
 
-void PartOffWatch::afterCut(const interp::Toolpath& toolpath, std::size_t first, std::size_t end,
-                            const RevolvedRegion& revolved, const std::optional<ChangedArea>& changed,
-                            double removedMm3, Stock& stock, SimulationResult& result) {
-  const interp::Move& head = toolpath.moves[first];
+void PartOffWatch::afterCut(std::span<const interp::Move> group, std::size_t first,
+                            const std::vector<interp::PartsCatcherCommand>& catchers, const RevolvedRegion& revolved,
+                            const std::optional<ChangedArea>& changed, double removedMm3, Stock& stock,
+                            SimulationResult& result) {
+  const interp::Move& head = group.front();
   const double h = stock.voxelMm();
   if (result.part && interp::isCutting(head.kind) && !revolved.empty() && warnedBlock_ != head.block) {
     // As holder_check measures a holder: material more than a voxel inside, so that a blade
@@ -48,8 +50,7 @@ void PartOffWatch::afterCut(const interp::Toolpath& toolpath, std::size_t first,
   // this one, so its neighbourhood is enough to see that it parted nothing.
   std::unique_ptr<Stock> piece = stock.takeLoosePieces(changed, revolved.empty());
   if (!piece) return;
-  PartOff off{head.line, head.column, deepestZ(toolpath.moves, first, end), piece->volumeMm3(),
-              catcherInForce(toolpath, first)};
+  PartOff off{head.line, head.column, deepestZ(group), piece->volumeMm3(), catcherInForce(catchers, first)};
   if (result.part) {
     result.warnings.push_back(
         {head.line, head.column,

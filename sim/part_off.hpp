@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "geometry/revolved_region.hpp"
 #include "interp/move.hpp"
@@ -16,10 +18,12 @@ namespace lathesim::sim {
 
 class PartOffWatch {
  public:
-  /// After moves[first, end) of `toolpath`, one written group of moves, removed `removedMm3`
-  /// from `stock` within `changed`. `revolved` is what they swept when they turned (empty for a
-  /// thread or a slot: then the part that fell is not looked for in it).
-  void afterCut(const interp::Toolpath& toolpath, std::size_t first, std::size_t end, const RevolvedRegion& revolved,
+  /// After `group`, one written group of moves (the toolpath's from its move `first` on),
+  /// removed `removedMm3` from `stock` within `changed`. `revolved` is what they swept when they
+  /// turned (empty for a thread or a slot: then the part that fell is not looked for in it);
+  /// `catchers`, the parts catcher commands reached so far.
+  void afterCut(std::span<const interp::Move> group, std::size_t first,
+                const std::vector<interp::PartsCatcherCommand>& catchers, const RevolvedRegion& revolved,
                 const std::optional<ChangedArea>& changed, double removedMm3, Stock& stock, SimulationResult& result);
 
  private:

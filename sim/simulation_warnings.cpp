@@ -49,9 +49,9 @@ std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head,
                                "; start the spindle before cutting"};
 }
 
-std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& move, std::span<const interp::Move> moves,
-                                                         std::size_t index, const Stock& stock) {
-  const bool continues = index > 0 && moves[index - 1].kind == interp::MoveKind::Thread && moves[index - 1].to == move.from;
+std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& move, const interp::Move* before,
+                                                         const Stock& stock) {
+  const bool continues = before && before->kind == interp::MoveKind::Thread && before->to == move.from;
   if (continues || stock.signedDistanceAt(move.from) >= -kInsideStockVoxels * stock.voxelMm()) return std::nullopt;
   return SimulationWarning{move.line, move.column,
                            "this thread pass starts at X" + number("%g", diameterOf(move.from)) + " Z" +

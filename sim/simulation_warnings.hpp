@@ -1,8 +1,6 @@
 #pragma once
 // The warnings the simulation gives, worded in one place (see SimulationWarning).
 
-#include <span>
-
 #include "interp/move.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock.hpp"
@@ -23,10 +21,11 @@ std::optional<SimulationWarning> shiftedMoveInStock(const interp::Move& move, co
 std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head, double removedMm3,
                                                        double voxelMm);
 
-/// A warning when the thread pass that `moves[index]` begins (a thread move not continuing the
-/// one before it) starts inside `stock` (deeper than kInsideStockVoxels): the pass would be
-/// synchronised to the spindle with the tool already in the material.
-std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& move, std::span<const interp::Move> moves,
-                                                         std::size_t index, const Stock& stock);
+/// A warning when the thread pass that `move` begins (a thread move not continuing `before`,
+/// the toolpath's move before it, null for the first) starts inside `stock` (deeper than
+/// kInsideStockVoxels): the pass would be synchronised to the spindle with the tool already in
+/// the material.
+std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& move, const interp::Move* before,
+                                                         const Stock& stock);
 
 }  // namespace lathesim::sim

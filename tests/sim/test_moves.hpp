@@ -1,7 +1,10 @@
 #pragma once
 // Moves built by hand for the sim tests, as the interpreter would make them.
 
+#include <vector>
+
 #include "interp/move.hpp"
+#include "sim/simulate.hpp"
 
 namespace lathesim::sim::test {
 
@@ -23,6 +26,14 @@ inline interp::Move turningMove(interp::MoveKind kind, RZ from, RZ to, int block
   m.spindleOn = true;
   m.spindleS = 500;
   return m;
+}
+
+/// Tool 1: a square `sideMm` wide, its tip the corner nearest the axis at −Z.
+inline ToolOutlines squareTool(double sideMm) {
+  const std::vector<RZ> square{{0, 0}, {sideMm, 0}, {sideMm, sideMm}, {0, sideMm}};
+  ToolOutlines tools;
+  tools.emplace(1, *ConvexPolygon::fromOutline(square).polygon);
+  return tools;
 }
 
 }  // namespace lathesim::sim::test
