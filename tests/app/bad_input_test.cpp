@@ -1,5 +1,5 @@
 // Bad input given to `lathesim run` and `lathesim check`: a malformed number, a cycle's alarm,
-// an unknown setup key, a grid too fine for memory, a line --at-line cannot stop at, a drawing
+// an error at the end of a long streamed program, an unknown setup key, a grid too fine for memory, a line --at-line cannot stop at, a drawing
 // or STL that is not one. Each exits 1 (2 for a command line short of what it needs), says
 // where and what, and writes nothing. No test here simulates a whole part, so these run under
 // the sanitizers within CI's time (scripts/sanitize.sh ci).
@@ -119,6 +119,25 @@ TEST(BadInput, AtLineThatDoesNotExistOrMakesNoMoveIsNamedAndWritesNothing) {
   EXPECT_EQ(outcome.status, 1);
   EXPECT_NE(outcome.err.find("--at-line 10: line 10 makes no move"), std::string::npos) << outcome.err;
   EXPECT_TRUE(noOutputs(out));
+}
+
+// A run that needs no move afterwards streams them from the interpreter into the simulation
+// (app/run_pipeline.hpp): an error at the last of 2,000 blocks comes after the moves before it
+// were simulated and spooled, and nothing of them is written.
+TEST(BadInput, AnErrorAtTheLastBlockOfAStreamedRunLeavesNoOutput) {
+  ScratchDir dir("late-error");
+  const fs::path program = dir.path() / "late-error.nc";
+  std::string text = "G99 M03 S800\nG00 X40 Z2\n";
+  for (int i = 0; i < 2000; ++i) text += "G01 X" + std::to_string(i % 2 ? 40 : 42) + " Z-" + std::to_string(i % 50) + " F0.1\n";
+  text += "G00 Z10 B-200.\nM30\n";
+  writeFile(program, text);
+  const fs::path out = dir.path() / "out" / "run";
+  const ProcessOutcome outcome =
+      lathesim({"run", program.string(), "--voxel", "0.5", "--outputs", "report,csv,stl", "--out", out.string()}, dir.path());
+  EXPECT_EQ(outcome.status, 1);
+  EXPECT_NE(outcome.err.find("late-error.nc:2003:9: error: B-200.: this lathe has no B axis"), std::string::npos)
+      << outcome.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
 }
 
 /// `lathesim check` of seed 001's R-24 program at 0.25 mm with `extra` arguments, into dir/out.

@@ -94,23 +94,6 @@ TEST(StreamedRun, LongProgramReportsAsWhenTheMovesAreKept) {
   expectStreamedAsKept(program, {});
 }
 
-// The moves before the error were simulated and spooled already: nothing of them is written.
-TEST(StreamedRun, AnErrorAtTheLastBlockLeavesNoOutput) {
-  test::ScratchDir scratch("late-error");
-  const fs::path program = scratch.path() / "late-error.nc";
-  std::string text = straightProgram(2000);
-  text.insert(text.rfind("M30"), "G00 Z10 B-200.\n");
-  test::writeFile(program, text);
-  const fs::path out = scratch.path() / "out" / "run";
-  const test::ProcessOutcome outcome = test::runProcess(
-      LATHESIM_BINARY, {"run", program.string(), "--voxel", "0.5", "--outputs", "report,csv,stl", "--out", out.string()},
-      scratch.path());
-  EXPECT_EQ(outcome.status, 1);
-  EXPECT_NE(outcome.err.find("late-error.nc:2003:9: error: B-200.: this lathe has no B axis"), std::string::npos)
-      << outcome.err;
-  EXPECT_FALSE(fs::exists(scratch.path() / "out"));
-}
-
 // The moves alone of the longer program's extra blocks take 40 000 × 272 B = 11 MB when held:
 // the runs that held them peaked 12.3 MB higher for 50 000 blocks than for 10 000 (and then
 // built the report's rows as a JSON tree, after the peak is noted, 0.4 KB a block more).
