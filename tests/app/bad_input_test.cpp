@@ -1,8 +1,9 @@
 // Bad input given to `lathesim run` and `lathesim check`: a malformed number, a cycle's alarm,
-// an error at the end of a long streamed program, an unknown setup key, a grid too fine for memory, a line --at-line cannot stop at, a drawing
-// or STL that is not one. Each exits 1 (2 for a command line short of what it needs), says
-// where and what, and writes nothing. No test here simulates a whole part, so these run under
-// the sanitizers within CI's time (scripts/sanitize.sh ci).
+// an error at the end of a long streamed program, an unknown setup key, a grid too fine for
+// memory, a line --at-line cannot stop at, a drawing or STL that is not one. Each exits 1 (2
+// for a command line short of what it needs), says where and what, and writes nothing. No
+// test here simulates a whole part, so these run under the sanitizers within CI's time
+// (scripts/sanitize.sh ci).
 
 #include <gtest/gtest.h>
 
