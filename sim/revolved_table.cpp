@@ -13,12 +13,6 @@ namespace lathesim::sim {
 namespace {
 
 constexpr int kChunk = RevolvedRegion::kColumn;  // 8 cells along Z: one leaf's column
-// Below these a write's cells (classes by the chunks the change bound reaches) or its ghost
-// verdicts (orbits) are done on this thread: waking another and waiting for it costs more.
-// Measured on a CAM contour's 0.03 mm steps (wall time, both cores free): 1.8 s all on one
-// thread, 1.2 s from 500 to 5,000, and more CPU time the lower the threshold.
-constexpr std::size_t kParallelWork = 4000;
-constexpr std::size_t kParallelVerdicts = 2000;
 static_assert(kChunk == 8);
 
 int alignDown(int k) { return k & ~(kChunk - 1); }
@@ -464,7 +458,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     ghostCandidates.insert(ghostCandidates.end(), found.begin(), found.end());
   };
   const tbb::blocked_range<std::size_t> bins(0, binCount);
-  if (work < kParallelWork) writeBins(bins);
+  if (work < parallel_.work) writeBins(bins);
   else tbb::parallel_for(bins, writeBins);
 
   double lost = 0.0;
@@ -511,7 +505,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
       }
     };
     const tbb::blocked_range<std::size_t> all(0, candidates.size(), 64);
-    if (verdicts < kParallelVerdicts) decide(all);
+    if (verdicts < parallel_.verdicts) decide(all);
     else tbb::parallel_for(all, decide);
     std::vector<Ghost> ghosts;                            // the whole class's cell
     std::vector<std::pair<Ghost, VoxelIndex>> airVoxels;  // some of its columns only
