@@ -46,6 +46,35 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool&
   return lost;
 }
 
+// A chunk's ghost candidates (class n of the write's first, its chunk, a bit per cell),
+// gathered by each task and then put in class and chunk order, the order in which a single
+// thread would have found them.
+struct Candidates {
+  int n, chunk;
+  std::uint8_t bits;
+};
+
+// A chunk of a bin of classes as a write finds it (RevolvedTable::write).
+struct Place {
+  int chunk;
+  bool covered;  // deep inside the region: every open cell is filled
+  const RevolvedRegion* local;
+  const RevolvedRegion::ColumnPlan* plan;  // or none
+};
+
+// What a task of a write needs while it writes its bins: the region near each of a bin's
+// places and their plans (one per chunk of the write's box), the places, the ghost candidates
+// found. Each thread keeps its own from write to write, so that their memory, the regions'
+// edges too (RevolvedRegion::nearInto), is reused rather than allocated again every write. A
+// task holds it only while it runs, and a task never waits for another.
+struct WriteScratch {
+  std::vector<RevolvedRegion> nearby;
+  std::vector<RevolvedRegion::ColumnPlan> plans;
+  std::vector<Place> places;
+  std::vector<Candidates> found;
+};
+thread_local WriteScratch scratch;
+
 }  // namespace
 
 RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelMm, float bandMm, double airRadiusMm)
@@ -290,12 +319,6 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   const int chunkHigh = std::min(chunks_ - 1, static_cast<int>(std::floor((zHigh / h_ - kBase_) / kChunk)));
   if (classLow > classHigh || chunkLow > chunkHigh) return 0.0;
 
-  // A chunk's ghost candidates, gathered by each task and then put in class and chunk order,
-  // the order in which a single thread would have found them.
-  struct Candidates {
-    int n, chunk;
-    std::uint8_t bits;
-  };
   const int classCount = classHigh - classLow + 1;
   std::vector<double> lostOf(classCount, 0.0);
   // Air voxels lost nothing when their class's cell did: per class, voxels to take back.
@@ -320,12 +343,6 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   // A bin of this many classes or more reads the region through a plan of its place (see
   // RevolvedRegion::planColumn): one edge a piece and cell rather than all of them.
   constexpr int kPlannedClasses = 4;
-  struct Place {
-    int chunk;
-    bool covered;  // deep inside the region: every open cell is filled
-    const RevolvedRegion* local;
-    const RevolvedRegion::ColumnPlan* plan;  // or none
-  };
   // The chunks of each bin that the change bound reaches (every chunk of the box without one):
   // a group of chunks at a time, then at each chunk's own cells rather than its centre (a
   // chunk is 8 voxels tall, and a move's sliver of change is often thinner than that). A
@@ -359,10 +376,15 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   reachedStart[binCount] = static_cast<int>(reached.size());
 
   const auto writeBins = [&](const tbb::blocked_range<std::size_t>& range) {
-    std::vector<RevolvedRegion> nearby(chunkHigh - chunkLow + 1);
-    std::vector<RevolvedRegion::ColumnPlan> plans(chunkHigh - chunkLow + 1);
-    std::vector<Place> places;
-    std::vector<Candidates> found;
+    WriteScratch& mine = scratch;
+    const std::size_t boxChunks = chunkHigh - chunkLow + 1;
+    if (mine.nearby.size() < boxChunks) mine.nearby.resize(boxChunks);
+    if (mine.plans.size() < boxChunks) mine.plans.resize(boxChunks);
+    std::vector<RevolvedRegion>& nearby = mine.nearby;
+    std::vector<RevolvedRegion::ColumnPlan>& plans = mine.plans;
+    std::vector<Place>& places = mine.places;
+    std::vector<Candidates>& found = mine.found;
+    found.clear();
     for (std::size_t bin = range.begin(); bin != range.end(); ++bin) {
       const int first = binStart[bin], last = binStart[bin + 1];
       const double rhoMid = (std::floor(rho_[first] / h_) + 0.5) * h_;
