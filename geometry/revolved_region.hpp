@@ -9,7 +9,6 @@
 // Outside the union the value is the exact distance; inside it is a lower bound of the
 // depth, which is all a max-based removal needs.
 
-#include <array>
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
@@ -44,8 +43,14 @@ class RevolvedRegion {
    private:
     friend class RevolvedRegion;
     static constexpr int kWhole = -1;  // the piece is searched whole at every point
+    // A planned piece's edge at each point, its numbers laid out by point so that the points
+    // are read as vectors.
+    struct EdgesByPoint {
+      double ax[kColumn], az[kColumn], nx[kColumn], nz[kColumn], length[kColumn];
+    };
     double z0_ = 0.0, dz_ = 0.0;
-    std::vector<std::array<int, kColumn>> edgeOf_;  // per piece: per point, its edge; or kWhole
+    std::vector<int> plannedOf_;        // per piece: its entry in edges_, or kWhole
+    std::vector<EdgesByPoint> edges_;
   };
   void planColumn(double rhoLow, double rhoHigh, double z0, double dz, ColumnPlan& plan) const;
   /// signedDistanceColumn(ρ, plan's z0 and dz, cap, out) for ρ within the plan's range, to the
