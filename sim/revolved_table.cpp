@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <mutex>
+#include <utility>
 
 #include "sim/column_write.hpp"
 
@@ -48,7 +49,8 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool&
 
 // A chunk's ghost candidates (class n of the write's first, its chunk, a bit per cell),
 // gathered by each task and then put in class and chunk order, the order in which a single
-// thread would have found them.
+// thread would have found them. A task writes a range of bins in order, so its own candidates
+// are in that order already: only the tasks' runs need ordering, by their first bins.
 struct Candidates {
   int n, chunk;
   std::uint8_t bits;
@@ -324,6 +326,10 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   // Air voxels lost nothing when their class's cell did: per class, voxels to take back.
   std::vector<double> airVoxelsLost(classCount, 0.0);
   std::vector<Candidates> ghostCandidates;
+  struct Run {
+    std::size_t firstBin, start, size;  // a task's candidates: ghostCandidates[start, start + size)
+  };
+  std::vector<Run> ghostRuns;
   std::mutex ghostCandidatesMutex;
   std::vector<char> changedClass(classCount, 0);
   // Classes come in bins one voxel wide in ρ (at 22 mm about a hundred classes a bin): what
@@ -477,6 +483,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     }
     if (found.empty()) return;
     const std::lock_guard<std::mutex> lock(ghostCandidatesMutex);
+    ghostRuns.push_back({range.begin(), ghostCandidates.size(), found.size()});
     ghostCandidates.insert(ghostCandidates.end(), found.begin(), found.end());
   };
   const tbb::blocked_range<std::size_t> bins(0, binCount);
@@ -507,9 +514,15 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     };
     std::vector<Candidate> candidates;
     std::size_t verdicts = 0;
-    const auto inOrder = [](const Candidates& a, const Candidates& b) { return a.n != b.n ? a.n < b.n : a.chunk < b.chunk; };
-    if (!std::is_sorted(ghostCandidates.begin(), ghostCandidates.end(), inOrder))  // written on one thread, they are
-      std::sort(ghostCandidates.begin(), ghostCandidates.end(), inOrder);
+    const auto byFirstBin = [](const Run& a, const Run& b) { return a.firstBin < b.firstBin; };
+    if (!std::is_sorted(ghostRuns.begin(), ghostRuns.end(), byFirstBin)) {  // written on one thread, they are
+      std::sort(ghostRuns.begin(), ghostRuns.end(), byFirstBin);
+      std::vector<Candidates> inOrder;
+      inOrder.reserve(ghostCandidates.size());
+      for (const Run& run : ghostRuns)
+        inOrder.insert(inOrder.end(), ghostCandidates.begin() + run.start, ghostCandidates.begin() + run.start + run.size);
+      ghostCandidates = std::move(inOrder);
+    }
     for (const Candidates& found : ghostCandidates) {
       const int c = classLow + found.n;
       for (int bit = 0; bit < kChunk; ++bit)
