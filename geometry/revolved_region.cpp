@@ -200,54 +200,86 @@ void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, doub
   }
 }
 
-int RevolvedRegion::ColumnPlan::plannedPieces() const { return static_cast<int>(edges_.size()); }
+int RevolvedRegion::ColumnPlan::plannedPieces() const {
+  int planned = 0;
+  for (std::size_t p = 0; p + 1 < firstSpan_.size(); ++p)
+    planned += std::any_of(spans_.begin() + firstSpan_[p], spans_.begin() + firstSpan_[p + 1],
+                           [](const Span& span) { return span.edges != kWhole; });
+  return planned;
+}
 
-void RevolvedRegion::planColumn(double rhoLow, double rhoHigh, double z0, double dz, ColumnPlan& plan) const {
+bool RevolvedRegion::farthestEdges(const Piece& piece, double rho, double z0, double dz, int (&edgeOf)[kColumn]) const {
   // An edge must lead the next one by more than rounding can take back anywhere between.
   constexpr double kMargin = 1e-9;
+  for (int k = 0; k < kColumn; ++k) {
+    const double z = static_cast<double>(k) * dz + z0;
+    double first = -std::numeric_limits<double>::infinity(), second = first;
+    for (int i = piece.firstEdge; i < piece.firstEdge + piece.edgeCount; ++i) {
+      const Edge& e = edges_[i];
+      const double d = radialLine(e, rho) + e.nz * z;
+      if (d > first) {
+        second = first;
+        first = d;
+        edgeOf[k] = i;
+      } else {
+        second = std::max(second, d);
+      }
+    }
+    if (!(first - second > kMargin)) return false;
+  }
+  return true;
+}
+
+void RevolvedRegion::planSpans(const Piece& piece, double low, const int (&lowEdges)[kColumn], bool lowClear,
+                               double high, const int (&highEdges)[kColumn], bool highClear, int splits,
+                               ColumnPlan& plan) const {
+  const bool same = lowClear && highClear && std::equal(lowEdges, lowEdges + kColumn, highEdges);
+  // Where an end is within rounding of a tie, halving cannot help: that end stays.
+  if (!same && lowClear && highClear && splits > 0) {
+    const double middle = 0.5 * (low + high);
+    int middleEdges[kColumn];
+    const bool middleClear = farthestEdges(piece, middle, plan.z0_, plan.dz_, middleEdges);
+    planSpans(piece, low, lowEdges, lowClear, middle, middleEdges, middleClear, splits - 1, plan);
+    planSpans(piece, middle, middleEdges, middleClear, high, highEdges, highClear, splits - 1, plan);
+    return;
+  }
+  if (!same) {
+    plan.spans_.push_back({high, ColumnPlan::kWhole});
+    return;
+  }
+  plan.spans_.push_back({high, static_cast<int>(plan.edges_.size())});
+  ColumnPlan::EdgesByPoint& edges = plan.edges_.emplace_back();
+  for (int k = 0; k < kColumn; ++k) {
+    const Edge& e = edges_[lowEdges[k]];
+    edges.ax[k] = e.ax;
+    edges.az[k] = e.az;
+    edges.nx[k] = e.nx;
+    edges.nz[k] = e.nz;
+    edges.length[k] = e.length;
+  }
+}
+
+void RevolvedRegion::planColumn(double rhoLow, double rhoHigh, double z0, double dz, ColumnPlan& plan) const {
+  // Halving a bin's range twice at most: a contour's pieces change edge within a voxel-wide bin
+  // now and then, rarely more than once.
+  constexpr int kSplits = 2;
   plan.z0_ = z0;
   plan.dz_ = dz;
-  plan.plannedOf_.assign(pieces_.size(), ColumnPlan::kWhole);
+  plan.firstSpan_.clear();
+  plan.spans_.clear();
   plan.edges_.clear();
-  for (std::size_t p = 0; p < pieces_.size(); ++p) {
-    const Piece& piece = pieces_[p];
-    if (!piece.isArea || piece.crossesAxis) continue;
-    int edgeOf[kColumn];
-    bool planned = true;
-    for (int k = 0; k < kColumn && planned; ++k) {
-      const double z = static_cast<double>(k) * dz + z0;
-      int farthestAt[2] = {-1, -2};
-      for (int end = 0; end < 2; ++end) {
-        const double r = end == 0 ? rhoLow : rhoHigh;
-        double first = -std::numeric_limits<double>::infinity(), second = first;
-        for (int i = piece.firstEdge; i < piece.firstEdge + piece.edgeCount; ++i) {
-          const Edge& e = edges_[i];
-          const double d = radialLine(e, r) + e.nz * z;
-          if (d > first) {
-            second = first;
-            first = d;
-            farthestAt[end] = i;
-          } else {
-            second = std::max(second, d);
-          }
-        }
-        planned &= first - second > kMargin;
-      }
-      planned &= farthestAt[0] == farthestAt[1];
-      edgeOf[k] = farthestAt[0];
+  for (const Piece& piece : pieces_) {
+    plan.firstSpan_.push_back(static_cast<int>(plan.spans_.size()));
+    if (!piece.isArea || piece.crossesAxis) {
+      plan.spans_.push_back({rhoHigh, ColumnPlan::kWhole});
+      continue;
     }
-    if (!planned) continue;
-    plan.plannedOf_[p] = static_cast<int>(plan.edges_.size());
-    ColumnPlan::EdgesByPoint& edges = plan.edges_.emplace_back();
-    for (int k = 0; k < kColumn; ++k) {
-      const Edge& e = edges_[edgeOf[k]];
-      edges.ax[k] = e.ax;
-      edges.az[k] = e.az;
-      edges.nx[k] = e.nx;
-      edges.nz[k] = e.nz;
-      edges.length[k] = e.length;
-    }
+    int lowEdges[kColumn], highEdges[kColumn];
+    const bool lowClear = farthestEdges(piece, rhoLow, z0, dz, lowEdges);
+    const bool highClear = farthestEdges(piece, rhoHigh, z0, dz, highEdges);
+    planSpans(piece, rhoLow, lowEdges, lowClear, rhoHigh, highEdges, highClear, kSplits, plan);
   }
+  plan.firstSpan_.push_back(static_cast<int>(plan.spans_.size()));
 }
 
 namespace {
@@ -278,12 +310,15 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::signedDis
   const Double4 z[2] = {Double4{0, 1, 2, 3} * plan.dz_ + plan.z0_, Double4{4, 5, 6, 7} * plan.dz_ + plan.z0_};
   for (std::size_t p = 0; p < pieces_.size(); ++p) {
     const Piece& piece = pieces_[p];
-    if (plan.plannedOf_[p] == ColumnPlan::kWhole) {
+    int span = plan.firstSpan_[p];
+    while (span + 1 < plan.firstSpan_[p + 1] && rho > plan.spans_[span].rhoHigh) ++span;
+    const int planned = plan.spans_[span].edges;
+    if (planned == ColumnPlan::kWhole) {
       pieceDistanceColumn(edges_.data(), piece, rho, plan.z0_, plan.dz_, cap, out);
       if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, plan.z0_, plan.dz_, cap, out);
       continue;
     }
-    const ColumnPlan::EdgesByPoint& edges = plan.edges_[plan.plannedOf_[p]];
+    const ColumnPlan::EdgesByPoint& edges = plan.edges_[planned];
     for (int g = 0; g < 2; ++g) {
       const EdgeLanes e = lanesOf(edges, g);
       const Double4 line = radialLine(e, rho) + e.nz * z[g];
