@@ -427,9 +427,11 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
         }
         for (const auto& [chunk, covered, local, plan] : places) {
           const int k0 = kBase_ + chunk * kChunk;
+          std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+          // Uniform and already as deep in the region's state as the band allows (air for a
+          // removal, solid for an addition): no cell is open, nothing to read or write.
+          if (slot == (adding ? kSolidChunk : kAirChunk)) continue;
           if (covered) {  // a uniform chunk turns over whole: what fill() would do, without its cells
-            std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
-            if (slot == (adding ? kSolidChunk : kAirChunk)) continue;  // already so
             if (slot == (adding ? kAirChunk : kSolidChunk)) {  // no air voxels: they are in mixed chunks
               slot = adding ? kSolidChunk : kAirChunk;
               lostOf[n] += adding ? -kChunk : kChunk;
