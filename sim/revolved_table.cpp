@@ -300,6 +300,15 @@ bool RevolvedTable::isGhost(int i, int j, int k, float material) const {
   return true;
 }
 
+bool RevolvedTable::materialAboveOrBelow(int c, int cell, float material) const {
+  for (const int next : {cell - 1, cell + 1}) {
+    if (next < 0 || next >= chunks_ * kChunk) continue;
+    std::uint8_t bits;
+    if (cellsOf(c, next / kChunk, bits)[next % kChunk] <= material) return true;
+  }
+  return false;
+}
+
 double RevolvedTable::write(const RevolvedRegion& region, bool adding, const RevolvedRegion* changes) {
   if (region.empty() || (changes && changes->empty()) || rho_.empty()) return 0.0;
   const ColumnWrite w = ColumnWrite::of(adding ? 1.0 : -1.0, h_, band_);
@@ -537,6 +546,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     const auto decide = [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t m = range.begin(); m != range.end(); ++m) {
         const auto& [at, first] = candidates[m];
+        if (materialAboveOrBelow(at.c, at.cell, material)) continue;  // no orbit is a ghost: its verdicts stay 0
         for (int o = orbitStart_[at.c]; o < orbitStart_[at.c + 1]; ++o)
           ghostOrbit[first + (o - orbitStart_[at.c])] = isGhost(orbits_[o].first, orbits_[o].second, kBase_ + at.cell, material);
       }

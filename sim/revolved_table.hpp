@@ -152,6 +152,9 @@ class RevolvedTable {
   void markChanged(int c, int chunk) { changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] |= std::uint64_t{1} << (chunk % 64); }
   bool isChanged(int c, int chunk) const { return (changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] >> (chunk % 64)) & 1; }
   bool isGhost(int i, int j, int k, float material) const;
+  // Whether class c's cell just below or above `cell` is material: then each of the class's
+  // columns has a material neighbour there, and none of its voxels at `cell` is a ghost.
+  bool materialAboveOrBelow(int c, int cell, float material) const;
   // Air voxels (see the top of this file).
   static std::uint64_t keyOf(int i, int j, int k);
   std::uint64_t cellKeyOf(int c, int cell) const { return static_cast<std::uint64_t>(c) * chunks_ * kChunkCells + cell; }
