@@ -16,11 +16,23 @@ namespace {
 using Double4 = double __attribute__((vector_size(32)));
 using Mask4 = std::int64_t __attribute__((vector_size(32)));
 
+// The helpers below are always inlined into their callers (each compiled for its own
+// processor), so their vector results never cross a call: GCC's note on the AVX call ABI
+// does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 [[gnu::always_inline]] inline bool anyOf(const Mask4& m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
-// Always inlined into their callers (each compiled for its own processor), so their vector
-// results never cross a call: GCC's note on the AVX call ABI does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
+// A column's four values read and written as one vector. The column write reads the distances
+// so: a vector read of values stored a lane at a time cannot take them from the stores in
+// flight and waits until they reach the cache.
+[[gnu::always_inline]] inline Double4 loadFour(const double* values) {
+  Double4 v;
+  std::memcpy(&v, values, sizeof v);
+  return v;
+}
+[[gnu::always_inline]] inline void storeFour(double* values, const Double4& v) { std::memcpy(values, &v, sizeof v); }
+
 // An edge's line distance n·(p − a) at p = (r, z), and p's position along the edge u·(p − a),
 // u = (−nz, nx): each the part in r, to which the part in z (nz·z, nx·z) is added. Every search
 // of the edges computes them so, term by term (a plan's reading gives the whole search's values
@@ -188,8 +200,10 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
     result[0] = line[0];
     result[1] = line[1];
   }
-  for (int g = 0; g < 2; ++g)
-    for (int k = 0; k < 4; ++k) out[4 * g + k] = result[g][k] < out[4 * g + k] ? result[g][k] : out[4 * g + k];
+  for (int g = 0; g < 2; ++g) {
+    const Double4 before = loadFour(out + 4 * g);
+    storeFour(out + 4 * g, result[g] < before ? result[g] : before);
+  }
 }
 
 void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const {
@@ -306,7 +320,8 @@ template <class EdgesByPoint>
 // arithmetic for the one edge farthest out at each point, four points at a time.
 __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::signedDistanceColumn(
     const ColumnPlan& plan, double rho, double cap, double (&out)[kColumn]) const {
-  for (double& v : out) v = std::numeric_limits<double>::infinity();
+  // The distances so far, in registers (in out only while a piece is searched whole).
+  Double4 lowest[2] = {Double4{} + std::numeric_limits<double>::infinity(), Double4{} + std::numeric_limits<double>::infinity()};
   const Double4 z[2] = {Double4{0, 1, 2, 3} * plan.dz_ + plan.z0_, Double4{4, 5, 6, 7} * plan.dz_ + plan.z0_};
   for (std::size_t p = 0; p < pieces_.size(); ++p) {
     const Piece& piece = pieces_[p];
@@ -314,8 +329,12 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::signedDis
     while (span + 1 < plan.firstSpan_[p + 1] && rho > plan.spans_[span].rhoHigh) ++span;
     const int planned = plan.spans_[span].edges;
     if (planned == ColumnPlan::kWhole) {
+      storeFour(out, lowest[0]);
+      storeFour(out + 4, lowest[1]);
       pieceDistanceColumn(edges_.data(), piece, rho, plan.z0_, plan.dz_, cap, out);
       if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, plan.z0_, plan.dz_, cap, out);
+      lowest[0] = loadFour(out);
+      lowest[1] = loadFour(out + 4);
       continue;
     }
     const ColumnPlan::EdgesByPoint& edges = plan.edges_[planned];
@@ -335,9 +354,11 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::signedDis
         for (int k = 0; k < 4; ++k) d[k] = std::sqrt(d2[k]);
         distance = outsideNear ? d : line;
       }
-      for (int k = 0; k < 4; ++k) out[4 * g + k] = distance[k] < out[4 * g + k] ? distance[k] : out[4 * g + k];
+      lowest[g] = distance < lowest[g] ? distance : lowest[g];
     }
   }
+  storeFour(out, lowest[0]);
+  storeFour(out + 4, lowest[1]);
 }
 
 double RevolvedRegion::planarDistance(double r, double z, double cap) const {
