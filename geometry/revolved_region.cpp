@@ -3,12 +3,48 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <utility>
 
 namespace lathesim {
 
 namespace {
+
+// Four points of a column in GCC vector types: one AVX2 register each in the AVX2 clones, two
+// SSE2 registers elsewhere. Masks hold lanes −1 (true) or 0.
+using Double4 = double __attribute__((vector_size(32)));
+using Mask4 = std::int64_t __attribute__((vector_size(32)));
+
+// The helpers below are always inlined into their callers (each compiled for its own
+// processor), so their vector results never cross a call: GCC's note on the AVX call ABI
+// does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+[[gnu::always_inline]] inline bool anyOf(const Mask4& m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+
+// A column's four values read and written as one vector. The column write reads the distances
+// so: a vector read of values stored a lane at a time cannot take them from the stores in
+// flight and waits until they reach the cache.
+[[gnu::always_inline]] inline Double4 loadFour(const double* values) {
+  Double4 v;
+  std::memcpy(&v, values, sizeof v);
+  return v;
+}
+[[gnu::always_inline]] inline void storeFour(double* values, const Double4& v) { std::memcpy(values, &v, sizeof v); }
+
+// An edge's line distance n·(p − a) at p = (r, z), and p's position along the edge u·(p − a),
+// u = (−nz, nx): each the part in r, to which the part in z (nz·z, nx·z) is added. Every search
+// of the edges computes them so, term by term (a plan's reading gives the whole search's values
+// to the last bit); E is an edge, or four points' edges in vectors.
+template <class E, class R>
+[[gnu::always_inline]] inline auto radialLine(const E& e, R r) {
+  return e.nx * (r - e.ax) - e.nz * e.az;
+}
+template <class E, class R>
+[[gnu::always_inline]] inline auto radialAlong(const E& e, R r) {
+  return -e.nz * (r - e.ax) - e.nx * e.az;
+}
 
 bool isSymmetricAboutAxis(const ConvexPolygon& polygon) {
   std::vector<RZ> mirrored = polygon.vertices();
@@ -97,9 +133,7 @@ double RevolvedRegion::signedDistance(double rho, double z, double cap) const {
 // that vertex: √(line² + past²).
 __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDistanceColumn(
     const Edge* edges, const Piece& piece, double r, double z0, double dz, double cap, double (&out)[kColumn]) {
-  // Two groups of four points, in GCC vector types: one AVX2 register each in the AVX2
-  // clone, two SSE2 registers elsewhere.
-  using Double4 = double __attribute__((vector_size(32)));
+  // Two groups of four points.
   static_assert(kColumn == 8);
   const Edge* const begin = edges + piece.firstEdge;
   const Edge* const end = begin + piece.edgeCount;
@@ -128,7 +162,7 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
     Double4 line[2] = {-infinity, -infinity};
     for (const Edge* edge = begin; edge != end; ++edge) {
       const Edge& e = *edge;
-      const double radial = e.nx * (r - e.ax) - e.nz * e.az;
+      const double radial = radialLine(e, r);
       for (int g = 0; g < 2; ++g) {
         const Double4 d = radial + e.nz * z[g];
         line[g] = d > line[g] ? d : line[g];
@@ -136,19 +170,16 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
     }
     // Inside, or farther than cap from a supporting line: the line distance is the answer
     // (see signedDistance). Only points outside and near need the edges themselves.
-    using Mask4 = std::int64_t __attribute__((vector_size(32)));
     const Mask4 outsideNear[2] = {(line[0] > 0.0) & (line[0] < cap), (line[1] > 0.0) & (line[1] < cap)};
-    const Mask4 any = outsideNear[0] | outsideNear[1];
-    if (any[0] | any[1] | any[2] | any[3]) {
+    if (anyOf(outsideNear[0] | outsideNear[1])) {
       Double4 farthest[2] = {-infinity, -infinity}, along[2] = {}, length[2] = {};
       for (const Edge* edge = begin; edge != end; ++edge) {
         const Edge& e = *edge;
         // Line distance n·(p − a) and position along the edge u·(p − a), u = (−nz, nx).
-        const double radial = e.nx * (r - e.ax) - e.nz * e.az;
-        const double radialAlong = -e.nz * (r - e.ax) - e.nx * e.az;
+        const double radial = radialLine(e, r), radialPosition = radialAlong(e, r);
         for (int g = 0; g < 2; ++g) {
           const Double4 d = radial + e.nz * z[g];
-          const Double4 a = radialAlong + e.nx * z[g];
+          const Double4 a = radialPosition + e.nx * z[g];
           const Mask4 farther = d > farthest[g];
           farthest[g] = farther ? d : farthest[g];
           along[g] = farther ? a : along[g];
@@ -169,8 +200,10 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
     result[0] = line[0];
     result[1] = line[1];
   }
-  for (int g = 0; g < 2; ++g)
-    for (int k = 0; k < 4; ++k) out[4 * g + k] = result[g][k] < out[4 * g + k] ? result[g][k] : out[4 * g + k];
+  for (int g = 0; g < 2; ++g) {
+    const Double4 before = loadFour(out + 4 * g);
+    storeFour(out + 4 * g, result[g] < before ? result[g] : before);
+  }
 }
 
 void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, double cap, double (&out)[kColumn]) const {
@@ -182,74 +215,150 @@ void RevolvedRegion::signedDistanceColumn(double rho, double z0, double dz, doub
 }
 
 int RevolvedRegion::ColumnPlan::plannedPieces() const {
-  return static_cast<int>(std::count_if(edgeOf_.begin(), edgeOf_.end(), [](const auto& edges) { return edges[0] != kWhole; }));
+  int planned = 0;
+  for (std::size_t p = 0; p + 1 < firstSpan_.size(); ++p)
+    planned += std::any_of(spans_.begin() + firstSpan_[p], spans_.begin() + firstSpan_[p + 1],
+                           [](const Span& span) { return span.edges != kWhole; });
+  return planned;
+}
+
+bool RevolvedRegion::farthestEdges(const Piece& piece, double rho, double z0, double dz, int (&edgeOf)[kColumn]) const {
+  // An edge must lead the next one by more than rounding can take back anywhere between.
+  constexpr double kMargin = 1e-9;
+  for (int k = 0; k < kColumn; ++k) {
+    const double z = static_cast<double>(k) * dz + z0;
+    double first = -std::numeric_limits<double>::infinity(), second = first;
+    for (int i = piece.firstEdge; i < piece.firstEdge + piece.edgeCount; ++i) {
+      const Edge& e = edges_[i];
+      const double d = radialLine(e, rho) + e.nz * z;
+      if (d > first) {
+        second = first;
+        first = d;
+        edgeOf[k] = i;
+      } else {
+        second = std::max(second, d);
+      }
+    }
+    if (!(first - second > kMargin)) return false;
+  }
+  return true;
+}
+
+void RevolvedRegion::planSpans(const Piece& piece, double low, const int (&lowEdges)[kColumn], bool lowClear,
+                               double high, const int (&highEdges)[kColumn], bool highClear, int splits,
+                               ColumnPlan& plan) const {
+  const bool same = lowClear && highClear && std::equal(lowEdges, lowEdges + kColumn, highEdges);
+  // Where an end is within rounding of a tie, halving cannot help: that end stays.
+  if (!same && lowClear && highClear && splits > 0) {
+    const double middle = 0.5 * (low + high);
+    int middleEdges[kColumn];
+    const bool middleClear = farthestEdges(piece, middle, plan.z0_, plan.dz_, middleEdges);
+    planSpans(piece, low, lowEdges, lowClear, middle, middleEdges, middleClear, splits - 1, plan);
+    planSpans(piece, middle, middleEdges, middleClear, high, highEdges, highClear, splits - 1, plan);
+    return;
+  }
+  if (!same) {
+    plan.spans_.push_back({high, ColumnPlan::kWhole});
+    return;
+  }
+  plan.spans_.push_back({high, static_cast<int>(plan.edges_.size())});
+  ColumnPlan::EdgesByPoint& edges = plan.edges_.emplace_back();
+  for (int k = 0; k < kColumn; ++k) {
+    const Edge& e = edges_[lowEdges[k]];
+    edges.ax[k] = e.ax;
+    edges.az[k] = e.az;
+    edges.nx[k] = e.nx;
+    edges.nz[k] = e.nz;
+    edges.length[k] = e.length;
+  }
 }
 
 void RevolvedRegion::planColumn(double rhoLow, double rhoHigh, double z0, double dz, ColumnPlan& plan) const {
-  // An edge must lead the next one by more than rounding can take back anywhere between.
-  constexpr double kMargin = 1e-9;
+  // Halving a bin's range twice at most: a contour's pieces change edge within a voxel-wide bin
+  // now and then, rarely more than once.
+  constexpr int kSplits = 2;
   plan.z0_ = z0;
   plan.dz_ = dz;
-  plan.edgeOf_.resize(pieces_.size());
-  for (std::size_t p = 0; p < pieces_.size(); ++p) {
-    const Piece& piece = pieces_[p];
-    std::array<int, kColumn>& edgeOf = plan.edgeOf_[p];
-    edgeOf.fill(ColumnPlan::kWhole);
-    if (!piece.isArea || piece.crossesAxis) continue;
-    bool planned = true;
-    for (int k = 0; k < kColumn && planned; ++k) {
-      const double z = static_cast<double>(k) * dz + z0;
-      int farthestAt[2] = {-1, -2};
-      for (int end = 0; end < 2; ++end) {
-        const double r = end == 0 ? rhoLow : rhoHigh;
-        double first = -std::numeric_limits<double>::infinity(), second = first;
-        for (int i = piece.firstEdge; i < piece.firstEdge + piece.edgeCount; ++i) {
-          const Edge& e = edges_[i];
-          const double d = (e.nx * (r - e.ax) - e.nz * e.az) + e.nz * z;
-          if (d > first) {
-            second = first;
-            first = d;
-            farthestAt[end] = i;
-          } else {
-            second = std::max(second, d);
-          }
-        }
-        planned &= first - second > kMargin;
-      }
-      planned &= farthestAt[0] == farthestAt[1];
-      if (planned) edgeOf[k] = farthestAt[0];
-    }
-    if (!planned) edgeOf.fill(ColumnPlan::kWhole);
-  }
-}
-
-void RevolvedRegion::signedDistanceColumn(const ColumnPlan& plan, double rho, double cap, double (&out)[kColumn]) const {
-  for (double& v : out) v = std::numeric_limits<double>::infinity();
-  for (std::size_t p = 0; p < pieces_.size(); ++p) {
-    const Piece& piece = pieces_[p];
-    const std::array<int, kColumn>& edgeOf = plan.edgeOf_[p];
-    if (edgeOf[0] == ColumnPlan::kWhole) {
-      pieceDistanceColumn(edges_.data(), piece, rho, plan.z0_, plan.dz_, cap, out);
-      if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, plan.z0_, plan.dz_, cap, out);
+  plan.firstSpan_.clear();
+  plan.spans_.clear();
+  plan.edges_.clear();
+  for (const Piece& piece : pieces_) {
+    plan.firstSpan_.push_back(static_cast<int>(plan.spans_.size()));
+    if (!piece.isArea || piece.crossesAxis) {
+      plan.spans_.push_back({rhoHigh, ColumnPlan::kWhole});
       continue;
     }
-    // pieceDistanceColumn's arithmetic, for the one edge that is farthest out at each point.
-    for (int k = 0; k < kColumn; ++k) {
-      const Edge& e = edges_[edgeOf[k]];
-      const double z = static_cast<double>(k) * plan.dz_ + plan.z0_;
-      const double line = (e.nx * (rho - e.ax) - e.nz * e.az) + e.nz * z;
-      double distance = line;
-      if (line > 0.0 && line < cap) {
-        const double along = (-e.nz * (rho - e.ax) - e.nx * e.az) + e.nx * z;
-        double past = -along;
-        const double beyond = along - e.length;
+    int lowEdges[kColumn], highEdges[kColumn];
+    const bool lowClear = farthestEdges(piece, rhoLow, z0, dz, lowEdges);
+    const bool highClear = farthestEdges(piece, rhoHigh, z0, dz, highEdges);
+    planSpans(piece, rhoLow, lowEdges, lowClear, rhoHigh, highEdges, highClear, kSplits, plan);
+  }
+  plan.firstSpan_.push_back(static_cast<int>(plan.spans_.size()));
+}
+
+namespace {
+
+// Four points' edges, one a point (a plan's EdgesByPoint, from point 4·g on).
+struct EdgeLanes {
+  Double4 ax, az, nx, nz, length;
+};
+
+template <class EdgesByPoint>
+[[gnu::always_inline]] inline EdgeLanes lanesOf(const EdgesByPoint& edges, int g) {
+  EdgeLanes lanes;
+  std::memcpy(&lanes.ax, edges.ax + 4 * g, sizeof lanes.ax);
+  std::memcpy(&lanes.az, edges.az + 4 * g, sizeof lanes.az);
+  std::memcpy(&lanes.nx, edges.nx + 4 * g, sizeof lanes.nx);
+  std::memcpy(&lanes.nz, edges.nz + 4 * g, sizeof lanes.nz);
+  std::memcpy(&lanes.length, edges.length + 4 * g, sizeof lanes.length);
+  return lanes;
+}
+
+}  // namespace
+
+// Cloned as pieceDistanceColumn is. A planned piece is read with pieceDistanceColumn's
+// arithmetic for the one edge farthest out at each point, four points at a time.
+__attribute__((target_clones("avx2", "default"))) void RevolvedRegion::signedDistanceColumn(
+    const ColumnPlan& plan, double rho, double cap, double (&out)[kColumn]) const {
+  // The distances so far, in registers (in out only while a piece is searched whole).
+  Double4 lowest[2] = {Double4{} + std::numeric_limits<double>::infinity(), Double4{} + std::numeric_limits<double>::infinity()};
+  const Double4 z[2] = {Double4{0, 1, 2, 3} * plan.dz_ + plan.z0_, Double4{4, 5, 6, 7} * plan.dz_ + plan.z0_};
+  for (std::size_t p = 0; p < pieces_.size(); ++p) {
+    const Piece& piece = pieces_[p];
+    int span = plan.firstSpan_[p];
+    while (span + 1 < plan.firstSpan_[p + 1] && rho > plan.spans_[span].rhoHigh) ++span;
+    const int planned = plan.spans_[span].edges;
+    if (planned == ColumnPlan::kWhole) {
+      storeFour(out, lowest[0]);
+      storeFour(out + 4, lowest[1]);
+      pieceDistanceColumn(edges_.data(), piece, rho, plan.z0_, plan.dz_, cap, out);
+      if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, plan.z0_, plan.dz_, cap, out);
+      lowest[0] = loadFour(out);
+      lowest[1] = loadFour(out + 4);
+      continue;
+    }
+    const ColumnPlan::EdgesByPoint& edges = plan.edges_[planned];
+    for (int g = 0; g < 2; ++g) {
+      const EdgeLanes e = lanesOf(edges, g);
+      const Double4 line = radialLine(e, rho) + e.nz * z[g];
+      const Mask4 outsideNear = (line > 0.0) & (line < cap);
+      Double4 distance = line;
+      if (anyOf(outsideNear)) {
+        const Double4 along = radialAlong(e, rho) + e.nx * z[g];
+        Double4 past = -along;
+        const Double4 beyond = along - e.length;
         past = beyond > past ? beyond : past;
-        past = past > 0.0 ? past : 0.0;
-        distance = std::sqrt(line * line + past * past);
+        past = past > 0.0 ? past : Double4{};
+        const Double4 d2 = line * line + past * past;
+        Double4 d{};
+        for (int k = 0; k < 4; ++k) d[k] = std::sqrt(d2[k]);
+        distance = outsideNear ? d : line;
       }
-      out[k] = distance < out[k] ? distance : out[k];
+      lowest[g] = distance < lowest[g] ? distance : lowest[g];
     }
   }
+  storeFour(out, lowest[0]);
+  storeFour(out + 4, lowest[1]);
 }
 
 double RevolvedRegion::planarDistance(double r, double z, double cap) const {

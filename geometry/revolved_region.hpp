@@ -9,7 +9,6 @@
 // Outside the union the value is the exact distance; inside it is a lower bound of the
 // depth, which is all a max-based removal needs.
 
-#include <array>
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
@@ -36,16 +35,33 @@ class RevolvedRegion {
   /// edge whose line lies farthest out. Where an edge is so at both ends, by a margin, it is so
   /// throughout — the farthest of the lines is convex in ρ and meets that edge's line at both
   /// ends — and it alone gives the piece's distance there, inside or out.
+  ///
+  /// Where a piece's farthest edge at some point changes between ρLow and ρHigh, the range is
+  /// split in halves (a few times at most) and each span planned on its own.
   class ColumnPlan {
    public:
-    /// How many pieces are read one edge a point (the others are searched whole).
+    /// How many pieces are read one edge a point over some span of the range (the others are
+    /// searched whole).
     int plannedPieces() const;
 
    private:
     friend class RevolvedRegion;
     static constexpr int kWhole = -1;  // the piece is searched whole at every point
+    // A planned piece's edge at each point, its numbers laid out by point so that the points
+    // are read as vectors.
+    struct EdgesByPoint {
+      double ax[kColumn], az[kColumn], nx[kColumn], nz[kColumn], length[kColumn];
+    };
+    // A piece's plan over a span of ρ that ends at rhoHigh (and starts where the piece's
+    // previous span ends, or at the plan's ρLow): its entry in edges_, or kWhole.
+    struct Span {
+      double rhoHigh;
+      int edges;
+    };
     double z0_ = 0.0, dz_ = 0.0;
-    std::vector<std::array<int, kColumn>> edgeOf_;  // per piece: per point, its edge; or kWhole
+    std::vector<int> firstSpan_;  // per piece, then one past the last: its spans are spans_[firstSpan_[p], firstSpan_[p + 1])
+    std::vector<Span> spans_;     // in ascending ρ
+    std::vector<EdgesByPoint> edges_;
   };
   void planColumn(double rhoLow, double rhoHigh, double z0, double dz, ColumnPlan& plan) const;
   /// signedDistanceColumn(ρ, plan's z0 and dz, cap, out) for ρ within the plan's range, to the
@@ -94,6 +110,14 @@ class RevolvedRegion {
   static double pieceDistance(const Edge* edges, const Piece& piece, double r, double z, double cap);
   static void pieceDistanceColumn(const Edge* edges, const Piece& piece, double r, double z0, double dz, double cap,
                                   double (&out)[kColumn]);
+
+  // The edge whose line lies farthest out at each point (ρ, z0 + k·dz) of a column; false
+  // where at some point another's lies within rounding of it (then neither can be planned).
+  bool farthestEdges(const Piece& piece, double rho, double z0, double dz, int (&edgeOf)[kColumn]) const;
+  // Plans `piece` over ρ in [low, high], whose farthest edges are given, in spans split at most
+  // `splits` times deep.
+  void planSpans(const Piece& piece, double low, const int (&lowEdges)[kColumn], bool lowClear, double high,
+                 const int (&highEdges)[kColumn], bool highClear, int splits, ColumnPlan& plan) const;
 
   void appendNear(const Piece& piece, double rho, double z, double radius, RevolvedRegion& subset) const;
   static constexpr int kMaxOrderedPieces = 16;

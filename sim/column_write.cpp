@@ -14,17 +14,13 @@ using Double4 = double __attribute__((vector_size(32)));
 using Float4 = float __attribute__((vector_size(16)));
 using Mask4 = std::int64_t __attribute__((vector_size(32)));  // lanes −1 (true) or 0
 
-namespace {
-
-int bitsOf(const Mask4& m) { return static_cast<int>((m[0] & 1) | (m[1] & 2) | (m[2] & 4) | (m[3] & 8)); }
-
-}  // namespace
-
 __attribute__((target_clones("avx2", "default"))) double writeColumn(const ColumnWrite& w, float* values,
                                                                      const double* psi, std::uint8_t& activeBits,
                                                                      std::uint8_t& ghostBits) {
   double lost = 0.0;
-  int changedBits = 0, newActive = 0, newGhost = 0;
+  // Per lane k, the masks of voxels k and k + 4 as bits, read out of the vectors once at the
+  // end: change, active, ghost of voxel k in bits 0–2, of voxel k + 4 in bits 3–5.
+  Mask4 flags{};
   for (int half = 0; half < 2; ++half) {
     Float4 stored4;
     std::memcpy(&stored4, values + 4 * half, sizeof stored4);
@@ -49,9 +45,14 @@ __attribute__((target_clones("avx2", "default"))) double writeColumn(const Colum
     const Mask4 active = (value < w.band) & (value > -w.band);
     const Double4 distance = p < 0.0 ? -p : p;
     const Mask4 ghost = open & (distance < w.voxel) & (value > w.notMaterial) & (value < w.ghostCeiling);
-    changedBits |= bitsOf(change) << (4 * half);
-    newActive |= bitsOf(active) << (4 * half);
-    newGhost |= bitsOf(ghost) << (4 * half);
+    flags |= ((change & 1) | (active & 2) | (ghost & 4)) << (3 * half);
+  }
+  int changedBits = 0, newActive = 0, newGhost = 0;
+  for (int k = 0; k < 4; ++k) {
+    const int f = static_cast<int>(flags[k]);
+    changedBits |= ((f & 1) << k) | (((f >> 3) & 1) << (k + 4));
+    newActive |= (((f >> 1) & 1) << k) | (((f >> 4) & 1) << (k + 4));
+    newGhost |= (((f >> 2) & 1) << k) | (((f >> 5) & 1) << (k + 4));
   }
   activeBits = static_cast<std::uint8_t>((activeBits & ~changedBits) | (newActive & changedBits));
   ghostBits = static_cast<std::uint8_t>(newGhost);

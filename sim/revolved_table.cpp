@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <mutex>
+#include <utility>
 
 #include "sim/column_write.hpp"
 
@@ -13,12 +14,6 @@ namespace lathesim::sim {
 namespace {
 
 constexpr int kChunk = RevolvedRegion::kColumn;  // 8 cells along Z: one leaf's column
-// Below these a write's cells (classes by the chunks the change bound reaches) or its ghost
-// verdicts (orbits) are done on this thread: waking another and waiting for it costs more.
-// Measured on a CAM contour's 0.03 mm steps (wall time, both cores free): 1.8 s all on one
-// thread, 1.2 s from 500 to 5,000, and more CPU time the lower the threshold.
-constexpr std::size_t kParallelWork = 4000;
-constexpr std::size_t kParallelVerdicts = 2000;
 static_assert(kChunk == 8);
 
 int alignDown(int k) { return k & ~(kChunk - 1); }
@@ -51,6 +46,36 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool&
   }
   return lost;
 }
+
+// A chunk's ghost candidates (class n of the write's first, its chunk, a bit per cell),
+// gathered by each task and then put in class and chunk order, the order in which a single
+// thread would have found them. A task writes a range of bins in order, so its own candidates
+// are in that order already: only the tasks' runs need ordering, by their first bins.
+struct Candidates {
+  int n, chunk;
+  std::uint8_t bits;
+};
+
+// A chunk of a bin of classes as a write finds it (RevolvedTable::write).
+struct Place {
+  int chunk;
+  bool covered;  // deep inside the region: every open cell is filled
+  const RevolvedRegion* local;
+  const RevolvedRegion::ColumnPlan* plan;  // or none
+};
+
+// What a task of a write needs while it writes its bins: the region near each of a bin's
+// places and their plans (one per chunk of the write's box), the places, the ghost candidates
+// found. Each thread keeps its own from write to write, so that their memory, the regions'
+// edges too (RevolvedRegion::nearInto), is reused rather than allocated again every write. A
+// task holds it only while it runs, and a task never waits for another.
+struct WriteScratch {
+  std::vector<RevolvedRegion> nearby;
+  std::vector<RevolvedRegion::ColumnPlan> plans;
+  std::vector<Place> places;
+  std::vector<Candidates> found;
+};
+thread_local WriteScratch scratch;
 
 }  // namespace
 
@@ -275,6 +300,15 @@ bool RevolvedTable::isGhost(int i, int j, int k, float material) const {
   return true;
 }
 
+bool RevolvedTable::materialAboveOrBelow(int c, int cell, float material) const {
+  for (const int next : {cell - 1, cell + 1}) {
+    if (next < 0 || next >= chunks_ * kChunk) continue;
+    std::uint8_t bits;
+    if (cellsOf(c, next / kChunk, bits)[next % kChunk] <= material) return true;
+  }
+  return false;
+}
+
 double RevolvedTable::write(const RevolvedRegion& region, bool adding, const RevolvedRegion* changes) {
   if (region.empty() || (changes && changes->empty()) || rho_.empty()) return 0.0;
   const ColumnWrite w = ColumnWrite::of(adding ? 1.0 : -1.0, h_, band_);
@@ -296,17 +330,15 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   const int chunkHigh = std::min(chunks_ - 1, static_cast<int>(std::floor((zHigh / h_ - kBase_) / kChunk)));
   if (classLow > classHigh || chunkLow > chunkHigh) return 0.0;
 
-  // A chunk's ghost candidates, gathered by each task and then put in class and chunk order,
-  // the order in which a single thread would have found them.
-  struct Candidates {
-    int n, chunk;
-    std::uint8_t bits;
-  };
   const int classCount = classHigh - classLow + 1;
   std::vector<double> lostOf(classCount, 0.0);
   // Air voxels lost nothing when their class's cell did: per class, voxels to take back.
   std::vector<double> airVoxelsLost(classCount, 0.0);
   std::vector<Candidates> ghostCandidates;
+  struct Run {
+    std::size_t firstBin, start, size;  // a task's candidates: ghostCandidates[start, start + size)
+  };
+  std::vector<Run> ghostRuns;
   std::mutex ghostCandidatesMutex;
   std::vector<char> changedClass(classCount, 0);
   // Classes come in bins one voxel wide in ρ (at 22 mm about a hundred classes a bin): what
@@ -326,12 +358,6 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   // A bin of this many classes or more reads the region through a plan of its place (see
   // RevolvedRegion::planColumn): one edge a piece and cell rather than all of them.
   constexpr int kPlannedClasses = 4;
-  struct Place {
-    int chunk;
-    bool covered;  // deep inside the region: every open cell is filled
-    const RevolvedRegion* local;
-    const RevolvedRegion::ColumnPlan* plan;  // or none
-  };
   // The chunks of each bin that the change bound reaches (every chunk of the box without one):
   // a group of chunks at a time, then at each chunk's own cells rather than its centre (a
   // chunk is 8 voxels tall, and a move's sliver of change is often thinner than that). A
@@ -365,10 +391,15 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   reachedStart[binCount] = static_cast<int>(reached.size());
 
   const auto writeBins = [&](const tbb::blocked_range<std::size_t>& range) {
-    std::vector<RevolvedRegion> nearby(chunkHigh - chunkLow + 1);
-    std::vector<RevolvedRegion::ColumnPlan> plans(chunkHigh - chunkLow + 1);
-    std::vector<Place> places;
-    std::vector<Candidates> found;
+    WriteScratch& mine = scratch;
+    const std::size_t boxChunks = chunkHigh - chunkLow + 1;
+    if (mine.nearby.size() < boxChunks) mine.nearby.resize(boxChunks);
+    if (mine.plans.size() < boxChunks) mine.plans.resize(boxChunks);
+    std::vector<RevolvedRegion>& nearby = mine.nearby;
+    std::vector<RevolvedRegion::ColumnPlan>& plans = mine.plans;
+    std::vector<Place>& places = mine.places;
+    std::vector<Candidates>& found = mine.found;
+    found.clear();
     for (std::size_t bin = range.begin(); bin != range.end(); ++bin) {
       const int first = binStart[bin], last = binStart[bin + 1];
       const double rhoMid = (std::floor(rho_[first] / h_) + 0.5) * h_;
@@ -405,9 +436,11 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
         }
         for (const auto& [chunk, covered, local, plan] : places) {
           const int k0 = kBase_ + chunk * kChunk;
+          std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
+          // Uniform and already as deep in the region's state as the band allows (air for a
+          // removal, solid for an addition): no cell is open, nothing to read or write.
+          if (slot == (adding ? kSolidChunk : kAirChunk)) continue;
           if (covered) {  // a uniform chunk turns over whole: what fill() would do, without its cells
-            std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
-            if (slot == (adding ? kSolidChunk : kAirChunk)) continue;  // already so
             if (slot == (adding ? kAirChunk : kSolidChunk)) {  // no air voxels: they are in mixed chunks
               slot = adding ? kSolidChunk : kAirChunk;
               lostOf[n] += adding ? -kChunk : kChunk;
@@ -461,10 +494,11 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     }
     if (found.empty()) return;
     const std::lock_guard<std::mutex> lock(ghostCandidatesMutex);
+    ghostRuns.push_back({range.begin(), ghostCandidates.size(), found.size()});
     ghostCandidates.insert(ghostCandidates.end(), found.begin(), found.end());
   };
   const tbb::blocked_range<std::size_t> bins(0, binCount);
-  if (work < kParallelWork) writeBins(bins);
+  if (work < parallel_.work) writeBins(bins);
   else tbb::parallel_for(bins, writeBins);
 
   double lost = 0.0;
@@ -491,9 +525,15 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     };
     std::vector<Candidate> candidates;
     std::size_t verdicts = 0;
-    const auto inOrder = [](const Candidates& a, const Candidates& b) { return a.n != b.n ? a.n < b.n : a.chunk < b.chunk; };
-    if (!std::is_sorted(ghostCandidates.begin(), ghostCandidates.end(), inOrder))  // written on one thread, they are
-      std::sort(ghostCandidates.begin(), ghostCandidates.end(), inOrder);
+    const auto byFirstBin = [](const Run& a, const Run& b) { return a.firstBin < b.firstBin; };
+    if (!std::is_sorted(ghostRuns.begin(), ghostRuns.end(), byFirstBin)) {  // written on one thread, they are
+      std::sort(ghostRuns.begin(), ghostRuns.end(), byFirstBin);
+      std::vector<Candidates> inOrder;
+      inOrder.reserve(ghostCandidates.size());
+      for (const Run& run : ghostRuns)
+        inOrder.insert(inOrder.end(), ghostCandidates.begin() + run.start, ghostCandidates.begin() + run.start + run.size);
+      ghostCandidates = std::move(inOrder);
+    }
     for (const Candidates& found : ghostCandidates) {
       const int c = classLow + found.n;
       for (int bit = 0; bit < kChunk; ++bit)
@@ -506,12 +546,13 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     const auto decide = [&](const tbb::blocked_range<std::size_t>& range) {
       for (std::size_t m = range.begin(); m != range.end(); ++m) {
         const auto& [at, first] = candidates[m];
+        if (materialAboveOrBelow(at.c, at.cell, material)) continue;  // no orbit is a ghost: its verdicts stay 0
         for (int o = orbitStart_[at.c]; o < orbitStart_[at.c + 1]; ++o)
           ghostOrbit[first + (o - orbitStart_[at.c])] = isGhost(orbits_[o].first, orbits_[o].second, kBase_ + at.cell, material);
       }
     };
     const tbb::blocked_range<std::size_t> all(0, candidates.size(), 64);
-    if (verdicts < kParallelVerdicts) decide(all);
+    if (verdicts < parallel_.verdicts) decide(all);
     else tbb::parallel_for(all, decide);
     std::vector<Ghost> ghosts;                            // the whole class's cell
     std::vector<std::pair<Ghost, VoxelIndex>> airVoxels;  // some of its columns only

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,6 +16,8 @@
 #include "geometry/convex_polygon.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/interpreter.hpp"
+#include "sim/cut_history.hpp"
+#include "sim/move_sweep.hpp"
 #include "sim/revolved_table.hpp"
 #include "sim/simulate.hpp"
 #include "test_moves.hpp"
@@ -219,6 +222,64 @@ TEST(RevolvedTable, KeepsGhostsItsColumnsDisagreeOnApartAndStaysTheStock) {
     ASSERT_GT(toolpath.moves.size(), 20u);
     expectTheSameStock(StockSpec{50.0, 45.0, 0.8, 0.0}, c.voxelMm, toolpath, 11);
   }
+}
+
+// A write's work is shared among threads only past a size (RevolvedTable::ParallelThresholds),
+// so each write of the tests above takes one route. Forced one way and then the other over the
+// same moves, on and off voxel centres, with ghost sheets and air voxels, the tables must agree
+// to the last bit: every write's lost voxels, the leaves it changed, every voxel's value and
+// active bit.
+TEST(RevolvedTable, GivesTheSameTableOnOneThreadAsSharedAmongThreads) {
+  struct RouteCase {
+    StockSpec spec;
+    double voxelMm;
+    interp::Toolpath toolpath;
+  };
+  const std::vector<RouteCase> cases{{StockSpec{20.0, 16.0, 0.0, 0.0}, 0.1, program({0.1, 0.0, 0.0, false})},
+                                     {StockSpec{20.0, 16.0, 0.0, 0.0}, 0.13, program({0.13, 0.0, 0.037, false})},
+                                     {StockSpec{50.0, 45.0, 0.8, 0.0}, 0.2, faceAndTaperPasses(48.0, 0.0)}};
+  std::size_t airVoxels = 0;
+  for (const RouteCase& c : cases) {
+    SCOPED_TRACE(testing::Message() << "Φ" << c.spec.diameterMm << ", voxel " << c.voxelMm << " mm");
+    const double h = c.voxelMm, radius = c.spec.diameterMm / 2.0, back = c.spec.faceZMm - c.spec.lengthMm;
+    const float band = static_cast<float>(kHalfBandVoxels * h);
+    const int halfWidth = static_cast<int>(std::ceil(radius / h)) + 5;
+    const int kFirst = static_cast<int>(std::floor(back / h)) - 5, kLast = static_cast<int>(std::ceil(c.spec.faceZMm / h)) + 5;
+    RevolvedTable alone(halfWidth, kFirst, kLast, h, band, radius + band + 2.0 * h);
+    RevolvedTable shared = alone;
+    alone.setParallelThresholds(RevolvedTable::ParallelThresholds::never());
+    shared.setParallelThresholds(RevolvedTable::ParallelThresholds::always());
+    const std::vector<RZ> section{{-radius, back}, {radius, back}, {radius, c.spec.faceZMm}, {-radius, c.spec.faceZMm}};
+    const RevolvedRegion bar({ConvexPolygon::hullOf(section)});
+    ASSERT_EQ(alone.write(bar, true), shared.write(bar, true));
+    CutHistory history;
+    const ToolOutlines outlines = tools();
+    for (std::size_t m = 0; m < c.toolpath.moves.size(); ++m) {
+      const std::vector<ConvexPolygon> pieces = sweptPieces(c.toolpath.moves[m], outlines.at(c.toolpath.moves[m].tool), h);
+      if (pieces.empty()) continue;
+      const RevolvedRegion region(pieces);
+      const std::optional<RevolvedRegion> changes = history.changesOf(pieces);
+      const RevolvedRegion* bound = changes ? &*changes : nullptr;
+      ASSERT_EQ(alone.write(region, false, bound), shared.write(region, false, bound)) << "move " << m;
+      const std::vector<VoxelIndex> aloneLeaves = alone.changedLeaves(), sharedLeaves = shared.changedLeaves();
+      ASSERT_EQ(aloneLeaves.size(), sharedLeaves.size()) << "move " << m;
+      for (std::size_t n = 0; n < aloneLeaves.size(); ++n)
+        ASSERT_TRUE(aloneLeaves[n].i == sharedLeaves[n].i && aloneLeaves[n].j == sharedLeaves[n].j && aloneLeaves[n].k == sharedLeaves[n].k)
+            << "move " << m << ", leaf " << n;
+    }
+    ASSERT_EQ(alone.airVoxelCount(), shared.airVoxelCount());
+    airVoxels += alone.airVoxelCount();
+    std::size_t differing = 0, material = 0;
+    for (int i = -halfWidth; i <= halfWidth; ++i)
+      for (int j = -halfWidth; j <= halfWidth; ++j)
+        for (int k = kFirst; k <= kLast; ++k) {
+          differing += alone.value(i, j, k) != shared.value(i, j, k) || alone.active(i, j, k) != shared.active(i, j, k);
+          material += alone.value(i, j, k) < 0.0f;
+        }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_GT(material, 0u);
+  }
+  EXPECT_GT(airVoxels, 0u);  // the route of ghosts a class's columns disagree on was taken
 }
 
 // The table's cells follow the band of the profile: on a Φ40 × 120 bar at 0.1 mm a chunk of 8
