@@ -26,24 +26,22 @@ using Mask4 = std::int64_t __attribute__((vector_size(32)));
 // A column's four values read and written as one vector. The column write reads the distances
 // so: a vector read of values stored a lane at a time cannot take them from the stores in
 // flight and waits until they reach the cache.
-[[gnu::always_inline]] inline Double4 loadFour(const double* values) {
-  Double4 v;
-  std::memcpy(&v, values, sizeof v);
-  return v;
-}
+// (Vectors are handed back through a reference, not returned: clang refuses a function returning
+// a 256-bit vector in code compiled without AVX, inlined or not.)
+[[gnu::always_inline]] inline void loadFour(const double* values, Double4& v) { std::memcpy(&v, values, sizeof v); }
 [[gnu::always_inline]] inline void storeFour(double* values, const Double4& v) { std::memcpy(values, &v, sizeof v); }
 
 // An edge's line distance n·(p − a) at p = (r, z), and p's position along the edge u·(p − a),
 // u = (−nz, nx): each the part in r, to which the part in z (nz·z, nx·z) is added. Every search
 // of the edges computes them so, term by term (a plan's reading gives the whole search's values
 // to the last bit); E is an edge, or four points' edges in vectors.
-template <class E, class R>
-[[gnu::always_inline]] inline auto radialLine(const E& e, R r) {
-  return e.nx * (r - e.ax) - e.nz * e.az;
+template <class E, class R, class V>
+[[gnu::always_inline]] inline void radialLine(const E& e, R r, V& line) {
+  line = e.nx * (r - e.ax) - e.nz * e.az;
 }
-template <class E, class R>
-[[gnu::always_inline]] inline auto radialAlong(const E& e, R r) {
-  return -e.nz * (r - e.ax) - e.nx * e.az;
+template <class E, class R, class V>
+[[gnu::always_inline]] inline void radialAlong(const E& e, R r, V& along) {
+  along = -e.nz * (r - e.ax) - e.nx * e.az;
 }
 
 bool isSymmetricAboutAxis(const ConvexPolygon& polygon) {
@@ -162,7 +160,8 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
     Double4 line[2] = {-infinity, -infinity};
     for (const Edge* edge = begin; edge != end; ++edge) {
       const Edge& e = *edge;
-      const double radial = radialLine(e, r);
+      double radial;
+      radialLine(e, r, radial);
       for (int g = 0; g < 2; ++g) {
         const Double4 d = radial + e.nz * z[g];
         line[g] = d > line[g] ? d : line[g];
@@ -176,7 +175,9 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
       for (const Edge* edge = begin; edge != end; ++edge) {
         const Edge& e = *edge;
         // Line distance n·(p − a) and position along the edge u·(p − a), u = (−nz, nx).
-        const double radial = radialLine(e, r), radialPosition = radialAlong(e, r);
+        double radial, radialPosition;
+        radialLine(e, r, radial);
+        radialAlong(e, r, radialPosition);
         for (int g = 0; g < 2; ++g) {
           const Double4 d = radial + e.nz * z[g];
           const Double4 a = radialPosition + e.nx * z[g];
@@ -201,7 +202,8 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::pieceDist
     result[1] = line[1];
   }
   for (int g = 0; g < 2; ++g) {
-    const Double4 before = loadFour(out + 4 * g);
+    Double4 before;
+    loadFour(out + 4 * g, before);
     storeFour(out + 4 * g, result[g] < before ? result[g] : before);
   }
 }
@@ -230,7 +232,9 @@ bool RevolvedRegion::farthestEdges(const Piece& piece, double rho, double z0, do
     double first = -std::numeric_limits<double>::infinity(), second = first;
     for (int i = piece.firstEdge; i < piece.firstEdge + piece.edgeCount; ++i) {
       const Edge& e = edges_[i];
-      const double d = radialLine(e, rho) + e.nz * z;
+      double d;
+      radialLine(e, rho, d);
+      d += e.nz * z;
       if (d > first) {
         second = first;
         first = d;
@@ -333,18 +337,22 @@ __attribute__((target_clones("avx2", "default"))) void RevolvedRegion::signedDis
       storeFour(out + 4, lowest[1]);
       pieceDistanceColumn(edges_.data(), piece, rho, plan.z0_, plan.dz_, cap, out);
       if (piece.crossesAxis) pieceDistanceColumn(edges_.data(), piece, -rho, plan.z0_, plan.dz_, cap, out);
-      lowest[0] = loadFour(out);
-      lowest[1] = loadFour(out + 4);
+      loadFour(out, lowest[0]);
+      loadFour(out + 4, lowest[1]);
       continue;
     }
     const ColumnPlan::EdgesByPoint& edges = plan.edges_[planned];
     for (int g = 0; g < 2; ++g) {
       const EdgeLanes e = lanesOf(edges, g);
-      const Double4 line = radialLine(e, rho) + e.nz * z[g];
+      Double4 line;
+      radialLine(e, rho, line);
+      line += e.nz * z[g];
       const Mask4 outsideNear = (line > 0.0) & (line < cap);
       Double4 distance = line;
       if (anyOf(outsideNear)) {
-        const Double4 along = radialAlong(e, rho) + e.nx * z[g];
+        Double4 along;
+        radialAlong(e, rho, along);
+        along += e.nx * z[g];
         Double4 past = -along;
         const Double4 beyond = along - e.length;
         past = beyond > past ? beyond : past;
