@@ -8,16 +8,17 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "interp/text/text_lines.hpp"
 #include "tests/support/lathesim_process.hpp"
 
 namespace lathesim::app {
 namespace {
 
 namespace fs = std::filesystem;
+using interp::linesOf;
 using test::ProcessOutcome;
 using test::ScratchDir;
 using test::writeFile;
@@ -30,13 +31,6 @@ ProcessOutcome lathesim(const std::vector<std::string>& args, const fs::path& sc
 }
 
 std::string part(const std::string& name, const std::string& file) { return (kPartsDir / name / file).string(); }
-
-std::vector<std::string> linesOf(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 /// Nothing was written: the folder does not exist, or it is empty.
 bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_empty(folder); }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "interp/control/control_preset.hpp"
+#include "interp/text/text_lines.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "sim/stock.hpp"
 
@@ -29,16 +30,10 @@ namespace lathesim::app {
 namespace {
 
 namespace fs = std::filesystem;
+using interp::linesOf;
 
 const fs::path kBinary = LATHESIM_BINARY;
 const fs::path kPartsDir = LATHESIM_PARTS_DIR;
-
-std::vector<std::string> linesOf(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 using test::readFile;
 using test::writeFile;
