@@ -101,6 +101,19 @@ void Simulation::finishBlock() {
   else result_.blocks.push_back(*block_);
 }
 
+// Matched by block and in the order made, not by block number alone: blocks run out of their
+// order (a subprogram written after M30 runs before the main program's later blocks) and again
+// (a loop), and a whole toolpath's starts are all recorded before its first move comes.
+void Simulation::checkCycleStart(int block) {
+  const auto& starts = recorded_->cycleStarts;
+  for (; startsSeen_ < starts.size(); ++startsSeen_) pendingStarts_[starts[startsSeen_].block].push_back(startsSeen_);
+  const auto pending = pendingStarts_.find(block);
+  if (pending == pendingStarts_.end()) return;
+  if (auto warning = cycleStartInStock(starts[pending->second.front()], stock_)) result_.warnings.push_back(*warning);
+  pending->second.pop_front();
+  if (pending->second.empty()) pendingStarts_.erase(pending);
+}
+
 void Simulation::cutGroup() {
   const interp::Move& head = group_.front();
   Stock& stock = stock_;
@@ -108,9 +121,7 @@ void Simulation::cutGroup() {
   if (!block_ || block_->block != head.block) {
     if (block_) finishBlock();
     block_ = BlockRemoval{head.block, head.line, head.column, 0.0, 0.0};
-    const auto& cycleStarts = recorded_->cycleStarts;
-    for (; nextCycleStart_ < cycleStarts.size() && cycleStarts[nextCycleStart_].block <= head.block; ++nextCycleStart_)
-      if (auto warning = cycleStartInStock(cycleStarts[nextCycleStart_], stock)) result.warnings.push_back(*warning);
+    checkCycleStart(head.block);
   }
   BlockRemoval& block = *block_;
   if (head.kind != interp::MoveKind::Dwell && head.workShift != frame_) {

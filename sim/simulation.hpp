@@ -5,8 +5,10 @@
 // one move) and the move before it.
 
 #include <cstddef>
+#include <deque>
 #include <functional>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "interp/move.hpp"
@@ -42,6 +44,8 @@ class Simulation final : public interp::MoveSink {
   void cutGroup();
   /// block_ to the sink or the result.
   void finishBlock();
+  /// Checks the cycle start made by this run of `block`, if it made one.
+  void checkCycleStart(int block);
 
   const interp::Toolpath* recorded_;
   ToolOutlines tools_;
@@ -57,7 +61,10 @@ class Simulation final : public interp::MoveSink {
   std::vector<interp::Move> group_;      // the moves written together next
   std::size_t groupFirst_ = 0;           // the toolpath's index of group_'s first move
   std::optional<interp::Move> previous_;  // the last move cut (a thread pass may continue it)
-  std::size_t nextCycleStart_ = 0;       // of recorded_->cycleStarts, the first not yet checked
+  // Cycle starts not yet checked, by block ordinal, each block's in the order they were made;
+  // the first startsSeen_ of recorded_->cycleStarts are in here or checked.
+  std::unordered_map<int, std::deque<std::size_t>> pendingStarts_;
+  std::size_t startsSeen_ = 0;
   int spindleWarnedBlock_ = -1;  // one spindle warning per block
   int threadWarnedBlock_ = -1;   // one thread-start warning per block
   RZ frame_{0, 0};               // the G50 frame of the moves so far

@@ -88,6 +88,65 @@ TEST(SimulationWarnings, CycleStartInsideTheStockAsItIsThen) {
             "legs start in material; start the cycle clear of the blank");
 }
 
+// A block's moves as the interpreter hands them on: `block` ordinal, on line 10 + block.
+interp::Move blockMove(int block, RZ from, RZ to) {
+  interp::Move m = feedMove(from, to, true);
+  m.block = block;
+  m.line = 10 + block;
+  return m;
+}
+
+// Faces the bar down to Z-2 in block `block`.
+void faceTo2(interp::Toolpath& path, int block) {
+  path.moves.push_back(blockMove(block, {25, -2}, {0, -2}));
+  path.moves.push_back(blockMove(block, {0, -2}, {0, 5}));
+}
+
+// A cycle start is checked when its block runs, in the order blocks run, not by block number:
+// a subprogram written after M30 has higher numbers than the main program's blocks that run
+// after it. Here the subprogram (block 5) faces the bar, then the main program's cycle (block
+// 1) starts at Z-1: air by then, material before.
+TEST(SimulationWarnings, CycleStartAfterASubprogramIsCheckedWhenItsBlockRuns) {
+  for (const double startZ : {-1.0, -5.0}) {  // in air after the facing; in material still
+    Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+    interp::Toolpath path;
+    path.blockCount = 6;
+    faceTo2(path, 5);
+    path.moves.push_back(blockMove(1, {30, 5}, {30, 6}));
+    path.cycleStarts.push_back({1, 11, 1, RZ(10, startZ), "G90"});
+    const SimulationResult result = simulate(path, squareTool(), stock);
+    if (startZ == -1.0) {
+      EXPECT_TRUE(result.warnings.empty()) << result.warnings.front().message;
+    } else {
+      ASSERT_EQ(result.warnings.size(), 1u);
+      EXPECT_EQ(result.warnings[0].line, 11);
+      EXPECT_NE(result.warnings[0].message.find("G90 starts at X20 Z-5 "), std::string::npos);
+    }
+  }
+}
+
+// A cycle in a loop runs its block again: each run's start is checked at that run. The second
+// run (after block 2 faced the bar) starts at Z-1, in air then.
+TEST(SimulationWarnings, CycleStartOfEachRunOfALoopIsCheckedAtThatRun) {
+  for (const double secondZ : {-1.0, -5.0}) {
+    Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+    interp::Toolpath path;
+    path.blockCount = 3;
+    path.moves.push_back(blockMove(1, {30, 5}, {30, 6}));
+    faceTo2(path, 2);
+    path.moves.push_back(blockMove(1, {30, 5}, {30, 6}));
+    path.cycleStarts.push_back({1, 11, 1, RZ(10, 5), "G90"});
+    path.cycleStarts.push_back({1, 11, 1, RZ(10, secondZ), "G90"});
+    const SimulationResult result = simulate(path, squareTool(), stock);
+    if (secondZ == -1.0) {
+      EXPECT_TRUE(result.warnings.empty()) << result.warnings.front().message;
+    } else {
+      ASSERT_EQ(result.warnings.size(), 1u);
+      EXPECT_NE(result.warnings[0].message.find("G90 starts at X20 Z-5 "), std::string::npos);
+    }
+  }
+}
+
 TEST(Simulate, BlockTimesAreTheirMovesTimesAndADwellRemovesNothing) {
   Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
   interp::Toolpath path;
