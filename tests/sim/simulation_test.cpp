@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "interp/interpreter.hpp"
@@ -64,6 +65,30 @@ TEST(Simulation, FedFromTheInterpreterFindsWhatTheWholeToolpathGives) {
   EXPECT_NEAR(stock.volumeMm3(), wholeStock.volumeMm3(), 1e-6);
   EXPECT_TRUE(std::any_of(whole.toolpath.moves.begin(), whole.toolpath.moves.end(),
                           [](const interp::Move& m) { return m.kind == interp::MoveKind::Thread; }));
+}
+
+// The subprogram, written after M30, faces the bar to Z-2 (down to X4: not parting it off)
+// before the main program's G90 starts at X20 Z-1: in air then, though inside the bar as it
+// was. Its blocks come after the G90's in the text; both routes check the start when the G90
+// runs, and find no fault.
+TEST(Simulation, ChecksACycleStartAfterASubprogramWhenTheCycleRuns) {
+  const std::string program = "G99 M03 S500\nG00 X44 Z2\nM98 P1000\nG00 X20 Z-1\nG90 X18 Z-10 F0.2\n"
+                              "G00 X60 Z10\nM30\nO1000\nG00 X44 Z-2\nG01 X4 F0.1\nG00 X44\nZ2\nM99\n";
+  const Stock bar({40.0, 30.0, 0.0}, 0.5);
+  ASSERT_LT(bar.signedDistanceAt(RZ(10, -1)), -0.9);  // 1 mm in the bar before the facing
+
+  const interp::InterpretResult whole = interp::interpret(program, "subprogram.nc", options());
+  ASSERT_TRUE(whole.ok());
+  ASSERT_EQ(whole.toolpath.cycleStarts.size(), 1u);
+  Stock wholeStock({40.0, 30.0, 0.0}, 0.5);
+  EXPECT_TRUE(simulate(whole.toolpath, test::squareTool(2.0), wholeStock).warnings.empty());
+
+  Stock stock({40.0, 30.0, 0.0}, 0.5);
+  const interp::Toolpath none;
+  Simulation simulation(none, test::squareTool(2.0), stock);
+  const interp::InterpretResult streamed = interp::interpret(program, "subprogram.nc", options(), simulation);
+  ASSERT_TRUE(streamed.ok());
+  EXPECT_TRUE(simulation.finish(streamed.toolpath).warnings.empty());
 }
 
 }  // namespace
