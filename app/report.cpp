@@ -2,10 +2,8 @@
 
 #include "app/staged_output.hpp"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <cstdio>
-#include <stdexcept>
 #include <string_view>
 
 namespace lathesim::app {
@@ -159,33 +157,44 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
 }
 
 
+namespace {
+
+constexpr auto kReplaceInvalidUtf8 = nlohmann::ordered_json::error_handler_t::replace;
+
+/// `value` as nlohmann's dump(2) writes it at `indent` inside its parent.
+void writeIndented(std::ostream& out, const nlohmann::ordered_json& value, std::string_view indent) {
+  for (const char c : value.dump(2, ' ', false, kReplaceInvalidUtf8)) {
+    out.put(c);
+    if (c == '\n') out << indent;
+  }
+}
+
+}  // namespace
+
+// The top level written here, key by key, as dump(2) would: the block rows, which may be
+// millions, are written one by one from `blocks` where the report holds an empty array.
 void writeReport(const nlohmann::ordered_json& report, const sim::BlockRows& blocks, const std::filesystem::path& file) {
-  // Text a program quoted (a comment in a note) need not be UTF-8: such bytes become U+FFFD.
-  const std::string text = report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
-  // The rows go where the dump has the empty array, as nlohmann would indent them inside it. A
-  // string cannot hold the marker: the dump writes a newline in a string as \n.
-  constexpr std::string_view kEmptyBlocks = "\n  \"blocks\": []";
-  const std::size_t at = text.find(kEmptyBlocks);
-  if (at == std::string::npos) throw std::logic_error("report.json has no blocks to fill in");
-  const std::size_t rowsAt = at + kEmptyBlocks.size() - 1;  // before the "]"
   writeTextFile(file, [&](std::ostream& out) {
-    const std::string_view all(text);
-    bool first = true;
-    blocks.forEach([&](const sim::BlockRemoval& b) {
-      const nlohmann::ordered_json row{
-          {"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}};
-      out << (first ? all.substr(0, rowsAt) : ",") << "\n    ";
-      first = false;
-      for (const char c : row.dump(2)) {
-        out.put(c);
-        if (c == '\n') out << "    ";
+    out << '{';
+    bool firstKey = true;
+    for (const auto& [key, value] : report.items()) {
+      out << (firstKey ? "\n  " : ",\n  ") << nlohmann::ordered_json(key).dump(-1, ' ', false, kReplaceInvalidUtf8) << ": ";
+      firstKey = false;
+      if (key != "blocks") {
+        // Text a program quoted (a comment in a note) need not be UTF-8: such bytes become U+FFFD.
+        writeIndented(out, value, "  ");
+        continue;
       }
-    });
-    if (first) {  // no row: the empty array stays
-      out << all << '\n';
-      return;
+      bool firstRow = true;
+      blocks.forEach([&](const sim::BlockRemoval& b) {
+        out << (firstRow ? "[\n    " : ",\n    ");
+        firstRow = false;
+        writeIndented(out, {{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}},
+                      "    ");
+      });
+      out << (firstRow ? "[]" : "\n  ]");
     }
-    out << "\n  " << all.substr(rowsAt) << '\n';
+    out << (firstKey ? "}\n" : "\n}\n");
   });
 }
 
