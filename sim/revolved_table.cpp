@@ -488,7 +488,16 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
             changedClass[n] = 1;
             store(c, chunk, cells);
           }
-          if (ghostBits && !adding) found.push_back({n, chunk, ghostBits});
+          if (ghostBits && !adding) {
+            // A candidate with material just above or below it in this chunk is no ghost
+            // (materialAboveOrBelow, asked here rather than after the write: this write does
+            // not come back to the chunk, so its cells are final). Only the chunk's end cells
+            // need the chunks beside it.
+            std::uint8_t material = 0;
+            for (int k = 0; k < kChunk; ++k) material |= static_cast<std::uint8_t>((values[k] <= w.notMaterial) << k);
+            ghostBits &= static_cast<std::uint8_t>(~((material << 1) | (material >> 1)));
+            if (ghostBits) found.push_back({n, chunk, ghostBits});
+          }
         }
       }
     }
