@@ -150,11 +150,7 @@ void Simulation::cutGroup() {
     if (!pieces.empty()) {
       const auto changes = history_.changesOf(pieces);
       removed = changes ? stock.remove(revolved, *changes) : stock.remove(revolved);
-      // A write changes nothing beyond the band of its change bound, and clears ghosts at most
-      // a voxel or two past what it changed (both writers visit no farther than this margin):
-      // the part-off check need look no farther, not over the tool's whole outline.
-      const double changeMarginMm = (kHalfBandVoxels + 3) * stock.voxelMm();
-      changed = changes ? ChangedArea::of(*changes).grownBy(changeMarginMm) : ChangedArea::of(revolved);
+      changed = ChangedArea::of(revolved);
     }
   }
   for (const interp::Move& move : group_) block.timeS += move.timeS;

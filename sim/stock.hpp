@@ -53,10 +53,6 @@ struct ChangedArea {
     return {std::max(region.lowerBound().x(), 0.0), region.maxRadius(), region.lowerBound().y(),
             region.upperBound().y()};
   }
-  /// The same area grown by `marginMm` on every side (its radii not below the axis).
-  ChangedArea grownBy(double marginMm) const {
-    return {std::max(0.0, rhoMin - marginMm), rhoMax + marginMm, zMin - marginMm, zMax + marginMm};
-  }
   void add(const ChangedArea& other) {
     rhoMin = std::min(rhoMin, other.rhoMin);
     rhoMax = std::max(rhoMax, other.rhoMax);
