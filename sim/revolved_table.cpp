@@ -472,9 +472,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
             }
             continue;
           }
-          bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
-          for (int k = 0; k < kChunk; ++k) anyOpen |= w.sign * values[k] > -w.band;
-          if (!anyOpen) continue;
+          if (!w.anyOpen(values)) continue;
           double psi[kChunk];
           if (plan) local->signedDistanceColumn(*plan, rho_[c], band_, psi);
           else local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
