@@ -214,6 +214,26 @@ float RevolvedTable::value(int i, int j, int k) const {
   return cellsOf(c, cell / kChunk, bits)[cell % kChunk];
 }
 
+void RevolvedTable::columnValues(int i, int j, int kFirst, int count, float* out, std::size_t stride) const {
+  const int c = classOf(i, j);
+  const bool hasAirVoxels = c != kAir && classHasAirVoxels_[c];
+  int chunk = -1;
+  const float* cells = nullptr;
+  for (int n = 0; n < count; ++n) {
+    const int k = kFirst + n, cell = k - kBase_;
+    float v = band_;
+    if (c != kAir && cell >= 0 && cell < chunks_ * kChunk) {
+      if (cell / kChunk != chunk) {
+        chunk = cell / kChunk;
+        std::uint8_t bits;
+        cells = cellsOf(c, chunk, bits);
+      }
+      v = hasAirVoxels && airVoxels_.count(keyOf(i, j, k)) ? band_ : cells[cell % kChunk];
+    }
+    out[n * stride] = v;
+  }
+}
+
 bool RevolvedTable::active(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
