@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <mutex>
@@ -45,6 +46,14 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool&
     changed = true;
   }
   return lost;
+}
+
+// Whether two chunks' cells differ in any bit (memcmp's verdict, as one vector compare rather
+// than a call).
+bool differ(const float (&a)[kChunk], const float* b) {
+  bool differing = false;
+  for (int k = 0; k < kChunk; ++k) differing |= std::bit_cast<std::uint32_t>(a[k]) != std::bit_cast<std::uint32_t>(b[k]);
+  return differing;
 }
 
 // A chunk's ghost candidates (class n of the write's first, its chunk, a bit per cell),
@@ -178,6 +187,8 @@ void RevolvedTable::open(int c, int chunk, ChunkCells& cells) {
 }
 
 void RevolvedTable::store(int c, int chunk, ChunkCells& cells) {
+  // Most often: a chunk of the pool, written in place, with an active cell (so not uniform).
+  if (cells.slot < kSolidChunk && *cells.activeBits != 0) return;
   ClassChunks& row = classes_[c];
   std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
   const float first = cells.values[0];
@@ -500,7 +511,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
           const std::uint8_t activeBefore = active;
           std::uint8_t ghostBits = 0;
           lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
-          if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
+          if (differ(before, values) || active != activeBefore) {
             takeBackAirVoxels();
             markChanged(c, chunk);
             changedClass[n] = 1;
