@@ -3,7 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstring>
 #include <mutex>
@@ -46,14 +45,6 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool&
     changed = true;
   }
   return lost;
-}
-
-// Whether two chunks' cells differ in any bit (memcmp's verdict, as one vector compare rather
-// than a call).
-bool differ(const float (&a)[kChunk], const float* b) {
-  bool differing = false;
-  for (int k = 0; k < kChunk; ++k) differing |= std::bit_cast<std::uint32_t>(a[k]) != std::bit_cast<std::uint32_t>(b[k]);
-  return differing;
 }
 
 // A chunk's ghost candidates (class n of the write's first, its chunk, a bit per cell),
@@ -511,7 +502,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
           const std::uint8_t activeBefore = active;
           std::uint8_t ghostBits = 0;
           lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
-          if (differ(before, values) || active != activeBefore) {
+          if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
             takeBackAirVoxels();
             markChanged(c, chunk);
             changedClass[n] = 1;
