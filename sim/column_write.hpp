@@ -26,6 +26,20 @@ struct ColumnWrite {
   }
   /// φ at or below this is material for the ghost test (above: rounding, not material).
   static float materialCeiling(double voxelMm) { return static_cast<float>(-1e-3 * voxelMm); }
+
+  /// Whether some of values[0…7] is open: not yet as deep in the region's state as the band
+  /// allows (u = sign·φ > −band, writeColumn's test). Asked of the floats as they are, which
+  /// the compiler does as a vector compare: the band is a float (of() takes one), so φ < band
+  /// when removing, φ > −band when adding, is the same test.
+  bool anyOpen(const float* values) const {
+    const float limit = static_cast<float>(band);
+    bool open = false;
+    if (sign < 0.0)
+      for (int k = 0; k < 8; ++k) open |= values[k] < limit;
+    else
+      for (int k = 0; k < 8; ++k) open |= values[k] > -limit;
+    return open;
+  }
 };
 
 /// u ← min(u, ψ) over values[0…7] with distances psi[0…7]. Returns the material voxels lost;

@@ -56,8 +56,7 @@ struct Samples {
 void readSamples(const StockGrid& s, Samples& w) {
   w.phi.resize(static_cast<std::size_t>(w.rCount) * w.zCount);
   if (s.table) {  // the stock is revolved and the table holds it: the plane y = 0 is its own
-    for (int k = 0; k < w.zCount; ++k)
-      for (int i = 0; i < w.rCount; ++i) w.phi[w.at(i, k)] = s.table->value(w.i0 + i, 0, w.k0 + k);
+    for (int i = 0; i < w.rCount; ++i) s.table->columnValues(w.i0 + i, 0, w.k0, w.zCount, &w.phi[w.at(i, 0)], w.rCount);
     return;
   }
   const auto accessor = s.grid->getConstAccessor();

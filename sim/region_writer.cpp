@@ -469,9 +469,7 @@ class RegionWriter {
             const openvdb::Index column = (i << 6) | (j << 3);  // LeafNode<float, 3>::coordToOffset
             const int lowQuarter = (i >> 2) | ((j >> 2) << 1);  // and lowQuarter | 4 above it in Z
             if ((quiet >> lowQuarter) & (quiet >> (lowQuarter | 4)) & 1) continue;
-            bool anyOpen = false;  // a voxel not yet as deep in the region's state as the band allows
-            for (int k = 0; k < kLeafDim; ++k) anyOpen |= u(values[column + k]) > -bg_;
-            if (!anyOpen) continue;
+            if (!column_.anyOpen(values + column)) continue;
             double psi[RevolvedRegion::kColumn];
             Shape::column(local, x, (o.y() + j) * h_, o.z() * h_, h_, bg_, psi);
             // A column's eight voxels are one byte of the leaf's masks (LeafNode<float, 3>).

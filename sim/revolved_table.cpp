@@ -178,6 +178,8 @@ void RevolvedTable::open(int c, int chunk, ChunkCells& cells) {
 }
 
 void RevolvedTable::store(int c, int chunk, ChunkCells& cells) {
+  // Most often: a chunk of the pool, written in place, with an active cell (so not uniform).
+  if (cells.slot < kSolidChunk && *cells.activeBits != 0) return;
   ClassChunks& row = classes_[c];
   std::uint16_t& slot = slots_[static_cast<std::size_t>(c) * chunks_ + chunk];
   const float first = cells.values[0];
@@ -212,6 +214,26 @@ float RevolvedTable::value(int i, int j, int k) const {
   if (classHasAirVoxels_[c] && airVoxels_.count(keyOf(i, j, k))) return band_;
   std::uint8_t bits;
   return cellsOf(c, cell / kChunk, bits)[cell % kChunk];
+}
+
+void RevolvedTable::columnValues(int i, int j, int kFirst, int count, float* out, std::size_t stride) const {
+  const int c = classOf(i, j);
+  const bool hasAirVoxels = c != kAir && classHasAirVoxels_[c];
+  int chunk = -1;
+  const float* cells = nullptr;
+  for (int n = 0; n < count; ++n) {
+    const int k = kFirst + n, cell = k - kBase_;
+    float v = band_;
+    if (c != kAir && cell >= 0 && cell < chunks_ * kChunk) {
+      if (cell / kChunk != chunk) {
+        chunk = cell / kChunk;
+        std::uint8_t bits;
+        cells = cellsOf(c, chunk, bits);
+      }
+      v = hasAirVoxels && airVoxels_.count(keyOf(i, j, k)) ? band_ : cells[cell % kChunk];
+    }
+    out[n * stride] = v;
+  }
 }
 
 bool RevolvedTable::active(int i, int j, int k) const {
@@ -472,9 +494,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
             }
             continue;
           }
-          bool anyOpen = false;  // a cell not yet as deep in the region's state as the band allows
-          for (int k = 0; k < kChunk; ++k) anyOpen |= w.sign * values[k] > -w.band;
-          if (!anyOpen) continue;
+          if (!w.anyOpen(values)) continue;
           double psi[kChunk];
           if (plan) local->signedDistanceColumn(*plan, rho_[c], band_, psi);
           else local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
@@ -488,7 +508,16 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
             changedClass[n] = 1;
             store(c, chunk, cells);
           }
-          if (ghostBits && !adding) found.push_back({n, chunk, ghostBits});
+          if (ghostBits && !adding) {
+            // A candidate with material just above or below it in this chunk is no ghost
+            // (materialAboveOrBelow, asked here rather than after the write: this write does
+            // not come back to the chunk, so its cells are final). Only the chunk's end cells
+            // need the chunks beside it.
+            std::uint8_t material = 0;
+            for (int k = 0; k < kChunk; ++k) material |= static_cast<std::uint8_t>((values[k] <= w.notMaterial) << k);
+            ghostBits &= static_cast<std::uint8_t>(~((material << 1) | (material >> 1)));
+            if (ghostBits) found.push_back({n, chunk, ghostBits});
+          }
         }
       }
     }

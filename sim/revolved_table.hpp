@@ -70,6 +70,9 @@ class RevolvedTable {
   /// air beyond the table.
   float value(int i, int j, int k) const;
   bool active(int i, int j, int k) const;
+  /// value(i, j, k) for k = kFirst … kFirst + count − 1, into out[0], out[stride], …: a column
+  /// read a chunk at a time rather than voxel by voxel.
+  void columnValues(int i, int j, int kFirst, int count, float* out, std::size_t stride) const;
 
   /// The eight cells of column (i, j)'s class from Z index k0 (a multiple of 8) and their
   /// active bits; nullptr for a column that is always air (beyond the table or its air radius).

@@ -30,8 +30,7 @@ SampledSection Stock::meridianSection() const {
   section.phi.resize(static_cast<std::size_t>(section.rCount) * section.zCount);
   const auto at = [&](int i, int k) -> float& { return section.phi[static_cast<std::size_t>(k) * section.rCount + i]; };
   if (s.table) {  // revolved: the table holds the plane y = 0 as the level set would
-    for (int k = 0; k < section.zCount; ++k)
-      for (int i = 0; i < section.rCount; ++i) at(i, k) = s.table->value(i, 0, zFirst + k);
+    for (int i = 0; i < section.rCount; ++i) s.table->columnValues(i, 0, zFirst, section.zCount, &at(i, 0), section.rCount);
     return section;
   }
   const auto accessor = s.grid->getConstAccessor();

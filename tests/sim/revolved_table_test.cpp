@@ -269,14 +269,20 @@ TEST(RevolvedTable, GivesTheSameTableOnOneThreadAsSharedAmongThreads) {
     }
     ASSERT_EQ(alone.airVoxelCount(), shared.airVoxelCount());
     airVoxels += alone.airVoxelCount();
-    std::size_t differing = 0, material = 0;
+    std::size_t differing = 0, material = 0, columnReadDiffering = 0;
+    std::vector<float> column(kLast - kFirst + 3);
     for (int i = -halfWidth; i <= halfWidth; ++i)
-      for (int j = -halfWidth; j <= halfWidth; ++j)
+      for (int j = -halfWidth; j <= halfWidth; ++j) {
+        // A column read whole (a voxel beyond each end of the table too) gives what value() gives.
+        alone.columnValues(i, j, kFirst - 1, static_cast<int>(column.size()), column.data(), 1);
+        for (int k = kFirst - 1; k <= kLast + 1; ++k) columnReadDiffering += column[k - kFirst + 1] != alone.value(i, j, k);
         for (int k = kFirst; k <= kLast; ++k) {
           differing += alone.value(i, j, k) != shared.value(i, j, k) || alone.active(i, j, k) != shared.active(i, j, k);
           material += alone.value(i, j, k) < 0.0f;
         }
+      }
     EXPECT_EQ(differing, 0u);
+    EXPECT_EQ(columnReadDiffering, 0u);
     EXPECT_GT(material, 0u);
   }
   EXPECT_GT(airVoxels, 0u);  // the route of ghosts a class's columns disagree on was taken
