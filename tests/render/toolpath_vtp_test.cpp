@@ -3,6 +3,8 @@
 #include "render/toolpath_vtp.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <utility>
 
 #include <gtest/gtest.h>
@@ -10,12 +12,22 @@
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataReader.h>
 
 #include "tests/render/test_meshes.hpp"
 
 namespace lathesim::render {
 namespace {
+
+// The file as VTK's own XML reader reads it.
+vtkSmartPointer<vtkPolyData> readVtp(const std::filesystem::path& file) {
+  vtkNew<vtkXMLPolyDataReader> reader;
+  const std::string name = file.string();
+  reader->SetFileName(name.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
 
 interp::MoveSpool spoolOf(const interp::Toolpath& path) {
   interp::MoveSpool spool;
@@ -29,11 +41,7 @@ TEST(ToolpathVtp, OneCellPerMoveWithLineKindAndFeed) {
   const auto file = dir.path() / "toolpath.vtp";
   writeToolpathVtp(spoolOf(path), file);
 
-  vtkNew<vtkXMLPolyDataReader> reader;
-  const std::string name = file.string();
-  reader->SetFileName(name.c_str());
-  reader->Update();
-  vtkPolyData* data = reader->GetOutput();
+  const vtkSmartPointer<vtkPolyData> data = readVtp(file);
   ASSERT_EQ(data->GetNumberOfCells(), 2);
   ASSERT_EQ(data->GetNumberOfLines(), 2);
 
@@ -85,11 +93,7 @@ TEST(ToolpathVtp, ArcIsOnePolylineCellAlongTheCircle) {
   const auto file = dir.path() / "arcs.vtp";
   writeToolpathVtp(spoolOf(path), file);
 
-  vtkNew<vtkXMLPolyDataReader> reader;
-  const std::string name = file.string();
-  reader->SetFileName(name.c_str());
-  reader->Update();
-  vtkPolyData* data = reader->GetOutput();
+  const vtkSmartPointer<vtkPolyData> data = readVtp(file);
   ASSERT_EQ(data->GetNumberOfCells(), 4);
   vtkDataArray* kind = data->GetCellData()->GetArray("kind");
   vtkDataArray* feed = data->GetCellData()->GetArray("feed");
@@ -127,11 +131,7 @@ TEST(ToolpathVtp, EmptyToolpathReadsBackEmpty) {
   test::TempDir dir;
   const auto file = dir.path() / "empty.vtp";
   writeToolpathVtp(interp::MoveSpool{}, file);
-  vtkNew<vtkXMLPolyDataReader> reader;
-  const std::string name = file.string();
-  reader->SetFileName(name.c_str());
-  reader->Update();
-  EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(readVtp(file)->GetNumberOfCells(), 0);
 }
 
 // 10 000 moves: the counts, the last cell's line and its points, past any buffer's size.
@@ -142,11 +142,7 @@ TEST(ToolpathVtp, ManyMovesReadBackWhole) {
   test::TempDir dir;
   const auto file = dir.path() / "many.vtp";
   writeToolpathVtp(spool, file);
-  vtkNew<vtkXMLPolyDataReader> reader;
-  const std::string name = file.string();
-  reader->SetFileName(name.c_str());
-  reader->Update();
-  vtkPolyData* data = reader->GetOutput();
+  const vtkSmartPointer<vtkPolyData> data = readVtp(file);
   ASSERT_EQ(data->GetNumberOfCells(), 10000);
   ASSERT_EQ(data->GetNumberOfPoints(), 20000);
   EXPECT_EQ(data->GetCellData()->GetArray("line")->GetTuple1(9999), 10000);
