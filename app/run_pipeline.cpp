@@ -394,7 +394,7 @@ void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report,
     out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
     if (run.outputs.html)
       out.write("report.html", [&](const Path& file) {
-        writeReportHtml(report, blocks, run.job.programText.text().view(), run.pictures, run.modelGlb, file);
+        writeReportHtml(report, blocks, run.job.programText.text(), run.pictures, run.modelGlb, file);
       });
   });
 }

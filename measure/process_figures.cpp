@@ -22,18 +22,6 @@ double pathLengthMm(const interp::Move& move) {
 
 namespace {
 
-// Which blocks the rows name more than once, a bit a block.
-struct RepeatedBlocks {
-  std::vector<bool> seen, repeated;
-  void note(int block) {
-    const auto b = static_cast<std::size_t>(block);
-    if (b >= seen.size()) seen.resize(b + 1), repeated.resize(b + 1);
-    if (seen[b]) repeated[b] = true;
-    seen[b] = true;
-  }
-  bool has(int block) const { return repeated[static_cast<std::size_t>(block)]; }
-};
-
 // A block run more than once: what all its runs removed, and the tool of its first move.
 struct RepeatedBlock {
   double removedMm3 = 0;
@@ -45,7 +33,7 @@ struct RepeatedBlock {
 ProcessFigures processFigures(const interp::MoveSpool& moves, const sim::BlockRows& rows, double voxelMm) {
   ProcessFigures figures;
   const double airMm3 = voxelMm * voxelMm * voxelMm;
-  RepeatedBlocks repeats;
+  sim::MetTwice repeats;
   rows.forEach([&](const sim::BlockRemoval& row) { repeats.note(row.block); });
   std::map<int, RepeatedBlock> repeated;
   rows.forEach([&](const sim::BlockRemoval& row) {

@@ -116,7 +116,7 @@ TEST(StreamedRun, PeakMemoryMeasuredFromOutsideDoesNotGrowWithTheProgram) {
     const fs::path program = scratch.path() / ("straight-" + std::to_string(blocks) + ".nc");
     if (!fs::exists(program)) test::writeFile(program, straightProgram(blocks));
     const fs::path out = scratch.path() / (command + std::to_string(blocks));
-    std::vector<std::string> args{command, program.string(), "--voxel", "0.5", "--out", out.string()};
+    std::vector<std::string> args{command, program.string(), "--voxel", "0.5", "--size", "400x300", "--out", out.string()};
     if (command == "check") args.insert(args.end(), {"--target", drawing.string()});
     const test::MeasuredOutcome outcome = test::runMeasured(LATHESIM_BINARY, args, scratch.path());
     // check: 3, out of tolerance, as the zig-zag leaves the part
