@@ -52,11 +52,12 @@ sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
   return thicknesses;
 }
 
-bool keepsMoves(const RunOptions& options) {
-  return options.animation.mp4 || options.atLine.has_value();
-}
-
 namespace {
+
+// Whether `options` need every move in memory: --animate draws the toolpath as far as each
+// frame's instant, and --at-line cuts the toolpath at a line before it is simulated. Every
+// other output reads the moves as they stream, or a spool or drawing of them after.
+bool keepsMoves(const RunOptions& options) { return options.animation.mp4 || options.atLine.has_value(); }
 
 bool drawsToolpath(const RunOptions& options) {
   const auto exported = [&](const char* format) {
@@ -64,10 +65,6 @@ bool drawsToolpath(const RunOptions& options) {
   };
   return options.outputs.png || options.outputs.html || exported("gltf") || exported("glb");
 }
-
-}  // namespace
-
-namespace {
 
 // A streamed run's moves, each handed on as the interpreter makes it: to the simulation, to
 // `others` (toolpath.csv's spool, the move spool, the drawing, those asked for), and to the

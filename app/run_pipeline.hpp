@@ -70,14 +70,9 @@ struct SimulatedRun {
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
 sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
 
-/// Whether `options` need every move in memory: --animate draws the toolpath as far as each
-/// frame's instant, and --at-line cuts the toolpath at a line before it is simulated. Every
-/// other output reads the moves as they stream, or a spool or drawing of them after.
-bool keepsMoves(const RunOptions& options);
-
 /// Reads the setup and program, checks the grid and simulates (progress on a terminal);
 /// records the cut into `out` when options.animation asks and `out` is given. The moves are
-/// kept in run.job.toolpath when keepsMoves(options) says; otherwise they stream from the
+/// kept in run.job.toolpath when --animate or --at-line asks; otherwise they stream from the
 /// interpreter into the simulation (and toolpath.csv's spool), and nothing is held for each
 /// (what is held for each block: its report row, sim::BlockRemoval). Either way they are
 /// spooled into run.moves when toolpath.vtp is asked for or `spoolMoves` says, and drawn into
