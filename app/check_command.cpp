@@ -68,7 +68,7 @@ std::optional<MeridianProfile> simulateTarget(const CheckOptions& options, doubl
   RunOptions target = options.run;
   target.program = *options.targetProgram;
   target.voxelMm = voxelMm;
-  std::optional<SimulatedRun> run = simulateProgram(target, clock, nullptr, keepsMoves(target));
+  std::optional<SimulatedRun> run = simulateProgram(target, clock, nullptr);
   if (!run) return std::nullopt;
   return MeridianProfile::fromSection(run->partStock().meridianSection());
 }
@@ -255,7 +255,7 @@ int checkCommand(const CheckOptions& options) {
     return job::kExitBadInput;  // before the long part
   Stopwatch clock;
   StagedOutput out(options.run.out);
-  // The gouges' causes and the process figures read every move.
+  // The gouges' causes and the process figures read every move: spooled.
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out, true);
   if (!run) return job::kExitBadInput;
   std::future<double> stockFile = stageStockFile(*run, out);
@@ -275,8 +275,9 @@ int checkCommand(const CheckOptions& options) {
     threadChecks.push_back(measure::checkThread(callout, run->figures.threads, voxel));
   }
   measure::DeviationReport deviation = measure::measureDeviation(section, part, *drawing, tolerance, threadZones);
-  measure::attributeGouges(deviation, run->job.toolpath, outlinesOf(run->job.setup), run->job.setup.stock, run->figures.voxelMm);
-  const measure::ProcessFigures process = measure::processFigures(run->job.toolpath, run->figures.simulation, voxel);
+  measure::attributeGouges(deviation, *run->moves, outlinesOf(run->job.setup), run->job.setup.stock, run->figures.voxelMm);
+  measure::ProcessFigures process;
+  useBlockRows(*run, [&](const sim::BlockRows& rows) { process = measure::processFigures(*run->moves, rows, voxel); });
   const double checkS = checkClock.lap();
 
   meshPart(*run, clock);

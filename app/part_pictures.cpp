@@ -1,5 +1,7 @@
 #include "app/part_pictures.hpp"
 
+#include <algorithm>
+
 #include "app/tool_picture.hpp"
 #include "geometry/profile_polylines.hpp"
 #include "sim/holder_check.hpp"
@@ -33,6 +35,13 @@ render::PartImageOptions partPictureOptions(const job::Setup& setup, const inter
   options.bar = render::BarOutline{bar.diameterMm / 2, bar.faceZMm - bar.lengthMm, bar.faceZMm, bar.boreMm / 2};
   options.chuck = chuckPicture(setup);
   return options;
+}
+
+double drawnToleranceMm(const job::Setup& setup, int widthPx, int heightPx) {
+  constexpr double kDrawnTolerancePx = 0.2;
+  const sim::StockSpec& bar = setup.stock;
+  const double mmPerPx = std::max(bar.lengthMm / std::max(widthPx, 1), bar.diameterMm / std::max(heightPx, 1));
+  return kDrawnTolerancePx * mmPerPx;
 }
 
 void addPartSection(render::PartImageOptions& options, const SampledSection& section, double voxelMm) {

@@ -15,6 +15,11 @@ namespace lathesim::app {
 render::PartImageOptions partPictureOptions(const job::Setup& setup, const interp::Toolpath& toolpath,
                                             const std::string& title, int widthPx, int heightPx);
 
+/// How far the toolpath drawn in pictures of widthPx × heightPx may stray from the true one
+/// (render/drawn_toolpath.hpp), mm: a fifth of a pixel at the scale that frames the bar, which
+/// is the largest scale a picture of the run takes (it frames the bar with a margin).
+double drawnToleranceMm(const job::Setup& setup, int widthPx, int heightPx);
+
 /// Adds what the finished part's `section` (sampled at `voxelMm`) shows: its main dimensions
 /// and its cut face.
 void addPartSection(render::PartImageOptions& options, const SampledSection& section, double voxelMm);

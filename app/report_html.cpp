@@ -11,7 +11,6 @@
 
 #include "app/staged_output.hpp"
 #include "batch/html_text.hpp"
-#include "interp/text/text_lines.hpp"
 #include "viewer/viewer_script.hpp"
 
 namespace lathesim::app {
@@ -180,92 +179,135 @@ std::string threadsSection(const Json& r) {
   return html + "</table>\n";
 }
 
+struct LineFigures {
+  double timeS = 0, removedMm3 = 0;
+};
+
+// A row of the listing.
+void writeListingRow(std::ostream& out, int line, std::string_view text, const LineFigures* figures, const char* flag,
+                     double mostTime, double mostRemoved) {
+  std::string time, removed, style;
+  if (figures) {
+    const LineFigures& f = *figures;
+    const int barPx = mostTime > 0 ? static_cast<int>(std::lround(60.0 * f.timeS / mostTime)) : 0;
+    time = "<span class=\"bar\" style=\"width:" + std::to_string(barPx) + "px\"></span>" + fixed(f.timeS, 2);
+    removed = f.removedMm3 > 0 ? grouped(f.removedMm3, 1) : "";
+    if (f.removedMm3 > 0 && mostRemoved > 0)
+      style = " style=\"background:rgba(240,140,30," + fixed(0.08 + 0.47 * f.removedMm3 / mostRemoved, 3) + ")\"";
+  }
+  out << "<tr id=\"L" << line << "\"" << (flag ? std::string(" class=\"") + flag + "\"" : std::string()) << style
+      << "><td class=\"no\">" << line << "</td><td class=\"num\">" << time << "</td><td class=\"num\">" << removed
+      << "</td><td class=\"text\">" << escaped(std::string(text)) << "</td></tr>\n";
+}
+
+// Whether a row is read in step with the text: its line is run once, after every line run once
+// before it. The others (a subprogram's lines, a loop's, a line jumped back to) are summed apart.
+class InStep {
+ public:
+  explicit InStep(const sim::MetTwice& repeated) : repeated_(repeated) {}
+  bool operator()(const sim::BlockRemoval& row) {
+    if (repeated_.has(row.line) || row.line <= last_) return false;
+    last_ = row.line;
+    return true;
+  }
+
+ private:
+  const sim::MetTwice& repeated_;
+  int last_ = 0;
+};
+
 /// The program, one row per source line: its number, text, machine time and removed volume
 /// (its blocks' sums), a bar for the time and a warm tint for the removal; lines with a
-/// collision or a warning flagged at their number.
-std::string listing(const Json& r, const sim::BlockRows& blocks, std::string_view programText) {
-  struct LineFigures {
-    double timeS = 0, removedMm3 = 0;
-  };
-  std::map<int, LineFigures> byLine;
+/// collision or a warning flagged at their number. Three passes over the rows.
+void writeListing(std::ostream& out, const Json& r, const sim::BlockRows& blocks, const interp::PagedText& programText) {
+  sim::MetTwice repeated;
+  blocks.forEach([&](const sim::BlockRemoval& b) { repeated.note(b.line); });
+  std::map<int, LineFigures> apart;
+  double mostTime = 0, mostRemoved = 0;
+  InStep sums(repeated);
   blocks.forEach([&](const sim::BlockRemoval& b) {
-    LineFigures& f = byLine[b.line];
+    if (sums(b)) {
+      mostTime = std::max(mostTime, b.timeS), mostRemoved = std::max(mostRemoved, b.removedMm3);
+      return;
+    }
+    LineFigures& f = apart[b.line];
     f.timeS += b.timeS;
     f.removedMm3 += b.removedMm3;
   });
-  double mostTime = 0, mostRemoved = 0;
-  for (const auto& [line, f] : byLine) mostTime = std::max(mostTime, f.timeS), mostRemoved = std::max(mostRemoved, f.removedMm3);
-  std::map<int, std::string> flags;
+  for (const auto& [line, f] : apart) mostTime = std::max(mostTime, f.timeS), mostRemoved = std::max(mostRemoved, f.removedMm3);
+  std::map<int, const char*> flags;
   for (const Json& w : r.at("warnings")) flags[w.value("line", 0)] = "warning";
   for (const Json& c : r.at("collisions")) flags[c.value("line", 0)] = "collision";
 
-  std::string html =
-      "<h2>Program</h2>\n<p class=\"legend\"><span><span class=\"swatch\" style=\"background:#3b6fd8\"></span>machine time"
-      "</span><span><span class=\"swatch\" style=\"background:rgba(240,140,30,.55)\"></span>material removed (the deeper, "
-      "the more)</span><span><span class=\"swatch\" style=\"background:#c5221f\"></span>collision</span><span><span "
-      "class=\"swatch\" style=\"background:#e37400\"></span>warning</span></p>\n<table class=\"listing\">\n"
-      "<tr><th class=\"num\">line</th><th class=\"num\">time, s</th><th class=\"num\">removed, mm³</th><th>program</th></tr>\n";
-  const std::vector<std::string> lines = interp::linesOf(programText);
-  for (std::size_t n = 0; n < lines.size(); ++n) {
-    const int line = static_cast<int>(n) + 1;
-    const auto figures = byLine.find(line);
-    const auto flag = flags.find(line);
-    std::string time, removed, style;
-    if (figures != byLine.end()) {
-      const LineFigures& f = figures->second;
-      const int barPx = mostTime > 0 ? static_cast<int>(std::lround(60.0 * f.timeS / mostTime)) : 0;
-      time = "<span class=\"bar\" style=\"width:" + std::to_string(barPx) + "px\"></span>" + fixed(f.timeS, 2);
-      removed = f.removedMm3 > 0 ? grouped(f.removedMm3, 1) : "";
-      if (f.removedMm3 > 0 && mostRemoved > 0)
-        style = " style=\"background:rgba(240,140,30," + fixed(0.08 + 0.47 * f.removedMm3 / mostRemoved, 3) + ")\"";
+  out << "<h2>Program</h2>\n<p class=\"legend\"><span><span class=\"swatch\" style=\"background:#3b6fd8\"></span>machine time"
+         "</span><span><span class=\"swatch\" style=\"background:rgba(240,140,30,.55)\"></span>material removed (the deeper, "
+         "the more)</span><span><span class=\"swatch\" style=\"background:#c5221f\"></span>collision</span><span><span "
+         "class=\"swatch\" style=\"background:#e37400\"></span>warning</span></p>\n<table class=\"listing\">\n"
+         "<tr><th class=\"num\">line</th><th class=\"num\">time, s</th><th class=\"num\">removed, mm³</th><th>program</th></tr>\n";
+  const std::string_view text = programText.view();
+  std::size_t begin = 0;
+  int line = 0;
+  // The text's lines up to `last` (all: -1), the last with `figures` if given.
+  const auto writeLines = [&](int last, const LineFigures* figures) {
+    while (begin < text.size() && line != last) {
+      programText.readingAt(begin);
+      std::size_t end = text.find('\n', begin);
+      if (end == std::string_view::npos) end = text.size();
+      std::string_view lineText = text.substr(begin, end - begin);
+      if (!lineText.empty() && lineText.back() == '\r') lineText.remove_suffix(1);
+      begin = end + 1;
+      ++line;
+      const auto summed = apart.find(line);
+      const LineFigures* f = line == last ? figures : summed != apart.end() ? &summed->second : nullptr;
+      const auto flag = flags.find(line);
+      writeListingRow(out, line, lineText, f, flag != flags.end() ? flag->second : nullptr, mostTime, mostRemoved);
     }
-    html += "<tr id=\"L" + std::to_string(line) + "\"" + (flag != flags.end() ? " class=\"" + flag->second + "\"" : "") +
-            style + "><td class=\"no\">" + std::to_string(line) + "</td><td class=\"num\">" + time +
-            "</td><td class=\"num\">" + removed + "</td><td class=\"text\">" + escaped(lines[n]) + "</td></tr>\n";
-  }
-  return html + "</table>\n";
+  };
+  InStep rows(repeated);
+  blocks.forEach([&](const sim::BlockRemoval& b) {
+    if (!rows(b)) return;
+    const LineFigures figures{b.timeS, b.removedMm3};
+    writeLines(b.line, &figures);
+  });
+  writeLines(-1, nullptr);
+  out << "</table>\n";
 }
 
 }  // namespace
 
-void writeReportHtml(const Json& report, const sim::BlockRows& blocks, std::string_view programText,
+void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const interp::PagedText& programText,
                      const std::vector<HtmlPicture>& pictures, const std::string& glb, const std::filesystem::path& html) {
   const std::string program = report.value("program", "");
-  std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                     "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>lathesim: " +
-                     escaped(program) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<header><h1>" +
-                     escaped(program) + "</h1><p>setup " + escaped(report.value("setup", "")) + " · voxel " +
-                     fixed(report.value("voxel_mm", 0.0), 3) + " mm" +
-                     (report.contains("at_line") ? " · stopped after line " + std::to_string(report.value("at_line", 0)) : "") +
-                     "</p></header>\n<main>\n";
-  page += summary(report);
-  page += problems(report);
-  // The part in 3D first, where the page opens; the pictures and the drawing check below.
-  if (!glb.empty())
-    page += "<h2>3D view</h2>\n<div id=\"view3d\" data-state=\"loading\"></div>\n<p class=\"hint\">The part and its "
-            "toolpath (feeds blue, rapids red). Drag to turn, scroll to zoom, right-drag to move.</p>\n";
-  if (!pictures.empty()) {
-    page += "<h2>Pictures</h2>\n<div class=\"pictures\">\n";
-    for (const HtmlPicture& p : pictures) {
-      const std::string bytes = batch::fileBytes(p.png);
-      if (bytes.empty()) throw std::runtime_error("cannot read " + p.png.string() + " for report.html");
-      page += "<figure><img " + pngSizeAttributes(bytes) + "alt=\"" + escaped(p.caption) +
-              "\" src=\"data:image/png;base64," + batch::base64(bytes) +
-              "\"><figcaption>" + escaped(p.caption) + "</figcaption></figure>\n";
+  writeTextFile(html, [&](std::ostream& out) {
+    out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>lathesim: "
+        << escaped(program) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<header><h1>" << escaped(program)
+        << "</h1><p>setup " << escaped(report.value("setup", "")) << " · voxel " << fixed(report.value("voxel_mm", 0.0), 3)
+        << " mm"
+        << (report.contains("at_line") ? " · stopped after line " + std::to_string(report.value("at_line", 0)) : "")
+        << "</p></header>\n<main>\n";
+    out << summary(report) << problems(report);
+    // The part in 3D first, where the page opens; the pictures and the drawing check below.
+    if (!glb.empty())
+      out << "<h2>3D view</h2>\n<div id=\"view3d\" data-state=\"loading\"></div>\n<p class=\"hint\">The part and its "
+             "toolpath (feeds blue, rapids red). Drag to turn, scroll to zoom, right-drag to move.</p>\n";
+    if (!pictures.empty()) {
+      out << "<h2>Pictures</h2>\n<div class=\"pictures\">\n";
+      for (const HtmlPicture& p : pictures) {
+        const std::string bytes = batch::fileBytes(p.png);
+        if (bytes.empty()) throw std::runtime_error("cannot read " + p.png.string() + " for report.html");
+        out << "<figure><img " << pngSizeAttributes(bytes) << "alt=\"" << escaped(p.caption) << "\" src=\"data:image/png;base64,"
+            << batch::base64(bytes) << "\"><figcaption>" << escaped(p.caption) << "</figcaption></figure>\n";
+      }
+      out << "</div>\n";
     }
-    page += "</div>\n";
-  }
-  page += threadsSection(report);
-  page += checkSection(report);
-  page += listing(report, blocks, programText);
-  page += "</main>\n";
-  if (!glb.empty()) {
-    page += "<script type=\"application/octet-stream\" id=\"part-model\">" + batch::base64(glb) + "</script>\n<script>";
-    page += viewer::viewerScript();
-    page += "</script>\n";
-  }
-  page += "</body>\n</html>\n";
-  writeTextFile(html, [&](std::ostream& out) { out << page; });
+    out << threadsSection(report) << checkSection(report);
+    writeListing(out, report, blocks, programText);
+    out << "</main>\n";
+    if (!glb.empty()) out << "<script type=\"application/octet-stream\" id=\"part-model\">" << batch::base64(glb)
+                          << "</script>\n<script>" << viewer::viewerScript() << "</script>\n";
+    out << "</body>\n</html>\n";
+  });
 }
 
 }  // namespace lathesim::app

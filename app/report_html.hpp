@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <string_view>
 #include <vector>
 
+#include "interp/text/paged_text.hpp"
 #include "sim/block_rows.hpp"
 
 namespace lathesim::app {
@@ -20,9 +20,11 @@ struct HtmlPicture {
 };
 
 /// Writes the page for the run `report` (reportJson's, its rows `blocks` apart) of the program
-/// `programText`, with `pictures` and the 3D model `glb` (empty: no 3D view).
+/// `programText`, with `pictures` and the 3D model `glb` (empty: no 3D view). The listing is
+/// written as the text and the rows are read, holding figures only for the lines run more
+/// than once or out of order: a long program's page takes no more memory than a short one's.
 void writeReportHtml(const nlohmann::ordered_json& report, const sim::BlockRows& blocks,
-                     std::string_view programText, const std::vector<HtmlPicture>& pictures, const std::string& glb,
-                     const std::filesystem::path& html);
+                     const interp::PagedText& programText, const std::vector<HtmlPicture>& pictures,
+                     const std::string& glb, const std::filesystem::path& html);
 
 }  // namespace lathesim::app

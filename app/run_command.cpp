@@ -9,7 +9,7 @@ namespace lathesim::app {
 int runCommand(const RunOptions& options) {
   Stopwatch clock;
   StagedOutput out(options.out);
-  std::optional<SimulatedRun> run = simulateProgram(options, clock, &out, keepsMoves(options));
+  std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
   if (!run) return job::kExitBadInput;
   std::future<double> stockFile = stageStockFile(*run, out);
   meshPart(*run, clock);

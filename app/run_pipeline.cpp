@@ -18,6 +18,7 @@
 #include "measure/thread_measure.hpp"
 #include "render/close_up_region.hpp"
 #include "render/mesh_files.hpp"
+#include "render/toolpath_vtp.hpp"
 #include "render/offscreen_display.hpp"
 #include "render/part_image.hpp"
 #include "render/scene_export.hpp"
@@ -51,28 +52,33 @@ sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
   return thicknesses;
 }
 
-bool keepsMoves(const RunOptions& options) {
+namespace {
+
+// Whether `options` need every move in memory: --animate draws the toolpath as far as each
+// frame's instant, and --at-line cuts the toolpath at a line before it is simulated. Every
+// other output reads the moves as they stream, or a spool or drawing of them after.
+bool keepsMoves(const RunOptions& options) { return options.animation.mp4 || options.atLine.has_value(); }
+
+bool drawsToolpath(const RunOptions& options) {
   const auto exported = [&](const char* format) {
     return std::find(options.exports.begin(), options.exports.end(), format) != options.exports.end();
   };
-  return options.outputs.png || options.outputs.html || options.outputs.vtp || exported("gltf") || exported("glb") ||
-         options.animation.mp4 || options.atLine;
+  return options.outputs.png || options.outputs.html || exported("gltf") || exported("glb");
 }
 
-namespace {
-
 // A streamed run's moves, each handed on as the interpreter makes it: to the simulation, to
-// toolpath.csv's spool when the CSV is written, and to the moves kept for measuring threads;
-// counted, and their machine time summed in program order (as cycleTimeS sums them).
+// `others` (toolpath.csv's spool, the move spool, the drawing, those asked for), and to the
+// moves kept for measuring threads; counted, and their machine time summed in program order
+// (as cycleTimeS sums them).
 class StreamedMoves final : public interp::MoveSink {
  public:
-  StreamedMoves(sim::Simulation& simulation, interp::ToolpathCsvSpool* csv, std::vector<interp::Move>& threadMoves)
-      : simulation_(simulation), csv_(csv), threads_(threadMoves) {}
+  StreamedMoves(sim::Simulation& simulation, std::vector<interp::MoveSink*> others, std::vector<interp::Move>& threadMoves)
+      : simulation_(simulation), others_(std::move(others)), threads_(threadMoves) {}
   void recordingIn(const interp::Toolpath& toolpath) override { simulation_.recordingIn(toolpath); }
   void take(interp::Move move) override {
     ++count;
     cycleTimeS += move.timeS;
-    if (csv_) csv_->take(move);
+    for (interp::MoveSink* other : others_) other->take(move);
     threads_.take(move);
     simulation_.take(std::move(move));
   }
@@ -82,21 +88,21 @@ class StreamedMoves final : public interp::MoveSink {
 
  private:
   sim::Simulation& simulation_;
-  interp::ToolpathCsvSpool* csv_;
+  std::vector<interp::MoveSink*> others_;
   measure::ThreadMoveCollector threads_;
 };
 
 }  // namespace
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out,
-                                            bool keepMoves) {
+                                            bool spoolMoves) {
   const job::JobRequest request = jobRequestOf(options);
   std::optional<job::Job> opened = job::openJob(request);
   if (!opened) return std::nullopt;
   const double voxel = options.voxelMm.value_or(opened->setup.voxelMm.value_or(kDefaultVoxelMm));
   const auto gridProblem = sim::gridProblem(opened->setup.stock, voxel);
   // A bad grid is said after the program's errors (and --at-line's): the program runs first.
-  const bool streams = !keepMoves && !keepsMoves(options) && !gridProblem;
+  const bool streams = !keepsMoves(options) && !gridProblem;
   if (!streams) {
     std::vector<interp::Move> moves;
     interp::MoveCollector collect(moves);
@@ -122,6 +128,14 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.voxelMm = voxel;
 
   run.outputs = options.outputs;
+  if (options.outputs.vtp || spoolMoves) run.moves = std::make_unique<interp::MoveSpool>();
+  if (drawsToolpath(options))
+    run.drawn = std::make_unique<render::DrawnToolpath>(
+        drawnToleranceMm(setup, options.pictures.widthPx, options.pictures.heightPx));
+  // The sinks besides the simulation that every move goes to, whether streamed or kept.
+  std::vector<interp::MoveSink*> others;
+  for (interp::MoveSink* sink : {static_cast<interp::MoveSink*>(run.moves.get()), static_cast<interp::MoveSink*>(run.drawn.get())})
+    if (sink) others.push_back(sink);
   run.progress = std::make_unique<Progress>(figures.program);
   Stopwatch bar;
   run.stock = std::make_unique<sim::Stock>(setup.stock, voxel);
@@ -139,11 +153,14 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   interp::Toolpath threadToolpath;
   if (streams) {
     sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup));
-    if (options.outputs.csv && out) run.csv = std::make_unique<interp::ToolpathCsvSpool>();
+    if (options.outputs.csv && out) {
+      run.csv = std::make_unique<interp::ToolpathCsvSpool>();
+      others.push_back(run.csv.get());
+    }
     std::vector<interp::Move> threadMoves;
     run.blockRows = std::make_unique<sim::SpooledBlockRows>();
     simulation.sendBlocksTo([rows = run.blockRows.get()](const sim::BlockRemoval& row) { rows->add(row); });
-    StreamedMoves moves(simulation, run.csv.get(), threadMoves);
+    StreamedMoves moves(simulation, std::move(others), threadMoves);
     if (!job::interpretJob(run.job, request, moves)) return std::nullopt;
     figures.moves = moves.count;
     figures.cycleTimeS = moves.cycleTimeS;
@@ -152,6 +169,8 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     threadToolpath = run.job.toolpath;
     threadToolpath.moves = std::move(threadMoves);
   } else {
+    for (interp::MoveSink* other : others)
+      for (const interp::Move& move : run.job.toolpath.moves) other->take(move);
     figures.moves = run.job.toolpath.moves.size();
     figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
     if (barProblem) warn(run, *barProblem);
@@ -250,18 +269,18 @@ struct DrawnPictures {
 };
 
 // part.png, the views asked for, and a thread's close-up, drawn into memory.
-DrawnPictures drawPictures(const SimulatedRun& run, const RunOptions& options) {
+DrawnPictures drawPictures(const SimulatedRun& run, const interp::Toolpath& toolpath, const RunOptions& options) {
   DrawnPictures drawn;
   const PictureRequest& pictures = options.pictures;
   render::PartImageOptions image =
-      partPictureOptions(run.job.setup, run.job.toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
+      partPictureOptions(run.job.setup, toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
   addPartSection(image, run.partStock().meridianSection(), run.figures.voxelMm);
   std::vector<render::PartView> views{render::PartView::Iso};
   for (const render::PartView view : pictures.views)
     if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);
   for (const render::PartView view : views) {
     image.view = view;
-    render::RgbImage pixels = render::partImage(run.part, run.job.toolpath, image);
+    render::RgbImage pixels = render::partImage(run.part, toolpath, image);
     drawn.files.push_back({pictureFileName(view), pictureFileName(view) + ": the " + std::string(render::viewName(view)) + " view",
                            render::encodePng(pixels)});
     if (view == render::PartView::Iso && pictures.thumbnailWidthPx) drawn.partPixels = std::move(pixels);
@@ -286,7 +305,7 @@ DrawnPictures drawPictures(const SimulatedRun& run, const RunOptions& options) {
     const render::CloseUpRegion region = render::closeUpRegion(box, pictures.widthPx, pictures.heightPx, run.figures.voxelMm);
     const TriangleMesh closeUpMesh = run.partStock().mesh(region.low, region.high, region.subdivisions);
     drawn.files.push_back({"thread.png", "thread.png: a close-up of the thread of line " + std::to_string(thread.programmed.line),
-                           render::encodePng(render::partImage(closeUpMesh, run.job.toolpath, closeUp))});
+                           render::encodePng(render::partImage(closeUpMesh, toolpath, closeUp))});
     break;
   }
   return drawn;
@@ -303,12 +322,14 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   // staged after them, so that the files are written in one order whatever the machine's
   // speed. The display is made sure of from this thread: an Xvfb started from the drawing
   // thread would end with it (it dies with the thread that started it).
+  // The toolpath as drawn: bounded, whatever the program's length.
+  const interp::Toolpath drawnToolpath = run.drawn ? run.drawn->toolpath(run.job.toolpath) : interp::Toolpath{};
   std::future<DrawnPictures> drawing;
   if (wanted.png) {
     render::ensureDisplay();
-    drawing = std::async(std::launch::async, [&run, &options, &timing] {
+    drawing = std::async(std::launch::async, [&run, &drawnToolpath, &options, &timing] {
       Stopwatch drawClock;
-      DrawnPictures drawn = drawPictures(run, options);
+      DrawnPictures drawn = drawPictures(run, drawnToolpath, options);
       timing.renderS = drawClock.lap();
       return drawn;
     });
@@ -324,7 +345,7 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
         else interp::writeToolpathCsv(run.job.toolpath, csv);
       });
     });
-  if (wanted.vtp) out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(run.job.toolpath, file); });
+  if (wanted.vtp) out.write("toolpath.vtp", [&](const Path& file) { render::writeToolpathVtp(*run.moves, file); });
   timing.writeS += writing.lap();
   if (drawing.valid()) {
     DrawnPictures drawn = drawing.get();
@@ -338,10 +359,10 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   // After the pictures, not beside them: their copies of the mesh and these would add up to
   // the run's peak memory (a Φ300×600 bar at 0.2 mm: 2.53 times its grid's memory, 2.20 without).
   if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
-    run.modelGlb = render::partGlb(run.part, run.job.toolpath);
+    run.modelGlb = render::partGlb(run.part, drawnToolpath);
   for (const std::string& format : options.exports) {
     out.write("part." + format, [&](const Path& file) {
-      if (format == "gltf") render::writePartGltf(run.part, run.job.toolpath, file);
+      if (format == "gltf") render::writePartGltf(run.part, drawnToolpath, file);
       if (format == "glb") render::writeFileBytes(run.modelGlb, file);
       if (format == "ply") render::writePartPly(run.part, file);
       if (format == "obj") render::writePartObj(run.part, file);
@@ -359,15 +380,20 @@ void stageThumbnail(const RunOptions& options, const render::RgbImage& picture, 
   });
 }
 
+void useBlockRows(const SimulatedRun& run, const std::function<void(const sim::BlockRows&)>& use) {
+  if (run.blockRows) return use(*run.blockRows);
+  use(sim::HeldBlockRows(run.figures.simulation.blocks));
+}
+
 void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report, StagedOutput& out) {
   using Path = std::filesystem::path;
-  const sim::HeldBlockRows held(run.figures.simulation.blocks);
-  const sim::BlockRows& blocks = run.blockRows ? static_cast<const sim::BlockRows&>(*run.blockRows) : held;
-  out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
-  if (run.outputs.html)
-    out.write("report.html", [&](const Path& file) {
-      writeReportHtml(report, blocks, run.job.programText.text().view(), run.pictures, run.modelGlb, file);
-    });
+  useBlockRows(run, [&](const sim::BlockRows& blocks) {
+    out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
+    if (run.outputs.html)
+      out.write("report.html", [&](const Path& file) {
+        writeReportHtml(report, blocks, run.job.programText.text(), run.pictures, run.modelGlb, file);
+      });
+  });
 }
 
 // The run keepUntilExit keeps. A variable other files could read, so that the compiler keeps

@@ -14,7 +14,9 @@
 #include "app/report_html.hpp"
 #include "app/staged_output.hpp"
 #include "geometry/triangle_mesh.hpp"
+#include "interp/move_spool.hpp"
 #include "interp/toolpath_csv_spool.hpp"
+#include "render/drawn_toolpath.hpp"
 #include "render/rgb_image.hpp"
 #include "sim/block_rows.hpp"
 #include "sim/stock.hpp"
@@ -54,6 +56,11 @@ struct SimulatedRun {
   std::unique_ptr<interp::ToolpathCsvSpool> csv;
   // A streamed run's report rows (figures.simulation.blocks is empty then); null otherwise.
   std::unique_ptr<sim::SpooledBlockRows> blockRows;
+  // Every move, spooled, when something reads them all after the simulation (toolpath.vtp,
+  // check's gouge causes and process figures); null otherwise.
+  std::unique_ptr<interp::MoveSpool> moves;
+  // The toolpath as the pictures and the 3D view draw it, when they are asked for; null otherwise.
+  std::unique_ptr<render::DrawnToolpath> drawn;
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
   /// The finished part: the piece that parted off, or else the stock.
@@ -63,19 +70,19 @@ struct SimulatedRun {
 sim::ToolOutlines outlinesOf(const job::Setup& setup);
 sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
 
-/// Whether the files `options` asks for need every move once the simulation is done (the
-/// pictures and report.html draw the toolpath, toolpath.vtp and glTF/GLB hold it, --animate
-/// and --at-line read it whole).
-bool keepsMoves(const RunOptions& options);
-
 /// Reads the setup and program, checks the grid and simulates (progress on a terminal);
 /// records the cut into `out` when options.animation asks and `out` is given. The moves are
-/// kept in run.job.toolpath when `keepMoves` or keepsMoves(options) says; otherwise they
-/// stream from the interpreter into the simulation (and toolpath.csv's spool), and nothing is
-/// held for each (what is held for each block: its report row, sim::BlockRemoval).
+/// kept in run.job.toolpath when --animate or --at-line asks; otherwise they stream from the
+/// interpreter into the simulation (and toolpath.csv's spool), and nothing is held for each
+/// (what is held for each block: its report row, sim::BlockRemoval). Either way they are
+/// spooled into run.moves when toolpath.vtp is asked for or `spoolMoves` says, and drawn into
+/// run.drawn when a picture, report.html or glTF/GLB is.
 /// Bad input: the diagnostics are printed and nullopt returned.
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out,
-                                            bool keepMoves);
+                                            bool spoolMoves = false);
+
+/// The run's report rows, wherever they are (spooled, or in figures.simulation.blocks), to `use`.
+void useBlockRows(const SimulatedRun& run, const std::function<void(const sim::BlockRows&)>& use);
 
 /// Meshes the part into run.part, and after a part-off the stub into run.stub (figures: mesh
 /// volumes, triangles, time).

@@ -26,6 +26,25 @@ class SpoolFile {
   /// std::runtime_error if the file failed (a full disk). Appending may go on after.
   void readBack(std::size_t chunkBytes, const std::function<void(std::string_view chunk)>& take) const;
 
+  /// Everything appended so far, read from the start as the caller asks for it (beside
+  /// another spool's readBack: two spools read in step). Nothing may be appended, nor another
+  /// reader opened on the same spool, while it lives; appending goes on at the end after it.
+  class Reader {
+   public:
+    /// Throws std::runtime_error if the file failed (a full disk).
+    explicit Reader(const SpoolFile& spool);
+    ~Reader();
+    Reader(const Reader&) = delete;
+    Reader& operator=(const Reader&) = delete;
+    /// Up to `size` more bytes into `bytes`: how many (fewer only at the end). Throws
+    /// std::runtime_error if the file cannot be read.
+    std::size_t read(void* bytes, std::size_t size);
+
+   private:
+    const SpoolFile& spool_;
+    long end_;
+  };
+
  private:
   std::string what_;
   std::unique_ptr<std::FILE, decltype(&std::fclose)> file_;

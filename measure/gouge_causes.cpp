@@ -10,10 +10,11 @@ namespace {
 
 constexpr std::size_t kMaxProbesPerRegion = 400;
 
-struct Swept {
-  std::vector<ConvexPolygon> pieces;
-  RZ lower, upper;
-  int line;
+// A point of a gouge region, and whether a move has covered it yet.
+struct Probe {
+  RZ at;
+  std::size_t region;
+  bool covered = false;
 };
 
 bool barHeld(const RZ& p, const sim::StockSpec& stock) {
@@ -23,44 +24,45 @@ bool barHeld(const RZ& p, const sim::StockSpec& stock) {
 
 }  // namespace
 
-void attributeGouges(DeviationReport& report, const interp::Toolpath& toolpath, const sim::ToolOutlines& tools,
+void attributeGouges(DeviationReport& report, const interp::MoveSpool& moves, const sim::ToolOutlines& tools,
                      const sim::StockSpec& stock, double voxelMm) {
-  std::vector<Swept> swept;
-  for (const interp::Move& move : toolpath.moves) {
-    const auto tool = tools.find(move.tool);
-    if (tool == tools.end()) continue;  // interp checks T words; sim would have thrown
-    Swept s{sim::sweptPieces(move, tool->second, voxelMm), {0, 0}, {0, 0}, move.line};
-    if (s.pieces.empty()) continue;  // a dwell sweeps nothing new
-    s.lower = s.pieces.front().lowerBound();
-    s.upper = s.pieces.front().upperBound();
-    for (const auto& piece : s.pieces) {
-      s.lower = s.lower.cwiseMin(piece.lowerBound());
-      s.upper = s.upper.cwiseMax(piece.upperBound());
-    }
-    swept.push_back(std::move(s));
-  }
-  for (DeviationRegion& region : report.regions) {
+  std::vector<Probe> probes;
+  for (std::size_t r = 0; r < report.regions.size(); ++r) {
+    const DeviationRegion& region = report.regions[r];
     if (!region.gouge) continue;
-    std::set<int> lines;
     const std::size_t stride = std::max<std::size_t>(1, region.midpoints.size() / kMaxProbesPerRegion);
-    for (std::size_t n = 0; n < region.midpoints.size(); n += stride) {
-      const RZ& probe = region.midpoints[n];
-      if (!barHeld(probe, stock)) continue;
-      for (const Swept& s : swept) {
-        if (probe.y() < s.lower.y() || probe.y() > s.upper.y() || probe.x() > std::max(s.upper.x(), -s.lower.x())) continue;
-        const bool covers = std::any_of(s.pieces.begin(), s.pieces.end(),
-                                        [&](const ConvexPolygon& piece) {  // a piece across the axis revolves with its mirror image
-                                          return piece.signedDistance(probe) < 0 ||
-                                                 piece.signedDistance(RZ(-probe.x(), probe.y())) < 0;
-                                        });
-        if (covers) {
-          lines.insert(s.line);
-          break;
-        }
+    for (std::size_t n = 0; n < region.midpoints.size(); n += stride)
+      if (barHeld(region.midpoints[n], stock)) probes.push_back({region.midpoints[n], r});
+  }
+  std::vector<std::set<int>> lines(report.regions.size());
+  std::size_t uncovered = probes.size();
+  moves.forEach([&](const interp::Move& move) {
+    if (uncovered == 0) return;
+    const auto tool = tools.find(move.tool);
+    if (tool == tools.end()) return;  // interp checks T words; sim would have thrown
+    const std::vector<ConvexPolygon> pieces = sim::sweptPieces(move, tool->second, voxelMm);
+    if (pieces.empty()) return;  // a dwell sweeps nothing new
+    RZ lower = pieces.front().lowerBound(), upper = pieces.front().upperBound();
+    for (const auto& piece : pieces) {
+      lower = lower.cwiseMin(piece.lowerBound());
+      upper = upper.cwiseMax(piece.upperBound());
+    }
+    for (Probe& probe : probes) {
+      const RZ& p = probe.at;
+      if (probe.covered || p.y() < lower.y() || p.y() > upper.y() || p.x() > std::max(upper.x(), -lower.x())) continue;
+      const bool covers = std::any_of(pieces.begin(), pieces.end(),
+                                      [&](const ConvexPolygon& piece) {  // a piece across the axis revolves with its mirror image
+                                        return piece.signedDistance(p) < 0 || piece.signedDistance(RZ(-p.x(), p.y())) < 0;
+                                      });
+      if (covers) {
+        lines[probe.region].insert(move.line);
+        probe.covered = true;
+        --uncovered;
       }
     }
-    region.lines.assign(lines.begin(), lines.end());
-  }
+  });
+  for (std::size_t r = 0; r < report.regions.size(); ++r)
+    if (report.regions[r].gouge) report.regions[r].lines.assign(lines[r].begin(), lines[r].end());
 }
 
 }  // namespace lathesim::measure

@@ -8,15 +8,16 @@
 // bar never held (the drawing asks for more than the stock has) has no cause.
 
 #include "measure/deviation.hpp"
-#include "interp/move.hpp"
+#include "interp/move_spool.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock_spec.hpp"
 
 namespace lathesim::measure {
 
 /// Fills `lines` of every gouge region of `report` (sorted, each line once). Moves sweep as
-/// in the simulation at `voxelMm` (sim/move_sweep.hpp).
-void attributeGouges(DeviationReport& report, const interp::Toolpath& toolpath, const sim::ToolOutlines& tools,
+/// in the simulation at `voxelMm` (sim/move_sweep.hpp); one pass over them, each swept and
+/// let go in turn.
+void attributeGouges(DeviationReport& report, const interp::MoveSpool& moves, const sim::ToolOutlines& tools,
                      const sim::StockSpec& stock, double voxelMm);
 
 }  // namespace lathesim::measure

@@ -10,8 +10,8 @@
 
 #include <vector>
 
-#include "interp/move.hpp"
-#include "sim/simulate.hpp"
+#include "interp/move_spool.hpp"
+#include "sim/block_rows.hpp"
 
 namespace lathesim::measure {
 
@@ -33,7 +33,10 @@ struct ProcessFigures {
 /// The length of a move's path (mm): arcs along the arc, dwells 0.
 double pathLengthMm(const interp::Move& move);
 
-ProcessFigures processFigures(const interp::Toolpath& toolpath, const sim::SimulationResult& simulation,
-                              double voxelMm);
+/// From the moves and the simulation's rows of the same run, read in step: row k is the k-th
+/// run of consecutive moves of one block (sim/simulation.hpp cuts them so). Holds two bits a
+/// source block and a total for each block run more than once (a subprogram's, a loop's),
+/// not a figure a move. Throws std::logic_error if the rows are not the moves'.
+ProcessFigures processFigures(const interp::MoveSpool& moves, const sim::BlockRows& rows, double voxelMm);
 
 }  // namespace lathesim::measure

@@ -11,16 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkDoubleArray.h>
-#include <vtkIntArray.h>
-#include <vtkNew.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
 
-#include "render/move_points.hpp"
 
 namespace lathesim::render {
 namespace {
@@ -95,69 +86,6 @@ void writeBinaryStl(const TriangleMesh& mesh, const std::filesystem::path& stl) 
   }
   out.close();
   if (!out) throw std::runtime_error("cannot write " + stl.string() + ": " + std::strerror(errno));
-}
-
-// The `kind` cell value: 0 rapid, 1 feed, 2 clockwise arc (G02), 3 counter-clockwise arc
-// (G03), 4 dwell, 5 thread.
-int vtpKind(interp::MoveKind kind) {
-  switch (kind) {
-    case interp::MoveKind::Rapid: return 0;
-    case interp::MoveKind::Feed: return 1;
-    case interp::MoveKind::ArcCW: return 2;
-    case interp::MoveKind::ArcCCW: return 3;
-    case interp::MoveKind::Dwell: return 4;
-    case interp::MoveKind::Thread: return 5;
-  }
-  return 1;
-}
-
-void writeToolpathVtp(const interp::Toolpath& toolpath, const std::filesystem::path& vtp) {
-  const auto moveCount = static_cast<vtkIdType>(toolpath.moves.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIntArray> line;
-  line->SetName("line");
-  line->SetNumberOfValues(moveCount);
-  vtkNew<vtkIntArray> kind;
-  kind->SetName("kind");
-  kind->SetNumberOfValues(moveCount);
-  vtkNew<vtkDoubleArray> feed;
-  feed->SetName("feed");
-  feed->SetNumberOfValues(moveCount);
-
-  for (vtkIdType i = 0; i < moveCount; ++i) {
-    const interp::Move& m = toolpath.moves[static_cast<std::size_t>(i)];
-    // One cell per move: a line, or for an arc a polyline through points along it.
-    std::vector<vtkIdType> ids;
-    for (const RZ& p : movePoints(m)) ids.push_back(points->InsertNextPoint(p.x(), 0.0, p.y()));
-    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    line->SetValue(i, m.line);
-    kind->SetValue(i, vtpKind(m.kind));
-    feed->SetValue(i, m.feed);
-  }
-
-  vtkNew<vtkPolyData> polyData;
-  polyData->SetPoints(points);
-  polyData->SetLines(lines);
-  polyData->GetCellData()->AddArray(line);
-  polyData->GetCellData()->AddArray(kind);
-  polyData->GetCellData()->AddArray(feed);
-
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  const std::string path = vtp.string();
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(polyData);
-  writer->SetDataModeToBinary();  // base64 inside the XML; zlib-compressed (small data)
-  // Written to memory and then to the file here: VTK's own file writing reports a full disk
-  // only on stderr and leaves the file short.
-  writer->WriteToOutputStringOn();
-  if (writer->Write() != 1) throw std::runtime_error("cannot write " + path + ": VTK could not encode the toolpath");
-  const std::string xml = writer->GetOutputString();
-  std::ofstream out(vtp, std::ios::binary | std::ios::trunc);
-  out << xml;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
 }
 
 }  // namespace lathesim::render

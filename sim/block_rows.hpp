@@ -42,4 +42,24 @@ class SpooledBlockRows final : public BlockRows {
   interp::SpoolFile file_{"the blocks' rows"};
 };
 
+/// Which numbers (blocks, lines) a pass over the rows meets more than once, two bits a number:
+/// for the readers that sum apart the rows of what runs several times (a subprogram, a loop)
+/// and take the others one by one as they come, instead of holding a sum for every number.
+class MetTwice {
+ public:
+  void note(int number) {
+    const auto n = static_cast<std::size_t>(number);
+    if (n >= once_.size()) once_.resize(n + 1), twice_.resize(n + 1);
+    if (once_[n]) twice_[n] = true;
+    once_[n] = true;
+  }
+  bool has(int number) const {
+    const auto n = static_cast<std::size_t>(number);
+    return n < twice_.size() && twice_[n];
+  }
+
+ private:
+  std::vector<bool> once_, twice_;
+};
+
 }  // namespace lathesim::sim

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 namespace lathesim::measure {
 namespace {
@@ -21,6 +23,12 @@ interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int tool, do
   return m;
 }
 
+interp::MoveSpool spooled(const interp::Toolpath& path) {
+  interp::MoveSpool spool;
+  for (const interp::Move& m : path.moves) spool.take(m);
+  return spool;
+}
+
 TEST(ProcessFigures, LengthsAirAndRemovalPerTool) {
   interp::Toolpath path;
   // Block 0, tool 1: rapid 10 mm down Z, then a feed 20 mm along −Z that removes 100 mm³.
@@ -35,9 +43,8 @@ TEST(ProcessFigures, LengthsAirAndRemovalPerTool) {
   // Block 2, tool 2: a 3-4-5 feed removing 50 mm³.
   path.moves.push_back(move(interp::MoveKind::Feed, {30, -10}, {33, -14}, 2, 2, 0.5));
 
-  sim::SimulationResult sim;
-  sim.blocks = {{0, 1, 1, 100.0}, {1, 2, 1, 0.0}, {2, 3, 1, 50.0}};
-  const ProcessFigures f = processFigures(path, sim, 0.25);
+  const std::vector<sim::BlockRemoval> rows{{0, 1, 1, 100.0}, {1, 2, 1, 0.0}, {2, 3, 1, 50.0}};
+  const ProcessFigures f = processFigures(spooled(path), sim::HeldBlockRows(rows), 0.25);
   EXPECT_DOUBLE_EQ(f.rapidPathMm, 10.0);
   EXPECT_NEAR(f.feedPathMm, 20.0 + 5 * M_PI + 5.0, 1e-9);
   EXPECT_DOUBLE_EQ(f.rapidTimeS, 1.0);
@@ -50,6 +57,35 @@ TEST(ProcessFigures, LengthsAirAndRemovalPerTool) {
   EXPECT_DOUBLE_EQ(f.removedPerTool[0].removedMm3, 100.0);
   EXPECT_EQ(f.removedPerTool[1].tool, 2);
   EXPECT_DOUBLE_EQ(f.removedPerTool[1].removedMm3, 50.0);
+}
+
+// A block run twice (a subprogram's) is air only if both runs together removed less than a
+// voxel (0.5³ = 0.125 mm³): each run here removes 0.1 mm³, 0.2 in all, so neither run's feed is
+// air; its removal goes to the tool of its first run's first move (3), both runs' together.
+// Block 1, run once between them, removes 0.1 mm³ with tool 4: air.
+TEST(ProcessFigures, BlockRunTwiceIsAirByWhatBothRunsRemoved) {
+  interp::Toolpath path;
+  path.moves.push_back(move(interp::MoveKind::Feed, {30, 0}, {30, -2}, 7, 3, 1.0));
+  path.moves.push_back(move(interp::MoveKind::Feed, {30, -2}, {30, -5}, 1, 4, 1.0));
+  path.moves.push_back(move(interp::MoveKind::Feed, {30, -5}, {30, -9}, 7, 5, 1.0));
+  const std::vector<sim::BlockRemoval> rows{{7, 8, 1, 0.1}, {1, 2, 1, 0.1}, {7, 8, 1, 0.1}};
+  const ProcessFigures f = processFigures(spooled(path), sim::HeldBlockRows(rows), 0.5);
+  EXPECT_DOUBLE_EQ(f.feedPathMm, 9.0);
+  EXPECT_EQ(f.airFeedMoves, 1);
+  EXPECT_DOUBLE_EQ(f.airFeedPathMm, 3.0);
+  ASSERT_EQ(f.removedPerTool.size(), 2u);
+  EXPECT_EQ(f.removedPerTool[0].tool, 3);
+  EXPECT_DOUBLE_EQ(f.removedPerTool[0].removedMm3, 0.2);
+  EXPECT_EQ(f.removedPerTool[1].tool, 4);
+  EXPECT_DOUBLE_EQ(f.removedPerTool[1].removedMm3, 0.1);
+}
+
+// Rows that are not the moves' blocks are a broken invariant, said at once.
+TEST(ProcessFigures, RowsOfOtherBlocksAreAnError) {
+  interp::Toolpath path;
+  path.moves.push_back(move(interp::MoveKind::Feed, {30, 0}, {30, -2}, 0, 1, 1.0));
+  const std::vector<sim::BlockRemoval> rows{{3, 4, 1, 0.0}};
+  EXPECT_THROW(processFigures(spooled(path), sim::HeldBlockRows(rows), 0.5), std::logic_error);
 }
 
 // The clockwise way round between the same points is the other three quarters: 15π.

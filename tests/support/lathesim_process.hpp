@@ -1,6 +1,8 @@
 #pragma once
 // Running the lathesim command as a process from a test, in a temporary folder of its own.
 
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -73,6 +75,39 @@ inline ProcessOutcome runProcess(const fs::path& binary, const std::vector<std::
   outcome.out = readFile(outFile);
   outcome.err = readFile(errFile);
   fs::remove(outFile);
+  fs::remove(errFile);
+  return outcome;
+}
+
+struct MeasuredOutcome {
+  int status = -1;     // the exit status, or -1 if the process did not exit normally
+  double peakMb = 0;   // its peak resident memory, as the kernel counted it (wait4's ru_maxrss)
+  std::string err;
+};
+
+/// Runs `binary` with `args` (stdout thrown away, stderr captured through a file in `scratch`)
+/// and measures its peak memory from outside: the whole process, whatever it notes itself, and
+/// the children it waited for (the larger counts).
+inline MeasuredOutcome runMeasured(const fs::path& binary, const std::vector<std::string>& args, const fs::path& scratch) {
+  const std::string errFile = (scratch / "stderr.txt").string(), program = binary.string();
+  std::vector<char*> argv{const_cast<char*>(program.c_str())};
+  for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
+  argv.push_back(nullptr);
+  MeasuredOutcome outcome;
+  const pid_t pid = ::fork();
+  if (pid < 0) return outcome;
+  if (pid == 0) {  // only async-signal-safe calls until exec
+    const int out = ::open("/dev/null", O_WRONLY), err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
+    ::execv(program.c_str(), argv.data());
+    ::_exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (::wait4(pid, &status, 0, &usage) != pid) return outcome;
+  if (WIFEXITED(status)) outcome.status = WEXITSTATUS(status);
+  outcome.peakMb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
+  outcome.err = readFile(errFile);
   fs::remove(errFile);
   return outcome;
 }
