@@ -5,8 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,13 +16,6 @@ namespace lathesim::app {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string fileText(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A report with nested objects and arrays (empty ones too) before and after "blocks", and a
 // note quoting bytes that are not UTF-8.
@@ -53,14 +44,14 @@ TEST(ReportJson, RowsWrittenInPlaceGiveTheTextOfTheWholeTree) {
     for (const sim::BlockRemoval& b : rows)
       whole["blocks"].push_back(
           {{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}});
-    EXPECT_EQ(fileText(file), whole.dump(2, ' ', false, Json::error_handler_t::replace) + "\n") << count << " rows";
+    EXPECT_EQ(test::readFile(file), whole.dump(2, ' ', false, Json::error_handler_t::replace) + "\n") << count << " rows";
   }
 }
 
 TEST(ReportJson, AnEmptyReportIsAnEmptyObject) {
   test::ScratchDir dir("report-json-empty");
   writeReport(Json::object(), sim::HeldBlockRows({}), dir.path() / "report.json");
-  EXPECT_EQ(fileText(dir.path() / "report.json"), "{}\n");
+  EXPECT_EQ(test::readFile(dir.path() / "report.json"), "{}\n");
 }
 
 }  // namespace
