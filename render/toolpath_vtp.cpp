@@ -7,9 +7,9 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "render/move_points.hpp"
+#include "render/zlib_appended_array.hpp"
 
 namespace lathesim::render {
 namespace {
@@ -29,89 +29,54 @@ std::int32_t vtpKind(interp::MoveKind kind) {
   return 1;
 }
 
-// One array of the appended data: its byte count (the UInt64 header), then its values,
-// written through a buffer as a pass over the moves makes them.
-class AppendedArray {
- public:
-  AppendedArray(std::ofstream& out, std::uint64_t bytes) : out_(out) { out_.write(reinterpret_cast<const char*>(&bytes), sizeof bytes); }
-  ~AppendedArray() { flush(); }
-  template <typename T>
-  void add(T value) {
-    const std::size_t at = buffer_.size();
-    buffer_.resize(at + sizeof value);
-    std::memcpy(buffer_.data() + at, &value, sizeof value);
-    if (buffer_.size() >= kBufferBytes) flush();
-  }
-
- private:
-  static constexpr std::size_t kBufferBytes = 1 << 16;
-  void flush() {
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
-  }
-  std::ofstream& out_;
-  std::vector<char> buffer_;
-};
-
 }  // namespace
 
 void writeToolpathVtp(const interp::MoveSpool& moves, const std::filesystem::path& vtp) {
-  const std::uint64_t cells = moves.size();
-  std::uint64_t points = 0;
-  moves.forEach([&](const interp::Move& m) { points += movePoints(m).size(); });
+  // The one pass over the moves, each array compressed as it fills.
+  ZLibAppendedArray line("toolpath.vtp's line numbers"), kind("toolpath.vtp's move kinds"), feed("toolpath.vtp's feeds");
+  ZLibAppendedArray xyz("toolpath.vtp's points"), connectivity("toolpath.vtp's connectivity"), offsets("toolpath.vtp's offsets");
+  std::int64_t points = 0;
+  moves.forEach([&](const interp::Move& m) {
+    line.add(static_cast<std::int32_t>(m.line));
+    kind.add(vtpKind(m.kind));
+    feed.add(m.feed);
+    for (const RZ& p : movePoints(m)) {
+      xyz.add(p.x()), xyz.add(0.0), xyz.add(p.y());
+      connectivity.add(points++);  // each move's own points, in the order written
+    }
+    offsets.add(points);  // where the move's cell ends
+  });
 
-  // Where each array's header starts in the appended data, in the order they are written.
-  const std::uint64_t header = sizeof(std::uint64_t);
-  const std::uint64_t lineAt = 0, kindAt = lineAt + header + 4 * cells, feedAt = kindAt + header + 4 * cells;
-  const std::uint64_t pointsAt = feedAt + header + 8 * cells, connectivityAt = pointsAt + header + 24 * points;
-  const std::uint64_t offsetsAt = connectivityAt + header + 8 * points;
-  const auto array = [](const char* type, const char* name, std::uint64_t offset, const char* components = "") {
-    return std::string("        <DataArray type=\"") + type + "\" Name=\"" + name + "\"" + components +
-           " format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
+  // Each array's element, with its place in the appended data: made in the order the arrays
+  // are copied there below.
+  std::uint64_t appended = 0;
+  const auto element = [&appended](ZLibAppendedArray& data, const char* type, const char* name, const char* components = "") {
+    data.finish();
+    const std::string xml = std::string("        <DataArray type=\"") + type + "\" Name=\"" + name + "\"" + components +
+                                " format=\"appended\" offset=\"" + std::to_string(appended) + "\"/>\n";
+    appended += data.appendedBytes();
+    return xml;
   };
+  std::string header = "<?xml version=\"1.0\"?>\n"
+                       "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\""
+                       " compressor=\"vtkZLibDataCompressor\">\n"
+                       "  <PolyData>\n"
+                       "    <Piece NumberOfPoints=\"" + std::to_string(points) + "\" NumberOfVerts=\"0\" NumberOfLines=\"" +
+                       std::to_string(moves.size()) + "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+                       "      <CellData>\n";
+  header += element(line, "Int32", "line");
+  header += element(kind, "Int32", "kind");
+  header += element(feed, "Float64", "feed");
+  header += "      </CellData>\n      <Points>\n";
+  header += element(xyz, "Float64", "Points", " NumberOfComponents=\"3\"");
+  header += "      </Points>\n      <Lines>\n";
+  header += element(connectivity, "Int64", "connectivity");
+  header += element(offsets, "Int64", "offsets");
+  header += "      </Lines>\n    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
+
   std::ofstream out(vtp, std::ios::binary | std::ios::trunc);
-  out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-      << "  <PolyData>\n"
-      << "    <Piece NumberOfPoints=\"" << points << "\" NumberOfVerts=\"0\" NumberOfLines=\"" << cells
-      << "\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
-      << "      <CellData>\n"
-      << array("Int32", "line", lineAt) << array("Int32", "kind", kindAt) << array("Float64", "feed", feedAt)
-      << "      </CellData>\n"
-      << "      <Points>\n"
-      << array("Float64", "Points", pointsAt, " NumberOfComponents=\"3\"") << "      </Points>\n"
-      << "      <Lines>\n"
-      << array("Int64", "connectivity", connectivityAt) << array("Int64", "offsets", offsetsAt) << "      </Lines>\n"
-      << "    </Piece>\n"
-      << "  </PolyData>\n"
-      << "  <AppendedData encoding=\"raw\">\n   _";
-  {
-    AppendedArray line(out, 4 * cells);
-    moves.forEach([&](const interp::Move& m) { line.add(static_cast<std::int32_t>(m.line)); });
-  }
-  {
-    AppendedArray kind(out, 4 * cells);
-    moves.forEach([&](const interp::Move& m) { kind.add(vtpKind(m.kind)); });
-  }
-  {
-    AppendedArray feed(out, 8 * cells);
-    moves.forEach([&](const interp::Move& m) { feed.add(m.feed); });
-  }
-  {
-    AppendedArray xyz(out, 24 * points);
-    moves.forEach([&](const interp::Move& m) {
-      for (const RZ& p : movePoints(m)) xyz.add(p.x()), xyz.add(0.0), xyz.add(p.y());
-    });
-  }
-  {
-    AppendedArray connectivity(out, 8 * points);  // each move's own points, in the order written
-    for (std::uint64_t id = 0; id < points; ++id) connectivity.add(static_cast<std::int64_t>(id));
-  }
-  {
-    AppendedArray offsets(out, 8 * cells);  // where each cell's points end
-    std::int64_t end = 0;
-    moves.forEach([&](const interp::Move& m) { offsets.add(end += static_cast<std::int64_t>(movePoints(m).size())); });
-  }
+  out << header;
+  for (const ZLibAppendedArray* data : {&line, &kind, &feed, &xyz, &connectivity, &offsets}) data->copyTo(out);
   out << "\n  </AppendedData>\n</VTKFile>\n";
   out.close();
   if (!out) throw std::runtime_error("cannot write " + vtp.string() + ": " + std::strerror(errno));
