@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -115,35 +116,34 @@ TEST(MoveSpool, ReplaysExactlyTheMovesWritten) {
   EXPECT_FALSE(written[2].spindleLimitRpm.has_value());
 }
 
+// Copies of one move into `spool`, on lines `from` to `to` - 1.
+void takeLines(MoveSpool& spool, int from, int to) {
+  Move m = someMoves()[0];
+  for (m.line = from; m.line < to; ++m.line) spool.take(m);
+}
+
+// The line of the reader's next move, or nullopt after the last.
+std::optional<int> nextLine(MoveSpool::Reader& reader) {
+  const std::optional<Move> move = reader.next();
+  return move ? std::optional<int>(move->line) : std::nullopt;
+}
+
 // Writing may go on after a read; the reader reads at its own pace, 10 000 moves past any
 // buffer, beside another spool's read.
 TEST(MoveSpool, ReaderReadsInStepAndWritingGoesOnAfter) {
   MoveSpool first, second;
-  Move m = someMoves()[0];
-  for (int i = 0; i < 5000; ++i) {
-    m.line = i;
-    first.take(m);
-    second.take(m);
-  }
+  takeLines(first, 0, 5000);
+  takeLines(second, 0, 5000);
   first.forEach([](const Move&) {});
-  for (int i = 5000; i < 10000; ++i) {
-    m.line = i;
-    first.take(m);
-  }
+  takeLines(first, 5000, 10000);
   MoveSpool::Reader reader(first);
   int expected = 0;
   second.forEach([&](const Move& s) {
-    const std::optional<Move> f = reader.next();
-    ASSERT_TRUE(f.has_value());
-    EXPECT_EQ(f->line, s.line);
-    EXPECT_EQ(f->line, expected++);
+    EXPECT_EQ(s.line, expected);
+    EXPECT_EQ(nextLine(reader), expected++);
   });
-  for (; expected < 10000; ++expected) {
-    const std::optional<Move> f = reader.next();
-    ASSERT_TRUE(f.has_value());
-    EXPECT_EQ(f->line, expected);
-  }
-  EXPECT_FALSE(reader.next().has_value());
+  for (; expected < 10000; ++expected) EXPECT_EQ(nextLine(reader), expected);
+  EXPECT_EQ(nextLine(reader), std::nullopt);
 }
 
 TEST(MoveSpool, RefusesAMoveStillAskingForACorner) {
