@@ -23,10 +23,20 @@ interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int tool, do
   return m;
 }
 
-interp::MoveSpool spooled(const interp::Toolpath& path) {
+// The figures of `path`'s moves, spooled as a run spools them, against the simulation's rows.
+ProcessFigures figuresOf(const interp::Toolpath& path, const std::vector<sim::BlockRemoval>& rows, double voxelMm) {
   interp::MoveSpool spool;
   for (const interp::Move& m : path.moves) spool.take(m);
-  return spool;
+  return processFigures(spool, sim::HeldBlockRows(rows), voxelMm);
+}
+
+// The removal per tool is `expected`, in its order (by tool number).
+void expectRemovedPerTool(const ProcessFigures& f, const std::vector<ToolRemoval>& expected) {
+  ASSERT_EQ(f.removedPerTool.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(f.removedPerTool[i].tool, expected[i].tool) << i;
+    EXPECT_DOUBLE_EQ(f.removedPerTool[i].removedMm3, expected[i].removedMm3) << i;
+  }
 }
 
 TEST(ProcessFigures, LengthsAirAndRemovalPerTool) {
@@ -43,8 +53,7 @@ TEST(ProcessFigures, LengthsAirAndRemovalPerTool) {
   // Block 2, tool 2: a 3-4-5 feed removing 50 mm³.
   path.moves.push_back(move(interp::MoveKind::Feed, {30, -10}, {33, -14}, 2, 2, 0.5));
 
-  const std::vector<sim::BlockRemoval> rows{{0, 1, 1, 100.0}, {1, 2, 1, 0.0}, {2, 3, 1, 50.0}};
-  const ProcessFigures f = processFigures(spooled(path), sim::HeldBlockRows(rows), 0.25);
+  const ProcessFigures f = figuresOf(path, {{0, 1, 1, 100.0}, {1, 2, 1, 0.0}, {2, 3, 1, 50.0}}, 0.25);
   EXPECT_DOUBLE_EQ(f.rapidPathMm, 10.0);
   EXPECT_NEAR(f.feedPathMm, 20.0 + 5 * M_PI + 5.0, 1e-9);
   EXPECT_DOUBLE_EQ(f.rapidTimeS, 1.0);
@@ -52,11 +61,7 @@ TEST(ProcessFigures, LengthsAirAndRemovalPerTool) {
   EXPECT_EQ(f.airFeedMoves, 1);
   EXPECT_NEAR(f.airFeedPathMm, 5 * M_PI, 1e-9);
   EXPECT_DOUBLE_EQ(f.airFeedTimeS, 4.0);
-  ASSERT_EQ(f.removedPerTool.size(), 2u);
-  EXPECT_EQ(f.removedPerTool[0].tool, 1);
-  EXPECT_DOUBLE_EQ(f.removedPerTool[0].removedMm3, 100.0);
-  EXPECT_EQ(f.removedPerTool[1].tool, 2);
-  EXPECT_DOUBLE_EQ(f.removedPerTool[1].removedMm3, 50.0);
+  expectRemovedPerTool(f, {{1, 100.0}, {2, 50.0}});
 }
 
 // A block run twice (a subprogram's) is air only if both runs together removed less than a
@@ -68,24 +73,18 @@ TEST(ProcessFigures, BlockRunTwiceIsAirByWhatBothRunsRemoved) {
   path.moves.push_back(move(interp::MoveKind::Feed, {30, 0}, {30, -2}, 7, 3, 1.0));
   path.moves.push_back(move(interp::MoveKind::Feed, {30, -2}, {30, -5}, 1, 4, 1.0));
   path.moves.push_back(move(interp::MoveKind::Feed, {30, -5}, {30, -9}, 7, 5, 1.0));
-  const std::vector<sim::BlockRemoval> rows{{7, 8, 1, 0.1}, {1, 2, 1, 0.1}, {7, 8, 1, 0.1}};
-  const ProcessFigures f = processFigures(spooled(path), sim::HeldBlockRows(rows), 0.5);
+  const ProcessFigures f = figuresOf(path, {{7, 8, 1, 0.1}, {1, 2, 1, 0.1}, {7, 8, 1, 0.1}}, 0.5);
   EXPECT_DOUBLE_EQ(f.feedPathMm, 9.0);
   EXPECT_EQ(f.airFeedMoves, 1);
   EXPECT_DOUBLE_EQ(f.airFeedPathMm, 3.0);
-  ASSERT_EQ(f.removedPerTool.size(), 2u);
-  EXPECT_EQ(f.removedPerTool[0].tool, 3);
-  EXPECT_DOUBLE_EQ(f.removedPerTool[0].removedMm3, 0.2);
-  EXPECT_EQ(f.removedPerTool[1].tool, 4);
-  EXPECT_DOUBLE_EQ(f.removedPerTool[1].removedMm3, 0.1);
+  expectRemovedPerTool(f, {{3, 0.2}, {4, 0.1}});
 }
 
 // Rows that are not the moves' blocks are a broken invariant, said at once.
 TEST(ProcessFigures, RowsOfOtherBlocksAreAnError) {
   interp::Toolpath path;
   path.moves.push_back(move(interp::MoveKind::Feed, {30, 0}, {30, -2}, 0, 1, 1.0));
-  const std::vector<sim::BlockRemoval> rows{{3, 4, 1, 0.0}};
-  EXPECT_THROW(processFigures(spooled(path), sim::HeldBlockRows(rows), 0.5), std::logic_error);
+  EXPECT_THROW(figuresOf(path, {{3, 4, 1, 0.0}}, 0.5), std::logic_error);
 }
 
 // The clockwise way round between the same points is the other three quarters: 15π.
