@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "sim/simulate.hpp"
 #include "test_moves.hpp"
 
@@ -102,19 +104,14 @@ void faceTo2(interp::Toolpath& path, int block) {
   path.moves.push_back(blockMove(block, {0, -2}, {0, 5}));
 }
 
-// A cycle start is checked when its block runs, in the order blocks run, not by block number:
-// a subprogram written after M30 has higher numbers than the main program's blocks that run
-// after it. Here the subprogram (block 5) faces the bar, then the main program's cycle (block
-// 1) starts at Z-1: air by then, material before.
-TEST(SimulationWarnings, CycleStartAfterASubprogramIsCheckedWhenItsBlockRuns) {
-  for (const double startZ : {-1.0, -5.0}) {  // in air after the facing; in material still
+// Simulates the path `pathStartingAt` makes with a G90 on line 11 starting at r 10 (X20) and
+// Z `startZ`, after the bar was faced to Z-2: from Z-1, in air by then, it says nothing; from
+// Z-5, in material still, it warns of that start.
+void expectWarnedOnlyOfAStartInMaterial(const std::function<interp::Toolpath(double startZ)>& pathStartingAt) {
+  for (const double startZ : {-1.0, -5.0}) {
+    SCOPED_TRACE(startZ);
     Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
-    interp::Toolpath path;
-    path.blockCount = 6;
-    faceTo2(path, 5);
-    path.moves.push_back(blockMove(1, {30, 5}, {30, 6}));
-    path.cycleStarts.push_back({1, 11, 1, RZ(10, startZ), "G90"});
-    const SimulationResult result = simulate(path, squareTool(), stock);
+    const SimulationResult result = simulate(pathStartingAt(startZ), squareTool(), stock);
     if (startZ == -1.0) {
       EXPECT_TRUE(result.warnings.empty()) << result.warnings.front().message;
     } else {
@@ -125,11 +122,25 @@ TEST(SimulationWarnings, CycleStartAfterASubprogramIsCheckedWhenItsBlockRuns) {
   }
 }
 
-// A cycle in a loop runs its block again: each run's start is checked at that run. The second
-// run (after block 2 faced the bar) starts at Z-1, in air then.
+// A cycle start is checked when its block runs, in the order blocks run, not by block number:
+// a subprogram written after M30 has higher numbers than the main program's blocks that run
+// after it. Here the subprogram (block 5) faces the bar, then the main program's cycle (block
+// 1) starts.
+TEST(SimulationWarnings, CycleStartAfterASubprogramIsCheckedWhenItsBlockRuns) {
+  expectWarnedOnlyOfAStartInMaterial([](double startZ) {
+    interp::Toolpath path;
+    path.blockCount = 6;
+    faceTo2(path, 5);
+    path.moves.push_back(blockMove(1, {30, 5}, {30, 6}));
+    path.cycleStarts.push_back({1, 11, 1, RZ(10, startZ), "G90"});
+    return path;
+  });
+}
+
+// A cycle in a loop runs its block again: each run's start is checked at that run. The first
+// run starts above the face; the second runs after block 2 faced the bar.
 TEST(SimulationWarnings, CycleStartOfEachRunOfALoopIsCheckedAtThatRun) {
-  for (const double secondZ : {-1.0, -5.0}) {
-    Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  expectWarnedOnlyOfAStartInMaterial([](double secondZ) {
     interp::Toolpath path;
     path.blockCount = 3;
     path.moves.push_back(blockMove(1, {30, 5}, {30, 6}));
@@ -137,14 +148,8 @@ TEST(SimulationWarnings, CycleStartOfEachRunOfALoopIsCheckedAtThatRun) {
     path.moves.push_back(blockMove(1, {30, 5}, {30, 6}));
     path.cycleStarts.push_back({1, 11, 1, RZ(10, 5), "G90"});
     path.cycleStarts.push_back({1, 11, 1, RZ(10, secondZ), "G90"});
-    const SimulationResult result = simulate(path, squareTool(), stock);
-    if (secondZ == -1.0) {
-      EXPECT_TRUE(result.warnings.empty()) << result.warnings.front().message;
-    } else {
-      ASSERT_EQ(result.warnings.size(), 1u);
-      EXPECT_NE(result.warnings[0].message.find("G90 starts at X20 Z-5 "), std::string::npos);
-    }
-  }
+    return path;
+  });
 }
 
 TEST(Simulate, BlockTimesAreTheirMovesTimesAndADwellRemovesNothing) {
