@@ -59,13 +59,17 @@ interp::MoveSpool spoolOf(const interp::Toolpath& path) {
   return spool;
 }
 
-TEST(ToolpathVtp, OneCellPerMoveWithLineKindAndFeed) {
-  const interp::Toolpath path = test::rapidThenFeed();
+// The moves written to toolpath.vtp in a scratch folder and read back.
+vtkSmartPointer<vtkPolyData> writtenAndRead(const interp::MoveSpool& moves) {
   test::TempDir dir;
   const auto file = dir.path() / "toolpath.vtp";
-  writeToolpathVtp(spoolOf(path), file);
+  writeToolpathVtp(moves, file);
+  return readVtp(file);
+}
 
-  const vtkSmartPointer<vtkPolyData> data = readVtp(file);
+TEST(ToolpathVtp, OneCellPerMoveWithLineKindAndFeed) {
+  const interp::Toolpath path = test::rapidThenFeed();
+  const vtkSmartPointer<vtkPolyData> data = writtenAndRead(spoolOf(path));
   ASSERT_EQ(data->GetNumberOfCells(), 2);
   ASSERT_EQ(data->GetNumberOfLines(), 2);
 
@@ -105,11 +109,7 @@ TEST(ToolpathVtp, ArcIsOnePolylineCellAlongTheCircle) {
   std::swap(arc.from, arc.to);
   arc.line = 6;
   path.moves.push_back(arc);
-  test::TempDir dir;
-  const auto file = dir.path() / "arcs.vtp";
-  writeToolpathVtp(spoolOf(path), file);
-
-  const vtkSmartPointer<vtkPolyData> data = readVtp(file);
+  const vtkSmartPointer<vtkPolyData> data = writtenAndRead(spoolOf(path));
   ASSERT_EQ(data->GetNumberOfCells(), 4);
   vtkDataArray* kind = data->GetCellData()->GetArray("kind");
   vtkDataArray* feed = data->GetCellData()->GetArray("feed");
@@ -135,10 +135,7 @@ TEST(ToolpathVtp, ArcIsOnePolylineCellAlongTheCircle) {
 }
 
 TEST(ToolpathVtp, EmptyToolpathReadsBackEmpty) {
-  test::TempDir dir;
-  const auto file = dir.path() / "empty.vtp";
-  writeToolpathVtp(interp::MoveSpool{}, file);
-  const vtkSmartPointer<vtkPolyData> data = readVtp(file);
+  const vtkSmartPointer<vtkPolyData> data = writtenAndRead(interp::MoveSpool{});
   EXPECT_EQ(data->GetNumberOfCells(), 0);
   EXPECT_EQ(data->GetNumberOfPoints(), 0);
   ASSERT_NE(data->GetCellData()->GetArray("line"), nullptr);
@@ -161,10 +158,7 @@ class ManyMoves : public testing::TestWithParam<int> {};
 
 TEST_P(ManyMoves, ReadBackWhole) {
   const int moves = GetParam();
-  test::TempDir dir;
-  const auto file = dir.path() / "many.vtp";
-  writeToolpathVtp(zigzag(moves), file);
-  const vtkSmartPointer<vtkPolyData> data = readVtp(file);
+  const vtkSmartPointer<vtkPolyData> data = writtenAndRead(zigzag(moves));
   ASSERT_EQ(data->GetNumberOfCells(), moves);
   ASSERT_EQ(data->GetNumberOfPoints(), 2 * moves);
   vtkCellData* cells = data->GetCellData();
