@@ -74,6 +74,7 @@ struct WriteScratch {
   std::vector<RevolvedRegion::ColumnPlan> plans;
   std::vector<Place> places;
   std::vector<Candidates> found;
+  std::vector<int> reached;  // chunks of the bin being written
 };
 thread_local WriteScratch scratch;
 
@@ -380,18 +381,14 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   // A bin of this many classes or more reads the region through a plan of its place (see
   // RevolvedRegion::planColumn): one edge a piece and cell rather than all of them.
   constexpr int kPlannedClasses = 4;
-  // The chunks of each bin that the change bound reaches (every chunk of the box without one):
+  // The chunks of a bin that the change bound reaches (every chunk of the box without one):
   // a group of chunks at a time, then at each chunk's own cells rather than its centre (a
   // chunk is 8 voxels tall, and a move's sliver of change is often thinner than that). A
   // tool's flanks leave slivers along their whole length, so the box is often wide and the
-  // bound reaches a few of its places.
+  // bound reaches a few of its places. Asked by the task that writes the bin.
   constexpr int kGroup = 8;
-  const int binCount = static_cast<int>(binStart.size()) - 1;
-  std::vector<int> reachedStart(binCount + 1), reached;
-  std::size_t work = 0;  // classes by chunks to write
-  for (int bin = 0; bin < binCount; ++bin) {
-    reachedStart[bin] = static_cast<int>(reached.size());
-    const double rhoMid = (std::floor(rho_[binStart[bin]] / h_) + 0.5) * h_;
+  const auto reachedChunks = [&](double rhoMid, std::vector<int>& reached) {
+    reached.clear();
     for (int group = chunkLow; group <= chunkHigh; group += kGroup) {
       const int groupEnd = std::min(chunkHigh + 1, group + kGroup);
       if (changes) {
@@ -408,9 +405,8 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
         reached.push_back(chunk);
       }
     }
-    work += (reached.size() - reachedStart[bin]) * static_cast<std::size_t>(binStart[bin + 1] - binStart[bin]);
-  }
-  reachedStart[binCount] = static_cast<int>(reached.size());
+  };
+  const int binCount = static_cast<int>(binStart.size()) - 1;
 
   const auto writeBins = [&](const tbb::blocked_range<std::size_t>& range) {
     WriteScratch& mine = scratch;
@@ -426,8 +422,8 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
       const int first = binStart[bin], last = binStart[bin + 1];
       const double rhoMid = (std::floor(rho_[first] / h_) + 0.5) * h_;
       places.clear();
-      for (int r = reachedStart[bin]; r < reachedStart[bin + 1]; ++r) {
-        const int chunk = reached[r];
+      reachedChunks(rhoMid, mine.reached);
+      for (const int chunk : mine.reached) {
         const int k0 = kBase_ + chunk * kChunk;
         RevolvedRegion* const local = &nearby[chunk - chunkLow];
         region.nearInto(rhoMid, (k0 + 0.5 * kChunk) * h_, placeRadius, *local);
@@ -527,6 +523,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     ghostCandidates.insert(ghostCandidates.end(), found.begin(), found.end());
   };
   const tbb::blocked_range<std::size_t> bins(0, binCount);
+  const std::size_t work = static_cast<std::size_t>(chunkHigh - chunkLow + 1) * classCount;  // at most
   if (work < parallel_.work) writeBins(bins);
   else tbb::parallel_for(bins, writeBins);
 
