@@ -490,7 +490,9 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
             }
             continue;
           }
-          if (!w.anyOpen(values)) continue;
+          // Some cell is open, no need to ask: a pooled chunk with none would be uniform at the
+          // band's value, which store() makes a tag (passed over above), and the other tag's
+          // cells (solid for a removal, air for an addition) are all open.
           double psi[kChunk];
           if (plan) local->signedDistanceColumn(*plan, rho_[c], band_, psi);
           else local->signedDistanceColumn(rho_[c], k0 * h_, h_, band_, psi);
