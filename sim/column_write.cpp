@@ -24,7 +24,7 @@ using Mask4 = std::int64_t __attribute__((vector_size(32)));  // double lanes' m
 
 // u ← min(u, ψ) over one column of eight voxels (values[0…7], along Z), four at a time,
 // without branches. The band and the ghost bounds are floats, so a stored value is compared
-// with them as a float: the same verdict as in double, at twice the lanes.
+// with them as a float: the same verdict as in double, without widening it first.
 __attribute__((target_clones("avx2", "default"))) double writeColumn(const ColumnWrite& w, float* values,
                                                                      const double* psi, std::uint8_t& activeBits,
                                                                      std::uint8_t& ghostBits) {
