@@ -101,6 +101,7 @@ RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelM
   rho_.assign(classes, 0.0);
   columns_.assign(classes, 0.0);
   orbitStart_.assign(classes + 1, 0);
+  meridianColumn_.assign(classes, -1);
   for (int i = 0; i <= halfWidth; ++i)
     for (int j = 0; j <= i; ++j) {
       const std::int64_t n = std::int64_t{i} * i + std::int64_t{j} * j;
@@ -116,6 +117,7 @@ RevolvedTable::RevolvedTable(int halfWidth, int kFirst, int kLast, double voxelM
       const int c = classOfSum[n];
       orbits_[filled[c]++] = {i, j};
       columns_[c] += orbitSize(i, j);
+      if (j == 0) meridianColumn_[c] = i;
       // ρ as the level set's writer computes it for this column (its widest one, the last
       // found: j = 0 where the class has one, so that the meridian plane y = 0 reads exactly).
       const double x = i * h_, y = j * h_;
@@ -146,7 +148,7 @@ std::uint64_t RevolvedTable::bytes() const {
   std::uint64_t total = sizeof *this + classes_.capacity() * sizeof(ClassChunks) + slots_.capacity() * sizeof(std::uint16_t) + changed_.capacity() * sizeof(std::uint64_t) +
                         classOfColumn_.capacity() * sizeof(int) + sumOfSquares_.capacity() * sizeof(std::int64_t) +
                         (rho_.capacity() + columns_.capacity()) * sizeof(double) +
-                        (orbitStart_.capacity() + binFirst_.capacity() + binOfClass_.capacity()) * sizeof(int) +
+                        (orbitStart_.capacity() + binFirst_.capacity() + binOfClass_.capacity() + meridianColumn_.capacity()) * sizeof(int) +
                         orbits_.capacity() * sizeof(orbits_[0]);
   for (const ClassChunks& row : classes_)
     total += row.pool.capacity() * sizeof(MixedChunk) + row.freeSlots.capacity() * sizeof(std::uint16_t);
@@ -212,7 +214,7 @@ float RevolvedTable::value(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return band_;
-  if (classHasAirVoxels_[c] && airVoxels_.count(keyOf(i, j, k))) return band_;
+  if (isAirVoxel(c, i, j, k)) return band_;
   std::uint8_t bits;
   return cellsOf(c, cell / kChunk, bits)[cell % kChunk];
 }
@@ -241,7 +243,7 @@ bool RevolvedTable::active(int i, int j, int k) const {
   const int c = classOf(i, j);
   const int cell = k - kBase_;
   if (c == kAir || cell < 0 || cell >= chunks_ * kChunk) return false;
-  if (classHasAirVoxels_[c] && airVoxels_.count(keyOf(i, j, k))) return false;
+  if (isAirVoxel(c, i, j, k)) return false;
   std::uint8_t bits;
   cellsOf(c, cell / kChunk, bits);
   return (bits >> (cell % kChunk)) & 1;
@@ -332,6 +334,15 @@ bool RevolvedTable::materialAboveOrBelow(int c, int cell, float material) const 
   return false;
 }
 
+void RevolvedTable::noteFlips(int c, int chunk, const float* before, const float* after, MeridianBox& flips) const {
+  const int i = meridianColumn_[c];
+  if (i < 0) return;
+  for (int cell = 0; cell < kChunk; ++cell) {
+    const int k = kBase_ + chunk * kChunk + cell;
+    if (before[cell] < 0.0f && after[cell] >= 0.0f && !isAirVoxel(c, i, 0, k)) flips.add(i, k);
+  }
+}
+
 double RevolvedTable::write(const RevolvedRegion& region, bool adding, const RevolvedRegion* changes) {
   if (region.empty() || (changes && changes->empty()) || rho_.empty()) return 0.0;
   const ColumnWrite w = ColumnWrite::of(adding ? 1.0 : -1.0, h_, band_);
@@ -418,6 +429,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     std::vector<Place>& places = mine.places;
     std::vector<Candidates>& found = mine.found;
     found.clear();
+    MeridianBox flips;  // removals only: an addition turns no material to air
     for (std::size_t bin = range.begin(); bin != range.end(); ++bin) {
       const int first = binStart[bin], last = binStart[bin + 1];
       const double rhoMid = (std::floor(rho_[first] / h_) + 0.5) * h_;
@@ -460,6 +472,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
           if (slot == (adding ? kSolidChunk : kAirChunk)) continue;
           if (covered) {  // a uniform chunk turns over whole: what fill() would do, without its cells
             if (slot == (adding ? kAirChunk : kSolidChunk)) {  // no air voxels: they are in mixed chunks
+              if (!adding) noteFlips(c, chunk, solidCells_, airCells_, flips);
               slot = adding ? kSolidChunk : kAirChunk;
               lostOf[n] += adding ? -kChunk : kChunk;
               markChanged(c, chunk);
@@ -483,6 +496,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
             bool changed = false;
             lostOf[n] += fill(values, *cells.activeBits, w, changed);
             if (changed) {
+              if (!adding) noteFlips(c, chunk, before, values, flips);
               takeBackAirVoxels();
               markChanged(c, chunk);
               changedClass[n] = 1;
@@ -501,6 +515,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
           std::uint8_t ghostBits = 0;
           lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
           if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
+            if (!adding) noteFlips(c, chunk, before, values, flips);
             takeBackAirVoxels();
             markChanged(c, chunk);
             changedClass[n] = 1;
@@ -519,8 +534,10 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
         }
       }
     }
-    if (found.empty()) return;
+    if (found.empty() && flips.empty()) return;
     const std::lock_guard<std::mutex> lock(ghostCandidatesMutex);
+    meridianFlips_.add(flips);
+    if (found.empty()) return;
     ghostRuns.push_back({range.begin(), ghostCandidates.size(), found.size()});
     ghostCandidates.insert(ghostCandidates.end(), found.begin(), found.end());
   };
@@ -607,6 +624,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
     };
     for (const auto& [ghost, voxel] : airVoxels) {
       if (airVoxels_.count(keyOf(voxel.i, voxel.j, voxel.k))) continue;  // an orbit's image seen twice
+      if (voxel.j == 0 && voxel.i >= 0 && valueOf(ghost) < 0.0f) meridianFlips_.add(voxel.i, voxel.k);
       lost += std::clamp(0.5 - valueOf(ghost) / h_, 0.0, 1.0);
       addAirVoxel(voxel, ghost.c, ghost.cell);
       markChanged(ghost.c, ghost.cell / kChunk);
@@ -616,6 +634,8 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
       ChunkCells cells;
       open(ghost.c, chunk, cells);
       float& value = cells.values[bit];
+      if (const int i = meridianColumn_[ghost.c]; value < 0.0f && i >= 0 && !isAirVoxel(ghost.c, i, 0, kBase_ + ghost.cell))
+        meridianFlips_.add(i, kBase_ + ghost.cell);
       lost += std::clamp(0.5 - value / h_, 0.0, 1.0) * (columns_[ghost.c] - airVoxelsIn(ghost.c, ghost.cell));
       dropAirVoxels(ghost.c, ghost.cell);
       value = band_;

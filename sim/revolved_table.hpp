@@ -21,10 +21,13 @@
 // stock, voxel for voxel as the level set's writer would leave it (seed 000 makes 324 such
 // voxels in one write), and its volume counts them once.
 
+#include <algorithm>
+#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "geometry/revolved_region.hpp"
@@ -34,6 +37,21 @@ namespace lathesim::sim {
 /// A voxel of the level set by index.
 struct VoxelIndex {
   int i, j, k;
+};
+
+/// A box of samples of the meridian plane (the voxels (i, 0, k), i ≥ 0): i from iLow to iHigh,
+/// k from kLow to kHigh; empty until a sample is added.
+struct MeridianBox {
+  int iLow = INT_MAX, iHigh = INT_MIN, kLow = INT_MAX, kHigh = INT_MIN;
+  bool empty() const { return iLow > iHigh; }
+  void add(int i, int k) {
+    iLow = std::min(iLow, i), iHigh = std::max(iHigh, i), kLow = std::min(kLow, k), kHigh = std::max(kHigh, k);
+  }
+  void add(const MeridianBox& other) {
+    if (other.empty()) return;
+    add(other.iLow, other.kLow);
+    add(other.iHigh, other.kHigh);
+  }
 };
 
 class RevolvedTable {
@@ -84,6 +102,11 @@ class RevolvedTable {
   void applyAirVoxels(const VoxelIndex& origin, float* values, std::uint8_t* activeBits) const;
   /// How many air voxels there are (each kept apart: see the top of this file).
   std::size_t airVoxelCount() const { return airVoxels_.size(); }
+
+  /// The samples of the meridian plane (voxels (i, 0, k), i ≥ 0) that turned from material
+  /// (φ < 0) to air since the last call, boxed; then forgotten. Nothing else changes how the
+  /// section's material hangs together (loose_pieces.cpp): a removal only ever raises φ.
+  MeridianBox takeMeridianFlips() { return std::exchange(meridianFlips_, MeridianBox{}); }
 
   /// The origins of the 8³ leaf-aligned blocks of voxels in which some value or active bit
   /// changed since the last call (which are then forgotten).
@@ -156,6 +179,9 @@ class RevolvedTable {
   void markChanged(int c, int chunk) { changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] |= std::uint64_t{1} << (chunk % 64); }
   bool isChanged(int c, int chunk) const { return (changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] >> (chunk % 64)) & 1; }
   bool isGhost(int i, int j, int k, float material) const;
+  // Adds to `flips` the cells of class c's chunk that turned from material to air (see
+  // takeMeridianFlips), when the class holds a column (i, 0) of the meridian plane.
+  void noteFlips(int c, int chunk, const float* before, const float* after, MeridianBox& flips) const;
   // Whether class c's cell just below or above `cell` is material: then each of the class's
   // columns has a material neighbour there, and none of its voxels at `cell` is a ghost.
   bool materialAboveOrBelow(int c, int cell, float material) const;
@@ -163,6 +189,7 @@ class RevolvedTable {
   static std::uint64_t keyOf(int i, int j, int k);
   std::uint64_t cellKeyOf(int c, int cell) const { return static_cast<std::uint64_t>(c) * chunks_ * kChunkCells + cell; }
   int airVoxelsIn(int c, int cell) const;
+  bool isAirVoxel(int c, int i, int j, int k) const { return classHasAirVoxels_[c] && airVoxels_.count(keyOf(i, j, k)); }
   void addAirVoxel(const VoxelIndex& v, int c, int cell);
   void dropAirVoxels(int c, int cell);
 
@@ -179,6 +206,8 @@ class RevolvedTable {
   std::vector<int> binFirst_;             // per bin of classes one voxel wide in ρ: its first class; then the class count
   std::vector<int> binOfClass_;           // per class: its bin
   std::vector<double> columns_;           // per class: how many columns it has
+  std::vector<int> meridianColumn_;       // per class: i of its column (i, 0), or −1 when it has none
+  MeridianBox meridianFlips_;             // see takeMeridianFlips
   std::vector<int> orbitStart_;           // per class: its columns up to symmetry, orbits_[start…next)
   std::vector<std::pair<int, int>> orbits_;  // (i, j) with i ≥ j ≥ 0
   std::vector<ClassChunks> classes_;

@@ -252,8 +252,23 @@ TEST(RevolvedTable, GivesTheSameTableOnOneThreadAsSharedAmongThreads) {
     const std::vector<RZ> section{{-radius, back}, {radius, back}, {radius, c.spec.faceZMm}, {-radius, c.spec.faceZMm}};
     const RevolvedRegion bar({ConvexPolygon::hullOf(section)});
     ASSERT_EQ(alone.write(bar, true), shared.write(bar, true));
+    alone.takeMeridianFlips();
+    shared.takeMeridianFlips();
     CutHistory history;
     const ToolOutlines outlines = tools();
+    // The meridian plane's voxels (i, 0, k), i ≥ 0, before and after each write: the box of
+    // those that turned from material to air is what takeMeridianFlips gives, on either route.
+    std::vector<float> plane, planeBefore;
+    const auto readPlane = [&] {
+      plane.clear();
+      for (int i = 0; i <= halfWidth; ++i)
+        for (int k = kFirst; k <= kLast; ++k) plane.push_back(alone.value(i, 0, k));
+    };
+    const auto sameBox = [](const MeridianBox& a, const MeridianBox& b) {
+      return (a.empty() && b.empty()) || (a.iLow == b.iLow && a.iHigh == b.iHigh && a.kLow == b.kLow && a.kHigh == b.kHigh);
+    };
+    int movesWithFlips = 0;
+    readPlane();
     for (std::size_t m = 0; m < c.toolpath.moves.size(); ++m) {
       const std::vector<ConvexPolygon> pieces = sweptPieces(c.toolpath.moves[m], outlines.at(c.toolpath.moves[m].tool), h);
       if (pieces.empty()) continue;
@@ -261,6 +276,15 @@ TEST(RevolvedTable, GivesTheSameTableOnOneThreadAsSharedAmongThreads) {
       const std::optional<RevolvedRegion> changes = history.changesOf(pieces);
       const RevolvedRegion* bound = changes ? &*changes : nullptr;
       ASSERT_EQ(alone.write(region, false, bound), shared.write(region, false, bound)) << "move " << m;
+      planeBefore.swap(plane);
+      readPlane();
+      MeridianBox flips;
+      for (int i = 0, n = 0; i <= halfWidth; ++i)
+        for (int k = kFirst; k <= kLast; ++k, ++n)
+          if (planeBefore[n] < 0.0f && plane[n] >= 0.0f) flips.add(i, k);
+      movesWithFlips += !flips.empty();
+      ASSERT_TRUE(sameBox(alone.takeMeridianFlips(), flips)) << "move " << m;
+      ASSERT_TRUE(sameBox(shared.takeMeridianFlips(), flips)) << "move " << m;
       const std::vector<VoxelIndex> aloneLeaves = alone.changedLeaves(), sharedLeaves = shared.changedLeaves();
       ASSERT_EQ(aloneLeaves.size(), sharedLeaves.size()) << "move " << m;
       for (std::size_t n = 0; n < aloneLeaves.size(); ++n)
@@ -284,6 +308,7 @@ TEST(RevolvedTable, GivesTheSameTableOnOneThreadAsSharedAmongThreads) {
     EXPECT_EQ(differing, 0u);
     EXPECT_EQ(columnReadDiffering, 0u);
     EXPECT_GT(material, 0u);
+    EXPECT_GT(movesWithFlips, 5);
   }
   EXPECT_GT(airVoxels, 0u);  // the route of ghosts a class's columns disagree on was taken
 }
