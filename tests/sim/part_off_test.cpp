@@ -43,8 +43,9 @@ struct PartOffRun {
   double stubMm3 = 0;  // what is left in the stock
 };
 
-PartOffRun simulateProgram(const StockSpec& bar, double voxelMm, const std::string& program) {
-  Stock stock(bar, voxelMm);
+PartOffRun simulateProgram(const StockSpec& bar, double voxelMm, const std::string& program,
+                           RevolvedWrites writes = RevolvedWrites::Table) {
+  Stock stock(bar, voxelMm, writes);
   PartOffRun run;
   run.result = simulate(toolpathOf(program), tools(), stock);
   run.stubMm3 = stock.volumeMm3();
@@ -213,6 +214,59 @@ TEST(PartOff, CutsAfterThePartOffDoNotTouchThePartThatFell) {
   ASSERT_EQ(run.result.blocks.size(), 9u);
   EXPECT_EQ(run.result.blocks[4].line, 6);
   EXPECT_NEAR(run.result.blocks[4].removedMm3, 0.0, tolerance(surface(20, 0, 3), voxel));
+}
+
+// Parting in short steps, as CAM posts it: each block turns a sliver of the section to air, and
+// while the table holds the stock the part-off check looks for loose material around those
+// samples only (RevolvedTable::takeMeridianFlips). The level set's writer, with no table, looks
+// around the block's whole cut. Bars and tubes, steps on and off the voxel grid, two Z: the
+// piece falls at the same block with the same volume both ways, and at the block that first
+// reaches the axis or the bore (a voxel's rounding either way) with the volume worked out by
+// hand (X is a diameter). A ring cut loose inside a tube in steps (the section falls in two with no Z free of
+// material, as in ARingCutLooseInsideATubeFalls) too.
+TEST(PartOff, PartingInShortStepsFallsAtTheSameBlockAsLookingAroundTheWholeCut) {
+  for (const double bore : {0.0, 10.0})
+    for (const double voxel : {0.25, 0.4})
+      for (const double step : {0.03, 0.13, 0.5})
+        for (const double z : {-10.0, -13.37}) {
+          SCOPED_TRACE(testing::Message() << "bore " << bore << ", " << voxel << " mm voxels, steps of " << step
+                                          << " mm, Z" << z);
+          const StockSpec bar{24.0, 30.0, 0.0, bore};
+          std::string program = "G99 M03 S500\nG00 X26. Z" + std::to_string(z) + "\n";
+          int firstThrough = 0;  // the line of the first step at or past the axis, or the bore
+          int line = 3;
+          for (double x = 26.0 - step; x > bore - 1.0 - step; x -= step, ++line) {
+            program += "G01 X" + std::to_string(x) + " F0.05\n";
+            if (!firstThrough && x <= bore) firstThrough = line;
+          }
+          program += "G00 X30.\nM30\n";
+          const PartOffRun table = simulateProgram(bar, voxel, program);
+          const PartOffRun voxels = simulateProgram(bar, voxel, program, RevolvedWrites::Voxels);
+          ASSERT_EQ(table.result.partOffs.size(), 1u);
+          ASSERT_EQ(voxels.result.partOffs.size(), 1u);
+          const PartOff& off = table.result.partOffs[0];
+          EXPECT_EQ(off.line, voxels.result.partOffs[0].line);
+          EXPECT_NEAR(off.volumeMm3, voxels.result.partOffs[0].volumeMm3, 1e-9 * off.volumeMm3);
+          EXPECT_NEAR(table.stubMm3, voxels.stubMm3, 1e-9 * table.stubMm3);
+          // A voxel of radius is two of diameter (X): so many steps either way, and one more.
+          EXPECT_LE(std::abs(off.line - firstThrough), static_cast<int>(std::ceil(2.0 * voxel / step)) + 1) << off.line;
+          const double area = M_PI * (144.0 - bore * bore / 4.0);
+          EXPECT_NEAR(off.volumeMm3, area * -z, tolerance(surface(12, bore / 2.0, -z), voxel));
+        }
+  for (const double step : {0.05, 0.31}) {
+    SCOPED_TRACE(testing::Message() << "a ring in steps of " << step << " mm");
+    std::string program = "G99 M03 S500\nT0202\nG00 X28. Z2.\n";
+    for (double z = 2.0 - step; z > -10.0 - step; z -= step) program += "G01 Z" + std::to_string(std::max(z, -10.0)) + " F0.05\n";
+    program += "G00 Z2.\nT0303\nG00 X8.\nZ-12.\n";
+    for (double x = 8.0 + step; x < 20.0 + step; x += step) program += "G01 X" + std::to_string(std::min(x, 20.0)) + "\n";
+    program += "G00 X8.\nG00 Z5.\nM30\n";
+    const PartOffRun table = simulateProgram({40.0, 50.0, 0.0, 20.0}, 0.25, program);
+    const PartOffRun voxels = simulateProgram({40.0, 50.0, 0.0, 20.0}, 0.25, program, RevolvedWrites::Voxels);
+    ASSERT_EQ(table.result.partOffs.size(), 1u);
+    ASSERT_EQ(voxels.result.partOffs.size(), 1u);
+    EXPECT_EQ(table.result.partOffs[0].line, voxels.result.partOffs[0].line);
+    EXPECT_NEAR(table.result.partOffs[0].volumeMm3, 864 * M_PI, tolerance(surface(14, 10, 9), 0.25));
+  }
 }
 
 // The parts catcher command in force when the piece falls is reported with it.
