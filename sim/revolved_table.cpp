@@ -336,7 +336,6 @@ bool RevolvedTable::materialAboveOrBelow(int c, int cell, float material) const 
 
 void RevolvedTable::noteFlips(int c, int chunk, const float* before, const float* after, MeridianBox& flips) const {
   const int i = meridianColumn_[c];
-  if (i < 0) return;
   for (int cell = 0; cell < kChunk; ++cell) {
     const int k = kBase_ + chunk * kChunk + cell;
     if (before[cell] < 0.0f && after[cell] >= 0.0f && !isAirVoxel(c, i, 0, k)) flips.add(i, k);
@@ -456,6 +455,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
       }
       for (int c = first; c < last; ++c) {
         const int n = c - classLow;
+        const bool onMeridian = !adding && meridianColumn_[c] >= 0;  // its turning to air is noted
         if (!places.empty() && c + 1 < last) {
           // The next classes' table lies elsewhere in memory: ask for it while this one is
           // written (their slots two ahead, the cells of the next one's first chunk).
@@ -472,7 +472,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
           if (slot == (adding ? kSolidChunk : kAirChunk)) continue;
           if (covered) {  // a uniform chunk turns over whole: what fill() would do, without its cells
             if (slot == (adding ? kAirChunk : kSolidChunk)) {  // no air voxels: they are in mixed chunks
-              if (!adding) noteFlips(c, chunk, solidCells_, airCells_, flips);
+              if (onMeridian) noteFlips(c, chunk, solidCells_, airCells_, flips);
               slot = adding ? kSolidChunk : kAirChunk;
               lostOf[n] += adding ? -kChunk : kChunk;
               markChanged(c, chunk);
@@ -496,7 +496,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
             bool changed = false;
             lostOf[n] += fill(values, *cells.activeBits, w, changed);
             if (changed) {
-              if (!adding) noteFlips(c, chunk, before, values, flips);
+              if (onMeridian) noteFlips(c, chunk, before, values, flips);
               takeBackAirVoxels();
               markChanged(c, chunk);
               changedClass[n] = 1;
@@ -515,7 +515,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
           std::uint8_t ghostBits = 0;
           lostOf[n] += writeColumn(w, values, psi, active, ghostBits);
           if (std::memcmp(before, values, sizeof before) != 0 || active != activeBefore) {
-            if (!adding) noteFlips(c, chunk, before, values, flips);
+            if (onMeridian) noteFlips(c, chunk, before, values, flips);
             takeBackAirVoxels();
             markChanged(c, chunk);
             changedClass[n] = 1;

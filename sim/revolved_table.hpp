@@ -180,7 +180,7 @@ class RevolvedTable {
   bool isChanged(int c, int chunk) const { return (changed_[static_cast<std::size_t>(c) * changedWords_ + chunk / 64] >> (chunk % 64)) & 1; }
   bool isGhost(int i, int j, int k, float material) const;
   // Adds to `flips` the cells of class c's chunk that turned from material to air (see
-  // takeMeridianFlips), when the class holds a column (i, 0) of the meridian plane.
+  // takeMeridianFlips); class c holds a column (i, 0) of the meridian plane.
   void noteFlips(int c, int chunk, const float* before, const float* after, MeridianBox& flips) const;
   // Whether class c's cell just below or above `cell` is material: then each of the class's
   // columns has a material neighbour there, and none of its voxels at `cell` is a ghost.
