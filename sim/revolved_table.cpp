@@ -47,6 +47,19 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool&
   return lost;
 }
 
+// The material voxels a write lost, in class order: per class, its cell's loss times its
+// columns less what its air voxels did not lose. Only classes that changed lost anything; the
+// others' terms are +0, which leave the sum as it is to the bit. A function of its own, so that
+// the sum stays in a register: inlined into the write, it was kept in memory, a store and a
+// load an addition over thousands of classes a write (3 % of a CAM program).
+[[gnu::noinline]] double lostVoxels(const std::vector<char>& changed, const std::vector<double>& lostOf,
+                                    const std::vector<double>& airVoxelsLost, const double* columns) {
+  double sum = 0.0;
+  for (std::size_t n = 0; n < changed.size(); ++n)
+    if (changed[n]) sum += lostOf[n] * columns[n] - airVoxelsLost[n];
+  return sum;
+}
+
 // A chunk's ghost candidates (class n of the write's first, its chunk, a bit per cell),
 // gathered by each task and then put in class and chunk order, the order in which a single
 // thread would have found them. A task writes a range of bins in order, so its own candidates
@@ -546,8 +559,7 @@ double RevolvedTable::write(const RevolvedRegion& region, bool adding, const Rev
   if (work < parallel_.work) writeBins(bins);
   else tbb::parallel_for(bins, writeBins);
 
-  double lost = 0.0;
-  for (int n = 0; n < classCount; ++n) lost += lostOf[n] * columns_[classLow + n] - airVoxelsLost[n];
+  double lost = lostVoxels(changedClass, lostOf, airVoxelsLost, &columns_[classLow]);
   if (std::any_of(changedClass.begin(), changedClass.end(), [](char changed) { return changed != 0; })) {
     changedClassLow_ = changedClassHigh_ < changedClassLow_ ? classLow : std::min(changedClassLow_, classLow);
     changedClassHigh_ = std::max(changedClassHigh_, classHigh);
