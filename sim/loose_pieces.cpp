@@ -279,17 +279,17 @@ bool severedIn3D(const StockGrid& s) {
 
 std::unique_ptr<Stock> Stock::takeLoosePieces(const std::optional<ChangedArea>& lastCut, bool notRevolved) {
   Samples section = wholeSection(*impl_);  // its extent; read only when the cut's window cannot tell
-  if (impl_->table) {
-    // The table knows which samples of the section turned to air since it was last asked:
-    // only there can the material have come apart, so a window around them serves as one
-    // around the whole cut (hangsTogetherAround); where none did, the material hangs together
-    // still. Around a thin sliver of a cut the window is often too small to see the material
-    // on its two sides meet: then the cut's own window is asked, as without the table.
-    const MeridianBox flips = impl_->table->takeMeridianFlips();
-    if (lastCut && flips.empty()) return nullptr;
+  // The table knows which samples of the section turned to air since it was last asked: only
+  // there can the material have come apart, so a window around them serves as one around the
+  // whole cut (hangsTogetherAround); where none did, the material hangs together still. Around
+  // a thin sliver of a cut that window is often too small to see the material on its two sides
+  // meet: then the cut's own window is asked, as without the table.
+  const MeridianBox flips = impl_->table ? impl_->table->takeMeridianFlips() : MeridianBox{};
+  if (lastCut && impl_->table) {
+    if (flips.empty()) return nullptr;
     const double h = impl_->voxel;
     const ChangedArea turned{flips.iLow * h, flips.iHigh * h, flips.kLow * h, flips.kHigh * h};
-    if (lastCut && hangsTogetherAround(samplesAround(*impl_, turned, section), section)) return nullptr;
+    if (hangsTogetherAround(samplesAround(*impl_, turned, section), section)) return nullptr;
   }
   if (lastCut && hangsTogetherAround(samplesAround(*impl_, *lastCut, section), section)) return nullptr;
   readSamples(*impl_, section);
