@@ -221,9 +221,9 @@ TEST(PartOff, CutsAfterThePartOffDoNotTouchThePartThatFell) {
 // samples only (RevolvedTable::takeMeridianFlips). The level set's writer, with no table, looks
 // around the block's whole cut. Bars and tubes, steps on and off the voxel grid, two Z: the
 // piece falls at the same block with the same volume both ways, and at the block that first
-// reaches the axis or the bore (a voxel's rounding either way) with the volume worked out by
-// hand (X is a diameter). A ring cut loose inside a tube in steps (the section falls in two with no Z free of
-// material, as in ARingCutLooseInsideATubeFalls) too.
+// reaches the axis or the bore (a voxel's rounding either way; X is a diameter) with the volume
+// worked out by hand. A ring cut loose inside a tube in steps too (the section falls in two
+// with no Z free of material, as in ARingCutLooseInsideATubeFalls).
 TEST(PartOff, PartingInShortStepsFallsAtTheSameBlockAsLookingAroundTheWholeCut) {
   for (const double bore : {0.0, 10.0})
     for (const double voxel : {0.25, 0.4})
