@@ -40,10 +40,12 @@ struct VoxelIndex {
 };
 
 /// A box of samples of the meridian plane (the voxels (i, 0, k), i ≥ 0): i from iLow to iHigh,
-/// k from kLow to kHigh; empty until a sample is added.
+/// k from kLow to kHigh; empty until a sample is added (an empty box is always the default
+/// one, so two boxes are equal when their bounds are).
 struct MeridianBox {
   int iLow = INT_MAX, iHigh = INT_MIN, kLow = INT_MAX, kHigh = INT_MIN;
   bool empty() const { return iLow > iHigh; }
+  bool operator==(const MeridianBox&) const = default;
   void add(int i, int k) {
     iLow = std::min(iLow, i), iHigh = std::max(iHigh, i), kLow = std::min(kLow, k), kHigh = std::max(kHigh, k);
   }
