@@ -102,7 +102,7 @@ TEST(SkippedBlocks, AreListedInTheReportAndCountedOnTheSummaryLine) {
                                               "--block-skip", "off", "--outputs", "report", "--out", out.string()},
                                     dir.path());
   ASSERT_EQ(all.status, 0) << all.err;
-  EXPECT_EQ(all.out.find("skipped"), std::string::npos) << all.out;
+  EXPECT_EQ(all.out.find("blocks skipped"), std::string::npos) << all.out;
   EXPECT_TRUE(nlohmann::json::parse(test::readFile(out / "report.json")).at("skipped_blocks").empty());
 }
 
