@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "interp/interpreter.hpp"
+#include "interp/motion/travel_limits.hpp"
 #include "interp/move_sink.hpp"
 #include "interp/result.hpp"
 
@@ -52,6 +53,7 @@ class MovePipeline {
   std::vector<Move> held_;
   RZ shiftInForce_{0, 0};  // the tool offset's shift the last move passed left in force
   std::size_t passed_ = 0;
+  DerivedTravelWarned travelWarned_;  // a derived travel's warning is given once per axis
 };
 
 }  // namespace lathesim::interp
