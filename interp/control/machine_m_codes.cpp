@@ -15,7 +15,7 @@ namespace {
 
 using enum MachineMotion;
 
-constexpr std::string_view kGskManual = "GSK980TDi user manual, M-code table (§2.4; the list unchecked)";
+constexpr std::string_view kGskManual = "GSK980TDi user manual, its M-code table (the list unchecked number by number)";
 
 // GSK980TDi: tailstock, chuck, lubrication, the spindle's gear ranges. M13 (chuck release on
 // the GSK) is left out: Doosan and Fanuc programs write it to start a live tool, which this
@@ -53,7 +53,8 @@ constexpr std::array kFanuc{
     MachineMCode{73, "parts counter", None, kBuilder},
 };
 
-constexpr std::string_view kHaasManual = "Haas lathe operator's manual, M-codes chapter";
+constexpr std::string_view kHaasManual =
+    "Haas lathe operator's manual, M-codes chapter (its list as recalled; unchecked against a printed copy)";
 
 // Haas lathes. M12–M15 are Haas's own (air blast, spindle brake), not live-tool codes; Haas's
 // live tool is M133–M135 and its second spindle M143–M145, refused by name (gcode_table.cpp).
