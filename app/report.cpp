@@ -88,6 +88,14 @@ nlohmann::ordered_json partedOffJson(const RunFigures& f) {
 
 }  // namespace
 
+nlohmann::ordered_json machineAssumedJson(const std::vector<job::MachineAssumption>& assumed) {
+  nlohmann::ordered_json json = nlohmann::ordered_json::object();
+  for (const job::MachineAssumption& a : assumed) {
+    json[a.key] = a.values.size() == 1 ? nlohmann::ordered_json(a.values[0]) : nlohmann::ordered_json(a.values);
+  }
+  return json;
+}
+
 std::string threadSummary(const measure::MeasuredThread& thread) {
   const measure::ProgrammedThread& p = thread.programmed;
   const measure::ThreadMeasurement& m = thread.measured;
@@ -127,6 +135,7 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
                       {"z_mm", {f.travel.zMinMm, f.travel.zMaxMm}},
                       {"x_from", source(f.travel.xDerived, "travel_x")},
                       {"z_from", source(f.travel.zDerived, "travel_z")}};
+  report["machine"]["assumed"] = machineAssumedJson(f.assumed);
   report["voxel_mm"] = f.voxelMm;
   if (f.atLine) report["at_line"] = *f.atLine;
   report["stock_volume_mm3"] = f.stockVolumeMm3;

@@ -11,6 +11,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
 #include "interp/interpreter.hpp"
+#include "job/machine_assumptions.hpp"
 #include "measure/thread_measure.hpp"
 #include "interp/move.hpp"
 #include "sim/block_rows.hpp"
@@ -34,6 +35,7 @@ struct RunFigures {
   std::string setup;
   interp::Control control;  // the preset and every parameter in force
   interp::TravelLimits travel;  // the machine's travel the moves were checked against
+  std::vector<job::MachineAssumption> assumed;  // what the setup did not say of the machine
   double voxelMm = 0;
   std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
@@ -61,6 +63,10 @@ struct RunFigures {
 /// `blocks` empty: writeReport writes its rows one by one (a row as a JSON tree takes
 /// hundreds of bytes, and a long program has a row a block).
 nlohmann::ordered_json reportJson(const RunFigures& figures);
+
+/// report.json's "machine": {"assumed": {…}}: each assumption by its key, a number or a list
+/// of mm ("start": [200, 200], "stock_face_z": 0); an empty object when the setup said all.
+nlohmann::ordered_json machineAssumedJson(const std::vector<job::MachineAssumption>& assumed);
 
 /// One line for the terminal naming a thread and what was measured of it.
 std::string threadSummary(const measure::MeasuredThread& thread);

@@ -29,6 +29,8 @@ int runCommand(const RunOptions& options) {
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
             << interp::printable(options.out.string()) << "/\n";
+  if (!figures.assumed.empty())
+    std::cout << "  assumed, as the setup does not say: " << job::assumptionsText(figures.assumed) << '\n';
   if (!figures.simulation.partOffs.empty()) {
     const sim::PartOff& off = figures.simulation.partOffs.front();
     std::cout << "  parted off at line " << off.line << ", Z" << off.zMm << ": the part " << off.volumeMm3

@@ -127,6 +127,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.setup = setup.sourceName;
   figures.control = setup.control;
   figures.travel = job::travelOf(setup);
+  figures.assumed = job::machineAssumptions(setup);
   figures.voxelMm = voxel;
   if (out && !out->foreignFiles().empty()) {
     std::string names;

@@ -61,7 +61,7 @@ InterpretResult interpret(PagedText programText, const std::string& fileName,
   std::vector<Error> warnings;
   std::vector<Error> notes;
   Program program = readProgram(programText, options.control.blockSkip, options.dialect, options.control.machineMCodes);
-  for (const ReadNote& note : program.notes) notes.push_back({note.line, note.column, note.message});
+  for (const ReadNote& note : program.notes) (note.warning ? warnings : notes).push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText);
   if (status.ok()) status = refuseEmptyProgram(program, programText.view());
   MovePipeline pipeline(options, moves, warnings);

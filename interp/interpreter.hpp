@@ -34,6 +34,8 @@ struct InterpreterOptions {
   RZ startPosition{100.0, 200.0};  // (radius mm, Z mm) where the tool stands at program start
   std::vector<int> toolNumbers;    // tools the setup defines; the first is mounted before any
                                    // T word. A T word naming another number is an error.
+  bool mountedToolStated = true;   // the setup says which tool is mounted (it lists its tools);
+                                   // false: a cut before any T word relies on an assumed tool
   std::function<std::string(int tool)> toolDefinitionHint;  // how to define a missing tool (the
                                                             // setup's TOML), for that error
   Dialect dialect = Dialect::FanucA;  // how the program writes its G codes

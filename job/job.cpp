@@ -112,6 +112,7 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
     options.toolNumbers.push_back(tool.number);
     options.toolNoses[tool.number] = {tool.noseRadiusMm, tool.tipNumber};
   }
+  options.mountedToolStated = setup.toolsGiven;
   return options;
 }
 
@@ -186,10 +187,12 @@ std::optional<Job> openJob(const JobRequest& request) {
     }
     job.setup.stock = std::get<sim::StockSpec>(stock);
     job.setup.stockGiven = true;
+    job.setup.stockFaceGiven = stockOptionStatesFace(*request.stock);
     job.setup.sourceName += " with --stock " + *request.stock;
   } else if (!job.setup.stockGiven) {
     if (const auto stated = interp::stockStatedIn(job.programText.text())) {
       job.setup.stock = sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
+      job.setup.stockGiven = true;  // by the program: its face at Z0 stays an assumption
       job.notes.push_back({interp::Severity::Note, program.string(), stated->line, stated->column,
                            fmt::format("the bar is Φ{:g} × {:g}, its face at Z0, as the program states it: "
                                        "{} (no setup gives the stock)",

@@ -175,14 +175,17 @@ std::optional<double> finiteMm(const toml::node& node, const std::string& name, 
   return value;
 }
 
-void readStock(const toml::table& table, sim::StockSpec& stock, Reporter& report) {
+void readStock(const toml::table& table, sim::StockSpec& stock, bool& stockFaceGiven, Reporter& report) {
   rejectUnknownKeys(table, "stock.", {"diameter", "length", "face_z", "bore"}, report);
   if (const auto* node = table.get("diameter"))
     if (auto v = positiveMm(*node, "stock.diameter", report)) stock.diameterMm = *v;
   if (const auto* node = table.get("length"))
     if (auto v = positiveMm(*node, "stock.length", report)) stock.lengthMm = *v;
   if (const auto* node = table.get("face_z"))
-    if (auto v = finiteMm(*node, "stock.face_z", report)) stock.faceZMm = *v;
+    if (auto v = finiteMm(*node, "stock.face_z", report)) {
+      stock.faceZMm = *v;
+      stockFaceGiven = true;
+    }
   if (const auto* node = table.get("bore")) {
     if (auto v = positiveMm(*node, "stock.bore", report)) {
       if (*v < stock.diameterMm) stock.boreMm = *v;
@@ -296,7 +299,10 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
       (void)setup.control.set("power_on_feed_mode", std::string(*i == 0 ? "G99" : "G98"), "setup");
   }
   if (const auto* node = table.get("start"))
-    if (auto p = positionOf(*node, "machine.start", report)) setup.startPosition = *p;
+    if (auto p = positionOf(*node, "machine.start", report)) {
+      setup.startPosition = *p;
+      setup.startGiven = true;
+    }
   setup.referencePosition = setup.startPosition;
   if (const auto* node = table.get("reference"))
     if (auto p = positionOf(*node, "machine.reference", report)) setup.referencePosition = *p;
@@ -493,7 +499,11 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
   }
   if (const auto* node = root.get("stock")) {
     setup.stockGiven = true;
-    if (const auto* table = tableAt(*node, "stock", report)) readStock(*table, setup.stock, report);
+    // The bar's face is at Z0 unless stated, as with --stock: the default bar's Z2 is the
+    // default setup's, not a [stock] table's.
+    setup.stock.faceZMm = 0.0;
+    if (const auto* table = tableAt(*node, "stock", report))
+      readStock(*table, setup.stock, setup.stockFaceGiven, report);
   }
   if (const auto* node = root.get("machine"))
     if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);

@@ -38,7 +38,10 @@ struct Setup {
   std::string sourceName;  // the file it came from, or "(default setup)"
   sim::StockSpec stock;
   bool stockGiven = false;  // the file has [stock]: a bar the program states is not used
+  bool stockFaceGiven = false;  // stock.face_z (or --stock …xZ) stated; else the face is at Z0
+                                // with a [stock] or --stock, Z2 with the default bar
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
+  bool startGiven = false;         // [machine] start stated; else X200 Z200 is assumed
   RZ referencePosition{100.0, 200.0};  // G28's reference point (radius, Z); the start if not given
   interp::MachineLimits machine;       // [machine] rapid = [X, Z] mm/min, max_rpm (travel: travelOf)
   std::optional<std::pair<double, double>> travelXDiameterMm;  // [machine] travel_x = [min, max], diameters

@@ -45,4 +45,11 @@ std::variant<sim::StockSpec, std::string> parseStockOption(std::string_view text
                         parts.count('d') ? parts['d'] : 0.0};
 }
 
+bool stockOptionStatesFace(std::string_view text) {
+  // Z is the only part its letter names after a separator or at the start: D40xL80xZ1.
+  for (std::size_t at = text.find('Z'); at != std::string_view::npos; at = text.find('Z', at + 1))
+    if (at == 0 || text[at - 1] == 'x' || text[at - 1] == 'X') return true;
+  return false;
+}
+
 }  // namespace lathesim::job

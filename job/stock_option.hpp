@@ -18,4 +18,7 @@ namespace lathesim::job {
 /// The bar `text` describes, or the message saying what is wrong with it.
 std::variant<sim::StockSpec, std::string> parseStockOption(std::string_view text);
 
+/// Whether `text` (a valid --stock) states the face (a Z part); else the face is at Z0, assumed.
+bool stockOptionStatesFace(std::string_view text);
+
 }  // namespace lathesim::job

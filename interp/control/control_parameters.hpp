@@ -58,6 +58,10 @@ enum class ThreadEWord { None, Lead, ThreadsPerInch };
 /// G04 P: always milliseconds (GSK, Fanuc), or seconds when P has a decimal point and
 /// milliseconds when not (Haas).
 enum class DwellPWord { Milliseconds, SecondsWithPoint };
+/// Cutting (a feed move, an arc, a thread or a cycle) before any T word has named a tool: the
+/// machine cuts with whatever its turret was left at (a warning), or the control (a trainer's
+/// software) refuses to cut with no tool selected (an error).
+enum class CutWithoutTool { Warning, Error };
 
 /// The defaults are the gsk980tdi preset's values (control_preset.cpp; a test keeps them equal).
 struct ControlParameters {
@@ -99,6 +103,7 @@ struct ControlParameters {
   // The angle of that run-out to the Z axis, in whole degrees 1–89; 0 means 45° (Fanuc No.5131).
   int threadRunoutAngleDeg = 0;
   ThreadEWord threadEWord{};
+  CutWithoutTool cutWithoutTool{};  // a cut before any tool is called: warned of, or refused
 };
 
 }  // namespace lathesim::interp

@@ -115,6 +115,7 @@ const std::vector<ParameterDefinition>& parameterTable() {
       number<&P::threadRunoutLeads>("thread_runout", 0.0, 9.9),
       number<&P::threadRunoutAngleDeg>("thread_runout_angle", 0.0, 89.0, true),
       choice<&P::threadEWord>("thread_e_word", {"none", "lead", "threads_per_inch"}),
+      choice<&P::cutWithoutTool>("cut_without_tool", {"warning", "error"}),
   };
   return table;
 }
@@ -179,6 +180,10 @@ const std::vector<PresetDefinition>& presetTable() {
            {"thread_runout", 0.0, "GSK No.19 (in 0.1 lead); its factory value assumed", false},
            {"thread_runout_angle", 0.0, "GSK has none: without J and K, No.19 runs out as far along as across (45°)", true},
            {"thread_e_word", "none", "§3.24.1, §3.24.9, §3.24.12: the lead is F, or I in threads per inch; no E", true},
+           {"cut_without_tool", "warning",
+            "the turret keeps the tool it was left at (GSK980TDi: the current tool is shown and kept at power "
+            "on); unchecked",
+            false},
        }},
       {"fanuc-0i-t",
        std::nullopt,
@@ -217,6 +222,7 @@ const std::vector<PresetDefinition>& presetTable() {
            {"thread_runout", 0.0, "Fanuc 5130 (in 0.1 lead); its value assumed", false},
            {"thread_runout_angle", 0.0, "Fanuc 5131 (0 means 45°); its value assumed", false},
            {"thread_e_word", "lead", "E the lead with more digits for inch threads (Fanuc 0-TD G34; 0i-T unchecked)", false},
+           {"cut_without_tool", "warning", "the turret keeps the tool it was left at; unchecked", false},
        }},
       {"haas",
        "fanuc-0i-t",

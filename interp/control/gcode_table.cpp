@@ -73,6 +73,9 @@ constexpr std::array kMCodes{
     MCodeInfo{3, MGroup::Spindle, true, "spindle clockwise"},
     MCodeInfo{4, MGroup::Spindle, true, "spindle counter-clockwise"},
     MCodeInfo{5, MGroup::Spindle, true, "spindle stop"},
+    // School trainers (Denford VR Turning, Boxford, Emco) write M06 beside the T word, in either
+    // order (M06 T0101, T01 M06): the tool change the T word makes on its own elsewhere.
+    MCodeInfo{6, MGroup::ToolChange, true, "tool change (Denford/Boxford/Emco trainers)"},
     MCodeInfo{8, MGroup::Coolant, true, "coolant on"},
     MCodeInfo{9, MGroup::Coolant, true, "coolant off"},
     MCodeInfo{13, MGroup::Spindle, false, "live tool on (Doosan/Fanuc; spindle and coolant on some older controls: write M03 M08)",
@@ -242,6 +245,7 @@ std::string_view groupName(MGroup group) {
     case MGroup::Stop: return "program stop";
     case MGroup::Subprogram: return "subprogram";
     case MGroup::PartsCatcher: return "parts catcher";
+    case MGroup::ToolChange: return "tool change";
   }
   return "unknown";
 }

@@ -36,6 +36,7 @@ enum class MGroup {
   Stop,        // M00 M01
   Subprogram,  // M98 M99
   PartsCatcher,  // Haas M35 M36 M37: moves nothing the tool cuts; reported at a part-off
+  ToolChange,    // M06: the trainers' (Denford, Boxford, Emco) tool change; the block's T names the tool
 };
 
 struct GCodeInfo {

@@ -1,5 +1,9 @@
-// The lists (README "The control" marks them ⚠: no manual's M-code table was at hand to
-// check them number by number; they follow each family's usual assignments).
+// The tables. Sources: the Haas lathe operator's manual, chapter "M-codes" (its list, number by
+// number, from memory of its current edition; checked against no printed copy here); the
+// GSK980TDi user manual's M-code table; the Fanuc builders' codes are each builder's (Doosan,
+// Mori Seiki, Romi …), no Fanuc manual fixes them, so they are the common assignments and
+// marked so. A code whose meaning differs between builders of one family is left out of it:
+// an unknown code is an error, which is better than a guess that hides a move.
 #include "interp/control/machine_m_codes.hpp"
 
 #include <array>
@@ -9,53 +13,113 @@
 namespace lathesim::interp {
 namespace {
 
-// GSK980TDi: chuck and tailstock, lubrication, the spindle's gear ranges. M13 (chuck release on
+using enum MachineMotion;
+
+constexpr std::string_view kGskManual = "GSK980TDi user manual, its M-code table (the list unchecked number by number)";
+
+// GSK980TDi: tailstock, chuck, lubrication, the spindle's gear ranges. M13 (chuck release on
 // the GSK) is left out: Doosan and Fanuc programs write it to start a live tool, which this
 // lathe refuses by name (gcode_table.cpp) rather than skip.
 constexpr std::array kGsk{
-    MachineMCode{10, "tailstock forward"},  MachineMCode{11, "tailstock back"},
-    MachineMCode{12, "chuck clamp"},        MachineMCode{32, "lubrication on"},
-    MachineMCode{33, "lubrication off"},    MachineMCode{41, "spindle gear range 1"},
-    MachineMCode{42, "spindle gear range 2"}, MachineMCode{43, "spindle gear range 3"},
-    MachineMCode{44, "spindle gear range 4"},
+    MachineMCode{10, "tailstock forward", Unsimulated, kGskManual},
+    MachineMCode{11, "tailstock back", Unsimulated, kGskManual},
+    MachineMCode{12, "chuck clamp", None, kGskManual},
+    MachineMCode{32, "lubrication on", None, kGskManual},
+    MachineMCode{33, "lubrication off", None, kGskManual},
+    MachineMCode{41, "spindle gear range 1", None, kGskManual},
+    MachineMCode{42, "spindle gear range 2", None, kGskManual},
+    MachineMCode{43, "spindle gear range 3", None, kGskManual},
+    MachineMCode{44, "spindle gear range 4", None, kGskManual},
 };
+
+constexpr std::string_view kBuilder = "machine builder's code, the common assignment (Doosan/Mori Seiki/Romi "
+                                      "manuals differ; unchecked)";
 
 // Fanuc 0i-T lathes: M codes above the standard ones are the machine builder's; these are the
-// common ones (chuck, tailstock, chip conveyor, parts counter, gear ranges).
+// common ones.
 constexpr std::array kFanuc{
-    MachineMCode{10, "chuck clamp"},          MachineMCode{11, "chuck unclamp"},
-    MachineMCode{21, "tailstock forward"},    MachineMCode{22, "tailstock back"},
-    MachineMCode{26, "chip conveyor on"},     MachineMCode{27, "chip conveyor off"},
-    MachineMCode{41, "spindle gear range 1"}, MachineMCode{42, "spindle gear range 2"},
-    MachineMCode{43, "spindle gear range 3"}, MachineMCode{44, "spindle gear range 4"},
-    MachineMCode{68, "chuck clamp"},          MachineMCode{69, "chuck unclamp"},
-    MachineMCode{73, "parts counter"},
+    MachineMCode{10, "chuck clamp", None, kBuilder},
+    MachineMCode{11, "chuck unclamp: the bar is free in the chuck", Unsimulated, kBuilder},
+    MachineMCode{21, "tailstock forward", Unsimulated, kBuilder},
+    MachineMCode{22, "tailstock back", Unsimulated, kBuilder},
+    MachineMCode{26, "chip conveyor on", None, kBuilder},
+    MachineMCode{27, "chip conveyor off", None, kBuilder},
+    MachineMCode{41, "spindle gear range 1", None, kBuilder},
+    MachineMCode{42, "spindle gear range 2", None, kBuilder},
+    MachineMCode{43, "spindle gear range 3", None, kBuilder},
+    MachineMCode{44, "spindle gear range 4", None, kBuilder},
+    MachineMCode{68, "chuck clamp", None, kBuilder},
+    MachineMCode{69, "chuck unclamp: the bar is free in the chuck", Unsimulated, kBuilder},
+    MachineMCode{73, "parts counter", None, kBuilder},
 };
 
-// Haas lathes (the Haas lathe M-code list). M12–M15 are Haas's own (air blast, spindle brake),
-// not live-tool codes; Haas's live tool is M133–M135, refused by name.
+constexpr std::string_view kHaasManual =
+    "Haas lathe operator's manual, M-codes chapter (its list as recalled; unchecked against a printed copy)";
+
+// Haas lathes. M12–M15 are Haas's own (air blast, spindle brake), not live-tool codes; Haas's
+// live tool is M133–M135 and its second spindle M143–M145, refused by name (gcode_table.cpp).
+// Its parts catcher M35–M37 is in the common table: the part-off it catches is simulated.
+// M23/M24 (thread chamfer on/off) change a thread's run-out and are not here.
 constexpr std::array kHaas{
-    MachineMCode{10, "chuck clamp"},           MachineMCode{11, "chuck unclamp"},
-    MachineMCode{12, "auto air jet on"},       MachineMCode{13, "auto air jet off"},
-    MachineMCode{14, "main spindle clamp"},    MachineMCode{15, "main spindle unclamp"},
-    MachineMCode{21, "tailstock advance"},     MachineMCode{22, "tailstock retract"},
-    MachineMCode{31, "chip auger forward"},    MachineMCode{33, "chip auger stop"},
-    MachineMCode{38, "spindle speed variation on"}, MachineMCode{39, "spindle speed variation off"},
-    MachineMCode{41, "spindle low gear"},      MachineMCode{42, "spindle high gear"},
-    MachineMCode{51, "user relay on"},         MachineMCode{52, "user relay on"},
-    MachineMCode{53, "user relay on"},         MachineMCode{54, "user relay on"},
-    MachineMCode{55, "user relay on"},         MachineMCode{56, "user relay on"},
-    MachineMCode{57, "user relay on"},         MachineMCode{58, "user relay on"},
-    MachineMCode{59, "output relay set"},      MachineMCode{61, "user relay off"},
-    MachineMCode{62, "user relay off"},        MachineMCode{63, "user relay off"},
-    MachineMCode{64, "user relay off"},        MachineMCode{65, "user relay off"},
-    MachineMCode{66, "user relay off"},        MachineMCode{67, "user relay off"},
-    MachineMCode{68, "user relay off"},        MachineMCode{69, "output relay clear"},
-    MachineMCode{85, "automatic door open"},   MachineMCode{86, "automatic door close"},
-    MachineMCode{88, "high pressure coolant on"}, MachineMCode{89, "high pressure coolant off"},
+    MachineMCode{10, "chuck clamp", None, kHaasManual},
+    MachineMCode{11, "chuck unclamp: the bar is free in the chuck", Unsimulated, kHaasManual},
+    MachineMCode{12, "auto air jet on", None, kHaasManual},
+    MachineMCode{13, "auto air jet off", None, kHaasManual},
+    MachineMCode{14, "main spindle clamp", None, kHaasManual},
+    MachineMCode{15, "main spindle unclamp", None, kHaasManual},
+    MachineMCode{17, "turret rotation forward", None, kHaasManual},
+    MachineMCode{18, "turret rotation reverse", None, kHaasManual},
+    MachineMCode{21, "tailstock advance", Unsimulated, kHaasManual},
+    MachineMCode{22, "tailstock retract", Unsimulated, kHaasManual},
+    MachineMCode{31, "chip auger forward", None, kHaasManual},
+    MachineMCode{33, "chip auger stop", None, kHaasManual},
+    MachineMCode{38, "spindle speed variation on", None, kHaasManual},
+    MachineMCode{39, "spindle speed variation off", None, kHaasManual},
+    MachineMCode{41, "spindle low gear", None, kHaasManual},
+    MachineMCode{42, "spindle high gear", None, kHaasManual},
+    // The user relays drive whatever the shop wired to them: a bar puller, a door, a gantry.
+    MachineMCode{51, "user relay 1 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{52, "user relay 2 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{53, "user relay 3 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{54, "user relay 4 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{55, "user relay 5 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{56, "user relay 6 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{57, "user relay 7 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{58, "user relay 8 on (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{59, "output relay set (the shop's own equipment)", Unsimulated, kHaasManual},
+    MachineMCode{61, "user relay 1 off", None, kHaasManual},
+    MachineMCode{62, "user relay 2 off", None, kHaasManual},
+    MachineMCode{63, "user relay 3 off", None, kHaasManual},
+    MachineMCode{64, "user relay 4 off", None, kHaasManual},
+    MachineMCode{65, "user relay 5 off", None, kHaasManual},
+    MachineMCode{66, "user relay 6 off", None, kHaasManual},
+    MachineMCode{67, "user relay 7 off", None, kHaasManual},
+    MachineMCode{68, "user relay 8 off", None, kHaasManual},
+    MachineMCode{69, "output relay clear", None, kHaasManual},
+    MachineMCode{85, "automatic door open", None, kHaasManual},
+    MachineMCode{86, "automatic door close", None, kHaasManual},
+    MachineMCode{88, "high pressure coolant on", None, kHaasManual},
+    MachineMCode{89, "high pressure coolant off", None, kHaasManual},
+    MachineMCode{104, "probe arm extend", Unsimulated, kHaasManual},
+    MachineMCode{105, "probe arm retract", Unsimulated, kHaasManual},
+    MachineMCode{110, "tailstock chuck clamp", Unsimulated, kHaasManual},
+    MachineMCode{111, "tailstock chuck unclamp", Unsimulated, kHaasManual},
 };
+
+constexpr std::array kFamilies{MachineMCodes::Gsk980tdi, MachineMCodes::Fanuc0iT, MachineMCodes::Haas};
 
 }  // namespace
+
+std::span<const MachineMCodes> machineMCodeFamilies() { return kFamilies; }
+
+std::string_view machineMCodeFamilyName(MachineMCodes family) {
+  switch (family) {
+    case MachineMCodes::Gsk980tdi: return "gsk980tdi";
+    case MachineMCodes::Fanuc0iT: return "fanuc-0i-t";
+    case MachineMCodes::Haas: return "haas";
+  }
+  return "";
+}
 
 std::span<const MachineMCode> machineMCodes(MachineMCodes family) {
   switch (family) {
@@ -77,6 +141,25 @@ std::string machineMCodeList(MachineMCodes family) {
   for (const MachineMCode& code : machineMCodes(family))
     list += fmt::format("{}M{:02}", list.empty() ? "" : " ", code.number);
   return list;
+}
+
+std::string machineMCodeMessage(const MachineMCode& code, std::string_view written) {
+  if (code.motion == MachineMotion::None)
+    return fmt::format("{} ({}) is a machine function that changes nothing simulated: ignored", written, code.meaning);
+  return fmt::format("{} ({}) moves something lathesim does not simulate: the program runs on, but a collision "
+                     "with it is not checked",
+                     written, code.meaning);
+}
+
+std::string otherFamiliesHolding(int number, MachineMCodes family) {
+  std::string text;
+  for (const MachineMCodes other : kFamilies) {
+    if (other == family) continue;
+    if (const MachineMCode* code = findMachineMCode(number, other))
+      text += fmt::format("{}the {} table has M{:02} ({})", text.empty() ? "" : "; ", machineMCodeFamilyName(other),
+                          number, code->meaning);
+  }
+  return text;
 }
 
 }  // namespace lathesim::interp

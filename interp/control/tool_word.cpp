@@ -28,7 +28,8 @@ const ToolWordForm* formNamed(std::string_view name) {
 
 }  // namespace
 
-Result<ToolWord> readToolWord(const Word& word, const std::vector<std::string>& forms, int line) {
+Result<ToolWord> readToolWord(const Word& word, const std::vector<std::string>& forms, int line,
+                              bool besideToolChange) {
   const std::string& digits = word.number;
   const bool integral = !digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos;
   std::string expected;
@@ -42,6 +43,10 @@ Result<ToolWord> readToolWord(const Word& word, const std::vector<std::string>& 
     ToolWord read;
     read.tool = split == 0 ? 0 : std::stoi(digits.substr(0, split));
     read.offset = std::stoi(digits.substr(split));
+    if (split == 0 && read.offset != 0 && besideToolChange) {
+      read.tool = read.offset;
+      return read;
+    }
     if (split == 0 && read.offset != 0 && form->shortIsTool) {
       read.tool = read.offset;
       read.note = fmt::format("{} is read as tool {} with offset {}, as a Haas control reads a short T word ({})",

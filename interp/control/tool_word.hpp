@@ -23,7 +23,10 @@ struct ToolWord {
   std::optional<std::string> note;  // a short form read by the rule, worth a warning
 };
 
-/// Reads T `word` of the block on `line` by `forms`.
-Result<ToolWord> readToolWord(const Word& word, const std::vector<std::string>& forms, int line);
+/// Reads T `word` of the block on `line` by `forms`. `besideToolChange`: the block holds M06,
+/// so a word no longer than the offset digits names the tool and its own offset, as the
+/// trainers read it (M06 T01 is tool 1 with offset 1), without a note.
+Result<ToolWord> readToolWord(const Word& word, const std::vector<std::string>& forms, int line,
+                              bool besideToolChange = false);
 
 }  // namespace lathesim::interp

@@ -158,6 +158,10 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
 Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
                                       ModalState state, const InterpreterOptions& options) {
   BlockOutcome outcome;
+  // The contour's blocks describe the cycle's path; whether a tool is selected when it cuts is
+  // asked of the cycle's own block and its moves (block_executor.cpp), not of each contour block.
+  const bool cutWithoutToolSaid = state.cutWithoutToolSaid;
+  state.cutWithoutToolSaid = true;
   for (std::size_t i = span.first; i <= span.last; ++i) {
     const ProgramBlock& block = cycle.program.block(i);
     if (block.skipped) continue;
@@ -171,6 +175,7 @@ Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
     const auto& warnings = done.value().warnings;
     outcome.warnings.insert(outcome.warnings.end(), warnings.begin(), warnings.end());
   }
+  state.cutWithoutToolSaid = cutWithoutToolSaid;
   outcome.state = std::move(state);
   return outcome;
 }

@@ -115,6 +115,7 @@ class Executor {
   Status applyCompoundCycle(const Code& code);
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
+  Status checkToolCalledBeforeCut();
   std::optional<std::string> missingMachineryOf(const Word& word) const;
   void emit(MoveKind kind, const RZ& from, const RZ& to, int cycleStep, const RZ& center = RZ(0, 0),
             const ThreadMotion& thread = {});
@@ -191,6 +192,7 @@ Result<BlockOutcome> Executor::run() {
                                   : applyMotion();
   if (!moved.ok()) return moved.error();
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
+  if (auto status = checkToolCalledBeforeCut(); !status.ok()) return status.error();
   if (!chainedThread_) {  // any other block ends a chain of G32 cuts
     state_.threadChainAngleDeg.reset();
     state_.threadChainRunout = {};
@@ -302,13 +304,21 @@ Status Executor::applySpindleSpeed() {
 
 Status Executor::applyTool() {
   const auto t = block_.take('T');
+  const auto toolChange = block_.mCode(MGroup::ToolChange);
+  if (toolChange && !t) {
+    warnings_.push_back({block_.line, toolChange->column,
+                         fmt::format("{} changes to the tool a T word in its block names, and this block has "
+                                     "none: the tool in place stays (write {} T0101)",
+                                     toolChange->text, toolChange->text)});
+  }
   if (!t) return success();
-  auto read = readToolWord(*t, options_.control.toolWordForms, block_.line);
+  auto read = readToolWord(*t, options_.control.toolWordForms, block_.line, toolChange.has_value());
   if (!read.ok()) return read.error();
   const auto [tool, offset, note] = read.value();
   if (note) warnings_.push_back({block_.line, t->column, *note});
   state_.toolOffset = offset;
   state_.offset = offsetNumbered(offsetTable(), offset);
+  if (tool == 0 && offset == 0) state_.toolCalled = false;  // T0, T00: no tool selected
   if (tool == 0) return success();  // no tool change
   const auto& tools = options_.toolNumbers;
   if (std::find(tools.begin(), tools.end(), tool) == tools.end() && options_.toolDefinitionHint && place_) {
@@ -338,6 +348,30 @@ Status Executor::applyTool() {
                                tool, t->text(), defined.empty() ? "none" : defined));
   }
   state_.tool = tool;
+  state_.toolCalled = true;
+  return success();
+}
+
+// A block that cuts (a feed move, an arc, a thread, a cycle's legs) with no tool selected: no
+// T word has named one (and the setup names none mounted), or T0/T00 deselected it. The
+// program relies on the tool the turret was left at, without its offset. Refused or warned of
+// once, as the control's cut_without_tool says.
+Status Executor::checkToolCalledBeforeCut() {
+  if (state_.toolCalled || state_.cutWithoutToolSaid) return success();
+  const auto cuts = std::find_if(moves_.begin(), moves_.end(), [](const Move& m) {
+    return m.kind != MoveKind::Rapid && m.kind != MoveKind::Dwell;
+  });
+  if (cuts == moves_.end()) return success();
+  const bool refused = options_.control.cutWithoutTool == CutWithoutTool::Error;
+  const std::string message =
+      fmt::format("this block cuts with no tool selected (no T word has named one, or T0/T00 deselected it): {}; "
+                  "call the tool first (T0101, or M06 T0101 on a trainer)",
+                  refused ? "this control does not cut with no tool selected (cut_without_tool = error)"
+                          : fmt::format("the machine cuts with the tool its turret was left at, tool {} assumed",
+                                        state_.tool));
+  if (refused) return Error{block_.line, block_.column, message};
+  warnings_.push_back({block_.line, block_.column, message});
+  state_.cutWithoutToolSaid = true;
   return success();
 }
 

@@ -77,6 +77,9 @@ struct ModalState {
   bool coolantOn = false;
   int tool = 0;
   int toolOffset = 0;
+  bool toolCalled = false;  // a tool is selected: the setup's mounted one, or a T word's; T0 and
+                            // T00 deselect it
+  bool cutWithoutToolSaid = false;  // the warning of a cut before any tool call is given once
   ToolOffset offset;  // the values of offset `toolOffset` as its T word found them: G10 changes
                       // the table, and a changed entry takes effect at the next T word
   std::shared_ptr<const ToolOffsets> offsetTable;  // the table as G10 left it; null: the setup's

@@ -63,7 +63,7 @@ Status MovePipeline::pass() {
     return *moveLimitError(passed_ + moves.size(), options_.maxMoves, past.line, past.column);
   }
   if (options_.machine.travel)
-    if (auto status = checkTravel(moves, *options_.machine.travel); !status.ok()) return status;
+    if (auto status = checkTravel(moves, *options_.machine.travel, travelWarned_, warnings_); !status.ok()) return status;
   for (Move& move : moves) sink_.take(std::move(move));
   passed_ += moves.size();
   return success();

@@ -18,6 +18,7 @@
 
 #include "interp/compensation/uncompensated_nose.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/motion/travel_limits.hpp"
 #include "interp/move_sink.hpp"
 #include "interp/result.hpp"
 
@@ -54,6 +55,7 @@ class MovePipeline {
   RZ shiftInForce_{0, 0};  // the tool offset's shift the last move passed left in force
   std::size_t passed_ = 0;
   UncompensatedNoseCheck uncompensated_;  // contours cut under G40 with a nose radius
+  DerivedTravelWarned travelWarned_;  // a derived travel's warning is given once per axis
 };
 
 }  // namespace lathesim::interp

@@ -45,6 +45,7 @@ class ProgramRunner {
     state_.inch = !options.control.powerOnMetric;
     state_.compound = CompoundCycleParams::of(options.control);
     if (!options.toolNumbers.empty()) state_.tool = options.toolNumbers.front();
+    state_.toolCalled = options.mountedToolStated;
   }
 
   Status run();
@@ -318,7 +319,7 @@ Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int 
     const std::string name = file->path.string();
     for (ReadNote& note : appendProgramFile(program_, name, std::move(file->text), programNumber, options_.control.blockSkip,
                                             options_.dialect, options_.control.machineMCodes))
-      notes_.push_back(Error{note.line, note.column, std::move(note.message), name});
+      (note.warning ? warnings_ : notes_).push_back(Error{note.line, note.column, std::move(note.message), name});
     flow_.programGrew();
     return success();
   }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interp/macro/expression_parser.hpp"
+#include "interp/text/typing_slips.hpp"
 
 namespace lathesim::interp::macro {
 namespace {
@@ -149,6 +150,8 @@ Status readWords(TokenCursor& cursor, MacroBlock& block) {
       continue;
     }
     if (startsStatement(cursor)) return mixedBlock(cursor, false);
+    if (token.kind == TokenKind::Open || token.kind == TokenKind::Close)
+      return strayBracket(cursor.line(), token.text, token.column);
     return cursor.errorHere(fmt::format("unexpected {}: expected a word, a letter followed by a number such as X20",
                                         describe(token)));
   }
@@ -168,6 +171,8 @@ bool needsMacroReader(const std::vector<Token>& tokens) {
 Result<MacroBlock> readMacroBlock(const std::vector<Token>& tokens, const RawBlock& raw) {
   const int endColumn = raw.chars.empty() ? raw.column : raw.chars.back().column + 1;
   TokenCursor cursor(tokens, raw.line, endColumn);
+  if (!tokens.empty() && tokens.front().kind == TokenKind::Number)
+    if (auto slip = zeroForLetterO(raw.line, tokens.front().text, tokens.front().column)) return *slip;
   MacroBlock block;
   if (!raw.comments.empty()) block.message = raw.comments.front();
   // A statement may follow the block's N number.

@@ -29,24 +29,36 @@ std::string limitsText(const TravelLimits& t, bool xAxis) {
   const std::string range = xAxis ? fmt::format("X{} to X{}", csvNumber(t.xMinDiameterMm), csvNumber(t.xMaxDiameterMm))
                                   : fmt::format("Z{} to Z{}", csvNumber(t.zMinMm), csvNumber(t.zMaxMm));
   if (!derived) return fmt::format("{} ([machine] travel_{})", range, xAxis ? 'x' : 'z');
-  return fmt::format("{}, derived from [machine] reference and start and the bar; give [machine] travel_{} "
-                     "if the machine reaches further",
+  return fmt::format("{}, derived from [machine] reference and start and the bar, as no setup states it: an "
+                     "assumption, not checked further on this axis; give [machine] travel_{} to have it checked",
                      range, xAxis ? 'x' : 'z');
+}
+
+std::string beyondText(double x, double z, bool xAxis, const TravelLimits& travel) {
+  return fmt::format("overtravel: this block moves the tool to X{} Z{} (in the setup's frame), beyond the machine's "
+                     "{} travel, {}",
+                     csvNumber(x), csvNumber(z), xAxis ? 'X' : 'Z', limitsText(travel, xAxis));
 }
 
 }  // namespace
 
-Status checkTravel(const std::vector<Move>& moves, const TravelLimits& travel) {
+Status checkTravel(const std::vector<Move>& moves, const TravelLimits& travel, DerivedTravelWarned& warned,
+                   std::vector<Error>& warnings) {
   for (const Move& move : moves) {
     for (const RZ& point : reachedPoints(move)) {
       const double x = diameterOf(point);
       const bool xOut = x < travel.xMinDiameterMm - kTolMm || x > travel.xMaxDiameterMm + kTolMm;
       const bool zOut = point.y() < travel.zMinMm - kTolMm || point.y() > travel.zMaxMm + kTolMm;
-      if (!xOut && !zOut) continue;
-      return Error{move.line, move.column,
-                   fmt::format("overtravel: this block moves the tool to X{} Z{} (in the setup's frame), beyond "
-                               "the machine's {} travel, {}",
-                               csvNumber(x), csvNumber(point.y()), xOut ? 'X' : 'Z', limitsText(travel, xOut))};
+      // A stated travel stops the program; a derived one is said once per axis.
+      for (const bool xAxis : {true, false}) {
+        if (!(xAxis ? xOut : zOut)) continue;
+        if (!(xAxis ? travel.xDerived : travel.zDerived))
+          return Error{move.line, move.column, beyondText(x, point.y(), xAxis, travel)};
+        bool& said = xAxis ? warned.x : warned.z;
+        if (said) continue;
+        said = true;
+        warnings.push_back(Error{move.line, move.column, beyondText(x, point.y(), xAxis, travel)});
+      }
     }
   }
   return success();

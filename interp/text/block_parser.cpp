@@ -98,8 +98,13 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
         continue;
       }
       const MCodeInfo* info = number ? findMCode(*number) : nullptr;
-      auto code = checkedCode(word, number, line, info, [machine] {
-        return fmt::format("{}, or a machine code of this control ({})", supportedMCodes(), machineMCodeList(machine));
+      auto code = checkedCode(word, number, line, info, [machine, number] {
+        const std::string elsewhere = number ? otherFamiliesHolding(*number, machine) : std::string();
+        return fmt::format("{}, or a machine code of this control's table, m_codes = {} ({}){}", supportedMCodes(),
+                           machineMCodeFamilyName(machine), machineMCodeList(machine),
+                           elsewhere.empty() ? std::string("; no machine table lathesim has holds it")
+                                             : fmt::format("; {}: set [control] m_codes if the machine is that one",
+                                                           elsewhere));
       });
       if (!code.ok()) return code.error();
       keepLast(block.mCodes, info->group, code.value(), block);

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "interp/text/lookalikes.hpp"
+#include "interp/text/typing_slips.hpp"
 #include "interp/text/utf8.hpp"
 
 namespace lathesim::interp {
@@ -239,6 +240,9 @@ bool BlockReader::skipDirectiveLine() {
   std::size_t probe = at_;
   while (probe < text_.size() && isBlank(text_[probe])) ++probe;
   if (probe >= text_.size() || text_[probe] != '[') return false;
+  // A pasted citation ("[cite: 133]") is no trainer's directive: read as a block, it is refused
+  // as what it is (typing_slips.hpp).
+  if (upperCase(std::string(text_.substr(probe + 1, 4))) == "CITE") return false;
   std::size_t end = text_.find('\n', probe);
   if (end == std::string_view::npos) end = text_.size();
   std::string directive(text_.substr(probe, end - probe));
@@ -433,30 +437,11 @@ std::optional<Error> strayClosingParenthesis(const RawBlock& block) {
   return Error{block.line, stray->column, "')' closes no comment: a comment opens with '(' on the same line"};
 }
 
-bool isLetterO(const SourceChar& c) { return c.text == "O" || c.text == "o"; }
-
-// The letter O typed for a zero: right after an address letter (`GO`) or inside a number
-// (`X1O.5`), with no space between.
-std::optional<Error> letterOForZero(const RawBlock& block, std::size_t at, char letter, const std::string& number) {
-  const auto& chars = block.chars;
-  if (at >= chars.size() || !isLetterO(chars[at]) || chars[at].column != chars[at - 1].column + 1) return std::nullopt;
-  // Followed at once by another letter, it is prose ("co" in "coolant"), not a zero.
-  const bool letterFollows = at + 1 < chars.size() && chars[at + 1].column == chars[at].column + 1 &&
-                             chars[at + 1].text.size() == 1 && isAsciiLetter(chars[at + 1].text[0]);
-  if (letterFollows) return std::nullopt;
-  std::string meant = std::string(1, letter) + number + "0";
-  for (std::size_t k = at + 1; k < chars.size() && isNumberChar(chars[k].text); ++k) meant += chars[k].text;
-  return Error{block.line, chars[at].column,
-               fmt::format("the letter '{}' {}; did you mean the digit 0 ({})?", chars[at].text,
-                           number.empty() ? fmt::format("right after {}, where a number belongs", letter)
-                                          : fmt::format("inside the number {}{}", letter, number),
-                           meant)};
-}
-
 }  // namespace
 
 Result<std::vector<Token>> lexBlock(const RawBlock& block) {
   if (auto strange = strangeCharacter(block)) return *strange;
+  if (auto citation = pastedCitation(block)) return *citation;
   if (auto paren = strayClosingParenthesis(block)) return *paren;
   std::vector<Token> tokens;
   const auto& chars = block.chars;
@@ -511,9 +496,7 @@ Result<std::vector<Token>> lexBlock(const RawBlock& block) {
       }
       std::size_t end = 0;
       word.number = numberAt(chars, next, end);
-      if (letter != 'O') {
-        if (auto zero = letterOForZero(block, end, letter, word.number)) return *zero;
-      }
+      if (auto zero = letterOForZero(block, end, letter, word.number)) return *zero;
       if (word.number.empty()) {
         return Error{block.line, head.column,
                      fmt::format("{} has no number: expected a value after it, such as {}20", letter, letter)};
@@ -559,6 +542,10 @@ Result<std::vector<Word>> tokenize(const RawBlock& block) {
   if (!tokens.ok()) return tokens.error();
   std::vector<Word> words;
   for (const Token& token : tokens.value()) {
+    if (token.kind == TokenKind::Number && words.empty())
+      if (auto slip = zeroForLetterO(block.line, token.text, token.column)) return *slip;
+    if (token.kind == TokenKind::Open || token.kind == TokenKind::Close)
+      return strayBracket(block.line, token.text, token.column);
     if (token.kind != TokenKind::Word) {
       return Error{block.line, token.column,
                    fmt::format("unexpected '{}': expected a word, a letter followed by a number such as X20", token.text)};

@@ -72,6 +72,7 @@ struct ReadNote {
   int line = 0;
   int column = 0;
   std::string message;
+  bool warning = false;  // a warning rather than a note (a machine code that moves something)
 };
 
 /// A letter and its number: "X20 .0" is the word X20.0. Fanuc's comma words (",A-45.", ",C1.")

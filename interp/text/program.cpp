@@ -327,9 +327,9 @@ std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFo
       for (const Code& code : read->words->machineCodes) {
         if (!notedMachineCodes.insert(code.number).second) continue;
         const MachineMCode* own = findMachineMCode(code.number, text.machine);
-        machineNotes.push_back({block.line, code.column,
-                                fmt::format("{} ({}) is a machine function that changes nothing simulated: ignored",
-                                            code.text, own ? own->meaning : "machine function")});
+        if (own == nullptr) continue;  // the parser takes only the table's codes as machine codes
+        machineNotes.push_back({block.line, code.column, machineMCodeMessage(*own, code.text),
+                                own->motion != MachineMotion::None});
       }
     }
     if (isLoopBlock(block)) ++loopBlocks;

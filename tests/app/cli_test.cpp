@@ -221,6 +221,12 @@ TEST_F(RunSeed001, ReportNamesTheControlAndTheTravel) {
   EXPECT_EQ(travel.at("x_diameter_mm"), nlohmann::json::array({-50.0, 100.0}));
   EXPECT_EQ(travel.at("z_mm"), nlohmann::json::array({-120.0, 100.0}));
   EXPECT_EQ(travel.at("x_from"), "derived from [machine] reference and start and the bar");
+  // What the setup did not say: only the travel (it states the bar, its face and the start).
+  EXPECT_EQ(r.at("machine").at("assumed"),
+            nlohmann::json::parse(R"({"travel_x": [-50.0, 100.0], "travel_z": [-120.0, 100.0]})"));
+  EXPECT_NE(outcome_->out.find("  assumed, as the setup does not say: X travel X-50 to X100, Z travel Z-120 to Z100\n"),
+            std::string::npos)
+      << outcome_->out;
   EXPECT_NE(outcome_->out.find("program.nc (control gsk980tdi): 6 moves"), std::string::npos) << outcome_->out;
 }
 

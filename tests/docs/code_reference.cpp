@@ -86,9 +86,13 @@ std::string machineMCodeSection(const std::vector<Control>& controls) {
   for (const auto& [name, presets] : presetsOf) {
     std::string users;
     for (const Control* control : presets) users += fmt::format("{}`{}`", users.empty() ? "" : ", ", control->preset);
-    text += fmt::format("#### `m_codes = \"{}\"` (preset {})\n\n| code | meaning |\n|---|---|\n", name, users);
+    text += fmt::format("#### `m_codes = \"{}\"` (preset {})\n\n| code | meaning | said as | source |\n|---|---|---|---|\n",
+                        name, users);
     for (const MachineMCode& code : machineMCodes(listNamed[name]))
-      text += fmt::format("| M{:02} | {} |\n", code.number, cell(code.meaning));
+      text += fmt::format("| M{:02} | {} | {} | {} |\n", code.number, cell(code.meaning),
+                          code.motion == MachineMotion::None ? "note: moves nothing simulated"
+                                                             : "warning: moves something not simulated",
+                          cell(code.source));
     text += '\n';
   }
   return text;

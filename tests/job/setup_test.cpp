@@ -65,7 +65,8 @@ TEST(ParseSetup, MissingKeysKeepTheirDefaults) {
   ASSERT_TRUE(result.setup.has_value());
   EXPECT_DOUBLE_EQ(result.setup->stock.diameterMm, 50.0);
   EXPECT_DOUBLE_EQ(result.setup->stock.lengthMm, 112.0);
-  EXPECT_DOUBLE_EQ(result.setup->stock.faceZMm, 2.0);
+  EXPECT_DOUBLE_EQ(result.setup->stock.faceZMm, 0.0);  // a [stock]'s face is at Z0 unless stated
+  EXPECT_FALSE(result.setup->stockFaceGiven);
   EXPECT_EQ(result.setup->startPosition, RZ(100.0, 200.0));
   EXPECT_EQ(result.setup->tools.size(), 1u);
 }

@@ -62,7 +62,7 @@ TEST(MachineMCodes, AcceptedOncePerCodeUnderTheirControl) {
 TEST(MachineMCodes, UnknownToTheControlIsAnErrorListingItsCodes) {
   const auto gsk = run("G00 X40 Z5\nM31\n");  // a Haas chip auger code: not the GSK's
   expectError(gsk, 2, 1, "unknown M code M31");
-  EXPECT_NE(gsk.diagnostics[0].message.find("a machine code of this control (M10 M11 M12 M32"), std::string::npos)
+  EXPECT_NE(gsk.diagnostics[0].message.find("a machine code of this control's table, m_codes = gsk980tdi (M10 M11 M12 M32"), std::string::npos)
       << gsk.diagnostics[0].message;
   EXPECT_TRUE(run("M41\nM32\n").ok());  // the GSK's gear range and lubrication
   expectError(run("M32\n", haas()), 1, 1, "unknown M code M32");

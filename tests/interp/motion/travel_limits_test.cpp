@@ -1,5 +1,5 @@
-// Overtravel: a move beyond the machine's travel stops the program at its block, as the
-// control's stored stroke limits do. The travel here is X-10..X200, Z-100..Z200 (diameters).
+// Overtravel: a move beyond a stated travel stops the program at its block, as the control's
+// stored stroke limits do; beyond a derived one it is a warning. The travel here is X-10..X200, Z-100..Z200 (diameters).
 
 #include "interp/motion/travel_limits.hpp"
 
@@ -43,12 +43,50 @@ TEST(TravelLimits, AnArcBulgingBeyondIsCaughtAtItsHighestPoint) {
               "overtravel: this block moves the tool to X140 Z-20 (in the setup's frame)");
 }
 
-TEST(TravelLimits, AnInchProgramReadAsMillimetresGoesNowhere) {
-  // The travel derived from a setup names where it came from. G20 X20 is 508 mm of diameter.
-  expectError(interpret("G20 G00 X20 Z.1\n", "t.nc", withTravel(true)), 1, 1,
-              "overtravel: this block moves the tool to X508 Z2.54 (in the setup's frame), beyond the machine's X "
-              "travel, X-10 to X200, derived from [machine] reference and start and the bar; give [machine] "
-              "travel_x if the machine reaches further");
+TEST(TravelLimits, ADerivedTravelWarnsAtTheBlockAndRuns) {
+  // A travel nobody stated is an assumption: the program runs, and the first block beyond it
+  // is warned of at its line, naming where the limit came from. G20 X20 is 508 mm of diameter.
+  const auto result = interpret("G20 G00 X20. Z.1\nG00 X30.\n", "t.nc", withTravel(true));
+  ASSERT_TRUE(result.ok()) << test::messageOf(result);
+  const auto warnings = test::warningsOf(result);
+  ASSERT_EQ(warnings.size(), 1u) << warnings.back().message;  // once per axis: the second block is beyond too
+  EXPECT_EQ(warnings[0].line, 1);
+  EXPECT_EQ(warnings[0].column, 1);
+  EXPECT_EQ(warnings[0].message,
+            "overtravel: this block moves the tool to X508 Z2.54 (in the setup's frame), beyond the machine's X "
+            "travel, X-10 to X200, derived from [machine] reference and start and the bar, as no setup states it: "
+            "an assumption, not checked further on this axis; give [machine] travel_x to have it checked");
+  EXPECT_EQ(result.toolpath.moves.back().to.x(), 381.0);  // X30 in inch, as a radius: 15 × 25.4
+}
+
+TEST(TravelLimits, ARearToolPostBelowTheAxisWarnsUnderDerivedTravelAndStopsUnderStated) {
+  // A rear tool post works at negative X: is below the derived X-10 (minus the bar).
+  // Derived: a warning at line 2, one per axis even when both axes leave (line 3's Z-150).
+  const std::string program = "G00 X40. Z2.\nG00 X-25.5\nG00 Z-150.\n";
+  const auto derived = interpret(program, "t.nc", withTravel(true));
+  ASSERT_TRUE(derived.ok()) << test::messageOf(derived);
+  const auto warnings = test::warningsOf(derived);
+  ASSERT_EQ(warnings.size(), 2u) << warnings.back().message;
+  EXPECT_EQ(warnings[0].line, 2);
+  EXPECT_NE(warnings[0].message.find("beyond the machine's X travel, X-10 to X200, derived"), std::string::npos);
+  EXPECT_EQ(warnings[1].line, 3);
+  EXPECT_NE(warnings[1].message.find("beyond the machine's Z travel, Z-100 to Z200, derived"), std::string::npos);
+  // Stated: the same block stops the program.
+  expectError(interpret(program, "t.nc", withTravel(false)), 2, 1,
+              "overtravel: this block moves the tool to X-25.5 Z2 (in the setup's frame), beyond the machine's X "
+              "travel, X-10 to X200 ([machine] travel_x)");
+}
+
+TEST(TravelLimits, OnlyTheStatedAxisStops) {
+  // X stated, Z derived: the Z overtravel at line 2 warns, the X one at line 3 stops.
+  InterpreterOptions options = withTravel(false);
+  options.machine.travel->zDerived = true;
+  const auto result = interpret("G00 X40 Z2\nG00 Z-150\nG00 X250\n", "t.nc", options);
+  expectError(result, 3, 1, "beyond the machine's X travel, X-10 to X200 ([machine] travel_x)");
+  const auto zOnly = interpret("G00 X40 Z2\nG00 Z-150\n", "t.nc", options);
+  ASSERT_TRUE(zOnly.ok());
+  ASSERT_EQ(test::warningsOf(zOnly).size(), 1u);
+  EXPECT_EQ(test::warningsOf(zOnly)[0].line, 2);
 }
 
 TEST(TravelLimits, TheToolOffsetAndG50AreInTheSetupsFrame) {
