@@ -1,6 +1,8 @@
 #include "interp/text/block_parser.hpp"
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -17,17 +19,50 @@ std::optional<int> codeNumber(const Word& word) {
 
 std::string codeText(char letter, int number) { return fmt::format("{}{:02}", letter, number); }
 
+// The cure of a G code `dialect` does not know: the dialects that read it, the first named
+// with its flag ("G95 is feed per revolution in fanuc-b and hnc: run with --dialect fanuc-b"),
+// or "" when none does.
+std::string otherDialectsReading(int written, Dialect dialect) {
+  std::string readers;
+  const GCodeInfo* first = nullptr;
+  Dialect firstDialect = dialect;
+  for (Dialect other : kDialects) {
+    const GCodeInfo* info = other == dialect ? nullptr : findGCode(written, other);
+    if (info == nullptr || !info->supported) continue;
+    readers += fmt::format("{}{}", readers.empty() ? "" : " and ", dialectName(other));
+    if (first == nullptr) {
+      first = info;
+      firstDialect = other;
+    }
+  }
+  if (first == nullptr) return "";
+  return fmt::format("; {} is {} in {}: run with --dialect {}", codeText('G', written), first->meaning, readers,
+                     dialectName(firstDialect));
+}
+
+// The cure of an M code `machine` does not list: the controls whose lists have it.
+std::string otherControlsReading(int number, MachineMCodes machine) {
+  constexpr std::array kControls{std::pair{MachineMCodes::Gsk980tdi, "gsk980tdi"},
+                                 std::pair{MachineMCodes::Fanuc0iT, "fanuc-0i-t"}, std::pair{MachineMCodes::Haas, "haas"}};
+  for (const auto& [other, name] : kControls) {
+    const MachineMCode* own = other == machine ? nullptr : findMachineMCode(number, other);
+    if (own != nullptr)
+      return fmt::format("; {} is {} on {}: run with --control {}", codeText('M', number), own->meaning, name, name);
+  }
+  return "";
+}
+
 // A known, supported code, or the error saying why the word is not one. `info` is the table
 // entry found for the word's number (nullptr when none); `known()` lists valid codes, only
 // when needed: listing them walks the whole table, which every G word of a long program
 // would pay for.
 template <class Info, class ListKnown>
 Result<Code> checkedCode(const Word& word, std::optional<int> written, int line, const Info* info,
-                         const ListKnown& known) {
+                         const ListKnown& known, const std::string& cure = "") {
   if (info == nullptr) {
     return Error{line, word.column,
-                 fmt::format("unknown {} code {}: expected one of {}", word.letter, word.text(),
-                             known())};
+                 fmt::format("unknown {} code {}: expected one of {}{}", word.letter, word.text(), known(),
+                             cure)};
   }
   const std::string text = codeText(word.letter, *written);
   if (!info->lacks.empty()) {
@@ -86,9 +121,10 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
     if (word.letter == 'G') {
       const auto number = codeNumber(word);
       const GCodeInfo* info = number ? findGCode(*number, dialect) : nullptr;
-      auto code = checkedCode(word, number, line, info, [dialect] {
-        return fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect));
-      });
+      auto code = checkedCode(
+          word, number, line, info,
+          [dialect] { return fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect)); },
+          info == nullptr && number ? otherDialectsReading(*number, dialect) : "");
       if (!code.ok()) return code.error();
       keepLast(block.gCodes, info->group, code.value(), block);
     } else if (word.letter == 'M') {
@@ -98,9 +134,12 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
         continue;
       }
       const MCodeInfo* info = number ? findMCode(*number) : nullptr;
-      auto code = checkedCode(word, number, line, info, [machine] {
-        return fmt::format("{}, or a machine code of this control ({})", supportedMCodes(), machineMCodeList(machine));
-      });
+      auto code = checkedCode(
+          word, number, line, info,
+          [machine] {
+            return fmt::format("{}, or a machine code of this control ({})", supportedMCodes(), machineMCodeList(machine));
+          },
+          info == nullptr && number ? otherControlsReading(*number, machine) : "");
       if (!code.ok()) return code.error();
       keepLast(block.mCodes, info->group, code.value(), block);
     } else {
