@@ -8,6 +8,7 @@
 
 #include "geometry/mesh_shells.hpp"
 #include "interp/control/control_preset.hpp"
+#include "interp/control/machine_choice.hpp"
 #include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
 #include "measure/thread_measure.hpp"
@@ -32,6 +33,7 @@ struct RunFigures {
   std::string program;
   std::string setup;
   interp::Control control;  // the preset and every parameter in force
+  interp::MachineChoice machine;  // the dialect and control, stated or read from the program, and why
   interp::TravelLimits travel;  // the machine's travel the moves were checked against
   double voxelMm = 0;
   std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
