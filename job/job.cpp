@@ -237,6 +237,7 @@ std::optional<Job> openJob(const JobRequest& request) {
               << interp::printable(error.code().message()) << ")\n";
     return std::nullopt;
   }
+  job.toolpath.programName = program.string();  // the name warningAt locates warnings in
   chooseMachineOf(job);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);

@@ -198,8 +198,9 @@ std::vector<Error> lengthWarnings(const MachineEvidence& evidence, const Control
                                       "write {}. for {:g} mm, or use --control gsk980tdi to read every bare number "
                                       "in mm",
                                       w.text, controlPreset, asRead,
-                                      beside ? fmt::format("{} lengths are written without a point beside {} with one",
-                                                           evidence.bareLengths, evidence.pointLengths)
+                                      beside ? fmt::format("{} {} written without a point beside {} with one", evidence.bareLengths,
+                                                           evidence.bareLengths == 1 ? "length is" : "lengths are",
+                                                           evidence.pointLengths)
                                              : fmt::format("the largest such length is {:g} mm on a Φ{:g} bar",
                                                            evidence.largestBareLength * control.leastIncrementMm,
                                                            barDiameterMm),

@@ -46,9 +46,9 @@ bool mayMatch(const Sign& sign, const std::string& upperLine) {
                      [&](std::string_view needle) { return upperLine.find(needle) != std::string::npos; });
 }
 
-const std::array<Sign, 10>& signs() {
+const std::array<Sign, 9>& signs() {
   using std::regex_constants::icase;
-  static const std::array<Sign, 10> table{
+  static const std::array<Sign, 9> table{
       Sign{std::regex(R"(^\s*%PM\b)"), "Philips 432/532", {"%PM"}},
       Sign{std::regex(R"(\bo(\d+|<[^>]*>)\s*(sub|endsub|call|if|elseif|else|endif|while|endwhile|do|repeat|endrepeat|return|break|continue)\b)", icase),
            "LinuxCNC (O-word subroutines)",
@@ -68,9 +68,6 @@ const std::array<Sign, 10>& signs() {
       // Haas give both in one T word).
       Sign{std::regex(R"(\bT\s*\d+\s*D\s*\d+\b)", icase), "Fagor 8055/8070 or Siemens Sinumerik (T with its offset in D)",
            {"D"}},
-      // Mazak EIA/ISO: the tool word's suffix after a point (T0101.1); a Fanuc or GSK T word
-      // has no point. From general knowledge of Mazatrol EIA, not checked in its manual.
-      Sign{std::regex(R"(\bT\d{2,4}\.\d+\b)", icase), "Mazak EIA/ISO", {"T"}},
   };
   return table;
 }

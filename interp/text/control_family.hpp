@@ -9,7 +9,6 @@
 //   Siemens Sinumerik   DIAMON/DIAMOF, CYCLE95 and the like
 //   Fagor 8055/8070     a `%name,MX,` program header; `T1 D1` (tool, then its offset in D,
 //                       as Siemens writes it too)
-//   Mazak EIA/ISO       a T word with a point before its suffix (`T0101.1`) ⚠ unverified
 // Text inside ( ) comments is never evidence.
 
 #include <optional>

@@ -85,7 +85,6 @@ const Expected kCorpusOutcomes[] = {
     {"f09_linuxcnc_named.nc", {}, Refused{2, "LinuxCNC (named parameters)"}},
     {"f10_linuxcnc_g7.nc", {}, Refused{2, "LinuxCNC (G7/G8"}},
     {"f11_linuxcnc_g64p.nc", {}, Refused{2, "LinuxCNC (G64"}},
-    {"f12_mazak_eia.nc", {}, Refused{3, "Mazak EIA/ISO"}},
     {"f13_philips.nc", {}, Refused{1, "Philips 432/532"}},
 };
 

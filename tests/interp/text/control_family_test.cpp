@@ -26,7 +26,6 @@ TEST(ControlFamily, EachFamilyIsRecognisedWhereItShows) {
       {"%SHAFT,MX,\nG90 G95\n", "Fagor 8055/8070", 1, 1},
       {"G90 G95\nN10 T1 D1\n", "Fagor 8055/8070 or Siemens Sinumerik (T with its offset in D)", 2, 5},
       {"G7 G18\n", "LinuxCNC (G7/G8 diameter and radius modes)", 1, 1},
-      {"G21\nT0101.1\n", "Mazak EIA/ISO", 2, 1},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.text));
