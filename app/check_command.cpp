@@ -138,10 +138,11 @@ std::string where(const RZ& p) {
 }
 
 void printSummary(const CheckOptions& options, const measure::DeviationReport& d,
-                  const std::vector<measure::ThreadCheck>& threads) {
+                  const std::vector<measure::ThreadCheck>& threads, const interp::MachineChoice& machine) {
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   std::cout << interp::printable(options.run.program.string()) << " against " << interp::printable(target) << ": "
-            << (allWithin(d, threads) ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm\n";
+            << (allWithin(d, threads) ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm ("
+            << interp::printable(interp::describeMachine(machine)) << ")\n";
   for (const auto& t : threads) {
     std::cout << "  thread Z" << fixed(t.callout.zLowMm, 3) << "..Z" << fixed(t.callout.zHighMm, 3);
     if (t.line) std::cout << " (line " << *t.line << ")";
@@ -305,7 +306,7 @@ int checkCommand(const CheckOptions& options) {
   run->progress->stage("done");
   run->progress->finish();
 
-  printSummary(options, deviation, threadChecks);
+  printSummary(options, deviation, threadChecks, run->figures.machine);
   keepUntilExit(std::move(*run));
   return allWithin(deviation, threadChecks) ? job::kExitOk : job::kExitOutOfTolerance;
 }

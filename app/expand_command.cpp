@@ -4,13 +4,19 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "interp/control/machine_choice.hpp"
+#include "interp/printable_text.hpp"
 #include "interp/toolpath_csv_spool.hpp"
 
 namespace lathesim::app {
 
 int expandCommand(const job::JobRequest& request) {
   interp::ToolpathCsvSpool csv;
-  if (!job::loadJob(request, csv)) return job::kExitBadInput;
+  const auto job = job::loadJob(request, csv);
+  if (!job) return job::kExitBadInput;
+  // The CSV is standard output's: the machine it was read for is said on standard error.
+  std::cerr << "lathesim: " << interp::printable(request.program.string()) << ": "
+            << interp::printable(interp::describeMachine(job->machine)) << '\n';
   csv.copyTo(std::cout);
   if (!std::cout.flush()) throw std::runtime_error("cannot write the toolpath to standard output");
   return job::kExitOk;

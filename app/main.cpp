@@ -130,9 +130,9 @@ int lathesimMain(int argc, char** argv) {
   std::vector<std::string> presets;
   for (auto preset : lathesim::interp::controlPresets()) presets.emplace_back(preset);
   for (auto [command, args] : {std::pair{runCmd, &runArgs}, {checkCmd, &checkArgs}, {expandCmd, &expandArgs}}) {
-    command->add_option("--dialect", args->dialect, "how the program writes its codes (overrides [machine] dialect)")
+    command->add_option("--dialect", args->dialect, "how the program writes its codes (overrides [machine] dialect; neither given: read from the program)")
         ->check(CLI::IsMember(dialects));
-    command->add_option("--control", args->control, "the control preset (overrides [control] name)")
+    command->add_option("--control", args->control, "the control preset (overrides [control] name; neither given: read from the program)")
         ->check(CLI::IsMember(presets));
     command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
         ->check(CLI::IsMember({"on", "off"}));

@@ -128,6 +128,11 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   report["program"] = f.program;
   report["setup"] = f.setup;
   report["control"] = controlJson(f.control);
+  report["machine"] = {{"dialect", interp::dialectName(f.machine.dialect)},
+                       {"control", f.machine.control},
+                       {"inferred", f.machine.inferred()},
+                       {"because", f.machine.because},
+                       {"conflicts", f.machine.conflicts}};
   const auto source = [](bool derived, const char* key) {
     return derived ? std::string("derived from [machine] reference and start and the bar") : "[machine] " + std::string(key);
   };

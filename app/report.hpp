@@ -8,6 +8,7 @@
 
 #include "geometry/mesh_shells.hpp"
 #include "interp/control/control_preset.hpp"
+#include "interp/control/machine_choice.hpp"
 #include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
 #include "interp/interpreter.hpp"
@@ -34,6 +35,7 @@ struct RunFigures {
   std::string program;
   std::string setup;
   interp::Control control;  // the preset and every parameter in force
+  interp::MachineChoice machine;  // the dialect and control, stated or read from the program, and why
   interp::TravelLimits travel;  // the machine's travel the moves were checked against
   std::vector<job::MachineAssumption> assumed;  // what the setup did not say of the machine
   double voxelMm = 0;

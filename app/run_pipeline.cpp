@@ -126,6 +126,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.program = options.program.string();
   figures.setup = setup.sourceName;
   figures.control = setup.control;
+  figures.machine = run.job.machine;
   figures.travel = job::travelOf(setup);
   figures.assumed = job::machineAssumptions(setup);
   figures.voxelMm = voxel;

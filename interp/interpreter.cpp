@@ -26,12 +26,12 @@ Status refuseEmptyProgram(const Program& program, std::string_view programText) 
 }
 
 // A program of another control family is refused as a whole, naming the family.
-Status refuseForeignProgram(PagedText programText) {
-  const auto foreign = recogniseForeignProgram(programText);
+Status refuseForeignProgram(PagedText programText, const InterpreterOptions& options) {
+  const auto foreign = options.foreignProgram ? *options.foreignProgram : recogniseForeignProgram(programText);
   if (!foreign) return success();
   return Error{foreign->line, foreign->column,
                fmt::format("this is a program for {} ('{}'), not Fanuc/GSK lathe G-code: lathesim "
-                           "reads the dialects fanuc-a, fanuc-b and hnc and does not translate other "
+                           "reads the dialects fanuc-a, fanuc-b, hnc and haas and does not translate other "
                            "control families",
                            foreign->family, foreign->evidence)};
 }
@@ -62,7 +62,7 @@ InterpretResult interpret(PagedText programText, const std::string& fileName,
   std::vector<Error> notes;
   Program program = readProgram(programText, options.control.blockSkip, options.dialect, options.control.machineMCodes);
   for (const ReadNote& note : program.notes) (note.warning ? warnings : notes).push_back({note.line, note.column, note.message});
-  Status status = refuseForeignProgram(programText);
+  Status status = refuseForeignProgram(programText, options);
   if (status.ok()) status = refuseEmptyProgram(program, programText.view());
   MovePipeline pipeline(options, moves, warnings);
   moves.recordingIn(result.toolpath);

@@ -18,6 +18,7 @@
 #include "interp/move_sink.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/compensation/uncompensated_nose.hpp"
+#include "interp/text/control_family.hpp"
 #include "interp/text/paged_text.hpp"
 #include "interp/execution/work_frame.hpp"
 
@@ -58,6 +59,10 @@ struct InterpreterOptions {
   std::map<int, double> macroVariables;  // common macro variables set before the run
                                          // (#100–#199, #500–#999)
   std::size_t maxMoves = kDefaultMaxMoves;  // more is an error at the block that passes it
+  // The program's foreign family when its caller has looked for it already (the job reads the
+  // machine's evidence in the same pass: machine_evidence.hpp), so that it is not looked for
+  // again; unset: the interpreter looks.
+  std::optional<std::optional<ForeignProgram>> foreignProgram;
   std::size_t moveWindow = kDefaultMoveWindow;  // moves held before they are handed on, once the
                                                 // path can be cut there (execution/move_pipeline.hpp)
 };

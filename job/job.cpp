@@ -75,6 +75,64 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
   }
 }
 
+// The program's evidence read, and the dialect and control not stated chosen from it
+// (interp/control/machine_choice.hpp); the setup's [control] keys kept over a chosen preset.
+void chooseMachineOf(Job& job) {
+  Setup& setup = job.setup;
+  job.evidence = interp::readMachineEvidence(job.programText.text());
+  interp::MachineStatement stated;
+  if (!setup.dialectBy.empty()) stated = {setup.dialect, setup.dialectBy, {}, {}};
+  if (!setup.controlBy.empty()) {
+    stated.control = setup.control.preset;
+    stated.controlBy = setup.controlBy;
+  }
+  job.machine = interp::chooseMachine(job.evidence, stated);
+  setup.dialect = job.machine.dialect;
+  if (job.machine.control != setup.control.preset) setup.control = *withPreset(setup.control, job.machine.control);
+  for (const interp::Error& w : job.machine.warnings) {
+    job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
+    print({job.warnings.back()});
+  }
+}
+
+// The program's evidence added to an error whose cure is a dialect: "(seen: G95 at line 11, …)";
+// and a length without a decimal point that a least-increment control read small, on the line
+// of a contour error or the block before it, shown as it was read.
+std::string withCure(const Job& job, const interp::Diagnostic& error, const std::string& programName) {
+  std::string message = error.message;
+  for (interp::Dialect dialect : interp::kDialects) {
+    if (message.find(fmt::format("--dialect {}", interp::dialectName(dialect))) == std::string::npos) continue;
+    std::string seen;
+    for (interp::EvidenceKind kind : {interp::EvidenceKind::SystemA, interp::EvidenceKind::SystemB,
+                                      interp::EvidenceKind::Hnc, interp::EvidenceKind::Haas}) {
+      const auto admitted = interp::dialectsAdmitting(kind);
+      if (std::find(admitted.begin(), admitted.end(), dialect) == admitted.end()) continue;
+      for (const interp::EvidenceMark& m : job.evidence.of(kind)) seen += (seen.empty() ? "" : ", ") + interp::markText(m);
+    }
+    if (!seen.empty()) message += " (seen: " + seen + ")";
+    break;
+  }
+  const interp::ControlParameters& control = job.setup.control.parameters;
+  const bool contour = message.find("monotonic") != std::string::npos || message.find("contour") != std::string::npos;
+  if (contour && control.decimalPointInput == interp::DecimalPointInput::LeastIncrements && error.line > 0 &&
+      error.file == programName) {
+    if (!job.programLines) job.programLines.emplace(job.programText.text());
+    const std::string_view text = job.programText.text().view();
+    for (int line = error.line; line >= std::max(1, error.line - 1); --line) {
+      const auto bare = interp::bareLengthsIn(job.programLines->lineOf(text, line), line);
+      if (bare.empty()) continue;
+      const interp::LengthWord& w = bare.front();
+      const bool corners = job.evidence.count(interp::EvidenceKind::FanucCorner) > 0;
+      message += fmt::format("; {} at line {} is {:g} mm under {}: no decimal point; write {}. or {}", w.text, w.line,
+                             w.value * control.leastIncrementMm, job.setup.control.preset, w.text,
+                             corners ? "set decimal_point_input = \"calculator\" in the setup's [control]"
+                                     : "use --control gsk980tdi");
+      break;
+    }
+  }
+  return message;
+}
+
 // Each move timed (interp/motion/cycle_time.hpp) on its way to the consumer.
 class TimedMoves final : public interp::MoveSink {
  public:
@@ -123,7 +181,10 @@ interp::Diagnostic Job::warningAt(int line, int column, std::string message) con
 }
 
 std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
-  if (overrides.dialect) setup.dialect = *overrides.dialect;
+  if (overrides.dialect) {
+    setup.dialect = *overrides.dialect;
+    setup.dialectBy = "--dialect";
+  }
   if (overrides.controlPreset) {
     std::optional<interp::Control> chosen = withPreset(setup.control, *overrides.controlPreset);
     if (!chosen) {
@@ -134,6 +195,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
       return std::nullopt;
     }
     setup.control = std::move(*chosen);
+    setup.controlBy = "--control";
   }
   if (overrides.maxMoves) setup.maxMoves = *overrides.maxMoves;
   if (overrides.blockSkip)
@@ -159,7 +221,7 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
 std::optional<Job> openJob(const JobRequest& request) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
-  Job job{defaultSetup(), {}, {}, {}, {}, {}, {}};
+  Job job{defaultSetup(), {}, {}, {}, {}, {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     print(loaded.diagnostics);
@@ -179,6 +241,8 @@ std::optional<Job> openJob(const JobRequest& request) {
               << interp::printable(error.code().message()) << ")\n";
     return std::nullopt;
   }
+  job.toolpath.programName = program.string();  // the name warningAt locates warnings in
+  chooseMachineOf(job);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {
@@ -201,6 +265,11 @@ std::optional<Job> openJob(const JobRequest& request) {
       print({job.notes.back()});
     }
   }
+  for (const interp::Error& w : interp::lengthWarnings(job.evidence, job.setup.control.parameters,
+                                                      job.setup.control.preset, job.setup.stock.diameterMm)) {
+    job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
+    print({job.warnings.back()});
+  }
   mountToolsNamedInComments(job, program.string());
   return job;
 }
@@ -212,7 +281,10 @@ bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves) 
   options.programDirectories = request.programDirectories;
   options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());
   TimedMoves timed(job.setup.machine, moves);
+  options.foreignProgram.emplace(job.evidence.foreign);  // looked for in the evidence's pass
   interp::InterpretResult result = interp::interpret(job.programText.text(), program.string(), options, timed);
+  for (interp::Diagnostic& d : result.diagnostics)
+    if (d.severity == interp::Severity::Error) d.message = withCure(job, d, program.string());
   print(result.diagnostics);
   if (!result.ok()) return false;
   for (auto& d : result.diagnostics)

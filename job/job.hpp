@@ -9,7 +9,9 @@
 
 #include "job/setup.hpp"
 #include "interp/control/dialect.hpp"
+#include "interp/control/machine_choice.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/text/machine_evidence.hpp"
 #include "interp/move.hpp"
 #include "interp/move_sink.hpp"
 #include "interp/text/file_text.hpp"
@@ -23,6 +25,8 @@ struct Job {
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   interp::FileText programText;  // read where it lies, not held (file_text.hpp)
+  interp::MachineEvidence evidence;  // what the program says of its machine, read once
+  interp::MachineChoice machine;     // the dialect and control it is run on, and why
   // Of programText, found by the first warningAt (8 B a line, not held while the interpreter
   // reads a long program unless a warning needs it): a warning per block stays linear.
   mutable std::optional<interp::LineStarts> programLines;

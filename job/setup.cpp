@@ -285,8 +285,10 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
     if (auto i = choiceOf(*node, "machine.dialect",
                           {dialectName(kDialects[0]), dialectName(kDialects[1]), dialectName(kDialects[2]),
                            dialectName(kDialects[3])},
-                          report))
+                          report)) {
       setup.dialect = kDialects[*i];
+      setup.dialectBy = "the setup's [machine] dialect";
+    }
   }
   // The older spelling of control.power_on_feed_mode.
   if (const auto* node = table.get("initial_feed_mode")) {
@@ -495,6 +497,7 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
       readControl(*table, setup.control, [&report](const toml::source_region& where, std::string message) {
         report.at(where, std::move(message));
       });
+      if (table->contains("name")) setup.controlBy = "the setup's [control] name";
     }
   }
   if (const auto* node = root.get("stock")) {

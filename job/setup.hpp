@@ -47,6 +47,10 @@ struct Setup {
   std::optional<std::pair<double, double>> travelXDiameterMm;  // [machine] travel_x = [min, max], diameters
   std::optional<std::pair<double, double>> travelZMm;          // [machine] travel_z = [min, max]
   interp::Dialect dialect = interp::Dialect::FanucA;  // [machine] dialect: how codes are written
+  // Who stated the dialect and the control's preset ("--dialect", "the setup's [machine]
+  // dialect"), or "" when nobody did and the program's evidence chooses (machine_choice.hpp).
+  std::string dialectBy;
+  std::string controlBy;
   interp::Control control;  // [control]: the preset and its parameters, how the machine behaves
                             // ([machine] initial_feed_mode is control.power_on_feed_mode,
                             // [machine] thread_runout control.thread_runout)

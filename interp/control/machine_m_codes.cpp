@@ -151,15 +151,4 @@ std::string machineMCodeMessage(const MachineMCode& code, std::string_view writt
                      written, code.meaning);
 }
 
-std::string otherFamiliesHolding(int number, MachineMCodes family) {
-  std::string text;
-  for (const MachineMCodes other : kFamilies) {
-    if (other == family) continue;
-    if (const MachineMCode* code = findMachineMCode(number, other))
-      text += fmt::format("{}the {} table has M{:02} ({})", text.empty() ? "" : "; ", machineMCodeFamilyName(other),
-                          number, code->meaning);
-  }
-  return text;
-}
-
 }  // namespace lathesim::interp

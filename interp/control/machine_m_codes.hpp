@@ -52,8 +52,4 @@ std::string machineMCodeList(MachineMCodes family);
 /// What is said where `code` first appears, written as `written`: "M21 (tailstock advance) moves …".
 std::string machineMCodeMessage(const MachineMCode& code, std::string_view written);
 
-/// For an M code `family` does not hold: the other families whose table does, as
-/// "the haas table has M31 (chip auger forward)", or empty.
-std::string otherFamiliesHolding(int number, MachineMCodes family);
-
 }  // namespace lathesim::interp

@@ -949,6 +949,12 @@ Status Executor::applyCompoundCycle(const Code& code) {
 
 // A word no code took that names machinery this two-axis, one-spindle lathe does not have.
 std::optional<std::string> Executor::missingMachineryOf(const Word& word) const {
+  if ((word.letter == 'c' || word.letter == 'r') && options_.control.cornerWords == CornerWords::LD) {
+    return fmt::format("{} is Fanuc's corner word (,C a chamfer, ,R a corner radius at the end of the move), which "
+                       "this control does not read (its corner words are L and D): run with --control fanuc-0i-t, "
+                       "or write {} for it",
+                       word.text(), word.letter == 'c' ? 'L' : 'D');
+  }
   if (word.letter == 'C') {
     return fmt::format("{}: this lathe has no C axis (the spindle cannot be positioned or "
                        "milled around); live tooling and C-axis work cannot be simulated",

@@ -1,6 +1,8 @@
 #include "interp/text/block_parser.hpp"
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -17,17 +19,39 @@ std::optional<int> codeNumber(const Word& word) {
 
 std::string codeText(char letter, int number) { return fmt::format("{}{:02}", letter, number); }
 
+// The cure of a G code `dialect` does not know: the dialects that read it, the first named
+// with its flag ("G95 is feed per revolution in fanuc-b and hnc: run with --dialect fanuc-b"),
+// or "" when none does.
+std::string otherDialectsReading(int written, Dialect dialect) {
+  std::string readers;
+  const GCodeInfo* first = nullptr;
+  Dialect firstDialect = dialect;
+  for (Dialect other : kDialects) {
+    const GCodeInfo* info = other == dialect ? nullptr : findGCode(written, other);
+    if (info == nullptr || !info->supported) continue;
+    readers += fmt::format("{}{}", readers.empty() ? "" : " and ", dialectName(other));
+    if (first == nullptr) {
+      first = info;
+      firstDialect = other;
+    }
+  }
+  if (first == nullptr) return "";
+  return fmt::format("; {} is {} in {}: run with --dialect {}", codeText('G', written), first->meaning, readers,
+                     dialectName(firstDialect));
+}
+
+// The cure of an M code `machine` does not list: the controls whose lists have it.
 // A known, supported code, or the error saying why the word is not one. `info` is the table
 // entry found for the word's number (nullptr when none); `known()` lists valid codes, only
 // when needed: listing them walks the whole table, which every G word of a long program
 // would pay for.
 template <class Info, class ListKnown>
 Result<Code> checkedCode(const Word& word, std::optional<int> written, int line, const Info* info,
-                         const ListKnown& known) {
+                         const ListKnown& known, const std::string& cure = "") {
   if (info == nullptr) {
     return Error{line, word.column,
-                 fmt::format("unknown {} code {}: expected one of {}", word.letter, word.text(),
-                             known())};
+                 fmt::format("unknown {} code {}: expected one of {}{}", word.letter, word.text(), known(),
+                             cure)};
   }
   const std::string text = codeText(word.letter, *written);
   if (!info->lacks.empty()) {
@@ -86,9 +110,10 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
     if (word.letter == 'G') {
       const auto number = codeNumber(word);
       const GCodeInfo* info = number ? findGCode(*number, dialect) : nullptr;
-      auto code = checkedCode(word, number, line, info, [dialect] {
-        return fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect));
-      });
+      auto code = checkedCode(
+          word, number, line, info,
+          [dialect] { return fmt::format("{} (dialect {})", supportedGCodes(dialect), dialectName(dialect)); },
+          info == nullptr && number ? otherDialectsReading(*number, dialect) : "");
       if (!code.ok()) return code.error();
       keepLast(block.gCodes, info->group, code.value(), block);
     } else if (word.letter == 'M') {
@@ -99,12 +124,19 @@ Result<ParsedBlock> parseBlock(const std::vector<Word>& words, int line, int col
       }
       const MCodeInfo* info = number ? findMCode(*number) : nullptr;
       auto code = checkedCode(word, number, line, info, [machine, number] {
-        const std::string elsewhere = number ? otherFamiliesHolding(*number, machine) : std::string();
+        // The cure, where another control's table holds the code: that control's name, which is
+        // both its m_codes table and its --control preset.
+        std::string elsewhere;
+        for (const MachineMCodes other : machineMCodeFamilies()) {
+          const MachineMCode* theirs = number && other != machine ? findMachineMCode(*number, other) : nullptr;
+          if (theirs == nullptr) continue;
+          const std::string_view name = machineMCodeFamilyName(other);
+          elsewhere += fmt::format("; the {} table has M{:02} ({}): set [control] m_codes = \"{}\", or run with --control {}",
+                                   name, *number, theirs->meaning, name, name);
+        }
         return fmt::format("{}, or a machine code of this control's table, m_codes = {} ({}){}", supportedMCodes(),
                            machineMCodeFamilyName(machine), machineMCodeList(machine),
-                           elsewhere.empty() ? std::string("; no machine table lathesim has holds it")
-                                             : fmt::format("; {}: set [control] m_codes if the machine is that one",
-                                                           elsewhere));
+                           elsewhere.empty() ? std::string("; no machine table lathesim has holds it") : elsewhere);
       });
       if (!code.ok()) return code.error();
       keepLast(block.mCodes, info->group, code.value(), block);

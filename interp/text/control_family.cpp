@@ -46,58 +46,71 @@ bool mayMatch(const Sign& sign, const std::string& upperLine) {
                      [&](std::string_view needle) { return upperLine.find(needle) != std::string::npos; });
 }
 
-const std::array<Sign, 6>& signs() {
+const std::array<Sign, 9>& signs() {
   using std::regex_constants::icase;
-  static const std::array<Sign, 6> table{
+  static const std::array<Sign, 9> table{
       Sign{std::regex(R"(^\s*%PM\b)"), "Philips 432/532", {"%PM"}},
       Sign{std::regex(R"(\bo(\d+|<[^>]*>)\s*(sub|endsub|call|if|elseif|else|endif|while|endwhile|do|repeat|endrepeat|return|break|continue)\b)", icase),
            "LinuxCNC (O-word subroutines)",
            {"SUB", "CALL", "IF", "ELSE", "WHILE", "DO", "REPEAT", "RETURN", "BREAK", "CONTINUE"}},
       Sign{std::regex(R"(#<[A-Za-z_])"), "LinuxCNC (named parameters)", {"#<"}},
       Sign{std::regex(R"(\bG0*64\s*P)", icase), "LinuxCNC (G64 path blending with a P tolerance)", {"64"}},
+      // LinuxCNC's lathe diameter / radius modes. Fanuc's G07.1 (cylindrical interpolation)
+      // has a point and its G08 (look-ahead) a P: neither is taken.
+      Sign{std::regex(R"(\bG0*[78](?![.\d])(?!\s*P))", icase), "LinuxCNC (G7/G8 diameter and radius modes)",
+           {"G7", "G07", "G8", "G08"}},
       Sign{std::regex(R"(\bBEGIN\s+PGM\b)", icase), "Heidenhain", {"BEGIN"}},
       Sign{std::regex(R"(\b(DIAMON|DIAMOF|DIAM90|CYCLE9[0-9]|LIMS\s*=)\b)", icase), "Siemens Sinumerik",
            {"DIAM", "CYCLE9", "LIMS"}},
+      // Fagor 8055/8070 program header `%name,MX,` (the attribute field between commas).
+      Sign{std::regex(R"(^\s*%[^,]*,M[A-Z]*,)", icase), "Fagor 8055/8070", {","}},
+      // The tool call of Fagor and Siemens alike: T the tool, D its offset (Fanuc, GSK and
+      // Haas give both in one T word).
+      Sign{std::regex(R"(\bT\s*\d+\s*D\s*\d+\b)", icase), "Fagor 8055/8070 or Siemens Sinumerik (T with its offset in D)",
+           {"D"}},
   };
   return table;
 }
 
 }  // namespace
 
-std::optional<ForeignProgram> recogniseForeignProgram(PagedText paged) {
-  const std::string_view text = paged.view();
-  int lineNumber = 0;
-  bool firstLine = true;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    paged.readingAt(begin);
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string_view::npos) end = text.size();
-    ++lineNumber;
-    const std::string line = regexText(withoutComments(text.substr(begin, end - begin)));
-    const std::size_t first = line.find_first_not_of(" \t\r");
-    if (first != std::string::npos) {
-      if (firstLine && line[first] == '$') {
-        return ForeignProgram{lineNumber, codePointCount(std::string_view(line).substr(0, first)) + 1,
-                              "Okuma OSP", line.substr(first, line.find_last_not_of(" \t\r") + 1 - first)};
-      }
-      firstLine = false;
-      const std::string upperLine = upperCase(line);
-      for (const Sign& sign : signs()) {
-        if (!mayMatch(sign, upperLine)) continue;
-        std::smatch match;
-        if (std::regex_search(line, match, sign.pattern)) {
-          const auto at = static_cast<std::size_t>(match.position(0));
-          const std::size_t from = line.find_first_not_of(" \t", at);
-          return ForeignProgram{lineNumber, codePointCount(std::string_view(line).substr(0, from)) + 1,
-                                std::string(sign.family), match.str(0).substr(from - at)};
-        }
-      }
+namespace detail {
+std::string codeLineAt(std::string_view text, std::size_t begin, std::size_t end) {
+  return regexText(withoutComments(text.substr(begin, end - begin)));
+}
+}  // namespace detail
+
+std::optional<ForeignProgram> foreignSignOf(const std::string& line, int lineNumber, bool first) {
+  const std::size_t start = line.find_first_not_of(" \t\r");
+  if (start == std::string::npos) return std::nullopt;
+  if (first && line[start] == '$') {
+    return ForeignProgram{lineNumber, codePointCount(std::string_view(line).substr(0, start)) + 1, "Okuma OSP",
+                          line.substr(start, line.find_last_not_of(" \t\r") + 1 - start)};
+  }
+  const std::string upperLine = upperCase(line);
+  for (const Sign& sign : signs()) {
+    if (!mayMatch(sign, upperLine)) continue;
+    std::smatch match;
+    if (std::regex_search(line, match, sign.pattern)) {
+      const auto at = static_cast<std::size_t>(match.position(0));
+      const std::size_t from = line.find_first_not_of(" \t", at);
+      return ForeignProgram{lineNumber, codePointCount(std::string_view(line).substr(0, from)) + 1,
+                            std::string(sign.family), match.str(0).substr(from - at)};
     }
-    if (end == text.size()) break;
-    begin = end + 1;
   }
   return std::nullopt;
+}
+
+std::optional<ForeignProgram> recogniseForeignProgram(PagedText paged) {
+  std::optional<ForeignProgram> found;
+  bool first = true;
+  forEachCodeLine(paged, [&](int lineNumber, const std::string& line) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) return true;
+    found = foreignSignOf(line, lineNumber, first);
+    first = false;
+    return !found;
+  });
+  return found;
 }
 
 }  // namespace lathesim::interp

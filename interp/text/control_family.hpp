@@ -4,9 +4,11 @@
 //   Okuma OSP           a first line that opens with '$' (`$PART.MIN%`)
 //   Philips 432/532     a `%PM` header line
 //   LinuxCNC            O-word subroutines and flow (`o100 sub`, `o<name> call`, `o101 if`),
-//                       named parameters `#<name>`, G64 with a P tolerance
+//                       named parameters `#<name>`, G64 with a P tolerance, G7/G8
 //   Heidenhain          `BEGIN PGM`
 //   Siemens Sinumerik   DIAMON/DIAMOF, CYCLE95 and the like
+//   Fagor 8055/8070     a `%name,MX,` program header; `T1 D1` (tool, then its offset in D,
+//                       as Siemens writes it too)
 // Text inside ( ) comments is never evidence.
 
 #include <optional>
@@ -25,5 +27,35 @@ struct ForeignProgram {
 };
 
 std::optional<ForeignProgram> recogniseForeignProgram(PagedText text);
+
+/// The program's lines in order, each with its ( ) comments blanked out (columns stay where
+/// they were) and cut to kRegexTextChars: the one line walk that the foreign families' signs
+/// and the machine's evidence (machine_evidence.hpp) share. `read(lineNumber, line)` returns
+/// false to stop.
+template <class Read>
+void forEachCodeLine(PagedText text, Read&& read);
+
+/// The family `line` (a code line, as forEachCodeLine gives it) shows, or nullopt. `first`:
+/// it is the program's first line that is not blank (Okuma's `$` header stands there).
+std::optional<ForeignProgram> foreignSignOf(const std::string& line, int lineNumber, bool first);
+
+namespace detail {
+std::string codeLineAt(std::string_view text, std::size_t begin, std::size_t end);
+}
+
+template <class Read>
+void forEachCodeLine(PagedText paged, Read&& read) {
+  const std::string_view text = paged.view();
+  int lineNumber = 0;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    paged.readingAt(begin);
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    if (!read(++lineNumber, detail::codeLineAt(text, begin, end))) return;
+    if (end == text.size()) return;
+    begin = end + 1;
+  }
+}
 
 }  // namespace lathesim::interp

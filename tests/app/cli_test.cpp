@@ -227,7 +227,19 @@ TEST_F(RunSeed001, ReportNamesTheControlAndTheTravel) {
   EXPECT_NE(outcome_->out.find("  assumed, as the setup does not say: X travel X-50 to X100, Z travel Z-120 to Z100\n"),
             std::string::npos)
       << outcome_->out;
-  EXPECT_NE(outcome_->out.find("program.nc (control gsk980tdi): 6 moves"), std::string::npos) << outcome_->out;
+  // The machine said aloud: the program (G94 with X and Z, read alike in systems A and B)
+  // gives no mark of its dialect, so the default is taken and said so.
+  EXPECT_NE(outcome_->out.find("program.nc (dialect fanuc-a, control gsk980tdi, read from the program (no code only "
+                               "one G-code system reads (G94 with X/Z: a cycle in system A, a move in system B): the "
+                               "default, fanuc-a)): 6 moves"),
+            std::string::npos)
+      << outcome_->out;
+  const auto& machine = r.at("machine");
+  EXPECT_EQ(machine.at("dialect"), "fanuc-a");
+  EXPECT_EQ(machine.at("control"), "gsk980tdi");
+  EXPECT_EQ(machine.at("inferred"), true);
+  EXPECT_EQ(machine.at("because").size(), 1u);
+  EXPECT_EQ(machine.at("conflicts"), nlohmann::json::array());
 }
 
 TEST_F(RunSeed001, ToolpathCsvIsTheGoldenToolpath) {

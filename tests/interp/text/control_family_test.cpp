@@ -23,6 +23,9 @@ TEST(ControlFamily, EachFamilyIsRecognisedWhereItShows) {
       {"G18 G64 P0.01\n", "LinuxCNC (G64 path blending with a P tolerance)", 1, 5},
       {"0 BEGIN PGM 12 MM\n", "Heidenhain", 1, 3},
       {"G18 DIAMON\n", "Siemens Sinumerik", 1, 5},
+      {"%SHAFT,MX,\nG90 G95\n", "Fagor 8055/8070", 1, 1},
+      {"G90 G95\nN10 T1 D1\n", "Fagor 8055/8070 or Siemens Sinumerik (T with its offset in D)", 2, 5},
+      {"G7 G18\n", "LinuxCNC (G7/G8 diameter and radius modes)", 1, 1},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.text));
@@ -37,7 +40,10 @@ TEST(ControlFamily, EachFamilyIsRecognisedWhereItShows) {
 TEST(ControlFamily, FanucProgramsAreNotMistaken) {
   for (std::string_view text : {"%\nO1000 (O100 SUB CALLED LATER)\nG00 X10\nM98 P100\nM30\n%\n",
                                 "G64\nG00 X10 (G64 P0.1 IS LINUXCNC)\n", "O0100\n#100=2\n#101=[#100+1]\nM99\n",
-                                "(SET $ PRICE)\nG00 X10\n$ IS NOT FIRST\n"}) {
+                                "(SET $ PRICE)\nG00 X10\n$ IS NOT FIRST\n",
+                                // Fanuc's T word with its offset, a Haas roughing block's D, a % line
+                                "%\nT0101 (T1 D1 IN THE CRIB)\nG71 P10 Q20 D1.5 U0.4 W0.1 F0.25\n%\n",
+                                "G07.1 C20.\nG08 P1\nG70 P10 Q20\nG17 G18\n"}) {
     SCOPED_TRACE(std::string(text));
     EXPECT_FALSE(recogniseForeignProgram(text).has_value());
   }
