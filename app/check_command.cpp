@@ -316,9 +316,9 @@ render::RgbImage stageDeviationImages(const CheckOptions& options, const Triangl
 /// The lines that made the surface where each size or region is not within: the surface point
 /// of its worst figure (surface_causes.hpp), within a voxel of a move's sweep.
 void attributeSurfaces(Inspection& inspection, const interp::MoveSpool& moves, const sim::ToolOutlines& tools, double voxelMm) {
-  std::vector<RZ> points;
-  for (const auto& s : inspection.sizes) points.push_back(s.worstAt);
-  for (const auto& r : inspection.deviation.regions) points.push_back(r.worstOnPart);
+  std::vector<measure::SurfacePoint> points;
+  for (const auto& s : inspection.sizes) points.push_back({s.worstAt, s.diameter ? RZ(0, 1) : RZ(1, 0)});
+  for (const auto& r : inspection.deviation.regions) points.push_back({r.worstOnPart, std::nullopt});
   const auto makers = measure::surfaceMakers(points, moves, tools, voxelMm, voxelMm);
   std::size_t n = 0;
   for (auto& s : inspection.sizes)
@@ -391,7 +391,8 @@ int checkCommand(const CheckOptions& options) {
       const RZ out = measure::outwardNormal(*drawing, s.drawn);
       const double scale = s.diameter ? 0.5 * out.x() : out.y();
       const double a = scale * (s.leastMm - s.nominalMm), b = scale * (s.greatestMm - s.nominalMm);
-      limits.explainedBySize(s.lineIndex, std::min(a, b), std::max(a, b));
+      // Widened by twice the uncertainty: a sample at the size's own extreme is then decidedly explained.
+      limits.explainedBySize(s.lineIndex, std::min(a, b) - 2 * uncertainty, std::max(a, b) + 2 * uncertainty);
     }
     inspection.deviation = measure::measureDeviation(
         section, part, *drawing, [&](const RZ& p) { return limits.at(p); }, uncertainty, threadZones);

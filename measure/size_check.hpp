@@ -35,7 +35,8 @@ inline double sizeMarginMm(double cornerRadiusMm, double voxelMm) { return corne
 
 struct SizeCheck {
   DrawnLine drawn;
-  std::size_t lineIndex = 0;  // in the lines checked  bool diameter = true;   // else a face: its Z
+  std::size_t lineIndex = 0;  // in the lines checked
+  bool diameter = true;   // else a face: its Z
   bool bore = false;      // a diameter with the material away from the axis
   double nominalMm = 0;   // the drawn diameter, or the face's Z
   Tolerance tolerance;    // applied

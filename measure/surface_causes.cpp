@@ -8,11 +8,12 @@
 
 namespace lathesim::measure {
 
-std::vector<std::optional<SurfaceMaker>> surfaceMakers(const std::vector<RZ>& points, const interp::MoveSpool& moves,
+std::vector<std::optional<SurfaceMaker>> surfaceMakers(const std::vector<SurfacePoint>& points, const interp::MoveSpool& moves,
                                                        const sim::ToolOutlines& tools, double voxelMm, double reachMm) {
   std::vector<std::optional<SurfaceMaker>> makers(points.size());
   int xLine = 0, zLine = 0;
   std::vector<double> nearest(points.size(), std::numeric_limits<double>::infinity());
+  std::vector<double> alongness(points.size(), 0);  // of the maker: |cos| of its path to the surface
   const double tie = reachMm / 10;
   moves.forEach([&](const interp::Move& move) {
     if (move.to.x() != move.from.x()) xLine = move.line;
@@ -28,7 +29,7 @@ std::vector<std::optional<SurfaceMaker>> surfaceMakers(const std::vector<RZ>& po
       upper = upper.cwiseMax(piece.upperBound());
     }
     for (std::size_t n = 0; n < points.size(); ++n) {
-      const RZ& p = points[n];
+      const RZ& p = points[n].at;
       if (p.y() < lower.y() - reachMm || p.y() > upper.y() + reachMm ||
           p.x() > std::max(upper.x(), -lower.x()) + reachMm)
         continue;
@@ -37,7 +38,13 @@ std::vector<std::optional<SurfaceMaker>> surfaceMakers(const std::vector<RZ>& po
         distance = std::min({distance, piece.signedDistance(p), piece.signedDistance(RZ(-p.x(), p.y()))});
       const double off = std::abs(distance);
       if (off > reachMm || off > nearest[n] + tie) continue;
+      const RZ path = move.to - move.from;
+      const double along =
+          points[n].along && path.norm() > 0 ? std::abs(path.normalized().dot(points[n].along->normalized())) : 0.0;
+      const bool clearlyNearer = off < nearest[n] - tie;
+      if (!clearlyNearer && along < alongness[n] - 1e-6) continue;
       nearest[n] = std::min(nearest[n], off);
+      alongness[n] = along;
       makers[n] = SurfaceMaker{move.line, xLine, zLine};
     }
   });

@@ -28,9 +28,19 @@ struct SurfaceMaker {
   int zLine = 0;  // and Z
 };
 
-/// The move that made the surface at each of `points` (on the part's surface), or nullopt
-/// where no cutting move came within `reachMm` (the bar's own surface). One pass over the moves.
-std::vector<std::optional<SurfaceMaker>> surfaceMakers(const std::vector<RZ>& points, const interp::MoveSpool& moves,
-                                              const sim::ToolOutlines& tools, double voxelMm, double reachMm);
+/// A point of the part's surface, and the direction the surface runs there when known (a
+/// diameter runs along Z, a face along X): of equally near moves, the one moving most along
+/// it made the surface (the pass along a diameter, not the step up its shoulder that touches
+/// its end), then the last.
+struct SurfacePoint {
+  RZ at{0, 0};
+  std::optional<RZ> along;
+};
+
+/// The move that made the surface at each of `points`, or nullopt where no cutting move came
+/// within `reachMm` (the bar's own surface). One pass over the moves.
+std::vector<std::optional<SurfaceMaker>> surfaceMakers(const std::vector<SurfacePoint>& points,
+                                                       const interp::MoveSpool& moves, const sim::ToolOutlines& tools,
+                                                       double voxelMm, double reachMm);
 
 }  // namespace lathesim::measure
