@@ -13,6 +13,10 @@
 #include "measure/deviation.hpp"
 #include "measure/drawing.hpp"
 #include "measure/gouge_causes.hpp"
+#include "measure/profile_limits.hpp"
+#include "measure/size_check.hpp"
+#include "measure/surface_causes.hpp"
+#include "app/inspection_text.hpp"
 #include "measure/process_figures.hpp"
 #include "measure/thread_check.hpp"
 #include "app/run_pipeline.hpp"
@@ -26,14 +30,13 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// The drawing's outline from a profile file, or nullopt with the diagnostics printed; its
-/// thread callouts into `threads`.
-std::optional<MeridianProfile> loadProfile(const std::filesystem::path& file, std::vector<measure::ThreadCallout>& threads) {
-  measure::DrawingResult drawing = measure::loadDrawing(file);
-  for (const auto& d : drawing.diagnostics) std::cerr << interp::format(d) << '\n';
-  if (!drawing.outline) return std::nullopt;
-  threads = std::move(drawing.threads);
-  return MeridianProfile::fromPolygon(std::move(*drawing.outline));
+/// The drawing's outline from a profile file, or nullopt with the diagnostics printed; the
+/// rest of the file (lines, tolerances, callouts) into `file`.
+std::optional<MeridianProfile> loadProfile(const std::filesystem::path& path, measure::DrawingResult& file) {
+  file = measure::loadDrawing(path);
+  for (const auto& d : file.diagnostics) std::cerr << interp::format(d) << '\n';
+  if (!file.outline) return std::nullopt;
+  return MeridianProfile::fromPolygon(*file.outline);
 }
 
 /// The drawing's outline from an STL of the design: its section in the meridian half-plane.
@@ -75,34 +78,68 @@ std::optional<MeridianProfile> simulateTarget(const CheckOptions& options, doubl
 
 Json place(const RZ& p) { return {{"z", p.y()}, {"diameter", diameterOf(p)}}; }
 
-bool allWithin(const measure::DeviationReport& d, const std::vector<measure::ThreadCheck>& threads) {
-  return d.withinTolerance() &&
-         std::all_of(threads.begin(), threads.end(), [](const measure::ThreadCheck& t) { return t.within(); });
+/// What `check` found: the sizes, the profile between and around them, the threads.
+struct Inspection {
+  double voxelMm = 0;
+  std::string generalTolerance;  // which applied where the drawing states none, and why
+  std::vector<measure::SizeCheck> sizes;
+  measure::DeviationReport deviation;
+  std::vector<measure::ThreadCheck> threads;
+  measure::Verdict verdict() const { return overallVerdict(sizes, deviation, threads); }
+};
+
+Json limitsJson(double upperMm, double lowerMm) { return {{"upper_mm", upperMm}, {"lower_mm", lowerMm}}; }
+
+Json sizeJson(const measure::SizeCheck& s) {
+  Json size{{"kind", s.diameter ? (s.bore ? "bore" : "diameter") : "face"},
+            {"drawing_line", s.drawn.line},
+            {"nominal_mm", s.nominalMm},
+            {"tolerance", limitsJson(s.tolerance.upperMm, s.tolerance.lowerMm)},
+            {"tolerance_source", s.tolerance.source},
+            {"least_mm", s.leastMm},
+            {"greatest_mm", s.greatestMm},
+            {"worst_mm", s.worstMm},
+            {"worst_at", place(s.worstAt)},
+            {"uncertainty_mm", s.uncertaintyMm},
+            {"beyond_mm", s.outsideMm},
+            {"verdict", measure::verdictName(s.verdict)},
+            {"lines", s.lines},
+            {"value_line", s.valueLine}};
+  return size;
 }
 
-Json checkJson(const CheckOptions& options, const measure::DeviationReport& d, const std::vector<measure::ThreadCheck>& threadChecks,
-               const measure::ProcessFigures& p, double checkS) {
+Json checkJson(const CheckOptions& options, const Inspection& inspection, const measure::ProcessFigures& p, double checkS) {
+  const measure::DeviationReport& d = inspection.deviation;
   Json check;
   check["target"] = options.drawing ? options.drawing->string() : options.targetProgram->string();
   check["target_kind"] = targetKind(options);
-  check["tolerance_mm"] = d.toleranceMm;
-  check["within_tolerance"] = allWithin(d, threadChecks);
+  check["verdict"] = measure::verdictName(inspection.verdict());
+  check["tolerance_mm"] = options.toleranceMm.value_or(0.0);  // --tol, if given
+  check["general_tolerance"] = inspection.generalTolerance;
+  check["surface_uncertainty_mm"] = d.uncertaintyMm;
+  check["within_tolerance"] = inspection.verdict() == measure::Verdict::Within;
   check["max_excess_mm"] = d.maxExcessMm;
   check["max_excess_at"] = place(d.maxExcessAt);
   check["max_gouge_mm"] = d.maxGougeMm;
   check["max_gouge_at"] = place(d.maxGougeAt);
   check["excess_volume_mm3"] = d.excessVolumeMm3;
   check["gouge_volume_mm3"] = d.gougeVolumeMm3;
+  auto& sizes = check["sizes"] = Json::array();
+  for (const auto& s : inspection.sizes) sizes.push_back(sizeJson(s));
   auto& regions = check["regions"] = Json::array();
   for (const auto& r : d.regions)
     regions.push_back({{"kind", r.gouge ? "gouge" : "excess"},
                        {"max_mm", r.maxMm},
                        {"at", place(r.at)},
+                       {"allowed", limitsJson(r.band.upperMm, r.band.lowerMm)},
+                       {"beyond_mm", r.beyondMm},
+                       {"verdict", measure::verdictName(r.verdict)},
                        {"z_range", {r.lower.y(), r.upper.y()}},
                        {"diameter_range", {diameterOf(r.lower), diameterOf(r.upper)}},
-                       {"lines", r.lines}});
+                       {"lines", r.lines},
+                       {"made_by", r.madeBy}});
   auto& threads = check["threads"] = Json::array();
-  for (const auto& t : threadChecks) {
+  for (const auto& t : inspection.threads) {
     Json items = Json::array();
     for (const auto& i : t.items)
       items.push_back({{"name", i.name}, {"expected", i.expected}, {"measured", i.measured}, {"within", i.within}});
@@ -137,13 +174,28 @@ std::string where(const RZ& p) {
   return text;
 }
 
-void printSummary(const CheckOptions& options, const measure::DeviationReport& d,
-                  const std::vector<measure::ThreadCheck>& threads, const interp::MachineChoice& machine) {
+std::string verdictHeadline(measure::Verdict verdict) {
+  return verdict == measure::Verdict::Within ? "within tolerance"
+         : verdict == measure::Verdict::Out  ? "OUT OF tolerance"
+                                             : "UNDECIDED at this voxel";
+}
+
+/// One finding of the report, to list them worst first: a size or a region of the profile.
+struct Finding {
+  double beyondMm;
+  std::string text;
+};
+
+void printSummary(const CheckOptions& options, const Inspection& inspection, const BlockText& block,
+                  const interp::MachineChoice& machine) {
+  const measure::DeviationReport& d = inspection.deviation;
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   std::cout << interp::printable(options.run.program.string()) << " against " << interp::printable(target) << ": "
-            << (allWithin(d, threads) ? "within" : "OUT OF") << " tolerance ±" << fixed(d.toleranceMm, 3) << " mm ("
-            << interp::printable(interp::describeMachine(machine)) << ")\n";
-  for (const auto& t : threads) {
+            << verdictHeadline(inspection.verdict()) << " ("
+            << interp::printable(interp::describeMachine(machine)) << ")\n  tolerances: as the drawing states them, else "
+            << inspection.generalTolerance << "; voxel " << fixed(inspection.voxelMm, 3) << " mm: a surface is known to ±"
+            << fixed(d.uncertaintyMm, 3) << " mm, a diameter to ±" << fixed(2 * d.uncertaintyMm, 3) << " mm\n";
+  for (const auto& t : inspection.threads) {
     std::cout << "  thread Z" << fixed(t.callout.zLowMm, 3) << "..Z" << fixed(t.callout.zHighMm, 3);
     if (t.line) std::cout << " (line " << *t.line << ")";
     std::cout << ": " << (t.within() ? "as called out" : "NOT as called out");
@@ -152,22 +204,18 @@ void printSummary(const CheckOptions& options, const measure::DeviationReport& d
                 << (i.within ? "" : " (expected " + i.expected + ")");
     std::cout << '\n';
   }
+  // Worst first, by how far outside its tolerance each lies; the sizes within after them.
+  std::vector<Finding> findings;
+  for (const auto& s : inspection.sizes) findings.push_back({s.outsideMm, sizeText(s, inspection.voxelMm, block)});
+  for (const auto& r : d.regions) findings.push_back({r.beyondMm, regionText(r, d.uncertaintyMm, inspection.voxelMm, block)});
+  std::stable_sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) { return a.beyondMm > b.beyondMm; });
+  for (const auto& f : findings) std::cout << "  " << f.text << '\n';
   std::cout << "  max excess " << fixed(d.maxExcessMm, 3) << " mm";
   if (d.maxExcessMm >= 0.0005) std::cout << " at " << where(d.maxExcessAt);
   std::cout << ", excess volume " << fixed(d.excessVolumeMm3, 1) << " mm³\n";
   std::cout << "  max gouge " << fixed(d.maxGougeMm, 3) << " mm";
   if (d.maxGougeMm >= 0.0005) std::cout << " at " << where(d.maxGougeAt);
   std::cout << ", gouge volume " << fixed(d.gougeVolumeMm3, 1) << " mm³\n";
-  for (const auto& r : d.regions) {
-    std::cout << "  " << (r.gouge ? "gouge " : "excess ") << fixed(r.maxMm, 3) << " mm at " << where(r.at) << " (Z"
-              << fixed(r.lower.y(), 3) << "..Z" << fixed(r.upper.y(), 3) << ", Ø" << fixed(diameterOf(r.lower), 3)
-              << "..Ø" << fixed(diameterOf(r.upper), 3) << ")";
-    if (r.gouge) {
-      std::cout << (r.lines.size() == 1 ? ", cut by line" : r.lines.empty() ? ", not cut: the bar had no material there" : ", cut by lines");
-      for (std::size_t n = 0; n < r.lines.size(); ++n) std::cout << (n ? ", " : " ") << r.lines[n];
-    }
-    std::cout << '\n';
-  }
   std::cout << "  outputs in " << interp::printable(options.run.out.string()) << "/\n";
 }
 
@@ -189,19 +237,32 @@ std::vector<float> vertexDeviations(const TriangleMesh& part, const MeridianProf
   return deviations;
 }
 
-std::string regionLabel(const measure::DeviationRegion& r) {
-  std::string text = (r.gouge ? "gouge " : "excess ") + fixed(r.maxMm, 3) + " mm\n" + where(r.at);
-  if (r.gouge && !r.lines.empty()) {
-    text += r.lines.size() == 1 ? ", line" : ", lines";
-    for (std::size_t n = 0; n < r.lines.size() && n < 6; ++n) text += (n ? ", " : " ") + std::to_string(r.lines[n]);
-  }
+std::string shortLines(const std::vector<int>& lines) {
+  std::string text = lines.size() == 1 ? "line" : "lines";
+  for (std::size_t n = 0; n < lines.size() && n < 6; ++n) text += (n ? ", " : " ") + std::to_string(lines[n]);
   return text;
 }
 
-constexpr std::size_t kLabelledRegions = 4;
+std::string regionLabel(const measure::DeviationRegion& r) {
+  std::string text = (r.gouge ? "gouge " : "excess ") + fixed(r.maxMm, 3) + " mm, " +
+                     (r.verdict == measure::Verdict::Out ? fixed(r.beyondMm, 3) + " beyond" : "undecided") + "\n" + where(r.at);
+  const std::vector<int>& lines = r.madeBy.empty() ? r.lines : r.madeBy;
+  if (!lines.empty()) text += ", " + shortLines(lines);
+  return text;
+}
+
+std::string sizeLabel(const measure::SizeCheck& s) {
+  std::string text = s.diameter ? "Ø" + fixed(s.worstMm, 3) + " (Ø" + fixed(s.nominalMm, 3) + " " +
+                                      limitsText(s.tolerance.upperMm, s.tolerance.lowerMm) + ")"
+                                : "face Z" + fixed(s.worstMm, 3) + " (Z" + fixed(s.nominalMm, 3) + " " +
+                                      limitsText(s.tolerance.upperMm, s.tolerance.lowerMm) + ")";
+  text += s.verdict == measure::Verdict::Out ? ", " + fixed(s.outsideMm, 3) + " beyond" : ", undecided";
+  if (!s.lines.empty()) text += "\n" + shortLines(s.lines);
+  return text;
+}
 
 render::SectionImage sectionImage(const std::string& title, const SampledSection& section, const MeridianProfile& part,
-                                  const MeridianProfile& drawing, const measure::DeviationReport& d,
+                                  const MeridianProfile& drawing, const Inspection& inspection,
                                   const std::vector<measure::ZRange>& threadZones) {
   render::SectionImage image;
   image.title = title;
@@ -216,29 +277,37 @@ render::SectionImage sectionImage(const std::string& title, const SampledSection
       if (inPart && !inDrawing) image.excessCells.push_back(p);
       if (inDrawing && !inPart) image.gougeCells.push_back(p);
     }
-  for (std::size_t n = 0; n < d.regions.size() && n < kLabelledRegions; ++n)
-    image.labels.push_back({d.regions[n].at, regionLabel(d.regions[n]), d.regions[n].gouge});
+  // Every finding not within, worst first (the picture places them apart).
+  std::vector<std::pair<double, render::SectionLabel>> labels;
+  for (const auto& s : inspection.sizes)
+    if (s.verdict != measure::Verdict::Within)
+      labels.push_back({s.outsideMm, {s.worstAt, sizeLabel(s), s.worstMm < s.nominalMm}});
+  for (const auto& r : inspection.deviation.regions) labels.push_back({r.beyondMm, {r.at, regionLabel(r), r.gouge}});
+  std::stable_sort(labels.begin(), labels.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (auto& [beyond, label] : labels) image.labels.push_back(std::move(label));
   return image;
 }
 
 /// Stages deviation.png and section.png; returns deviation.png's pixels (for a thumbnail).
 render::RgbImage stageDeviationImages(const CheckOptions& options, const TriangleMesh& mesh, const SampledSection& section,
                                       const MeridianProfile& part, const MeridianProfile& drawing,
-                                      const measure::DeviationReport& d, const std::vector<measure::ZRange>& threadZones,
-                                      StagedOutput& out, std::vector<HtmlPicture>& pictures) {
+                                      const Inspection& inspection, double colourToleranceMm,
+                                      const std::vector<measure::ZRange>& threadZones, StagedOutput& out,
+                                      std::vector<HtmlPicture>& pictures) {
+  const measure::DeviationReport& d = inspection.deviation;
   const std::string target = options.drawing ? options.drawing->string() : options.targetProgram->string();
   render::DeviationImageOptions image;
   image.title = options.run.program.string() + " against " + target;
-  image.toleranceMm = d.toleranceMm;
-  image.caption = std::string(d.withinTolerance() ? "within" : "OUT OF") + " tolerance ±" + fixed(d.toleranceMm, 3) +
-                  " mm; max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
+  image.toleranceMm = colourToleranceMm;
+  image.caption = verdictHeadline(inspection.verdict()) + " (green: within ±" + fixed(colourToleranceMm, 3) +
+                  " mm); max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
   render::RgbImage deviationPixels;
   const auto deviationPng = out.write("deviation.png", [&](const std::filesystem::path& file) {
     deviationPixels = render::deviationImage(mesh, vertexDeviations(mesh, drawing, threadZones), image);
     render::writeFileBytes(render::encodePng(deviationPixels), file);
   });
   pictures.push_back({"deviation.png: the part coloured by its deviation from the drawing", deviationPng});
-  render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, d, threadZones);
+  render::SectionImage half = sectionImage(image.title + ", half-section", section, part, drawing, inspection, threadZones);
   half.caption = image.caption;
   const auto sectionPng =
       out.write("section.png", [&](const std::filesystem::path& file) { render::writeSectionImagePng(half, file); });
@@ -246,37 +315,102 @@ render::RgbImage stageDeviationImages(const CheckOptions& options, const Triangl
   return deviationPixels;
 }
 
+/// The lines that made the surface where each size or region is not within: the surface point
+/// of its worst figure (surface_causes.hpp), within a voxel of a move's sweep.
+void attributeSurfaces(Inspection& inspection, const interp::MoveSpool& moves, const sim::ToolOutlines& tools, double voxelMm) {
+  std::vector<measure::SurfacePoint> points;
+  for (const auto& s : inspection.sizes) points.push_back({s.worstAt, s.diameter ? RZ(0, 1) : RZ(1, 0)});
+  for (const auto& r : inspection.deviation.regions) points.push_back({r.worstOnPart, std::nullopt});
+  const auto makers = measure::surfaceMakers(points, moves, tools, voxelMm, voxelMm);
+  std::size_t n = 0;
+  for (auto& s : inspection.sizes)
+    if (const auto& maker = makers[n++]) s.lines = {maker->line}, s.valueLine = s.diameter ? maker->xLine : maker->zLine;
+  for (auto& r : inspection.deviation.regions)
+    if (const auto& maker = makers[n++]) r.madeBy = {maker->line};
+}
+
+/// Which ISO 2768-1 class applies where the drawing states no tolerance, and the words saying why.
+std::pair<char, std::string> generalClassOf(const CheckOptions& options, const measure::DrawingResult& file) {
+  if (options.toleranceMm) return {'m', "±" + fixed(*options.toleranceMm, 3) + " mm normal to the surface (--tol)"};
+  if (options.generalTolerance) return {*options.generalTolerance, std::string("ISO 2768-") + *options.generalTolerance + " (--general-tolerance)"};
+  if (file.generalTolerance) return {*file.generalTolerance, std::string("ISO 2768-") + *file.generalTolerance + " (the drawing's general_tolerance)"};
+  return {'m', "ISO 2768-m (the default)"};
+}
+
+/// --tol stated on every line that states none, as the drawing would: a diameter's ±2·tol
+/// (tol on each radius), a face's ±tol, a taper's or an arc's ±tol normal to it.
+void applyFlatTolerance(std::vector<measure::DrawnLine>& lines, double toleranceMm) {
+  for (measure::DrawnLine& line : lines) {
+    if (line.tolerance) continue;
+    const double t = line.diameter() ? 2 * toleranceMm : toleranceMm;
+    line.tolerance = measure::Tolerance{t, -t, "--tol " + fixed(toleranceMm, 3) + " normal to the surface"};
+  }
+}
+
 }  // namespace
 
 int checkCommand(const CheckOptions& options) {
   std::optional<MeridianProfile> drawing;
-  std::vector<measure::ThreadCallout> callouts;
-  if (options.drawing &&
-      !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing, callouts)))
+  measure::DrawingResult file;
+  if (options.drawing && !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing, file)))
     return job::kExitBadInput;  // before the long part
   Stopwatch clock;
   StagedOutput out(options.run.out);
-  // The gouges' causes and the process figures read every move: spooled.
+  // The gouges' causes, the surfaces' makers and the process figures read every move: spooled.
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out, true);
   if (!run) return job::kExitBadInput;
   std::future<double> stockFile = stageStockFile(*run, out);
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
   if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return job::kExitBadInput;
-  const double tolerance = options.toleranceMm.value_or(2 * voxel);
 
   run->progress->stage("measuring against the drawing");
   SampledSection section = run->partStock().meridianSection();
   const MeridianProfile part = MeridianProfile::fromSection(section);
+  Inspection inspection;
+  inspection.voxelMm = voxel;
+  const auto [generalClass, generalWhy] = generalClassOf(options, file);
+  inspection.generalTolerance = generalWhy;
   // A thread's zone is checked by its callout, not by one meridian section.
   std::vector<measure::ZRange> threadZones;
-  std::vector<measure::ThreadCheck> threadChecks;
-  for (const auto& callout : callouts) {
+  for (const auto& callout : file.threads) {
     threadZones.push_back({callout.zLowMm, callout.zHighMm});
-    threadChecks.push_back(measure::checkThread(callout, run->figures.threads, voxel));
+    inspection.threads.push_back(measure::checkThread(callout, run->figures.threads, voxel));
   }
-  measure::DeviationReport deviation = measure::measureDeviation(section, part, *drawing, tolerance, threadZones);
-  measure::attributeGouges(deviation, *run->moves, outlinesOf(run->job.setup), run->job.setup.stock, run->figures.voxelMm);
+  const double uncertainty = measure::surfaceUncertaintyMm(voxel);
+  std::vector<measure::DrawnLine> lines = file.lines;
+  if (options.toleranceMm) applyFlatTolerance(lines, *options.toleranceMm);
+  // The picture's green: --tol, else the general tolerance of the part's greatest size, on a radius.
+  const double partSize = std::max(diameterOf(drawing->upperBound()), drawing->upperBound().y() - drawing->lowerBound().y());
+  const double colourTolerance =
+      options.toleranceMm.value_or(measure::generalLinearTolerance(generalClass, partSize).value_or(0.5) / 2);
+  if (file.outline) {
+    inspection.sizes = measure::checkSizes(section, *drawing, lines, generalClass, file.cornerRadiusMm, threadZones);
+    measure::ProfileLimits limits(*drawing, *file.outline, lines, generalClass, file.cornerRadiusMm,
+                                  measure::sizeMarginMm(file.cornerRadiusMm, voxel));
+    for (const auto& s : inspection.sizes) {
+      // The size's offsets normal to its line: a diameter's half, turned by the side the material is on.
+      const RZ out = measure::outwardNormal(*drawing, s.drawn);
+      const double scale = s.diameter ? 0.5 * out.x() : out.y();
+      const double a = scale * (s.leastMm - s.nominalMm), b = scale * (s.greatestMm - s.nominalMm);
+      // Widened by twice the uncertainty: a sample at the size's own extreme is then decidedly explained.
+      limits.explainedBySize(s.lineIndex, std::min(a, b) - 2 * uncertainty, std::max(a, b) + 2 * uncertainty);
+    }
+    inspection.deviation = measure::measureDeviation(
+        section, part, *drawing, [&](const RZ& p) { return limits.at(p); }, uncertainty, threadZones);
+  } else {
+    // An STL or another program's part: no lines to tolerance one by one; --tol, else the
+    // general tolerance of the part's greatest size, normal to the surface on a radius.
+    const measure::Band band{-colourTolerance, colourTolerance};
+    inspection.deviation = measure::measureDeviation(
+        section, part, *drawing, [&](const RZ&) { return std::optional<measure::Band>(band); }, uncertainty, threadZones);
+    if (!options.toleranceMm)
+      inspection.generalTolerance = std::string("ISO 2768-") + generalClass + " for the part's greatest size, " +
+                                    fixed(partSize, 1) + " mm, halved normal to the surface (±" + fixed(colourTolerance, 3) + " mm)";
+  }
+  inspection.deviation.toleranceMm = options.toleranceMm.value_or(0.0);
+  measure::attributeGouges(inspection.deviation, *run->moves, outlinesOf(run->job.setup), run->job.setup.stock, voxel);
+  attributeSurfaces(inspection, *run->moves, outlinesOf(run->job.setup), voxel);
   measure::ProcessFigures process;
   useBlockRows(*run, [&](const sim::BlockRows& rows) { process = measure::processFigures(*run->moves, rows, voxel); });
   const double checkS = checkClock.lap();
@@ -290,8 +424,8 @@ int checkCommand(const CheckOptions& options) {
     // Coloured vertex by vertex: a revolved part's mesh may have a straight face's two ends only.
     std::optional<TriangleMesh> everyVoxel;
     if (run->partStock().isRevolved()) everyVoxel = run->partStock().meshWithVertexEveryVoxel();
-    deviationPixels = stageDeviationImages(options, everyVoxel ? *everyVoxel : run->part, section, part, *drawing,
-                                           deviation, threadZones, out, run->pictures);
+    deviationPixels = stageDeviationImages(options, everyVoxel ? *everyVoxel : run->part, section, part, *drawing, inspection,
+                                           colourTolerance, threadZones, out, run->pictures);
     out.syncWritten();
   }
   run->figures.timing.renderS += clock.lap();
@@ -300,15 +434,18 @@ int checkCommand(const CheckOptions& options) {
   // Outside the timings: a batch's own work, which its benchmark counts as per-job overhead.
   stageThumbnail(options.run, deviationPixels, out);
   Json report = reportJson(run->figures);
-  report["check"] = checkJson(options, deviation, threadChecks, process, checkS);
+  report["check"] = checkJson(options, inspection, process, checkS);
   stageReports(*run, report, out);
   out.commit();
   run->progress->stage("done");
   run->progress->finish();
 
-  printSummary(options, deviation, threadChecks, run->figures.machine);
+  const std::string_view programText = run->job.programText.text().view();
+  const interp::LineStarts starts(programText);
+  printSummary(options, inspection, [&](int line) { return starts.lineOf(programText, line); }, run->figures.machine);
+  const measure::Verdict verdict = inspection.verdict();
   keepUntilExit(std::move(*run));
-  return allWithin(deviation, threadChecks) ? job::kExitOk : job::kExitOutOfTolerance;
+  return verdict == measure::Verdict::Within ? job::kExitOk : job::kExitOutOfTolerance;
 }
 
 }  // namespace lathesim::app

@@ -78,11 +78,12 @@ struct CheckOptions {
   RunOptions run;
   std::optional<std::filesystem::path> drawing;        // --target: a profile (.toml) or an STL (.stl)
   std::optional<std::filesystem::path> targetProgram;  // --target-program: simulated with the same setup
-  std::optional<double> toleranceMm;                   // default: two voxels
+  std::optional<double> toleranceMm;        // --tol: ± normal to the surface wherever the drawing states none
+  std::optional<char> generalTolerance;     // --general-tolerance: ISO 2768-1 class f, m, c or v
 };
 
-/// Exit status 0 when every deviation is within the tolerance, 3 when not, 1 on bad input
-/// (job/exit_status.hpp).
+/// Exit status 0 when every figure is shown within its tolerance, 3 when one is out of it or
+/// undecided at the voxel, 1 on bad input (job/exit_status.hpp).
 int checkCommand(const CheckOptions& options);
 
 /// The toolpath CSV on stdout, whole or not at all: the rows stream into an unnamed temporary

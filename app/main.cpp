@@ -20,7 +20,7 @@ namespace {
 
 constexpr const char* kExitStatuses =
     "Exit status: 0 done; 1 a bad program, setup, drawing or manifest, or the outputs could not be\n"
-    "written (nothing is written then); 2 a bad command line; 3 check: out of tolerance;\n"
+    "written (nothing is written then); 2 a bad command line; 3 check: out of tolerance, or undecided at the voxel;\n"
     "130 or 143 stopped by Ctrl-C or SIGTERM (nothing half-written is left).";
 
 // A bad command line says what is wrong (with any control character in it escaped) and exits
@@ -77,7 +77,14 @@ int lathesimMain(int argc, char** argv) {
   checkCmd->add_option("--target-program", check.targetProgram, "a program whose part is the drawing (same setup)")
       ->check(CLI::ExistingFile)
       ->excludes(checkTarget);
-  checkCmd->add_option("--tol", check.toleranceMm, "tolerance in mm (default: two voxels)")->check(CLI::NonNegativeNumber);
+  checkCmd->add_option("--tol", check.toleranceMm,
+                       "tolerance ± in mm, normal to the surface, wherever the drawing states none (default: the general tolerance)")
+      ->check(CLI::NonNegativeNumber);
+  std::string checkGeneral;
+  checkCmd->add_option("--general-tolerance", checkGeneral,
+                       "ISO 2768-1 class for sizes the drawing gives no tolerance: f, m, c or v (default: the drawing's "
+                       "general_tolerance, else m)")
+      ->check(CLI::IsMember({"f", "m", "c", "v"}));
   checkCmd->add_option("--out", check.run.out, "output folder")->capture_default_str();
   checkCmd->add_option("--voxel", check.run.voxelMm, "voxel size in mm (overrides [sim] voxel)")->check(CLI::PositiveNumber);
   checkCmd->footer(
@@ -187,6 +194,7 @@ int lathesimMain(int argc, char** argv) {
         return lathesim::job::kExitBadCommandLine;
       }
       check.run.setup = optionalPath(checkSetup);
+      if (!checkGeneral.empty()) check.generalTolerance = checkGeneral[0];
       check.run.overrides = overridesOf(checkArgs);
       return lathesim::app::checkCommand(check);
     }

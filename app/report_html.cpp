@@ -112,9 +112,9 @@ std::string summary(const Json& r) {
   html += figure("warnings", std::to_string(warnings), warnings ? "warn" : "good");
   if (r.contains("check")) {
     const Json& c = r.at("check");
-    const bool within = c.value("within_tolerance", false);
-    html += figure("against the drawing (±" + fixed(c.value("tolerance_mm", 0.0), 3) + " mm)",
-                   within ? "within tolerance" : "OUT OF tolerance", within ? "good" : "bad");
+    const std::string verdict = c.value("verdict", "out");
+    html += figure("against the drawing", verdict == "within" ? "within tolerance" : verdict == "undecided" ? "UNDECIDED at this voxel" : "OUT OF tolerance",
+                   verdict == "within" ? "good" : verdict == "undecided" ? "warn" : "bad");
   }
   return html + "</div>\n";
 }
@@ -137,7 +137,7 @@ std::string checkSection(const Json& r) {
   const Json& c = r.at("check");
   std::string html = "<h2>Against the drawing</h2>\n<p>" + escaped(c.value("target", "")) + ": max excess " +
                      fixed(c.value("max_excess_mm", 0.0), 3) + " mm, max gouge " + fixed(c.value("max_gouge_mm", 0.0), 3) +
-                     " mm, tolerance ±" + fixed(c.value("tolerance_mm", 0.0), 3) + " mm.</p>\n";
+                     " mm; tolerances as the drawing states them, else " + escaped(c.value("general_tolerance", "")) + ".</p>\n";
   if (c.at("regions").empty()) return html + "<p>No region is out of tolerance.</p>\n";
   html += "<table>\n<tr><th>kind</th><th class=\"num\">max, mm</th><th>at</th><th>Z range</th><th>Ø range</th><th>lines</th></tr>\n";
   for (const Json& g : c.at("regions")) {

@@ -7,7 +7,9 @@ namespace lathesim::job {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitBadInput = 1;        // a bad program, setup, drawing or manifest, or outputs not written
 inline constexpr int kExitBadCommandLine = 2;  // an unknown option, a missing or malformed argument
-inline constexpr int kExitOutOfTolerance = 3;  // check: the part is not within the drawing's tolerance
+// check: the part is not shown within the drawing's tolerance — out of it, or a figure the
+// voxel cannot decide (nearer its limit than the voxel's uncertainty): never a pass.
+inline constexpr int kExitOutOfTolerance = 3;
 /// Ended by a signal it caught (SIGINT 130, SIGTERM 143), as a shell reports it.
 inline constexpr int exitOnSignal(int signal) { return 128 + signal; }
 

@@ -38,11 +38,12 @@ struct UnionFind {
   void join(int a, int b) { parent[find(a)] = find(b); }
 };
 
-std::vector<DeviationRegion> groupRegions(const std::vector<DeviationSample>& samples, double toleranceMm,
+std::vector<DeviationRegion> groupRegions(const std::vector<DeviationSample>& samples,
+                                          const std::vector<std::optional<Band>>& bands, double uncertaintyMm,
                                           double linkMm) {
   std::vector<int> beyond;
   for (int n = 0; n < static_cast<int>(samples.size()); ++n)
-    if (std::abs(samples[n].mm) > toleranceMm) beyond.push_back(n);
+    if (bands[n] && verdictOf(bands[n]->beyond(samples[n].mm), uncertaintyMm) != Verdict::Within) beyond.push_back(n);
   const auto midpoint = [&](int n) -> RZ { return (samples[n].at + samples[n].nearest) / 2; };
   const auto cellOf = [&](const RZ& p) {
     return std::pair<long, long>(static_cast<long>(std::floor(p.x() / linkMm)), static_cast<long>(std::floor(p.y() / linkMm)));
@@ -72,19 +73,28 @@ std::vector<DeviationRegion> groupRegions(const std::vector<DeviationSample>& sa
     const DeviationSample& s = samples[beyond[m]];
     auto [it, fresh] = byRoot.try_emplace(groups.find(m));
     DeviationRegion& region = it->second;
+    const Band& band = *bands[beyond[m]];
     if (fresh) {
       region.gouge = s.mm < 0;
       region.lower = s.at.cwiseMin(s.nearest);
       region.upper = s.at.cwiseMax(s.nearest);
+      region.beyondMm = -INFINITY;
     }
     region.lower = region.lower.cwiseMin(s.at).cwiseMin(s.nearest);
     region.upper = region.upper.cwiseMax(s.at).cwiseMax(s.nearest);
     if (std::abs(s.mm) > region.maxMm) region.maxMm = std::abs(s.mm), region.at = s.at;
+    if (band.beyond(s.mm) > region.beyondMm) {
+      region.beyondMm = band.beyond(s.mm), region.band = band;
+      region.worstAt = s.at, region.worstOnPart = s.onPart ? s.at : s.nearest;
+    }
     region.midpoints.push_back(midpoint(beyond[m]));
   }
   std::vector<DeviationRegion> regions;
-  for (auto& [root, region] : byRoot) regions.push_back(std::move(region));
-  std::sort(regions.begin(), regions.end(), [](const auto& a, const auto& b) { return a.maxMm > b.maxMm; });
+  for (auto& [root, region] : byRoot) {
+    region.verdict = verdictOf(region.beyondMm, uncertaintyMm);
+    regions.push_back(std::move(region));
+  }
+  std::sort(regions.begin(), regions.end(), [](const auto& a, const auto& b) { return a.beyondMm > b.beyondMm; });
   return regions;
 }
 
@@ -92,8 +102,18 @@ std::vector<DeviationRegion> groupRegions(const std::vector<DeviationSample>& sa
 
 DeviationReport measureDeviation(const SampledSection& section, const MeridianProfile& part,
                                  const MeridianProfile& drawing, double toleranceMm, const std::vector<ZRange>& ignored) {
-  DeviationReport report;
+  DeviationReport report = measureDeviation(
+      section, part, drawing, [&](const RZ&) { return std::optional<Band>(Band{-toleranceMm, toleranceMm}); }, 0.0,
+      ignored);
   report.toleranceMm = toleranceMm;
+  return report;
+}
+
+DeviationReport measureDeviation(const SampledSection& section, const MeridianProfile& part,
+                                 const MeridianProfile& drawing, const BandAt& bandAt, double uncertaintyMm,
+                                 const std::vector<ZRange>& ignored) {
+  DeviationReport report;
+  report.uncertaintyMm = uncertaintyMm;
   const double h = section.stepMm;
   // The polyline's vertices: each a zero crossing on a grid line, on the true surface.
   // (Most are the end of one segment and the start of the next, so some appear twice.)
@@ -116,7 +136,7 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
     for (const RZ& q : points) {
       if (ignoredAt(ignored, q.y())) continue;
       const SurfaceDistance d = part.signedDistance(q);
-      report.samples.push_back({q, d.nearest, -d.signedMm});
+      report.samples.push_back({q, d.nearest, -d.signedMm, false});
     }
   }
   for (const DeviationSample& s : report.samples) {
@@ -124,7 +144,13 @@ DeviationReport measureDeviation(const SampledSection& section, const MeridianPr
     if (-s.mm > report.maxGougeMm) report.maxGougeMm = -s.mm, report.maxGougeAt = s.at;
   }
   measureVolumes(section, drawing, ignored, report);
-  report.regions = groupRegions(report.samples, toleranceMm, 2 * h);
+  // Each sample's band by the drawing's point it is measured at: its own on the drawing's
+  // side, its nearest on the part's.
+  std::vector<std::optional<Band>> bands;
+  bands.reserve(report.samples.size());
+  for (std::size_t n = 0; n < report.samples.size(); ++n)
+    bands.push_back(bandAt(report.samples[n].onPart ? report.samples[n].nearest : report.samples[n].at));
+  report.regions = groupRegions(report.samples, bands, uncertaintyMm, 2 * h);
   return report;
 }
 

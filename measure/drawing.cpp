@@ -10,6 +10,8 @@
 
 #include <toml++/toml.h>
 
+#include "geometry/meridian_profile.hpp"
+
 namespace lathesim::measure {
 namespace {
 
@@ -133,6 +135,82 @@ std::optional<ThreadCallout> threadCallout(Reader& reader, const toml::table& ro
   return callout;
 }
 
+/// A fit stated on a diameter, resolved once the outline tells a shaft from a bore.
+struct PendingFit {
+  std::size_t line;  // index into the lines
+  std::string fit;
+  toml::source_region where;
+};
+
+std::string signedMm(double value) {
+  std::ostringstream text;
+  text << (value > 0 ? "+" : value < 0 ? "−" : "") << std::abs(value);
+  return text.str();
+}
+
+/// The tolerance a row states for the line reaching it: ±t, [upper, lower] or (a diameter) a fit.
+std::optional<Tolerance> statedTolerance(Reader& reader, const toml::node& node, const DrawnLine& line,
+                                         std::size_t lineIndex, std::vector<PendingFit>& fits) {
+  if (const auto plusMinus = node.value<double>()) {
+    if (!std::isfinite(*plusMinus) || *plusMinus < 0) {
+      reader.error(node.source(), "tolerance must be ± a number ≥ 0 (mm), [upper, lower] or an ISO 286 fit such as \"h7\"");
+      return std::nullopt;
+    }
+    std::ostringstream text;
+    text << "±" << *plusMinus;
+    return Tolerance{*plusMinus, -*plusMinus, text.str()};
+  }
+  if (const toml::array* pair = node.as_array()) {
+    const auto upper = pair->size() == 2 ? pair->get(0)->value<double>() : std::nullopt;
+    const auto lower = pair->size() == 2 ? pair->get(1)->value<double>() : std::nullopt;
+    if (!upper || !lower || !std::isfinite(*upper) || !std::isfinite(*lower) || *upper < *lower) {
+      reader.error(node.source(), "tolerance [upper, lower] must be two numbers in mm, upper ≥ lower, e.g. [0, -0.1]");
+      return std::nullopt;
+    }
+    return Tolerance{*upper, *lower, signedMm(*upper) + "/" + signedMm(*lower)};
+  }
+  if (const auto fit = node.value<std::string>()) {
+    if (!line.diameter()) {
+      reader.error(node.source(), "an ISO 286 fit ('" + *fit + "') applies to a diameter: this row's line is not parallel to the "
+                                  "axis; give ± a number or [upper, lower]");
+      return std::nullopt;
+    }
+    std::string problem;
+    if (!isoFit(*fit, 2 * line.to.x(), problem)) {
+      reader.error(node.source(), problem);
+      return std::nullopt;
+    }
+    fits.push_back({lineIndex, *fit, node.source()});
+    return std::nullopt;
+  }
+  reader.error(node.source(), "tolerance must be ± a number (mm), [upper, lower] or an ISO 286 fit such as \"h7\"");
+  return std::nullopt;
+}
+
+/// Sets each fit's limits, checking its case against the side the material is on: a shaft
+/// (material towards the axis) takes a lower-case fit, a bore an upper-case one.
+void resolveFits(Reader& reader, const std::vector<RZ>& outline, std::vector<DrawnLine>& lines,
+                 const std::vector<PendingFit>& fits) {
+  if (fits.empty()) return;
+  const MeridianProfile region = MeridianProfile::fromPolygon(outline);
+  for (const PendingFit& pending : fits) {
+    DrawnLine& line = lines[pending.line];
+    const double step = std::min(1e-3, line.from.x() / 2);
+    const bool shaft = region.contains(RZ(line.from.x() - step, (line.from.y() + line.to.y()) / 2));
+    if (shaft == isHoleFit(pending.fit)) {
+      const int row = static_cast<int>(pending.where.begin.line);
+      reader.diagnostics.push_back({interp::Severity::Error, reader.fileName, row, static_cast<int>(pending.where.begin.column),
+                                    "'" + pending.fit + "' is a " + (shaft ? "hole" : "shaft") + "'s fit, but this diameter is a " +
+                                        (shaft ? "shaft's (material towards the axis): write it in lower case"
+                                               : "bore's (material away from the axis): write it in upper case"),
+                                    interp::lineOf(reader.text, row)});
+      continue;
+    }
+    std::string problem;
+    line.tolerance = isoFit(pending.fit, 2 * line.to.x(), problem);
+  }
+}
+
 }  // namespace
 
 DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileName) {
@@ -147,8 +225,20 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
     return result;
   }
   for (const auto& [key, node] : table)
-    if (key.str() != "profile" && key.str() != "thread")
-      reader.error(key.source(), "unknown key '" + std::string(key.str()) + "' (expected [[profile]] rows and [[thread]] callouts)");
+    if (key.str() != "profile" && key.str() != "thread" && key.str() != "general_tolerance" && key.str() != "corner_radius")
+      reader.error(key.source(), "unknown key '" + std::string(key.str()) +
+                                     "' (expected [[profile]] rows, [[thread]] callouts, general_tolerance or corner_radius)");
+  if (const toml::node* general = table.get("general_tolerance")) {
+    const auto text = general->value<std::string>();
+    if (!text || text->size() != 1 || std::string("fmcv").find((*text)[0]) == std::string::npos)
+      reader.error(general->source(), "general_tolerance must be an ISO 2768-1 class: \"f\", \"m\", \"c\" or \"v\"");
+    else result.generalTolerance = (*text)[0];
+  }
+  if (const toml::node* corner = table.get("corner_radius")) {
+    const auto radius = corner->value<double>();
+    if (!radius || !std::isfinite(*radius) || *radius < 0) reader.error(corner->source(), "corner_radius must be a number ≥ 0 (mm)");
+    else result.cornerRadiusMm = *radius;
+  }
   if (const toml::node* threads = table.get("thread")) {
     const toml::array* rows = threads->as_array();
     if (rows == nullptr) reader.error(threads->source(), "thread must be [[thread]] tables");
@@ -168,6 +258,8 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
     return result;
   }
   std::vector<RZ> outline;
+  std::vector<DrawnLine> lines;
+  std::vector<PendingFit> fits;
   for (std::size_t n = 0; n < rows->size(); ++n) {
     const toml::table* row = rows->get(n)->as_table();
     if (row == nullptr) {
@@ -175,8 +267,9 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
       continue;
     }
     for (const auto& [key, node] : *row)
-      if (key.str() != "x" && key.str() != "z" && key.str() != "arc" && key.str() != "radius" && key.str() != "center")
-        reader.error(key.source(), "unknown profile key '" + std::string(key.str()) + "' (expected x, z, arc, radius or center)");
+      if (key.str() != "x" && key.str() != "z" && key.str() != "arc" && key.str() != "radius" && key.str() != "center" &&
+          key.str() != "tolerance")
+        reader.error(key.source(), "unknown profile key '" + std::string(key.str()) + "' (expected x, z, arc, radius, center or tolerance)");
     const auto x = number(reader, *row, "x", true);
     const auto z = number(reader, *row, "z", true);
     if (!x || !z) continue;
@@ -186,6 +279,14 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
     }
     const RZ point(*x / 2, *z);
     const toml::node* arc = row->get("arc");
+    if (!outline.empty())
+      lines.push_back({outline.back(), point, static_cast<int>(row->source().begin.line), arc != nullptr, std::nullopt,
+                       outline.size() - 1, outline.size()});  // the arc's chords may push the end on
+    if (const toml::node* stated = row->get("tolerance")) {
+      if (outline.empty()) reader.error(stated->source(), "the first profile row has no line to tolerance: a row's tolerance is "
+                                                          "that of the line reaching it from the previous row");
+      else lines.back().tolerance = statedTolerance(reader, *stated, lines.back(), lines.size() - 1, fits);
+    }
     if (arc == nullptr) {
       if (row->get("radius") || row->get("center")) reader.error(row->source(), "radius and center need arc = \"cw\" or \"ccw\"");
       outline.push_back(point);
@@ -225,15 +326,18 @@ DrawingResult parseDrawing(std::string_view tomlText, const std::string& fileNam
       if (!row->get("radius")) reader.error(row->source(), "an arc needs radius or center");
       continue;
     }
-    if (!appendArc(outline, outline.back(), point, *centre, clockwise)) {
+    const bool drawn = appendArc(outline, outline.back(), point, *centre, clockwise);
+    lines.back().outlineTo = outline.size() - 1;
+    if (!drawn) {
       std::ostringstream message;
       message << "the arc's radius, " << (point - *centre).norm() << " mm, is too large for a turned part: drawn "
               << "within " << kDrawingChordErrorMm << " mm it would take more than " << kMaxArcChords << " chords";
       reader.error(row->source(), message.str());
     }
   }
+  if (reader.diagnostics.empty()) resolveFits(reader, outline, lines, fits);
   result.diagnostics = std::move(reader.diagnostics);
-  if (result.diagnostics.empty()) result.outline = std::move(outline);
+  if (result.diagnostics.empty()) result.outline = std::move(outline), result.lines = std::move(lines);
   return result;
 }
 

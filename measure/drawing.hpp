@@ -30,6 +30,16 @@
 //   major = [29.7, 30.0]         # optional: the diameter's limits [least, greatest], mm
 //   minor = [27.4, 27.7]         # optional
 //   pitch_diameter = [28.9, 29.3]  # optional
+//
+// Tolerances. A row may state the tolerance of the line that reaches it from the previous
+// row (as `arc` describes that line): on a line parallel to the axis (a diameter) and on a
+// face (a length: the face's Z), `tolerance = 0.1` (±), `tolerance = [0, -0.1]` ([upper,
+// lower] deviation) or, on a diameter, an ISO 286 fit `tolerance = "h7"` (shaft, lower case)
+// or `"H7"` (bore, upper case); on a taper or an arc a number or pair, measured normal to it.
+// A line with none takes the general tolerance, ISO 2768-1:
+//
+//   general_tolerance = "m"      # optional: "f", "m", "c" or "v" (else --general-tolerance, else m)
+//   corner_radius = 0.8          # optional: convex corners may be rounded up to this radius (mm)
 
 #include <filesystem>
 #include <optional>
@@ -38,6 +48,7 @@
 
 #include "geometry/rz.hpp"
 #include "interp/diagnostic.hpp"
+#include "measure/iso_tolerances.hpp"
 
 namespace lathesim::measure {
 
@@ -58,8 +69,22 @@ struct ThreadCallout {
   std::optional<DiameterLimits> major, minor, pitchDiameter;
 };
 
+/// The line from one profile row to the next, as drawn, with the tolerance its row states.
+struct DrawnLine {
+  RZ from{0, 0}, to{0, 0};  // (radius, Z)
+  int line = 0;             // of the row it reaches
+  bool arc = false;
+  std::optional<Tolerance> tolerance;
+  std::size_t outlineFrom = 0, outlineTo = 0;  // its points in the outline (an arc's chords between)
+  bool diameter() const { return !arc && from.x() == to.x() && from.x() > 0 && from.y() != to.y(); }
+  bool face() const { return !arc && from.y() == to.y() && from.x() != to.x(); }
+};
+
 struct DrawingResult {
   std::optional<std::vector<RZ>> outline;  // (radius, Z) points, arcs as chords; open at the axis
+  std::vector<DrawnLine> lines;            // row to row, in the file's order
+  std::optional<char> generalTolerance;    // general_tolerance's class: 'f', 'm', 'c' or 'v'
+  double cornerRadiusMm = 0;               // corner_radius: convex corners may be rounded to this
   std::vector<ThreadCallout> threads;
   std::vector<interp::Diagnostic> diagnostics;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include <vtkActor.h>
@@ -239,6 +240,37 @@ SectionFrame sectionFrame(const SectionImage& image) {
   return f;
 }
 
+std::vector<LabelBox> sectionLabelBoxes(const SectionImage& image, const SectionFrame& frame) {
+  // A grid of slots the labels' size, from the top row down: each label takes the free slot
+  // nearest above-left of its point, preferring higher rows (away from the profile).
+  const double width = 0.24 * image.widthPx, height = 0.075 * image.heightPx, gap = 0.01 * image.heightPx;
+  const int columns = static_cast<int>(image.widthPx / width);
+  const double top = 0.80 * image.heightPx + height, bottom = 0.06 * image.heightPx;
+  const int rows = static_cast<int>((top - bottom) / (height + gap));
+  std::vector<bool> taken(static_cast<std::size_t>(rows * columns), false);
+  std::vector<LabelBox> boxes;
+  for (const SectionLabel& label : image.labels) {
+    const Eigen::Vector2d at = frame.pixelOf(label.at);
+    int best = -1;
+    double bestCost = std::numeric_limits<double>::infinity();
+    for (int row = 0; row < rows; ++row)
+      for (int column = 0; column < columns; ++column) {
+        if (taken[static_cast<std::size_t>(row * columns + column)]) continue;
+        const double left = column * width + (image.widthPx - columns * width) / 2;
+        // Horizontal distance to the point counts most; then the row, higher first.
+        const double cost = std::abs(left + width / 2 - at.x()) + row * height;
+        if (cost < bestCost) bestCost = cost, best = row * columns + column;
+      }
+    if (best < 0) break;
+    taken[static_cast<std::size_t>(best)] = true;
+    const int row = best / columns, column = best % columns;
+    const double left = column * width + (image.widthPx - columns * width) / 2;
+    const double boxTop = top - row * (height + gap);
+    boxes.push_back({left, boxTop - height, left + width, boxTop});
+  }
+  return boxes;
+}
+
 void writeSectionImagePng(const SectionImage& image, const std::filesystem::path& png) {
   ensureDisplay();
   const SectionFrame f = sectionFrame(image);
@@ -295,8 +327,9 @@ void writeSectionImagePng(const SectionImage& image, const std::filesystem::path
     scene->AddActor2D(entry);
   }
 
-  // Labels stand above the profile, left of their point, stacked so that they do not overlap.
-  for (std::size_t n = 0; n < image.labels.size(); ++n) {
+  // Labels stand in boxes that do not overlap (sectionLabelBoxes), a leader to their point.
+  const std::vector<LabelBox> boxes = sectionLabelBoxes(image, f);
+  for (std::size_t n = 0; n < boxes.size(); ++n) {
     const SectionLabel& label = image.labels[n];
     vtkNew<vtkCaptionActor2D> caption;
     caption->SetCaption(label.text.c_str());
@@ -312,10 +345,9 @@ void writeSectionImagePng(const SectionImage& image, const std::filesystem::path
     caption->GetProperty()->SetColor(kInk[0], kInk[1], kInk[2]);
     caption->GetProperty()->SetLineWidth(1.5);
     const Eigen::Vector2d at = f.pixelOf(label.at);
-    const double lift = image.heightPx * (0.80 - 0.085 * static_cast<double>(n)) - at.y();
-    caption->SetPosition(-0.12 * image.widthPx, std::max(lift, 20.0));
-    caption->SetWidth(0.24);
-    caption->SetHeight(0.075);
+    caption->SetPosition(boxes[n].left - at.x(), boxes[n].bottom - at.y());
+    caption->SetWidth((boxes[n].right - boxes[n].left) / image.widthPx);
+    caption->SetHeight((boxes[n].top - boxes[n].bottom) / image.heightPx);
     caption->GetTextActor()->SetTextScaleModeToNone();
     scene->AddActor2D(caption);
   }

@@ -52,7 +52,7 @@ struct SectionImage {
   double cellMm = 0;             // the size of the squares below
   std::vector<RZ> excessCells;   // centres of the section's samples that are excess / gouge
   std::vector<RZ> gougeCells;
-  std::vector<SectionLabel> labels;  // the largest deviations
+  std::vector<SectionLabel> labels;  // every finding not within its tolerance, worst first
 };
 
 /// Where a point of the half-plane lands in the section picture: Z to the right, r up, both
@@ -66,6 +66,17 @@ struct SectionFrame {
   }
 };
 SectionFrame sectionFrame(const SectionImage& image);
+
+/// A label's box in the section picture, pixels from the lower left.
+struct LabelBox {
+  double left = 0, bottom = 0, right = 0, top = 0;
+  bool intersects(const LabelBox& o) const { return left < o.right && o.left < right && bottom < o.top && o.bottom < top; }
+};
+
+/// Where each of image.labels stands (in order; the first get the places nearest their
+/// points): above the profile, in slots of a grid that no two share, so that none overprints
+/// another. Labels beyond the grid's slots get none (fewer boxes than labels).
+std::vector<LabelBox> sectionLabelBoxes(const SectionImage& image, const SectionFrame& frame);
 
 /// The half-section (r ≥ 0): the drawing's line in black, the part's profile in blue, excess
 /// filled red and gouge filled blue, each label in its kind's colour with a leader to its point.

@@ -127,7 +127,61 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [-9, 0]\npitch = 2\nmajor = 30\n", 5,
                    "major must be [least, greatest]"},
         BadDrawing{"profile = [{x = 30, z = 0}, {x = 30, z = -9}]\n[[thread]]\nz_range = [-9, 0]\npitch = 2\nlead = 2\n", 5,
-                   "unknown thread key 'lead'"}));
+                   "unknown thread key 'lead'"},
+        // Tolerances: a fit only on a diameter, of the diameter's kind, as the standard writes it.
+        BadDrawing{"[[profile]]\nx = 0\nz = 0\n[[profile]]\nx = 30\nz = 0\ntolerance = \"h7\"\n", 7,
+                   "applies to a diameter"},
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 30\nz = -9\ntolerance = \"H7\"\n", 7,
+                   "this diameter is a shaft's"},
+        BadDrawing{"profile = [{x = 30, z = 0}, {x = 50, z = 0}, {x = 50, z = -9},\n {x = 30, z = -9}, "
+                   "{x = 30, z = 0, tolerance = \"h7\"}]\n",
+                   2, "this diameter is a bore's"},
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 30\nz = -9\ntolerance = \"h13\"\n", 7,
+                   "not an ISO 286 fit covered here"},
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\ntolerance = 0.1\n[[profile]]\nx = 30\nz = -9\n", 4, "no line to tolerance"},
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 30\nz = -9\ntolerance = [-0.1, 0]\n", 7, "upper ≥ lower"},
+        BadDrawing{"[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 30\nz = -9\ntolerance = -0.1\n", 7, "± a number ≥ 0"},
+        BadDrawing{"general_tolerance = \"k\"\n[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 30\nz = -9\n", 1,
+                   "ISO 2768-1 class"},
+        BadDrawing{"corner_radius = -1\n[[profile]]\nx = 30\nz = 0\n[[profile]]\nx = 30\nz = -9\n", 1,
+                   "corner_radius must be a number ≥ 0"}));
+
+// Each line between rows takes the tolerance its second row states; fits become limits.
+TEST(Drawing, TolerancesOfTheLinesReachingEachRow) {
+  const DrawingResult r = parseDrawing(
+      "general_tolerance = \"f\"\ncorner_radius = 0.8\n"
+      "profile = [{x = 0, z = 0}, {x = 20, z = 0}, {x = 20, z = -30, tolerance = \"g6\"},\n"
+      "  {x = 30, z = -30, tolerance = 0.05}, {x = 30, z = -50, tolerance = [0, -0.1]}, {x = 40, z = -60}]\n",
+      "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  EXPECT_EQ(r.generalTolerance, 'f');
+  EXPECT_DOUBLE_EQ(r.cornerRadiusMm, 0.8);
+  ASSERT_EQ(r.lines.size(), 5u);
+  EXPECT_TRUE(r.lines[0].face());
+  EXPECT_FALSE(r.lines[0].tolerance);
+  ASSERT_TRUE(r.lines[1].diameter());
+  ASSERT_TRUE(r.lines[1].tolerance);
+  EXPECT_NEAR(r.lines[1].tolerance->upperMm, -0.007, 1e-12);  // g6 on Φ20 (ISO 286-2)
+  EXPECT_NEAR(r.lines[1].tolerance->lowerMm, -0.020, 1e-12);
+  EXPECT_EQ(r.lines[1].tolerance->source, "g6");
+  EXPECT_TRUE(r.lines[2].face());
+  EXPECT_EQ(r.lines[2].tolerance->source, "±0.05");
+  EXPECT_DOUBLE_EQ(r.lines[3].tolerance->lowerMm, -0.1);
+  EXPECT_EQ(r.lines[3].tolerance->source, "0/−0.1");
+  EXPECT_FALSE(r.lines[4].diameter() || r.lines[4].face());  // a taper
+  EXPECT_EQ(r.lines[4].line, 4);
+}
+
+// A bore's fit in upper case: H7 on Φ30 is +0.021/0.
+TEST(Drawing, BoreTakesAHoleFit) {
+  const DrawingResult r = parseDrawing(
+      "profile = [{x = 30, z = 0}, {x = 50, z = 0}, {x = 50, z = -9},\n {x = 30, z = -9}, {x = 30, z = 0, tolerance = \"H7\"}]\n",
+      "d.toml");
+  ASSERT_TRUE(r.outline) << firstMessage(r);
+  ASSERT_TRUE(r.lines.back().tolerance);
+  EXPECT_NEAR(r.lines.back().tolerance->upperMm, 0.021, 1e-12);
+  EXPECT_NEAR(r.lines.back().tolerance->lowerMm, 0, 1e-12);
+}
 
 // A nearly straight arc (a CAD export's radius of ten kilometres) is drawn, as one chord.
 TEST(Drawing, ArcOfAHugeRadiusOverAShortSpanIsOneChord) {

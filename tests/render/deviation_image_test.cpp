@@ -115,5 +115,29 @@ TEST(SectionImagePng, ProfileAgainstDrawingWithFilledDeviations) {
   EXPECT_GT(png.count(0, 1600, static_cast<int>(f.pixelOf(RZ(21, 0)).y()), 900 - 100, blue), 100);
 }
 
+// Every label gets a box, none overprints another, and each stays in the picture — however
+// many findings crowd one place (twenty on one shoulder) or spread along the part.
+TEST(SectionLabels, BoxesNeverIntersect) {
+  for (const int count : {1, 2, 7, 20}) {
+    for (const bool crowded : {true, false}) {
+      SectionImage image;
+      image.drawing = {{RZ(0, 0), RZ(20, 0)}, {RZ(20, 0), RZ(20, -30)}, {RZ(20, -30), RZ(0, -30)}};
+      for (int n = 0; n < count; ++n)
+        image.labels.push_back({crowded ? RZ(20, -10) : RZ(20, -30.0 * n / count), "gouge " + std::to_string(n) + "\nZ-10", n % 2 == 0});
+      const SectionFrame f = sectionFrame(image);
+      const std::vector<LabelBox> boxes = sectionLabelBoxes(image, f);
+      ASSERT_EQ(boxes.size(), image.labels.size()) << count;
+      for (std::size_t a = 0; a < boxes.size(); ++a) {
+        EXPECT_GE(boxes[a].left, 0);
+        EXPECT_LE(boxes[a].right, image.widthPx);
+        EXPECT_GE(boxes[a].bottom, 0);
+        EXPECT_LE(boxes[a].top, image.heightPx);
+        for (std::size_t b = a + 1; b < boxes.size(); ++b)
+          EXPECT_FALSE(boxes[a].intersects(boxes[b])) << count << " labels, " << a << " and " << b;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lathesim::render
