@@ -306,7 +306,9 @@ int checkCommand(const CheckOptions& options) {
   run->progress->finish();
 
   printSummary(options, deviation, threadChecks);
+  const bool crashed = run->figures.crashed();
   keepUntilExit(std::move(*run));
+  if (crashed) return job::kExitCrash;  // the worse news, over a part out of tolerance
   return allWithin(deviation, threadChecks) ? job::kExitOk : job::kExitOutOfTolerance;
 }
 

@@ -388,7 +388,7 @@ TEST(Cli, ReportListsTheProgramStops) {
 // straight to X30 Z-10. The default tool's body lies at r ≥ tip, z ≥ tip and contains the
 // square [1, 10] × [1, 10] mm from the tip, so at the end of the rapid it alone fills the
 // ring r 16..25, Z-9..0 of the bar: π (25² − 16²) · 9 ≈ 10433 mm³, and the sweep more.
-TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
+TEST(Cli, RapidIntoTheBarIsACrashOnItsLine) {
   TempDir dir("rapid");
   const fs::path program = dir.path() / "rapid.nc";
   writeFile(program, "M03 S500;\nG00 X54 Z5;\nG00 X30 Z-10;\n");
@@ -396,7 +396,7 @@ TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
   const Outcome outcome = lathesim({"run", program.string(), "--setup", (kPartsDir / kPart / "setup.toml").string(),
                                     "--out", out.string(), "--voxel", "0.5"},
                                    dir.path());
-  ASSERT_EQ(outcome.status, 0) << outcome.err;  // a collision is a finding, not bad input
+  ASSERT_EQ(outcome.status, 4) << outcome.err;  // a crash: the outputs are written (crash_cli_test.cpp)
   const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
   const auto& collisions = r.at("collisions");
   ASSERT_EQ(collisions.size(), 1u) << collisions.dump();
