@@ -200,7 +200,7 @@ TEST(PartOff, ARingCutLooseInsideATubeFallsAndIsNoPart) {
   EXPECT_NEAR(ring.beyondMm3, 1296 * M_PI, tolerance(surface(20, 16, 9), voxel));
   ASSERT_EQ(run.result.warnings.size(), 1u);
   EXPECT_EQ(run.result.warnings[0].line, 9);
-  EXPECT_NE(run.result.warnings[0].message.find("a 4.0 mm ring (Φ20.0 to Φ28.0, Z-9.0 to Z0.0) of 2714."),
+  EXPECT_NE(run.result.warnings[0].message.find("a 4.0 mm ring (Φ20.0 to Φ28.0, Z-9.0 to Z0.0) of "),
             std::string::npos)
       << run.result.warnings[0].message;
   EXPECT_NE(run.result.warnings[0].message.find("comes loose at line 9"), std::string::npos);
@@ -282,11 +282,12 @@ TEST(PartOff, OnlyAPartOffMakesThePartSweptOverPositionsAndVoxels) {
 }
 
 // The part-off's Z is its cut's deepest point: of the block's moves, the one ending nearest the
-// axis. A chamfer ,C1 at the blade's corner makes the block two moves: to X0 at Z-20, then the
-// chamfer to X-2 at Z-19, nearer the axis: the part falls at Z-19.
+// axis. A corner radius D1 (the GSK preset's corner word) at the blade's corner makes the block
+// two moves: to X0 at Z-20, then the corner's arc (1 mm from the corner along both lines) to
+// X-2 at Z-19, nearer the axis: the part falls at Z-19.
 TEST(PartOff, ThePartOffsZIsTheBlocksMoveEndingNearestTheAxis) {
   const PartOffRun run = simulateProgram({40.0, 50.0, 0.0}, 0.25,
-                                         "G99 M03 S500\nG00 X44. Z-20.\nG01 X-2. ,C1. F0.05\nG01 Z-10.\nG00 X60.\nM30\n");
+                                         "G99 M03 S500\nG00 X44. Z-20.\nG01 X-2. D1. F0.05\nG01 Z-10.\nG00 X60.\nM30\n");
   ASSERT_EQ(run.result.partOffs.size(), 1u);
   EXPECT_EQ(run.result.partOffs[0].line, 3);
   EXPECT_NEAR(run.result.partOffs[0].zMm, -19.0, 1e-9);
