@@ -58,9 +58,4 @@ void addPartSection(render::PartImageOptions& options, const SampledSection& sec
   options.section = section;
 }
 
-std::string pictureFileName(render::PartView view) {
-  if (view == render::PartView::Iso) return "part.png";
-  return "part-" + std::string(render::viewName(view)) + ".png";
-}
-
 }  // namespace lathesim::app

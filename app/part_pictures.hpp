@@ -24,7 +24,4 @@ double drawnToleranceMm(const job::Setup& setup, int widthPx, int heightPx);
 /// and its cut face.
 void addPartSection(render::PartImageOptions& options, const SampledSection& section, double voxelMm);
 
-/// part.png, part-front.png, part-section.png.
-std::string pictureFileName(render::PartView view);
-
 }  // namespace lathesim::app

@@ -104,6 +104,17 @@ std::string threadSummary(const measure::MeasuredThread& thread) {
          fixed(m.leftFlankDeg.mean, 1) + "°/" + fixed(m.rightFlankDeg.mean, 1) + "°";
 }
 
+std::string skippedSummary(const std::vector<interp::SkippedBlock>& skipped) {
+  if (skipped.empty()) return "";
+  constexpr std::size_t kLinesNamed = 10;  // the rest are in report.json
+  std::string lines;
+  for (std::size_t i = 0; i < skipped.size() && i < kLinesNamed; ++i)
+    lines += (i == 0 ? "" : ", ") + std::to_string(skipped[i].line);
+  if (skipped.size() > kLinesNamed) lines += ", …";
+  return std::to_string(skipped.size()) + (skipped.size() == 1 ? " block" : " blocks") + " skipped by '/' (line" +
+         (skipped.size() == 1 ? " " : "s ") + lines + "), ";
+}
+
 nlohmann::ordered_json reportJson(const RunFigures& f) {
   nlohmann::ordered_json report;
   report["program"] = f.program;
@@ -157,6 +168,11 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   for (const auto& t : f.threads) threads.push_back(threadJson(t));
   auto& stops = report["stops"] = nlohmann::ordered_json::array();
   for (const auto& s : f.stops) stops.push_back({{"line", s.line}, {"column", s.column}, {"code", s.code}});
+  auto& skipped = report["skipped_blocks"] = nlohmann::ordered_json::array();
+  for (const auto& s : f.skipped) {
+    skipped.push_back({{"line", s.line}, {"column", s.column}});
+    if (!s.file.empty()) skipped.back()["file"] = s.file;
+  }
   auto& warnings = report["warnings"] = nlohmann::ordered_json::array();
   for (const auto& w : f.warnings) warnings.push_back({{"line", w.line}, {"column", w.column}, {"message", w.message}});
   auto& notes = report["notes"] = nlohmann::ordered_json::array();

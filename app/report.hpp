@@ -11,6 +11,7 @@
 #include "interp/control/control_preset.hpp"
 #include "interp/control/machine_limits.hpp"
 #include "interp/diagnostic.hpp"
+#include "interp/interpreter.hpp"
 #include "measure/thread_measure.hpp"
 #include "interp/move.hpp"
 #include "sim/block_rows.hpp"
@@ -51,6 +52,7 @@ struct RunFigures {
   sim::SimulationResult simulation;
   std::vector<measure::MeasuredThread> threads;  // every thread cut, as programmed and as measured
   std::vector<interp::ProgramStop> stops;  // M00/M01 reached: listed, not timed
+  std::vector<interp::SkippedBlock> skipped;  // '/' blocks passed over under block delete
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;
   // simulation.collisions' diagnostics, one each in the same order: errors, or warnings under
@@ -72,6 +74,9 @@ nlohmann::ordered_json reportJson(const RunFigures& figures);
 
 /// One line for the terminal naming a thread and what was measured of it.
 std::string threadSummary(const measure::MeasuredThread& thread);
+
+/// "2 blocks skipped by '/' (lines 5, 9), " for the summary line; "" when none was.
+std::string skippedSummary(const std::vector<interp::SkippedBlock>& skipped);
 
 /// Writes report.json: `report` (reportJson's), its `blocks` filled with a row for each of
 /// `blocks`, as if they had been in the tree.

@@ -25,7 +25,7 @@ int runCommand(const RunOptions& options) {
   run->progress->stage("done");
   run->progress->finish();
 
-  std::cout << interp::printable(figures.program) << " (control " << figures.control.preset << "): " << figures.moves << " moves, final volume " << figures.finalVolumeMm3
+  std::cout << interp::printable(figures.program) << " (control " << figures.control.preset << "): " << figures.moves << " moves, " << skippedSummary(figures.skipped) << "final volume " << figures.finalVolumeMm3
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
             << interp::printable(options.out.string()) << "/\n";

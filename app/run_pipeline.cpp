@@ -9,10 +9,12 @@
 #include "app/at_line.hpp"
 #include "app/collision_diagnostics.hpp"
 #include "app/cut_recording.hpp"
+#include "app/output_names.hpp"
 #include "app/part_pictures.hpp"
 #include "job/collision_checks.hpp"
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
+#include "interp/printable_text.hpp"
 #include "interp/toolpath_csv.hpp"
 #include "interp/toolpath_csv_spool.hpp"
 #include "measure/thread_moves.hpp"
@@ -127,6 +129,12 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.control = setup.control;
   figures.travel = job::travelOf(setup);
   figures.voxelMm = voxel;
+  if (out && !out->foreignFiles().empty()) {
+    std::string names;
+    for (const std::string& name : out->foreignFiles()) names += (names.empty() ? "" : ", ") + interp::printable(name);
+    warn(run, interp::printable(options.out.string()) + " holds files lathesim does not write, left as they are: " +
+                  names + " (the outputs an earlier run left there and this one does not write are removed)");
+  }
 
   run.outputs = options.outputs;
   if (options.outputs.vtp || spoolMoves) run.moves = std::make_unique<interp::MoveSpool>();
@@ -181,6 +189,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.warnings.insert(figures.warnings.begin(), run.job.warnings.begin(), run.job.warnings.end());
   figures.notes = run.job.notes;
   figures.stops = run.job.toolpath.stops;
+  figures.skipped = run.job.skippedBlocks;
   if (recording) {
     run.progress->stage("finishing the video");
     recording->finish(*run.stock, figures.simulation.collisions);

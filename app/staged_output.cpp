@@ -4,11 +4,14 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <stdexcept>
 
 #include "app/interrupts.hpp"
+#include "app/output_names.hpp"
 #include "interp/printable_text.hpp"
 
 namespace lathesim::app {
@@ -72,6 +75,12 @@ StagedOutput::StagedOutput(fs::path folder) : folder_(std::move(folder)) {
     for (auto it = madeFolders_.rbegin(); it != madeFolders_.rend(); ++it) fs::remove(*it, error);
     throw std::runtime_error("cannot write the outputs into " + quoted(folder_) + ": " + error.message());
   }
+  for (const auto& entry : fs::directory_iterator(folder_, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with(".tmp-") || isBatchFileName(name)) continue;  // another run's temporaries; a batch's own
+    (isOutputFileName(name) && entry.is_regular_file() ? previous_ : foreign_).push_back(name);
+  }
+  std::sort(foreign_.begin(), foreign_.end());
 }
 
 StagedOutput::~StagedOutput() {
@@ -89,6 +98,8 @@ StagedOutput::~StagedOutput() {
 }
 
 fs::path StagedOutput::stage(const std::string& name) {
+  if (!isOutputFileName(name))  // a new output: add it to output_names.cpp, or --out keeps stale copies
+    throw std::logic_error("lathesim stages '" + name + "', which app/output_names.cpp does not list");
   // The temporary keeps the real extension: some writers choose their format by it.
   const auto temp = folder_ / (".tmp-" + std::to_string(getpid()) + "-" + name);
   InterruptCleanup::addFile(temp);
@@ -134,10 +145,16 @@ void StagedOutput::commit() {
     Committing() { InterruptCleanup::beginCommit(); }
     ~Committing() { InterruptCleanup::endCommit(); }
   } committing;
+  std::set<fs::path> written;
   for (auto it = staged_.begin(); it != staged_.end(); it = staged_.erase(it)) {
     fs::rename(it->first, it->second);
     InterruptCleanup::forget(it->first);
+    written.insert(it->second.filename());
   }
+  std::error_code ignored;  // a stale file that cannot go is no reason to fail the run
+  for (const std::string& name : previous_)
+    if (!written.contains(name)) fs::remove(folder_ / name, ignored);
+  previous_.clear();
   for (const fs::path& made : madeFolders_) InterruptCleanup::forget(made);
   madeFolders_.clear();  // they hold the outputs now
 }

@@ -3,6 +3,9 @@
 // output folder and renamed into place only when every file of the run is complete. A
 // failed write, an exception or an interrupt (app/interrupts.hpp) leaves nothing behind:
 // not the temporaries, nor the folders made for them.
+// The folder holds one run: at the commit, the files a previous run wrote there
+// (app/output_names.hpp) that this run does not write are removed. Anything else in it is
+// left alone, and listed (foreignFiles) for a warning.
 
 #include <filesystem>
 #include <functional>
@@ -34,8 +37,12 @@ class StagedOutput {
   /// Waits until every file written so far is on the disk. A file that could not be synced
   /// (a full disk found at write-back, a quota) throws std::runtime_error naming it.
   void syncWritten();
-  /// syncWritten(), then renames every staged file into place (nothing, if a sync failed).
+  /// syncWritten(), then renames every staged file into place (nothing, if a sync failed), and
+  /// removes the previous run's outputs that this run did not write.
   void commit();
+  /// What the folder held that lathesim does not write, as found when it was opened (sorted):
+  /// the user's files, left alone.
+  const std::vector<std::string>& foreignFiles() const { return foreign_; }
 
  private:
   std::filesystem::path folder_;
@@ -47,6 +54,8 @@ class StagedOutput {
     std::future<void> done;
   };
   std::vector<Sync> syncs_;  // of the files write() wrote
+  std::vector<std::string> previous_;  // the output files the folder held when opened
+  std::vector<std::string> foreign_;   // the other files and folders it held
 };
 
 /// Writes `file` through a stream; throws std::runtime_error with the system's reason (a

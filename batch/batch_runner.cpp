@@ -28,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kLogFileName = "lathesim.log";
+constexpr const char* kLogFileName = kJobLogFileName;
 constexpr const char* kThumbnailFileName = "thumbnail.png";
 constexpr int kThumbnailWidthPx = 240;
 constexpr double kMemoryShare = 0.8;  // of the memory free at the start, for the jobs together

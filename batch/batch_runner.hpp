@@ -14,6 +14,9 @@
 
 namespace lathesim::batch {
 
+/// The log a job's lathesim writes in its folder (its stdout and stderr).
+inline constexpr const char* kJobLogFileName = "lathesim.log";
+
 struct BatchOptions {
   std::filesystem::path source;  // a .toml or .csv manifest, or a folder of programs
   std::filesystem::path out = "out";

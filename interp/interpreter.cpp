@@ -67,7 +67,7 @@ InterpretResult interpret(PagedText programText, const std::string& fileName,
   MovePipeline pipeline(options, moves, warnings);
   moves.recordingIn(result.toolpath);
   if (status.ok()) {
-    status = runProgram(program, options, result.toolpath, pipeline, warnings, notes);
+    status = runProgram(program, options, result.toolpath, pipeline, warnings, notes, result.skippedBlocks);
     if (status.ok()) status = pipeline.finish();
     else result.toolpath.moves = pipeline.abandon();
   }

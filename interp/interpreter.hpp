@@ -17,6 +17,7 @@
 #include "interp/move.hpp"
 #include "interp/move_sink.hpp"
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/compensation/uncompensated_nose.hpp"
 #include "interp/text/paged_text.hpp"
 #include "interp/execution/work_frame.hpp"
 
@@ -42,6 +43,9 @@ struct InterpreterOptions {
   std::optional<RZ> secondReferencePosition;  // G30's (radius, Z); unset: G30 is an error
   MachineLimits machine;                // max_rpm sets the rpm G97 keeps after G96
   ToolOffsets offsets;  // the setup's [[offset]] table (interp/compensation/tool_offset.hpp)
+  // Each tool's insert (tool number → its nose radius and tip number): what a contour cut under
+  // G40 really misses the drawing by when the offset in force gives no R (uncompensated_nose.hpp).
+  std::map<int, ToolNose> toolNoses;
   WorkOffsets workOffsets = zeroWorkOffsets();  // the setup's [[work_offset]] (work_frame.hpp)
   std::vector<std::filesystem::path> programDirectories;  // where M98 finds programs the text
                                                          // lacks, in order (program_library.hpp)
@@ -56,8 +60,16 @@ struct InterpreterOptions {
                                                 // path can be cut there (execution/move_pipeline.hpp)
 };
 
+/// A block the run passed over because it opens with '/' and block delete is on.
+struct SkippedBlock {
+  int line = 0;
+  int column = 0;
+  std::string file;  // the file it is in when not the program's own (an external subprogram)
+};
+
 struct InterpretResult {
   Toolpath toolpath;
+  std::vector<SkippedBlock> skippedBlocks;  // every '/' block the run reached and skipped, once each
   std::vector<Diagnostic> diagnostics;  // the error that stopped the program alone, or the
                                         // warnings and notes of a program that ran, by line
   bool ok() const;

@@ -108,7 +108,10 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   options.maxSteps = setup.macro.maxSteps;
   options.macroVariables = setup.macro.variables;
   options.maxMoves = setup.maxMoves;
-  for (const auto& tool : setup.tools) options.toolNumbers.push_back(tool.number);
+  for (const auto& tool : setup.tools) {
+    options.toolNumbers.push_back(tool.number);
+    options.toolNoses[tool.number] = {tool.noseRadiusMm, tool.tipNumber};
+  }
   return options;
 }
 
@@ -160,7 +163,7 @@ std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
 std::optional<Job> openJob(const JobRequest& request) {
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
-  Job job{defaultSetup(), {}, {}, {}, {}, {}};
+  Job job{defaultSetup(), {}, {}, {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     print(loaded.diagnostics);
@@ -218,6 +221,7 @@ bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves) 
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
     else if (d.severity == interp::Severity::Note) job.notes.push_back(std::move(d));
   job.toolpath = std::move(result.toolpath);
+  job.skippedBlocks = std::move(result.skippedBlocks);
   for (const interp::Error& w : timed.warnings()) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
     print({job.warnings.back()});

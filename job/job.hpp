@@ -19,6 +19,7 @@ namespace lathesim::job {
 struct Job {
   Setup setup;
   interp::Toolpath toolpath;  // every move's timeS filled in; no moves when loadJob handed them on
+  std::vector<interp::SkippedBlock> skippedBlocks;  // the '/' blocks the run passed over
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;  // what was read differently from the text, said once
   interp::FileText programText;  // read where it lies, not held (file_text.hpp)

@@ -8,7 +8,7 @@
 # batch against the same programs run one `lathesim run` (or `check`) after another.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh >/dev/null
+scripts/setup.sh lathesim lathesim_bench >/dev/null
 part=parts/seed000-face-taper
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

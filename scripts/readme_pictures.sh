@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Makes the small pictures README.md shows (docs/pictures/): seed 000's part.png and its front
+# Makes the small pictures README.md and docs/ show (docs/pictures/): seed 000's part.png and its front
 # and section views, four frames of its cut.mp4, its report.html as Chromium shows it, and
 # check's deviation.png for seed 001's wrong taper. Each is lathesim's own output, scaled down
 # and reduced to a palette so that it stays a few tens of KB. Needs build/lathesim

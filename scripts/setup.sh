@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages lathesim needs (scripts/packages.txt) and builds it in
 # build/ (Release). Safe to run again: installs only what is missing, rebuilds only what
-# changed. The build runs `npm ci` (viewer/package-lock.json, into build/viewer/) for the
+# changed.
+#   scripts/setup.sh              builds only the command, build/lathesim (what a first part needs)
+#   scripts/setup.sh TARGET …     builds those targets instead; `all` builds everything, the
+#                                 test suite and benchmarks included (scripts/test.sh does) The build runs `npm ci` (viewer/package-lock.json, into build/viewer/) for the
 # three.js viewer report.html carries, with Debian's nodejs and npm: the first build needs
 # the npm registry, later ones find the packages in npm's cache.
 set -euo pipefail
@@ -30,5 +33,6 @@ fi
 
 command -v npm >/dev/null || { echo "setup: npm (Debian's npm package) is needed to build report.html's 3D viewer" >&2; exit 1; }
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build --parallel "$(nproc)"
-echo "setup: built build/lathesim"
+targets=("${@:-lathesim}")
+cmake --build build --parallel "$(nproc)" --target "${targets[@]}"
+echo "setup: built ${targets[*]} in build/"

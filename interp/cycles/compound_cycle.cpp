@@ -155,8 +155,9 @@ Result<ContourSpan> CompoundCycle::contourSpan() const {
   return findContourBlocks(*place_, request, state_, options_);
 }
 
-// GSK (lathe-cycles.md §8): a G41/G42 in force before G70–G73 is suspended for the cycle and
-// restored after it; only G41/G42 in the contour (its ns block) compensate it.
+// GSK (lathe-cycles.md §8): a G41/G42 in force before G71–G73 is suspended for the roughing
+// and restored after it; only G41/G42 in the contour (its ns block) compensate it. G70 is
+// different: it finishes in the compensation in force (finishing()).
 ModalState CompoundCycle::contourStartState() const {
   ModalState start = state_;
   start.noseSide = NoseSide::None;
@@ -186,6 +187,10 @@ void CompoundCycle::continueAfter(ContourSpan span) {
 }
 
 // G70 P Q: the contour blocks as written, with their own F, S and T, then rapid back to A.
+// A G41/G42 in force (`G00 G42 X42. Z2.` then `G70 P Q`, the manuals' form on Fanuc and GSK)
+// carries on into the contour: its moves continue the chain the G42 block started
+// (nose_compensation.hpp) and the rapid back to A, a cycle leg, cancels it. A G41/G42 in the
+// ns block compensates as in any chain.
 Status CompoundCycle::finishing() {
   auto span = contourSpan();
   if (!span.ok()) return span.error();
@@ -197,9 +202,9 @@ Status CompoundCycle::finishing() {
                                              code_.text, *ns.sequenceNumber, ns.line));
   }
   const RZ start = state_.position;
-  auto run = runContourBlocks(*place_, span.value(), contourStartState(), options_);
+  auto run = runContourBlocks(*place_, span.value(), state_, options_);
   if (!run.ok()) return run.error();
-  const NoseSide before = state_.noseSide;
+  const NoseSide before = state_.noseSide;  // a G40/G41/G42 in the contour ends with the cycle
   state_ = std::move(run.value().state);
   state_.noseSide = before;
   outcome_.contourMoves = std::move(run.value().moves);

@@ -25,7 +25,7 @@ void placeInSetupFrame(std::vector<Move>& moves) {
 }  // namespace
 
 MovePipeline::MovePipeline(const InterpreterOptions& options, MoveSink& sink, std::vector<Error>& warnings)
-    : options_(options), sink_(sink), warnings_(warnings) {}
+    : options_(options), sink_(sink), warnings_(warnings), uncompensated_(options.toolNoses) {}
 
 void MovePipeline::add(const std::vector<Move>& moves) { held_.insert(held_.end(), moves.begin(), moves.end()); }
 
@@ -41,7 +41,11 @@ Status MovePipeline::release(bool anyCount) {
   return pass();
 }
 
-Status MovePipeline::finish() { return pass(); }
+Status MovePipeline::finish() {
+  if (auto status = pass(); !status.ok()) return status;
+  if (auto warning = uncompensated_.warning()) warnings_.push_back(std::move(*warning));
+  return success();
+}
 
 // The moves are made as programmed, in the work coordinate systems (G54–G59, G50); placed in
 // the setup's frame, then G41/G42 and the tool offsets' shifts are applied, each rapid is
@@ -50,6 +54,7 @@ Status MovePipeline::pass() {
   std::vector<Move> moves = std::exchange(held_, {});
   if (auto status = insertCorners(moves, warnings_); !status.ok()) return status;
   placeInSetupFrame(moves);
+  uncompensated_.look(moves);
   if (auto status = compensateNoseRadius(moves); !status.ok()) return status;
   if (auto status = applyToolOffsets(moves, shiftInForce_); !status.ok()) return status;
   if (options_.control.rapidPath == RapidPath::NonLinear) splitRapidsIntoAxisLegs(moves, options_.machine);

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "interp/compensation/uncompensated_nose.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/move_sink.hpp"
 #include "interp/result.hpp"
@@ -52,6 +53,7 @@ class MovePipeline {
   std::vector<Move> held_;
   RZ shiftInForce_{0, 0};  // the tool offset's shift the last move passed left in force
   std::size_t passed_ = 0;
+  UncompensatedNoseCheck uncompensated_;  // contours cut under G40 with a nose radius
 };
 
 }  // namespace lathesim::interp

@@ -27,13 +27,14 @@ namespace {
 class ProgramRunner {
  public:
   ProgramRunner(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
-                std::vector<Error>& warnings, std::vector<Error>& notes)
+                std::vector<Error>& warnings, std::vector<Error>& notes, std::vector<SkippedBlock>& skipped)
       : program_(program),
         options_(options),
         toolpath_(toolpath),
         moves_(moves),
         warnings_(warnings),
         notes_(notes),
+        skipped_(skipped),
         calls_(program),
         variables_(options.macroVariables),
         guard_(options.maxSteps),
@@ -83,6 +84,7 @@ class ProgramRunner {
   std::size_t movesMade_ = 0;  // by the blocks, before corners and dog-legs
   std::vector<Error>& warnings_;
   std::vector<Error>& notes_;
+  std::vector<SkippedBlock>& skipped_;
   ModalState state_;
   CallStack calls_;
   macro::VariableStore variables_;
@@ -90,6 +92,7 @@ class ProgramRunner {
   MacroFlow flow_;
   std::set<std::tuple<std::string, int, int, std::string>> warned_;  // (file, line, column, message)
   std::set<std::size_t> notedStops_;             // blocks whose #3006 stop is listed: once each
+  std::set<std::size_t> skippedListed_;          // '/' blocks listed as skipped: once each
 };
 
 Status ProgramRunner::run() {
@@ -114,7 +117,13 @@ Status ProgramRunner::run() {
 Result<std::size_t> ProgramRunner::runBlock(std::size_t index) {
   const ProgramBlock& block = program_.block(index);
   toolpath_.blockCount = std::max(toolpath_.blockCount, block.ordinal + 1);
-  if (block.skipped) return index + 1;
+  if (block.skipped) {
+    if (skippedListed_.insert(index).second) {
+      const Error at = inFile(Error{block.line, block.column, {}}, index);
+      skipped_.push_back({at.line, at.column, at.file});
+    }
+    return index + 1;
+  }
   if (const Error* error = program_.errorOf(block)) return inFile(*error, index);
   if (guard_.step(index)) return stepLimitError(index);
 
@@ -338,8 +347,8 @@ std::optional<Error> moveLimitError(std::size_t moves, std::size_t maxMoves, int
 }
 
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
-                  std::vector<Error>& warnings, std::vector<Error>& notes) {
-  return ProgramRunner(program, options, toolpath, moves, warnings, notes).run();
+                  std::vector<Error>& warnings, std::vector<Error>& notes, std::vector<SkippedBlock>& skipped) {
+  return ProgramRunner(program, options, toolpath, moves, warnings, notes, skipped).run();
 }
 
 }  // namespace lathesim::interp

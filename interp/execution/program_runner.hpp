@@ -22,9 +22,10 @@ namespace lathesim::interp {
 /// Runs `program`, handing its moves to `moves` block by block (the caller finishes it), its
 /// cycle starts, stops and parts catcher commands to `toolpath`, its warnings to `warnings`
 /// (each once, however often its block runs) and its notes (a macro's #3006 stops) to
-/// `notes`. A block's read error is reported when execution reaches it.
+/// `notes`, the '/' blocks it skipped to `skipped`. A block's read error is reported when
+/// execution reaches it.
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
-                  std::vector<Error>& warnings, std::vector<Error>& notes);
+                  std::vector<Error>& warnings, std::vector<Error>& notes, std::vector<SkippedBlock>& skipped);
 
 /// When `moves` passes `maxMoves` (InterpreterOptions::maxMoves), the error at `line`,
 /// `column` (the block that made the move past the limit) that names the limit.

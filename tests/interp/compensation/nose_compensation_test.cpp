@@ -397,18 +397,20 @@ TEST(NoseCompensationInCycles, G70CompensatesItsContourAndTheReturnCancels) {
                          {kRapid, 21.2, -10, 22, 2}});
 }
 
-TEST(NoseCompensationInCycles, G42BeforeTheCycleIsSuspendedInsideIt) {
-  // G42 in force before G73 and G70, none in the contour: the cycles run as drawn (GSK: a cycle
-  // suspends comp) and G42 is back after them. Tip 9 R0.8 (offset 3): the toolpath is the
-  // centre path.
+TEST(NoseCompensationInCycles, G42BeforeG73IsSuspendedInsideItAndG70FinishesUnderIt) {
+  // G42 in force before G73 and G70, none in the contour: G73 roughs as drawn (GSK: the
+  // roughing cycles suspend comp), G70 finishes under it (the manuals' `G42 …; G70 P Q`), and
+  // G42 is back after them. Tip 9 R0.8 (offset 3): the toolpath is the centre path.
   //   line 3 start-up (10, 5) → (10.8, 2): perpendicular to line 4 (t (0,-1), normal (1,0))
   //   line 4 r 10.8 to Z-5
   //   G73 U0 W0 R1 from A = (10, -5): d = 1 runs as two passes, both at no shift: the ns
   //   block's G00 to (10, 2) then N20 back to (10, -5), twice. Its first leg is uncompensated,
   //   so it cancels the chain: from (10.8, -5).
-  //   G70 runs N10 and N20 once more as drawn; the rapid back to A has no length.
-  //   line 10 G01 X30 under the restored G42 starts a new chain; no compensated move follows,
-  //   so the centre ends perpendicular to its own end: (15, -5) + 0.8·(0, 1) = (15, -4.2)
+  //   G70 from A = (10, -5) runs N10 and N20 under G42: N10's G00 is the start-up, to C
+  //   perpendicular to N20 at its start, (10.8, 2); N20 at r 10.8. Its end is A, so the rapid
+  //   back to A has no length and the chain goes on, under the G42 still in force, into
+  //   line 10 G01 X30 (t (1, 0), C on z = -4.2): an inner corner, both trimmed to (10.8, -4.2).
+  //   No compensated move follows line 10, so C ends perpendicular to its end, (15, -4.2).
   //   line 11 G40 G00 X40: the cancel, from (15, -4.2) to (20, -5)
   const auto result = test::run(
       "T0103 G99 M03 S800\n"
@@ -432,9 +434,9 @@ TEST(NoseCompensationInCycles, G42BeforeTheCycleIsSuspendedInsideIt) {
                                      {kFeed, 10, 2, 10, -5},
                                      {kRapid, 10, -5, 10, 2},
                                      {kFeed, 10, 2, 10, -5},
-                                     {kRapid, 10, -5, 10, 2},
-                                     {kFeed, 10, 2, 10, -5},
-                                     {kFeed, 10, -5, 15, -4.2},
+                                     {kRapid, 10, -5, 10.8, 2},
+                                     {kFeed, 10.8, 2, 10.8, -4.2},
+                                     {kFeed, 10.8, -4.2, 15, -4.2},
                                      {kRapid, 15, -4.2, 20, -5}});
 }
 

@@ -86,6 +86,16 @@ TEST(MacroPrecedence, MultiplicationGroupBeforeAdditionGroup) {
   EXPECT_DOUBLE_EQ(valueOf("7/2"), 3.5);  // real division
 }
 
+TEST(MacroPrecedence, ModBindsLikeTimesAndDivide) {
+  // Custom Macro B: MOD is an operator of the * / AND level, applied left to right with them.
+  // Each line has another value if MOD is moved to the level of + (or above *).
+  EXPECT_DOUBLE_EQ(valueOf("2 + 7 MOD 4"), 5.0);   // 2 + [7 MOD 4]; at + 's level [2+7] MOD 4 = 1
+  EXPECT_DOUBLE_EQ(valueOf("10 - 7 MOD 4"), 7.0);  // 10 - 3; at + 's level 3 MOD 4 = 3
+  EXPECT_DOUBLE_EQ(valueOf("7 MOD 4 * 3"), 9.0);   // [7 MOD 4] * 3; at + 's level 7 MOD 12 = 7
+  EXPECT_DOUBLE_EQ(valueOf("3 * 7 MOD 4"), 1.0);   // [3*7] MOD 4; above *, 3 * [7 MOD 4] = 9
+  EXPECT_DOUBLE_EQ(valueOf("20 / 4 MOD 3"), 2.0);  // [20/4] MOD 3
+}
+
 TEST(MacroFunctions, TrigonometryInDegrees) {
   EXPECT_NEAR(valueOf("SIN[30]"), 0.5, kTrig);
   EXPECT_NEAR(valueOf("COS[60]"), 0.5, kTrig);
