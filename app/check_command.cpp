@@ -444,7 +444,9 @@ int checkCommand(const CheckOptions& options) {
   const interp::LineStarts starts(programText);
   printSummary(options, inspection, [&](int line) { return starts.lineOf(programText, line); }, run->figures.machine);
   const measure::Verdict verdict = inspection.verdict();
+  const bool crashed = run->figures.crashed();
   keepUntilExit(std::move(*run));
+  if (crashed) return job::kExitCrash;  // the worse news, over a part out of tolerance
   return verdict == measure::Verdict::Within ? job::kExitOk : job::kExitOutOfTolerance;
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string_view>
 
+#include "app/collision_diagnostics.hpp"
 #include "app/part_pictures.hpp"
 #include "app/tool_picture.hpp"
 #include "geometry/profile_polylines.hpp"
@@ -65,15 +66,21 @@ TriangleMesh CutRecording::partMesh(const sim::Stock& stock) const {
 }
 
 sim::CutObserver CutRecording::observer() {
-  return [this](std::size_t, std::size_t endMove, const sim::Stock& stock) {
+  return [this](std::size_t, std::size_t endMove, const sim::Stock& stock, const std::vector<sim::Collision>& collisions) {
     const auto start = std::chrono::steady_clock::now();
+    markCrashes(collisions);
     animation_->drawFramesBefore(animation_->clockAtEndOf(endMove - 1), [&] { return partMesh(stock); });
     secondsSpent_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
 }
 
-void CutRecording::finish(const sim::Stock& stock) {
+void CutRecording::markCrashes(const std::vector<sim::Collision>& collisions) {
+  for (; crashesMarked_ < collisions.size(); ++crashesMarked_) animation_->addCrash(crashMarkOf(collisions[crashesMarked_]));
+}
+
+void CutRecording::finish(const sim::Stock& stock, const std::vector<sim::Collision>& collisions) {
   const auto start = std::chrono::steady_clock::now();
+  markCrashes(collisions);
   animation_->finish([&] { return partMesh(stock); });
   secondsSpent_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

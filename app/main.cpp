@@ -21,6 +21,8 @@ namespace {
 constexpr const char* kExitStatuses =
     "Exit status: 0 done; 1 a bad program, setup, drawing or manifest, or the outputs could not be\n"
     "written (nothing is written then); 2 a bad command line; 3 check: out of tolerance, or undecided at the voxel;\n"
+    "4 run, check: the program crashes (a rapid or a holder into the bar, anything into the chuck;\n"
+    "the outputs are written, the crash marked; --collisions warn makes it 0);\n"
     "130 or 143 stopped by Ctrl-C or SIGTERM (nothing half-written is left).";
 
 // A bad command line says what is wrong (with any control character in it escaped) and exits
@@ -127,7 +129,7 @@ int lathesimMain(int argc, char** argv) {
 
   // --dialect, --control, --block-skip, --max-steps and --max-moves on every command that reads a program.
   struct OverrideArguments {
-    std::string dialect, control, blockSkip;
+    std::string dialect, control, blockSkip, collisions;
     std::optional<long long> maxSteps;
     std::optional<std::size_t> maxMoves;
   };
@@ -143,6 +145,11 @@ int lathesimMain(int argc, char** argv) {
         ->check(CLI::IsMember(presets));
     command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
         ->check(CLI::IsMember({"on", "off"}));
+    if (command != expandCmd)
+      command->add_option("--collisions", args->collisions,
+                          "a collision fails the run with exit status 4 (error, the default) or is only printed "
+                          "(warn) (overrides [sim] collisions)")
+          ->check(CLI::IsMember({"error", "warn"}));
     command->add_option("--max-steps", args->maxSteps,
                         "blocks the program may run again before it is stopped as an endless loop (overrides "
                         "[macro] max_steps)")
@@ -173,6 +180,7 @@ int lathesimMain(int argc, char** argv) {
     if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
     if (!args.control.empty()) overrides.controlPreset = args.control;
     if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
+    if (!args.collisions.empty()) overrides.collisionsWarn = args.collisions == "warn";
     overrides.maxSteps = args.maxSteps;
     overrides.maxMoves = args.maxMoves;
     return overrides;

@@ -147,6 +147,15 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   report["final_volume_mm3"] = f.finalVolumeMm3;
   report["removed_volume_mm3"] = f.stockVolumeMm3 - f.finalVolumeMm3;
   report["parted_off"] = partedOffJson(f);
+  // Pieces a cut set loose that were no part-off (sim/part_off.hpp): they fell, and are in no mesh.
+  auto& loose = report["loose_pieces"] = nlohmann::ordered_json::array();
+  for (const auto& p : f.simulation.loosePieces)
+    loose.push_back({{"line", p.line},
+                     {"column", p.column},
+                     {"volume_mm3", p.volumeMm3},
+                     {"diameter_mm", {2.0 * p.rInnerMm, 2.0 * p.rOuterMm}},
+                     {"z_mm", {p.zLowMm, p.zHighMm}},
+                     {"staying_beyond_mm3", p.beyondMm3}});
   report["mesh_volume_mm3"] = f.meshVolumeMm3;
   report["volume_tolerance_mm3"] = f.volumeToleranceMm3;
   report["mesh_crumbs"] = {{"count", f.meshCrumbs.count}, {"volume_mm3", f.meshCrumbs.volumeMm3}};
@@ -154,8 +163,20 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
   report["moves"] = f.moves;
   report["cycle_time_s"] = f.cycleTimeS;
   auto& collisions = report["collisions"] = nlohmann::ordered_json::array();
-  for (const auto& c : f.simulation.collisions)
-    collisions.push_back({{"line", c.line}, {"column", c.column}, {"kind", c.kind}, {"volume_mm3", c.volumeMm3}});
+  for (std::size_t n = 0; n < f.simulation.collisions.size(); ++n) {
+    const sim::Collision& c = f.simulation.collisions[n];
+    const interp::Diagnostic* said = n < f.collisions.size() ? &f.collisions[n] : nullptr;
+    collisions.push_back({{"file", said ? said->file : f.program},
+                          {"line", c.line},
+                          {"column", c.column},
+                          {"block", said ? said->sourceLine : std::string()},
+                          {"kind", c.kind},
+                          {"volume_mm3", c.volumeMm3},
+                          {"tool", c.tool},
+                          {"position", {{"x_diameter_mm", 2.0 * c.at.x()}, {"z_mm", c.at.y()}}},
+                          {"severity", said && said->severity == interp::Severity::Warning ? "warning" : "error"},
+                          {"message", said ? said->message : std::string()}});
+  }
   report["blocks"] = nlohmann::ordered_json::array();  // its rows are streamed by writeReport
   auto& threads = report["threads"] = nlohmann::ordered_json::array();
   for (const auto& t : f.threads) threads.push_back(threadJson(t));

@@ -1,6 +1,7 @@
 #pragma once
 // report.json: what a run measured, for people and for other tools.
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -58,7 +59,16 @@ struct RunFigures {
   std::vector<interp::SkippedBlock> skipped;  // '/' blocks passed over under block delete
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;
+  // simulation.collisions' diagnostics, one each in the same order: errors, or warnings under
+  // [sim] collisions = "warn" (collision_diagnostics.hpp).
+  std::vector<interp::Diagnostic> collisions;
   RunTimings timing;
+
+  /// The run crashed, and the setup does not let a crash pass: exit status job::kExitCrash.
+  bool crashed() const {
+    return std::any_of(collisions.begin(), collisions.end(),
+                       [](const interp::Diagnostic& d) { return d.severity == interp::Severity::Error; });
+  }
 };
 
 /// The report as JSON, for commands that add their own section (check adds "check"), with

@@ -124,8 +124,9 @@ std::string problems(const Json& r) {
   std::string html = "<h2>Collisions and warnings</h2>\n<table>\n<tr><th>line</th><th>what</th></tr>\n";
   for (const Json& c : r.at("collisions"))
     html += "<tr class=\"problem-collision\"><td><a href=\"#L" + std::to_string(c.value("line", 0)) + "\">" +
-            std::to_string(c.value("line", 0)) + "</a></td><td>collision: " + escaped(c.value("kind", "")) + ", " +
-            grouped(c.value("volume_mm3", 0.0), 1) + " mm³</td></tr>\n";
+            std::to_string(c.value("line", 0)) + "</a></td><td>" +
+            (c.value("severity", "error") == "error" ? "crash: " : "collision: ") + escaped(c.value("message", "")) +
+            "</td></tr>\n";
   for (const Json& w : r.at("warnings"))
     html += "<tr class=\"problem-warning\"><td><a href=\"#L" + std::to_string(w.value("line", 0)) + "\">" +
             std::to_string(w.value("line", 0)) + "</a></td><td>" + escaped(w.value("message", "")) + "</td></tr>\n";
@@ -288,9 +289,17 @@ void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const int
         << "</p></header>\n<main>\n";
     out << summary(report) << problems(report);
     // The part in 3D first, where the page opens; the pictures and the drawing check below.
-    if (!glb.empty())
+    if (!glb.empty()) {
       out << "<h2>3D view</h2>\n<div id=\"view3d\" data-state=\"loading\"></div>\n<p class=\"hint\">The part and its "
              "toolpath (feeds blue, rapids red). Drag to turn, scroll to zoom, right-drag to move.</p>\n";
+      // The red markers the model holds (render::partGlb), each named.
+      for (const Json& c : report.at("collisions")) {
+        const Json& at = c.at("position");
+        out << "<p class=\"crash-mark\"><span class=\"swatch\" style=\"background:#ff0000\"></span> crash, line "
+            << c.value("line", 0) << ": the red marker at X" << fixed(at.value("x_diameter_mm", 0.0), 3) << " Z"
+            << fixed(at.value("z_mm", 0.0), 3) << " (" << escaped(c.value("message", "")) << ")</p>\n";
+      }
+    }
     if (!pictures.empty()) {
       out << "<h2>Pictures</h2>\n<div class=\"pictures\">\n";
       for (const HtmlPicture& p : pictures) {

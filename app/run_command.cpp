@@ -36,11 +36,10 @@ int runCommand(const RunOptions& options) {
     std::cout << "  parted off at line " << off.line << ", Z" << off.zMm << ": the part " << off.volumeMm3
               << " mm³ (part.stl), the stub " << figures.stubVolumeMm3 << " mm³ (stub.stl)\n";
   }
-  for (const auto& c : figures.simulation.collisions)
-    std::cout << "  collision: line " << c.line << ", " << c.kind << ", " << c.volumeMm3 << " mm³\n";
   for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';
+  const bool crashed = figures.crashed();
   keepUntilExit(std::move(*run));
-  return job::kExitOk;
+  return crashed ? job::kExitCrash : job::kExitOk;
 }
 
 job::JobRequest jobRequestOf(const RunOptions& options) {

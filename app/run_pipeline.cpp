@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "app/at_line.hpp"
+#include "app/collision_diagnostics.hpp"
 #include "app/cut_recording.hpp"
 #include "app/output_names.hpp"
 #include "app/part_pictures.hpp"
@@ -193,7 +194,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.skipped = run.job.skippedBlocks;
   if (recording) {
     run.progress->stage("finishing the video");
-    recording->finish(*run.stock);
+    recording->finish(*run.stock, figures.simulation.collisions);
     figures.timing.animateS = recording->secondsSpent();
   }
   figures.finalVolumeMm3 = run.stock->volumeMm3();
@@ -207,6 +208,10 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
       measure::measureThreads(run.partStock(), streams ? threadToolpath : run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap() - figures.timing.animateS;
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
+  for (const auto& collision : figures.simulation.collisions) {
+    figures.collisions.push_back(collisionDiagnostic(run.job, collision));
+    std::cerr << interp::format(figures.collisions.back()) << '\n';
+  }
   for (const auto& thread : figures.threads)
     if (const auto tooWide = measure::threadToolTooWide(thread, outlines.at(thread.programmed.tool), voxel))
       warn(run, thread.programmed.line, thread.programmed.column, *tooWide);
@@ -286,6 +291,7 @@ DrawnPictures drawPictures(const SimulatedRun& run, const interp::Toolpath& tool
   render::PartImageOptions image =
       partPictureOptions(run.job.setup, toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
   addPartSection(image, run.partStock().meridianSection(), run.figures.voxelMm);
+  image.crashes = crashMarksOf(run.figures.simulation.collisions);
   std::vector<render::PartView> views{render::PartView::Iso};
   for (const render::PartView view : pictures.views)
     if (std::find(views.begin(), views.end(), view) == views.end()) views.push_back(view);
@@ -370,7 +376,7 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   // After the pictures, not beside them: their copies of the mesh and these would add up to
   // the run's peak memory (a Φ300×600 bar at 0.2 mm: 2.53 times its grid's memory, 2.20 without).
   if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
-    run.modelGlb = render::partGlb(run.part, drawnToolpath);
+    run.modelGlb = render::partGlb(run.part, drawnToolpath, crashMarksOf(run.figures.simulation.collisions));
   for (const std::string& format : options.exports) {
     out.write("part." + format, [&](const Path& file) {
       if (format == "gltf") render::writePartGltf(run.part, drawnToolpath, file);

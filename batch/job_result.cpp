@@ -15,8 +15,9 @@ namespace {
 
 using Json = nlohmann::json;
 
-constexpr std::array<std::pair<JobStatus, std::string_view>, 6> kStatusNames{{{JobStatus::Ok, "ok"},
+constexpr std::array<std::pair<JobStatus, std::string_view>, 7> kStatusNames{{{JobStatus::Ok, "ok"},
                                                                               {JobStatus::OutOfTolerance, "out_of_tolerance"},
+                                                                              {JobStatus::Collision, "collision"},
                                                                               {JobStatus::Failed, "failed"},
                                                                               {JobStatus::Timeout, "timeout"},
                                                                               {JobStatus::Crashed, "crashed"},
@@ -138,6 +139,9 @@ JobResult resultOf(const BatchJob& job, const std::string& folder, const ChildOu
     result.status = JobStatus::Ok;
   } else if (code == job::kExitOutOfTolerance && result.check && !result.check->withinTolerance) {
     result.status = JobStatus::OutOfTolerance;
+  } else if (code == job::kExitCrash && report && !result.collisions.empty()) {
+    result.status = JobStatus::Collision;
+    if (auto error = firstError(logText)) result.message = error;
   } else {
     result.status = JobStatus::Failed;
     if (auto error = firstError(logText))

@@ -17,13 +17,15 @@ namespace lathesim::batch {
 enum class JobStatus {
   Ok,              // ran (and, when checked, within tolerance)
   OutOfTolerance,  // `check` exited 3
-  Failed,          // any other non-zero exit: bad input, a collision the command refuses, …
+  Collision,       // `run` or `check` exited 4: the program crashes (its outputs are written)
+  Failed,          // any other non-zero exit: bad input, outputs not written, …
   Timeout,         // killed at its time limit
   Crashed,         // ended by a signal the batch did not send
   NotRun,          // the batch was interrupted before the job finished
 };
 
-std::string_view statusName(JobStatus status);  // "ok", "out_of_tolerance", "failed", "timeout", "crashed", "not_run"
+// "ok", "out_of_tolerance", "collision", "failed", "timeout", "crashed" (ended by a signal), "not_run"
+std::string_view statusName(JobStatus status);
 std::optional<JobStatus> statusNamed(std::string_view name);
 
 /// How the child process ended, as the batch saw it.

@@ -39,11 +39,13 @@ void writeWhole(const std::filesystem::path& file, const std::function<void(std:
 }  // namespace
 
 int BatchSummary::exitStatus() const {
-  bool outOfTolerance = false;
+  bool outOfTolerance = false, collision = false;
   for (const auto& job : jobs) {
     if (job.status == JobStatus::OutOfTolerance) outOfTolerance = true;
+    else if (job.status == JobStatus::Collision) collision = true;
     else if (job.status != JobStatus::Ok) return kExitSomeFailed;
   }
+  if (collision) return kExitCrash;
   return outOfTolerance ? kExitOutOfTolerance : kExitAllPassed;
 }
 
@@ -55,7 +57,7 @@ int BatchSummary::count(JobStatus status) const {
 
 std::string BatchSummary::countsText() const {
   std::string text;
-  for (JobStatus status : {JobStatus::Ok, JobStatus::OutOfTolerance, JobStatus::Failed, JobStatus::Timeout,
+  for (JobStatus status : {JobStatus::Ok, JobStatus::OutOfTolerance, JobStatus::Collision, JobStatus::Failed, JobStatus::Timeout,
                            JobStatus::Crashed, JobStatus::NotRun}) {
     const int n = count(status);
     if (n == 0) continue;
@@ -74,7 +76,7 @@ Ordered toJson(const BatchSummary& s) {
   json["jobs_in_batch"] = s.jobsInBatch;
   json["shard"] = {{"index", s.shard.index}, {"count", s.shard.count}};
   auto& counts = json["counts"] = Ordered::object();
-  for (JobStatus status : {JobStatus::Ok, JobStatus::OutOfTolerance, JobStatus::Failed, JobStatus::Timeout,
+  for (JobStatus status : {JobStatus::Ok, JobStatus::OutOfTolerance, JobStatus::Collision, JobStatus::Failed, JobStatus::Timeout,
                            JobStatus::Crashed, JobStatus::NotRun})
     counts[std::string(statusName(status))] = s.count(status);
   json["exit_status"] = s.exitStatus();

@@ -17,10 +17,12 @@
 namespace lathesim::batch {
 
 // The batch's exit status: every job passed; some failed (or timed out, crashed, did not
-// run) — this wins over —; some parts were out of tolerance.
+// run) — this wins over —; some programs collided (kExitCrash) — which wins over —; some parts
+// were out of tolerance.
 inline constexpr int kExitAllPassed = job::kExitOk;
 inline constexpr int kExitSomeFailed = job::kExitBadInput;
 using job::kExitOutOfTolerance;
+using job::kExitCrash;
 
 struct BatchSummary {
   std::string version;  // lathesim's version and build ID

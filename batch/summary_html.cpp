@@ -49,18 +49,20 @@ int statusRank(JobStatus status) {
   switch (status) {
     case JobStatus::Ok: return 0;
     case JobStatus::OutOfTolerance: return 1;
-    case JobStatus::Timeout: return 2;
-    case JobStatus::Failed: return 3;
-    case JobStatus::Crashed: return 4;
-    case JobStatus::NotRun: return 5;
+    case JobStatus::Collision: return 2;
+    case JobStatus::Timeout: return 3;
+    case JobStatus::Failed: return 4;
+    case JobStatus::Crashed: return 5;
+    case JobStatus::NotRun: return 6;
   }
-  return 5;
+  return 6;
 }
 
 std::string statusLabel(JobStatus status) {
   switch (status) {
     case JobStatus::Ok: return "ok";
     case JobStatus::OutOfTolerance: return "out of tolerance";
+    case JobStatus::Collision: return "collision";
     case JobStatus::Failed: return "failed";
     case JobStatus::Timeout: return "time limit";
     case JobStatus::Crashed: return "crashed";
@@ -147,7 +149,7 @@ td.message { max-width: 28em; }
 .badge { display: inline-block; padding: .1em .5em; border-radius: .8em; color: #fff; white-space: nowrap; }
 .badge.ok { background: #1e8e3e; }
 .badge.out_of_tolerance { background: #e37400; }
-.badge.failed, .badge.crashed, .badge.timeout { background: #c5221f; }
+.badge.failed, .badge.crashed, .badge.timeout, .badge.collision { background: #c5221f; }
 .badge.not_run { background: #777; }
 td.picture img { width: 160px; display: block; }
 td.picture { padding: 2px; }

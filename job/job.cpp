@@ -175,8 +175,12 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
 }
 
 interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
+  return diagnosticAt(interp::Severity::Warning, line, column, std::move(message));
+}
+
+interp::Diagnostic Job::diagnosticAt(interp::Severity severity, int line, int column, std::string message) const {
   if (!programLines) programLines.emplace(programText.text());
-  return {interp::Severity::Warning, toolpath.programName, line, column, std::move(message),
+  return {severity, toolpath.programName, line, column, std::move(message),
           programLines->lineOf(programText.text().view(), line)};
 }
 
@@ -201,6 +205,7 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
   if (overrides.blockSkip)
     (void)setup.control.set("block_skip", std::string(*overrides.blockSkip ? "on" : "off"), "command line");
   if (overrides.maxSteps) setup.macro.maxSteps = *overrides.maxSteps;
+  if (overrides.collisionsWarn) setup.collisionsWarn = *overrides.collisionsWarn;
   return setup;
 }
 

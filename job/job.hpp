@@ -33,6 +33,8 @@ struct Job {
 
   /// A warning located in the program, ready to print and report.
   interp::Diagnostic warningAt(int line, int column, std::string message) const;
+  /// The same with any severity: an error found after the program ran (a collision).
+  interp::Diagnostic diagnosticAt(interp::Severity severity, int line, int column, std::string message) const;
 };
 
 /// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.
@@ -45,6 +47,7 @@ struct SetupOverrides {
   std::optional<bool> blockSkip;             // --block-skip on|off: control.block_skip
   std::optional<long long> maxSteps;         // --max-steps: [macro] max_steps
   std::optional<std::size_t> maxMoves;       // --max-moves: [sim] max_moves
+  std::optional<bool> collisionsWarn;        // --collisions warn|error: [sim] collisions
 };
 
 /// The setup with the command line's overrides; nullopt (the problem printed) for an unknown

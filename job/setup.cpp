@@ -333,7 +333,7 @@ void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
 }
 
 void readSim(const toml::table& table, Setup& setup, Reporter& report) {
-  rejectUnknownKeys(table, "sim.", {"voxel", "max_moves"}, report);
+  rejectUnknownKeys(table, "sim.", {"voxel", "max_moves", "collisions"}, report);
   if (const auto* node = table.get("voxel"))
     if (auto v = positiveMm(*node, "sim.voxel", report)) setup.voxelMm = *v;
   if (const auto* node = table.get("max_moves")) {
@@ -342,6 +342,14 @@ void readSim(const toml::table& table, Setup& setup, Reporter& report) {
       report.at(node->source(), "sim.max_moves must be a whole number of moves, 1 or more, got " + describe(*node));
     else
       setup.maxMoves = static_cast<std::size_t>(integer->get());
+  }
+  if (const auto* node = table.get("collisions")) {
+    const auto* verdict = node->as_string();
+    if (!verdict || (verdict->get() != "error" && verdict->get() != "warn"))
+      report.at(node->source(), "sim.collisions must be \"error\" (a collision fails the run) or \"warn\" (it is "
+                                "printed and the run succeeds), got " + describe(*node));
+    else
+      setup.collisionsWarn = verdict->get() == "warn";
   }
 }
 

@@ -56,6 +56,9 @@ struct Setup {
                             // [machine] thread_runout control.thread_runout)
   std::optional<double> voxelMm;   // [sim] voxel; the command line may override it
   std::size_t maxMoves = interp::kDefaultMaxMoves;  // [sim] max_moves, --max-moves: more is an error
+  // [sim] collisions = "warn", --collisions warn: a collision is printed as a warning and the
+  // run succeeds; by default ("error") it is an error and the command exits kExitCrash.
+  bool collisionsWarn = false;
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end

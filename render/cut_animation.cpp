@@ -18,6 +18,8 @@ CutAnimation::CutAnimation(const PartImageOptions& picture, const interp::Toolpa
 
 CutAnimation::~CutAnimation() = default;
 
+void CutAnimation::addCrash(const CrashMark& crash) { picture_->addCrash(crash); }
+
 double CutAnimation::stepPerFrame() const { return clock_.total() / (options_.frames - 1); }
 
 double CutAnimation::clockOfFrame(int index) const {

@@ -59,6 +59,8 @@ class CutAnimation {
   void finish(const PartNow& part);
 
   int framesDrawn() const { return next_; }
+  /// Marks a crash in the frames drawn from now on.
+  void addCrash(const CrashMark& crash);
 
  private:
   void draw(int index, const TriangleMesh& part);

@@ -13,6 +13,8 @@
 #include "geometry/part_dimensions.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "interp/move.hpp"
+#include "render/crash_mark.hpp"
+#include "render/picture_frame.hpp"
 #include "render/rgb_image.hpp"
 
 namespace lathesim::render {
@@ -73,6 +75,8 @@ struct PartImageOptions {
   /// Frame this box only (with the view Front: the profile true on the silhouette), without
   /// the toolpath, the tool and the legend.
   std::optional<CloseUp> closeUp{};
+  /// Collisions, each a red disc where it happened and a label, over everything else.
+  std::vector<CrashMark> crashes{};
 };
 
 /// Renders off-screen to a PNG: the shaded part; the bar as a faint amber ghost; the chuck's
@@ -88,6 +92,9 @@ struct PartImageOptions {
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,
                        const PartImageOptions& options, const std::filesystem::path& png);
+/// Where that picture puts things: its frame, as it frames the bar, the jaws and the tool
+/// (or, without a bar, `part`), so that a point's pixel can be found (picture_frame.hpp).
+PictureFrame partPictureFrame(const PartImageOptions& options, const interp::Toolpath& toolpath, const TriangleMesh& part);
 /// The same picture's pixels in memory: to draw it in one thread and write it in another, and
 /// to shrink it into a thumbnail without reading the PNG back.
 RgbImage partImage(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);

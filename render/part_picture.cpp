@@ -138,6 +138,10 @@ vtkSmartPointer<vtkTextActor> textActor(const Label& label, int fontPx) {
 
 }  // namespace
 
+PictureFrame partPictureFrame(const PartImageOptions& options, const interp::Toolpath& toolpath, const TriangleMesh& part) {
+  return framePicture(options, toolpath, part);
+}
+
 std::string_view viewName(PartView view) {
   switch (view) {
     case PartView::Iso: return "iso";
@@ -238,6 +242,8 @@ void PartPicture::setPart(const TriangleMesh& part) {
   s.part->SetMapper(mapper);
 }
 
+void PartPicture::addCrash(const CrashMark& crash) { scene_->options.crashes.push_back(crash); }
+
 void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, const std::optional<ToolPicture>& shownTool,
                        const std::string& caption) {
   Scene& s = *scene_;
@@ -273,6 +279,9 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
     }
   }
 
+  Overlay2D crashes;  // drawn last: over the toolpath and the tool
+  drawCrashMarks(o.crashes, s.frame, clip, crashMarkRadiusPx(o.heightPx), crashes, labels);
+
   auto add = [&](const vtkSmartPointer<vtkProp>& prop) {
     s.overlay->AddViewProp(prop);
     s.annotations.push_back(prop);
@@ -280,6 +289,7 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
   if (!thin.empty()) add(thin.actor(1.5));
   if (!thick.empty()) add(thick.actor(2.0));
   if (!marks.empty()) add(marks.actor(1.0));
+  if (!crashes.empty()) add(crashes.actor(1.0));
 
   const int titlePx = std::max(12, o.heightPx / 40);
   const int legendPx = std::max(10, titlePx * 3 / 4);
@@ -298,6 +308,7 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
       legend.push_back({"— thread", kThreadColour});
   }
   if (o.bar) legend.push_back({"the bar before cutting", kGhostLineColour});
+  if (!o.crashes.empty()) legend.push_back({"red disc: a crash", kCrashColour});
   if (!o.dimensions.diameters.empty() || !o.dimensions.lengths.empty()) legend.push_back({"dimensions, mm", kDimensionColour});
   for (std::size_t n = 0; n < legend.size(); ++n)
     labels.push_back({Pixel(left, titlePx / 2.0 + static_cast<double>(n) * 1.5 * legendPx), legend[n].first,

@@ -29,6 +29,8 @@ class PartPicture {
   const PictureFrame& frame() const;
 
   void setPart(const TriangleMesh& part);
+  /// Marks a crash from the next show() on (the video marks one from the frame after it).
+  void addCrash(const CrashMark& crash);
   /// What the overlay and the tool show: the toolpath as far as `shown` (the moves before it
   /// whole, its move up to where the tool stands; nullopt: all of it), `tool` (at
   /// shown->position when shown is given), and `caption` under the title.

@@ -126,6 +126,22 @@ void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRe
   place(labels, edgeLabel(edge, clip, "tool at " + programPoint(position), kInkColour));
 }
 
+void drawCrashMarks(const std::vector<CrashMark>& crashes, const PictureFrame& frame, const ClipRectangle& clip,
+                    double radiusPx, Overlay2D& marks, std::vector<Label>& labels) {
+  constexpr int kCorners = 32;
+  for (const CrashMark& crash : crashes) {
+    const Pixel at = frame.pixelOf(crash.at);
+    const Pixel centre(std::clamp(at.x(), clip.x0, clip.x1), std::clamp(at.y(), clip.y0, clip.y1));
+    std::vector<Pixel> disc;
+    for (int k = 0; k < kCorners; ++k) {
+      const double a = 2 * M_PI * k / kCorners;
+      disc.push_back(centre + radiusPx * Pixel(std::cos(a), std::sin(a)));
+    }
+    marks.polygon(disc, kCrashColour);
+    place(labels, {centre + Pixel(1.6 * radiusPx, 0.6 * radiusPx), crash.label, kCrashColour, Justify::Left, true});
+  }
+}
+
 void drawBarOutline(const BarOutline& bar, PartView view, const PictureFrame& frame, Overlay2D& lines) {
   const double r = bar.radiusMm, bore = bar.boreRadiusMm;
   for (double side : {-1.0, 1.0})

@@ -52,6 +52,11 @@ void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::
 void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks,
                      std::vector<Label>& labels);
 
+/// Each crash as a filled disc `radiusPx` wide in kCrashColour at its point (kept inside `clip`
+/// when it lies outside), labelled beside it in the same red.
+void drawCrashMarks(const std::vector<CrashMark>& crashes, const PictureFrame& frame, const ClipRectangle& clip,
+                    double radiusPx, Overlay2D& marks, std::vector<Label>& labels);
+
 /// The bar's outline in the ghost's line colour (iso: its silhouette and end circle; front and
 /// section: its rectangle).
 void drawBarOutline(const BarOutline& bar, PartView view, const PictureFrame& frame, Overlay2D& lines);

@@ -2,6 +2,8 @@
 
 #include <cerrno>
 #include <cstdint>
+#include <algorithm>
+#include <array>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
@@ -156,7 +158,7 @@ std::uint32_t littleEndianWord(const std::string& bytes, std::size_t at) {
 
 }  // namespace
 
-std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath) {
+std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::vector<CrashMark>& crashes) {
   GltfScene scene;
   if (!part.triangles.empty()) {
     static_assert(sizeof(part.triangles.front()) == 3 * sizeof(std::uint32_t), "triangles are three packed indices");
@@ -166,6 +168,25 @@ std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath) 
   for (const auto& [kind, colour] : {std::pair{DrawnAs::Feed, kFeedColour}, std::pair{DrawnAs::Thread, kThreadColour},
                                       std::pair{DrawnAs::Rapid, kRapidColour}})
     addMoves(scene, toolpath, kind, colour);
+  if (!crashes.empty()) {
+    Eigen::Vector3f low = Eigen::Vector3f::Zero(), high = Eigen::Vector3f::Zero();
+    if (!part.vertices.empty()) low = high = part.vertices.front();
+    for (const Eigen::Vector3f& v : part.vertices) low = low.cwiseMin(v), high = high.cwiseMax(v);
+    const float half = std::max(1.0f, (high - low).norm() / 40.0f);
+    std::vector<Eigen::Vector3f> points;
+    std::vector<std::uint32_t> triangles;
+    for (const CrashMark& crash : crashes) {
+      const Eigen::Vector3f centre(static_cast<float>(crash.at.x()), 0.0f, static_cast<float>(crash.at.y()));
+      const auto first = static_cast<std::uint32_t>(points.size());
+      for (int axis = 0; axis < 3; ++axis)
+        for (const float side : {half, -half}) points.push_back(centre + side * Eigen::Vector3f::Unit(axis));
+      // Corners +x 0, −x 1, +y 2, −y 3, +z 4, −z 5: eight faces, counter-clockwise seen from outside.
+      for (const auto& [x, y, z] : {std::array{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5},
+                                    {3, 1, 5}, {0, 3, 5}})
+        for (const int corner : {x, y, z}) triangles.push_back(first + static_cast<std::uint32_t>(corner));
+    }
+    scene.add(points, triangles, 4, kCrashColour);
+  }
   return scene.glb();
 }
 

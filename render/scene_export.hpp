@@ -5,9 +5,11 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "geometry/triangle_mesh.hpp"
 #include "interp/move.hpp"
+#include "render/crash_mark.hpp"
 
 namespace lathesim::render {
 
@@ -15,8 +17,10 @@ namespace lathesim::render {
 /// holding the part's vertices and triangles as they are (no copy through VTK) and each kind
 /// of move as line segments in the pictures' colours. The scene is in metres with Y up, as
 /// glTF asks: the spindle axis (Z) along glTF's X, the part's X (the radius, up in every
-/// picture) along glTF's Y. Needs no display.
-std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath);
+/// picture) along glTF's Y. Each of `crashes` is a red octahedron (a twentieth of the part's
+/// size across, at least 2 mm) centred where it happened, in the meridian plane. Needs no display.
+std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath,
+                    const std::vector<CrashMark>& crashes = {});
 
 /// The same scene as glTF 2.0 JSON with its buffer inline (base64).
 std::string partGltf(const TriangleMesh& part, const interp::Toolpath& toolpath);

@@ -1,8 +1,14 @@
 #pragma once
 // Part-off during a simulation: after a cut, the material that no longer hangs together with
-// the chuck's end has fallen. It is taken out of the stock (which is then the stub left in
-// the chuck); the first piece is the part. A later cut into where that part was is warned
-// of: the part is not there to cut (it fell, or the parts catcher has it).
+// the chuck's end has fallen. It is taken out of the stock. It is the part only when the
+// program parted it off on purpose: when it holds most of the material from its own lowest Z
+// on (it and what stays there) — a cut through the whole bar (a parting blade to the axis or
+// the bore, a face cut past the centre) leaves nothing else there. The stock is then the stub
+// left in the chuck; the first such piece is the part. A piece set loose otherwise (a skin
+// a finishing arc undercut on a full bar, a ring around a bore, a chip far smaller than what
+// stays beside it) is a LoosePiece, warned of at its block: it falls, is in no mesh, and the
+// stock stays the part. A later cut into where the part was is warned of: the part is not
+// there to cut (it fell, or the parts catcher has it).
 
 #include <cstddef>
 #include <optional>

@@ -13,7 +13,7 @@ void recordCollision(std::vector<Collision>& collisions, const interp::Move& mov
     c->volumeMm3 += volumeMm3;
     return;
   }
-  collisions.push_back({move.line, move.column, kind, volumeMm3});
+  collisions.push_back({move.line, move.column, kind, volumeMm3, move.tool, move.to});
 }
 
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,

@@ -18,11 +18,15 @@
 
 namespace lathesim::sim {
 
+/// A crash: something that must never touch the material or the chuck did.
 struct Collision {
   int line = 0;
   int column = 0;
   std::string kind;  // "rapid_into_stock", "holder_into_stock", "into_chuck"
   double volumeMm3 = 0.0;
+  int tool = 0;    // the tool of the move that collided
+  RZ at{0, 0};     // where the tool stood (radius, Z) at the end of the block's first colliding
+                   // move: where the machine would have stopped, the tool in what it hit
 };
 
 struct BlockRemoval {
@@ -51,11 +55,24 @@ struct PartOff {
   std::optional<interp::PartsCatcherCommand> catcher;  // the parts catcher command in force, if any
 };
 
+/// A piece a cut set loose that the program did not part off on purpose (part_off.hpp): a skin,
+/// a ring, a chip far smaller than what stays. It falls (or flies off), and is in no output
+/// mesh; the part is still what the chuck holds.
+struct LoosePiece {
+  int line = 0;  // the block whose cut set it loose
+  int column = 0;
+  double volumeMm3 = 0;  // measured on its level set
+  // Its extent in the meridian section (mm): radii and Z of its material.
+  double rInnerMm = 0, rOuterMm = 0, zLowMm = 0, zHighMm = 0;
+  double beyondMm3 = 0;  // the material that stays, at Z from the piece's lowest Z on
+};
+
 struct SimulationResult {
   std::vector<BlockRemoval> blocks;  // blocks that made moves (a dwell counts), in program order
   std::vector<Collision> collisions;
   std::vector<SimulationWarning> warnings;
   std::vector<PartOff> partOffs;     // in program order: the first piece is the part
+  std::vector<LoosePiece> loosePieces;  // pieces set loose that are no part-off, in program order
   std::shared_ptr<const Stock> part;  // the first piece's level set, taken out of the stock; null
                                       // when nothing parted off (the stock is the part)
 };
@@ -80,9 +97,11 @@ using ToolThicknesses = std::map<int, double>;
 inline constexpr double kDefaultInsertThicknessMm = 4.0;
 using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 
-/// Called before the moves [firstMove, endMove) are cut, with the stock as it stands then:
-/// what a picture taken while those moves run shows (the animation's frames).
-using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMove, const Stock& stock)>;
+/// Called before the moves [firstMove, endMove) are cut, with the stock as it stands then and
+/// the collisions found so far: what a picture taken while those moves run shows (the
+/// animation's frames, the crashes marked from the frame after each).
+using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMove, const Stock& stock,
+                                       const std::vector<Collision>& collisions)>;
 
 /// Removes every move's swept region from `stock` in program order. Consecutive feeds and
 /// arcs of one block made with the spindle turning are united, revolved, and written once (a

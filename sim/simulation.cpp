@@ -135,7 +135,7 @@ void Simulation::cutGroup() {
   }
 
   const std::size_t end = groupFirst_ + group_.size();
-  if (observer_) observer_(groupFirst_, end, stock);
+  if (observer_) observer_(groupFirst_, end, stock, result.collisions);
   double removed = 0.0;
   RevolvedRegion revolved;             // what a turning write swept (none for a thread or a slot)
   std::optional<ChangedArea> changed;  // where the write can have changed the stock

@@ -148,6 +148,7 @@ Stock::Stock(const StockSpec& spec, double voxelMm, RevolvedWrites writes)
 Stock::~Stock() = default;
 
 double Stock::voxelMm() const { return impl_->voxel; }
+const StockSpec& Stock::spec() const { return impl_->spec; }
 
 double Stock::remove(const RevolvedRegion& region) {
   if (impl_->table) return impl_->writeThroughTable(region, nullptr);

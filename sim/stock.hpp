@@ -78,6 +78,8 @@ class Stock {
   Stock& operator=(const Stock&) = delete;
 
   double voxelMm() const;
+  /// The bar it was made from (a piece taken out of it keeps its bar's).
+  const StockSpec& spec() const;
 
   /// Removes the solid of revolution of `region`: φ ← max(φ, −ψ). Only leaves near both the
   /// region's boundary and the material are visited. Returns the volume removed (mm³),

@@ -406,7 +406,7 @@ TEST(Cli, ReportListsTheProgramStops) {
 // straight to X30 Z-10. The default tool's body lies at r ≥ tip, z ≥ tip and contains the
 // square [1, 10] × [1, 10] mm from the tip, so at the end of the rapid it alone fills the
 // ring r 16..25, Z-9..0 of the bar: π (25² − 16²) · 9 ≈ 10433 mm³, and the sweep more.
-TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
+TEST(Cli, RapidIntoTheBarIsACrashOnItsLine) {
   TempDir dir("rapid");
   const fs::path program = dir.path() / "rapid.nc";
   writeFile(program, "M03 S500;\nG00 X54 Z5;\nG00 X30 Z-10;\n");
@@ -414,7 +414,7 @@ TEST(Cli, RapidIntoTheBarIsReportedAsACollisionOnItsLine) {
   const Outcome outcome = lathesim({"run", program.string(), "--setup", (kPartsDir / kPart / "setup.toml").string(),
                                     "--out", out.string(), "--voxel", "0.5"},
                                    dir.path());
-  ASSERT_EQ(outcome.status, 0) << outcome.err;  // a collision is a finding, not bad input
+  ASSERT_EQ(outcome.status, 4) << outcome.err;  // a crash: the outputs are written (crash_cli_test.cpp)
   const nlohmann::json r = nlohmann::json::parse(readFile(out / "report.json"));
   const auto& collisions = r.at("collisions");
   ASSERT_EQ(collisions.size(), 1u) << collisions.dump();
@@ -485,7 +485,9 @@ namespace {
 
 // A shop program whose tools are named in its comments runs with no setup at all: the bar from
 // --stock, the turning tool and the parting blade from their T blocks' comments, a subprogram
-// from --programs. Face Φ40 to Φ36 over 20 mm: removed π(20² − 18²)·20 = 1520π mm³.
+// from --programs. Face Φ40 to Φ36 over 20 mm: removed π(20² − 18²)·20 = 1520π mm³. Its
+// subprogram's G00 X42 retracts up the shoulder at rapid, and the CNMG's nose sweeps 6.6 mm³ of
+// the shoulder's corner: a crash, exit 4, the outputs written (this test once expected 0).
 TEST(Cli, ShopProgramRunsWithoutASetupFile) {
   TempDir dir("shop");
   const fs::path programs = dir.path() / "control";
@@ -499,7 +501,8 @@ TEST(Cli, ShopProgramRunsWithoutASetupFile) {
   const Outcome outcome = lathesim({"run", program.string(), "--stock", "D40xL60", "--programs", programs.string(),
                                     "--out", out.string(), "--voxel", "0.5"},
                                    dir.path());
-  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  ASSERT_EQ(outcome.status, 4) << outcome.err;
+  EXPECT_NE(outcome.err.find("shaft.nc:8:1: error: rapid into the stock removes"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find("warning: tool 1 is mounted from the comment '(CNMG 120408)'"), std::string::npos)
       << outcome.err;
   const nlohmann::json report = nlohmann::json::parse(readFile(out / "report.json"));

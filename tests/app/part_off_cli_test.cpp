@@ -101,6 +101,33 @@ TEST(PartOffCli, AGrooveThatDoesNotPartReportsNone) {
   EXPECT_NEAR(report["final_volume_mm3"].get<double>(), 15000 * M_PI - 279 * 3 * M_PI, tolerance(20, 10, 50));
 }
 
+// A finishing pass run on a full bar with a 1 mm insert sets the skin r 19…20 loose at line 5
+// (tests/sim/part_off_test.cpp works it out: 955.667π mm³): no part-off. The shaft stays the
+// part (part.stl holds it, no stub.stl), the skin is a located warning and a loose piece.
+TEST(PartOffCli, ASkinSetLooseIsAWarningAndTheShaftStaysThePart) {
+  test::ScratchDir scratch("skin");
+  const CommandRun run =
+      lathesim(scratch, "G99 G97 S500 M03\nT0101\nG00 X36. Z2.\nG01 Z-25. F0.1\nG01 X42. Z-28.\nG00 X60.\nM30\n",
+               "D40xL50", "[machine]\nstart = [100, 50]\n[[tool]]\nnumber = 1\npolygon = [[0, 0], [1, 0], [1, 1], [0, 1]]\n");
+  ASSERT_EQ(run.outcome.status, 0) << run.outcome.err;
+  EXPECT_EQ(run.outcome.out.find("parted off"), std::string::npos) << run.outcome.out;
+  EXPECT_NE(run.outcome.err.find("part.nc:5:1: warning: a 1.0 mm ring (Φ38.0 to Φ40.0, Z-2"), std::string::npos)
+      << run.outcome.err;
+  EXPECT_NE(run.outcome.err.find("comes loose at line 5"), std::string::npos) << run.outcome.err;
+  EXPECT_FALSE(fs::exists(run.out / "stub.stl"));
+  const auto report = nlohmann::json::parse(test::readFile(run.out / "report.json"));
+  EXPECT_TRUE(report["parted_off"].is_null());
+  ASSERT_EQ(report["loose_pieces"].size(), 1u) << report["loose_pieces"].dump();
+  EXPECT_EQ(report["loose_pieces"][0]["line"], 5);
+  const double skinMm3 = 955.667 * M_PI;
+  EXPECT_NEAR(report["loose_pieces"][0]["volume_mm3"].get<double>(), skinMm3, tolerance(20, 19, 25));
+  // part.stl is the shaft: the bar less what was cut and the skin.
+  const test::StlFacts part = test::factsOf(test::readBinaryStl(test::readFile(run.out / "part.stl")));
+  EXPECT_EQ(part.badEdges, 0);
+  EXPECT_NEAR(part.volumeMm3, report["final_volume_mm3"].get<double>(), tolerance(20, 0, 50));
+  EXPECT_GT(part.volumeMm3, 400 * M_PI * 50 - 3 * skinMm3);
+}
+
 // A bore as wide as the bar stops the run with nothing written: on the command line it is a bad
 // command line (exit 2), in the setup a bad setup (exit 1) with the place.
 TEST(PartOffCli, ABoreNotInsideTheBarIsRefused) {

@@ -138,7 +138,7 @@ TEST_F(MixedBatch, ExitsOneWithEveryJobCounted) {
   EXPECT_EQ(s.at("exit_status"), 1);
   EXPECT_EQ(s.at("jobs_in_batch"), 7);
   EXPECT_EQ(s.at("counts"),
-            Json::parse(R"({"ok": 3, "out_of_tolerance": 1, "failed": 2, "timeout": 1, "crashed": 0, "not_run": 0})"));
+            Json::parse(R"({"ok": 3, "out_of_tolerance": 1, "collision": 0, "failed": 2, "timeout": 1, "crashed": 0, "not_run": 0})"));
   std::vector<std::string> names;
   for (const auto& row : s.at("jobs")) names.push_back(row.at("name"));
   EXPECT_EQ(names, (std::vector<std::string>{"arc-fillet", "g74-drill", "alarm", "too-slow", "taper-r20", "taper-r24",
@@ -397,6 +397,32 @@ std::set<std::string> waitForStamps(const fs::path& out, std::size_t count, std:
     if (stamped.size() >= count || std::chrono::steady_clock::now() >= deadline) return stamped;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+}
+
+// A program that crashes (parts/dogleg-groove-retract: its retract's dog-leg runs into the
+// groove's wall on line 8) is counted as a collision, apart from failures; its outputs are
+// written, and the batch exits 4.
+TEST(BatchCollision, ACrashIsCountedApartAndTheBatchExitsFour) {
+  ScratchDir dir("batch-crash");
+  writeFile(dir.path() / "batch.toml",
+            "[defaults]\nvoxel = 0.5\n\n" + partJob("dogleg", "dogleg-groove-retract") + partJob("arc-fillet", "arc-fillet"));
+  const fs::path out = dir.path() / "out";
+  const auto outcome = lathesim(dir, {"batch", (dir.path() / "batch.toml").string(), "--out", out.string()});
+  EXPECT_EQ(outcome.status, 4) << outcome.out << outcome.err;
+  const Json summary = jsonFile(out / "summary.json");
+  EXPECT_EQ(summary.at("exit_status"), 4);
+  EXPECT_EQ(summary.at("counts").at("collision"), 1);
+  EXPECT_EQ(summary.at("counts").at("ok"), 1);
+  EXPECT_EQ(summary.at("counts").at("failed"), 0);
+  auto rows = rowsByName(summary);
+  const Json& crash = rows.at("dogleg");
+  EXPECT_EQ(crash.at("status"), "collision");
+  EXPECT_EQ(crash.at("exit_code"), 4);
+  ASSERT_EQ(crash.at("collisions").size(), 1u);
+  EXPECT_EQ(crash.at("collisions")[0].at("line"), 8);
+  EXPECT_EQ(crash.at("message").at("line"), 8);
+  EXPECT_NE(crash.at("message").at("text").get<std::string>().find("rapid into the stock removes"), std::string::npos);
+  EXPECT_NE(outcome.out.find("1 ok, 1 collision"), std::string::npos) << outcome.out;
 }
 
 TEST(BatchInterrupted, ResumesWithoutRedoingFinishedJobs) {

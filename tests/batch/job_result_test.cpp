@@ -110,6 +110,25 @@ TEST(JobResult, ACheckExitingThreeIsOutOfTolerance) {
   EXPECT_EQ(resultOf(job(), "part", exited(3), "", report()).status, JobStatus::Failed);
 }
 
+// Exit 4 with a report that lists the collision: the program crashes (its outputs are written),
+// counted apart from failures, with the crash's located error as its message.
+TEST(JobResult, ExitFourWithACollisionIsACollision) {
+  Json crashed = report();
+  const std::string log = "p.nc:8:1: error: rapid into the stock removes 249.7 mm³ (the tool ends at X38 Z-1)\n"
+                          "G00 Z-1.\n^\n";
+  const JobResult r = resultOf(job(), "part", exited(4), log, crashed);
+  EXPECT_EQ(r.status, JobStatus::Collision);
+  ASSERT_TRUE(r.message);
+  EXPECT_EQ(r.message->kind, "error");
+  EXPECT_EQ(r.message->line, 8);
+  EXPECT_EQ(r.message->text, "rapid into the stock removes 249.7 mm³ (the tool ends at X38 Z-1)");
+  EXPECT_EQ(statusNamed("collision"), JobStatus::Collision);
+  // Exit 4 without a collision in the report is no crash: something else went wrong.
+  Json clean = report();
+  clean["collisions"] = Json::array();
+  EXPECT_EQ(resultOf(job(), "part", exited(4), "", clean).status, JobStatus::Failed);
+}
+
 TEST(JobResult, ABadProgramFailsWithItsFirstErrorAndPlace) {
   const std::string log =
       "class/p.nc:2:1: warning: G96 without G50 S\n"

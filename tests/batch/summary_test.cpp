@@ -64,6 +64,22 @@ TEST(BatchSummary, ExitStatusFailureOverToleranceOverSuccess) {
             "1 ok, 1 out of tolerance, 2 failed");
 }
 
+// A crash (exit 4) is counted apart from failures; it wins over out of tolerance and loses to a
+// failure.
+TEST(BatchSummary, CollisionsAreCountedApartAndExitFour) {
+  using S = JobStatus;
+  EXPECT_EQ(summaryOf({S::Ok, S::Collision}).exitStatus(), 4);
+  EXPECT_EQ(summaryOf({S::OutOfTolerance, S::Collision, S::Ok}).exitStatus(), 4);
+  EXPECT_EQ(summaryOf({S::Collision, S::Failed}).exitStatus(), 1);
+  const BatchSummary s = summaryOf({S::Ok, S::Collision, S::Collision, S::Failed});
+  EXPECT_EQ(s.countsText(), "1 ok, 2 collision, 1 failed");
+  const nlohmann::ordered_json json = toJson(s);
+  EXPECT_EQ(json.at("counts").at("collision"), 2);
+  EXPECT_EQ(json.at("counts").at("failed"), 1);
+  EXPECT_EQ(json.at("jobs").at(1).at("status"), "collision");
+  EXPECT_EQ(toJson(summaryFromJson(nlohmann::json::parse(json.dump()))), json);
+}
+
 TEST(BatchSummary, CsvOneQuotedLinePerJob) {
   BatchSummary s = summaryOf({JobStatus::Ok, JobStatus::Failed, JobStatus::OutOfTolerance});
   s.jobs[1].message = JobMessage{"error", "progs/job1.nc", 5, 21, "R-5.5 and W3, \"opposite\" signs"};

@@ -155,6 +155,43 @@ TEST(PartViews, IsoViewFramesTheBarNotTheRapidAndMarksWhereItGoes) {
   EXPECT_GT(png.count(700, 800, 0, 600, redLine) + png.count(0, 800, 540, 600, redLine), 20);
 }
 
+// A crash is marked where it happened: a red disc (redder than the rapids' dashes) centred on
+// the point the frame projects it to, in every view, with its label; nothing of that red
+// without one. The front view's projection is the one worked by hand above (frontPixel).
+bool crashRed(const Rgb& c) { return c.r >= 240 && c.g <= 25 && c.b <= 25; }
+
+TEST(PartViews, ACrashIsARedDiscWhereItHappenedInEveryView) {
+  ::unsetenv("DISPLAY");
+  const RZ crash(20, -20);  // on the part's surface, under the feed
+  for (const PartView view : {PartView::Iso, PartView::Front, PartView::Section}) {
+    SCOPED_TRACE(viewName(view));
+    Scene scene;
+    scene.options.view = view;
+    const PictureFrame frame = partPictureFrame(scene.options, scene.path, scene.part);
+    const Eigen::Vector2d at = frame.pixelOf(crash);
+    if (view == PartView::Front) {
+      EXPECT_NEAR(at.x(), frontPixel(20, -20).x(), 1.0);
+      EXPECT_NEAR(at.y(), frontPixel(20, -20).y(), 1.0);
+    }
+    const Eigen::Vector2i centre(static_cast<int>(std::lround(at.x())), static_cast<int>(std::lround(at.y())));
+    const int half = static_cast<int>(crashMarkRadiusPx(scene.options.heightPx) / 2);  // well inside the disc
+    const int window = (2 * half + 1) * (2 * half + 1);
+    test::TempDir dir;
+    writePartImagePng(scene.part, scene.path, scene.options, dir.path() / "plain.png");
+    const Png plain(dir.path() / "plain.png");
+    EXPECT_EQ(plain.count(0, plain.width(), 0, plain.height(), crashRed), 0);
+    scene.options.crashes.push_back({crash, "crash, line 8"});
+    writePartImagePng(scene.part, scene.path, scene.options, dir.path() / "crash.png");
+    const Png png(dir.path() / "crash.png");
+    EXPECT_EQ(around(png, centre, half, crashRed), window);
+    // The label, to the right of the disc.
+    const int right = centre.x() + static_cast<int>(1.6 * crashMarkRadiusPx(scene.options.heightPx));
+    EXPECT_GT(png.count(right, right + 120, centre.y() - 10, centre.y() + 30,
+                        [](const Rgb& c) { return c.r > 200 && c.g < 120 && c.b < 120; }),
+              20);
+  }
+}
+
 TEST(PartViews, ViewsAreNamed) {
   for (PartView v : {PartView::Iso, PartView::Front, PartView::Section}) EXPECT_EQ(viewNamed(viewName(v)), v);
   EXPECT_FALSE(viewNamed("top"));

@@ -26,13 +26,15 @@ ToolOutlines tools() {
   outlines.emplace(3, *ConvexPolygon::fromOutline(innerBlade).polygon);
   const std::vector<RZ> turning{{0, 0}, {10, 1}, {12, 12}, {1, 10}};  // the default tool, flanks leaning 1 in 10
   outlines.emplace(4, *ConvexPolygon::fromOutline(turning).polygon);
+  const std::vector<RZ> small{{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // a 1 mm finishing insert: r, Z tip … tip + 1
+  outlines.emplace(5, *ConvexPolygon::fromOutline(small).polygon);
   return outlines;
 }
 
 interp::Toolpath toolpathOf(const std::string& program) {
   interp::InterpreterOptions options;
   options.startPosition = {50.0, 50.0};
-  options.toolNumbers = {1, 2, 3, 4};
+  options.toolNumbers = {1, 2, 3, 4, 5};
   interp::InterpretResult result = interp::interpret(program, "part_off.nc", options);
   EXPECT_TRUE(result.ok()) << (result.diagnostics.empty() ? "" : interp::format(result.diagnostics[0]));
   return result.toolpath;
@@ -177,18 +179,132 @@ TEST(PartOff, ThePipAFaceCutToTheCentreLeavesIsNoPart) {
 
 // The section falls in two with no Z free of material: a face groove (r 14…16, 10 deep) meets an
 // internal groove from the bore (r 10…16, Z-12…-9), and the ring r 10…14, Z-9…0 comes loose
-// while the outside (r 16…20) runs on to the face: 96π·9 = 864π mm³ falls.
-TEST(PartOff, ARingCutLooseInsideATubeFalls) {
+// while the outside (r 16…20) runs on to the face: 96π·9 = 864π mm³ falls. It holds less than
+// half of the material from Z-9 on (the outside holds 144π·9 = 1296π): no part-off, a loose
+// ring warned of on its line, and the stock (all but the ring) stays the part.
+TEST(PartOff, ARingCutLooseInsideATubeFallsAndIsNoPart) {
   const double voxel = 0.25;
   const PartOffRun run = simulateProgram({40.0, 50.0, 0.0, 20.0}, voxel,
                                   "G99 M03 S500\nT0202\nG00 X28. Z2.\nG01 Z-10. F0.05\nG00 Z2.\n"
                                   "T0303\nG00 X8.\nZ-12.\nG01 X20.\nG00 X8.\nG00 Z5.\nM30\n");
-  ASSERT_EQ(run.result.partOffs.size(), 1u);
-  EXPECT_EQ(run.result.partOffs[0].line, 9);
+  EXPECT_TRUE(run.result.partOffs.empty());
+  EXPECT_FALSE(run.result.part);
+  ASSERT_EQ(run.result.loosePieces.size(), 1u);
+  const LoosePiece& ring = run.result.loosePieces[0];
+  EXPECT_EQ(ring.line, 9);
   const double ringSurface = surface(14, 10, 9);
-  EXPECT_NEAR(run.result.partOffs[0].volumeMm3, 864 * M_PI, tolerance(ringSurface, voxel));
+  EXPECT_NEAR(ring.volumeMm3, 864 * M_PI, tolerance(ringSurface, voxel));
+  EXPECT_NEAR(ring.rInnerMm, 10.0, voxel);
+  EXPECT_NEAR(ring.rOuterMm, 14.0, voxel);
+  EXPECT_NEAR(ring.zLowMm, -9.0, voxel);
+  EXPECT_NEAR(ring.beyondMm3, 1296 * M_PI, tolerance(surface(20, 16, 9), voxel));
+  ASSERT_EQ(run.result.warnings.size(), 1u);
+  EXPECT_EQ(run.result.warnings[0].line, 9);
+  EXPECT_NE(run.result.warnings[0].message.find("a 4.0 mm ring (Φ20.0 to Φ28.0, Z-9.0 to Z0.0) of "),
+            std::string::npos)
+      << run.result.warnings[0].message;
+  EXPECT_NE(run.result.warnings[0].message.find("comes loose at line 9"), std::string::npos);
   const double stubMm3 = 300 * M_PI * 50 - 60 * M_PI * 10 - 156 * M_PI * 3 - 864 * M_PI + 60 * M_PI * 1;
   EXPECT_NEAR(run.stubMm3, stubMm3, tolerance(surface(20, 10, 50) + ringSurface, voxel));
+}
+
+// A finishing pass run on a full bar Φ40 (Z-50…0) with a 1 mm insert (tip at r, Z; the insert
+// r … r+1, Z … Z+1): G01 X36 from Z2 to Z-25 takes the band r 18…19, and G01 X42 Z-28 leaves
+// it along a diagonal whose sweep's upper edge, the insert's corner (r+1, Z+1), runs from
+// (19, -24) to (22, -27): z = −5 − r. The 1 mm skin r 19…20 above that edge hangs on nothing:
+// ∫₁₉²⁰ 2πr (5 + r) dr = 2π (2.5·39 + 1141/3) = 955.667π mm³ falls at line 5. The core r < 18
+// holds 324π·24 mm³ and more from the skin's lowest Z (-25) on: the skin is a tenth of it, no
+// part-off. The shaft stays the part; the skin is warned of and kept out of it.
+TEST(PartOff, AFinishingPassThatSetsASkinLooseOnAFullBarIsNoPartOff) {
+  for (const double voxel : {0.1, 0.2, 0.25, 0.4}) {
+    SCOPED_TRACE(testing::Message() << voxel << " mm voxels");
+    const StockSpec bar{40.0, 50.0, 0.0};
+    const PartOffRun run = simulateProgram(bar, voxel, "G99 M03 S500\nT0505\nG00 X36. Z2.\nG01 Z-25. F0.1\n"
+                                                       "G01 X42. Z-28.\nG00 X60.\nM30\n");
+    EXPECT_TRUE(run.result.partOffs.empty());
+    EXPECT_FALSE(run.result.part);
+    ASSERT_EQ(run.result.loosePieces.size(), 1u);
+    const LoosePiece& skin = run.result.loosePieces[0];
+    EXPECT_EQ(skin.line, 5);
+    const double skinSurface = 2 * M_PI * (20 + 19) * 25 + 2 * M_PI * (400 - 361);
+    EXPECT_NEAR(skin.volumeMm3, 955.667 * M_PI, tolerance(skinSurface, voxel));
+    EXPECT_GT(skin.beyondMm3, 324 * M_PI * 24);
+    ASSERT_EQ(run.result.warnings.size(), 1u);
+    EXPECT_EQ(run.result.warnings[0].line, 5);
+    EXPECT_NE(run.result.warnings[0].message.find("a 1.0 mm ring (Φ38.0 to Φ40.0"), std::string::npos)
+        << run.result.warnings[0].message;
+    // Nothing is lost: the stock, what the blocks cut and the skin that fell add up to the bar.
+    double cut = 0;
+    for (const BlockRemoval& block : run.result.blocks) cut += block.removedMm3;
+    EXPECT_NEAR(run.stubMm3 + cut + skin.volumeMm3, 400 * M_PI * 50, tolerance(surface(20, 0, 50) + skinSurface, voxel));
+  }
+}
+
+// The same around a bore: a tube Φ40 with a Φ20 bore, the 1 mm insert boring at X22 (r 11…12)
+// from Z2 to Z-5 and leaving along the diagonal to X18 Z-7, whose sweep's upper edge (the
+// insert's corner (r, Z+1)) runs from (11, -4) to (9, -6): z = r − 15. The 1 mm skin r 10…11
+// on the bore above it falls at line 5: ∫₁₀¹¹ 2πr (15 − r) dr = 2π (7.5·21 − 331/3) = 94.333π
+// mm³, against 256π·4 and more of the wall outside from its lowest Z on.
+TEST(PartOff, ARingCutLooseAroundABoreIsNoPartOff) {
+  for (const double voxel : {0.1, 0.2, 0.25}) {
+    SCOPED_TRACE(testing::Message() << voxel << " mm voxels");
+    const PartOffRun run = simulateProgram({40.0, 50.0, 0.0, 20.0}, voxel,
+                                           "G99 M03 S500\nT0505\nG00 X22. Z2.\nG01 Z-5. F0.1\nG01 X18. Z-7.\n"
+                                           "G00 X17.\nG00 Z5.\nM30\n");
+    EXPECT_TRUE(run.result.partOffs.empty());
+    EXPECT_FALSE(run.result.part);
+    EXPECT_TRUE(run.result.collisions.empty());
+    ASSERT_EQ(run.result.loosePieces.size(), 1u);
+    EXPECT_EQ(run.result.loosePieces[0].line, 5);
+    const double ringSurface = 2 * M_PI * (10 + 11) * 5 + 2 * M_PI * (121 - 100);
+    EXPECT_NEAR(run.result.loosePieces[0].volumeMm3, 94.333 * M_PI, tolerance(ringSurface, voxel));
+    EXPECT_NEAR(run.result.loosePieces[0].rInnerMm, 10.0, voxel);
+    EXPECT_NEAR(run.result.loosePieces[0].rOuterMm, 11.0, voxel);
+  }
+}
+
+// Only a part-off writes a piece as the part: a blade to X-1 at Z positions on and off the grid,
+// at 0.2 and 0.1 mm voxels, parts Z … 0 of a Φ24 bar (144π·|Z|) and is no loose piece.
+TEST(PartOff, OnlyAPartOffMakesThePartSweptOverPositionsAndVoxels) {
+  for (const double voxel : {0.2, 0.1})
+    for (const double z : {-6.0, -9.37, -14.05}) {
+      SCOPED_TRACE(testing::Message() << voxel << " mm voxels, Z" << z);
+      const PartOffRun run = simulateProgram({24.0, 30.0, 0.0}, voxel,
+                                             "G99 M03 S500\nG00 X26. Z" + std::to_string(z) + "\nG01 X-1. F0.05\nG00 X30.\nM30\n");
+      ASSERT_EQ(run.result.partOffs.size(), 1u);
+      EXPECT_TRUE(run.result.loosePieces.empty());
+      EXPECT_NEAR(run.result.partOffs[0].zMm, z, 1e-9);
+      ASSERT_TRUE(run.result.part);
+      EXPECT_NEAR(run.result.part->volumeMm3(), 144 * M_PI * -z, tolerance(surface(12, 0, -z), voxel));
+      EXPECT_NEAR(run.stubMm3, 144 * M_PI * (30 + z - kBladeWidthMm), tolerance(surface(12, 0, 30 + z - kBladeWidthMm), voxel));
+      EXPECT_TRUE(run.result.warnings.empty());
+    }
+}
+
+// The part-off's Z is its cut's deepest point: of the block's moves, the one ending nearest the
+// axis. A corner radius D1 (the GSK preset's corner word) at the blade's corner makes the block
+// two moves: to X0 at Z-20, then the corner's arc (1 mm from the corner along both lines) to
+// X-2 at Z-19, nearer the axis: the part falls at Z-19.
+TEST(PartOff, ThePartOffsZIsTheBlocksMoveEndingNearestTheAxis) {
+  const PartOffRun run = simulateProgram({40.0, 50.0, 0.0}, 0.25,
+                                         "G99 M03 S500\nG00 X44. Z-20.\nG01 X-2. D1. F0.05\nG01 Z-10.\nG00 X60.\nM30\n");
+  ASSERT_EQ(run.result.partOffs.size(), 1u);
+  EXPECT_EQ(run.result.partOffs[0].line, 3);
+  EXPECT_NEAR(run.result.partOffs[0].zMm, -19.0, 1e-9);
+}
+
+// A loose sliver no sample of which lies more than a quarter of a voxel inside is a crumb, not
+// a piece: a bar Φ39.6 (r 19.8) bored from outside by the 1 mm insert at X37.4 (r 18.7…19.7)
+// leaves the skin r 19.7…19.8, 0.1 mm thick, whose only sample (r 19.75 at 0.25 mm voxels)
+// lies 0.05 inside: it holds 2π·19.75·0.1·20 = 79π mm³ (over 5000 voxels' worth), yet it is
+// neither a part-off nor a loose piece, and stays in the stock (the mesh drops such crumbs).
+TEST(PartOff, ASliverShallowerThanAQuarterVoxelIsACrumb) {
+  const PartOffRun run = simulateProgram({39.6, 50.0, 0.0}, 0.25,
+                                         "G99 M03 S500\nT0505\nG00 X37.4 Z2.\nG01 Z-20. F0.1\nG01 X42. Z-23.\n"
+                                         "G00 X60.\nM30\n");
+  EXPECT_TRUE(run.result.partOffs.empty());
+  EXPECT_TRUE(run.result.loosePieces.empty());
+  EXPECT_TRUE(run.result.warnings.empty()) << run.result.warnings[0].message;
 }
 
 // After the part-off, a cut where the part was finds nothing to cut (the part has fallen) and
@@ -223,7 +339,7 @@ TEST(PartOff, CutsAfterThePartOffDoNotTouchThePartThatFell) {
 // piece falls at the same block with the same volume both ways, and at the block that first
 // reaches the axis or the bore (a voxel's rounding either way; X is a diameter) with the volume
 // worked out by hand. A ring cut loose inside a tube in steps too (the section falls in two
-// with no Z free of material, as in ARingCutLooseInsideATubeFalls).
+// with no Z free of material, as in ARingCutLooseInsideATubeFallsAndIsNoPart).
 TEST(PartOff, PartingInShortStepsFallsAtTheSameBlockAsLookingAroundTheWholeCut) {
   for (const double bore : {0.0, 10.0})
     for (const double voxel : {0.25, 0.4})
@@ -262,10 +378,12 @@ TEST(PartOff, PartingInShortStepsFallsAtTheSameBlockAsLookingAroundTheWholeCut) 
     program += "G00 X8.\nG00 Z5.\nM30\n";
     const PartOffRun table = simulateProgram({40.0, 50.0, 0.0, 20.0}, 0.25, program);
     const PartOffRun voxels = simulateProgram({40.0, 50.0, 0.0, 20.0}, 0.25, program, RevolvedWrites::Voxels);
-    ASSERT_EQ(table.result.partOffs.size(), 1u);
-    ASSERT_EQ(voxels.result.partOffs.size(), 1u);
-    EXPECT_EQ(table.result.partOffs[0].line, voxels.result.partOffs[0].line);
-    EXPECT_NEAR(table.result.partOffs[0].volumeMm3, 864 * M_PI, tolerance(surface(14, 10, 9), 0.25));
+    // No part-off (ARingCutLooseInsideATubeFallsAndIsNoPart): a loose ring, the same both ways.
+    EXPECT_TRUE(table.result.partOffs.empty());
+    ASSERT_EQ(table.result.loosePieces.size(), 1u);
+    ASSERT_EQ(voxels.result.loosePieces.size(), 1u);
+    EXPECT_EQ(table.result.loosePieces[0].line, voxels.result.loosePieces[0].line);
+    EXPECT_NEAR(table.result.loosePieces[0].volumeMm3, 864 * M_PI, tolerance(surface(14, 10, 9), 0.25));
   }
 }
 
