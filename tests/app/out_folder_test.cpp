@@ -85,7 +85,7 @@ TEST(SkippedBlocks, AreListedInTheReportAndCountedOnTheSummaryLine) {
                   "G00 X52 Z2\n"           // 2
                   "/G01 X48 F0.2\n"        // 3
                   "G01 Z-10 F0.2\n"        // 4
-                  "/ G00 X60\n"            // 5
+                  "/ G01 X60\n"            // 5: a feed out (a rapid through the bar is a crash)
                   "G00 X60 Z5\n"           // 6
                   "M30\n");
   const fs::path out = dir.path() / "out";
