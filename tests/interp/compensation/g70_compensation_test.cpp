@@ -137,7 +137,7 @@ TEST_P(G70UnderG42, TheChamferIsFinishedToTheDrawingByATip3Tool) {
   // circle, centred 0.8√2 out along the normal, touches the drawn line r + z = 9.
   const auto result = test::run(kProgram, withOffset(GetParam(), 0.8, 3));
   ASSERT_TRUE(result.ok()) << test::messageOf(result);
-  const Move& chamfer = fromStartUp(result.toolpath.moves)[2];
+  const Move chamfer = fromStartUp(result.toolpath.moves)[2];  // a copy: the vector is a temporary
   ASSERT_EQ(chamfer.line, 6);
   EXPECT_NEAR(chamfer.to.x() + chamfer.to.y(), 9 - 0.8 * (2 - std::sqrt(2.0)), 1e-12);
   EXPECT_EQ(chamfer.noseComp.side, NoseSide::Right);
