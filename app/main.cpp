@@ -12,7 +12,7 @@
 #include "app/picture_cli.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 #include "job/exit_status.hpp"
 #include "job/stock_option.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "interp/text/paged_text.hpp"
+#include "interp/base/paged_text.hpp"
 #include "sim/block_rows.hpp"
 
 namespace lathesim::app {
