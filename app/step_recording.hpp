@@ -17,7 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "interp/move_sink.hpp"
+#include "interp/base/move_sink.hpp"
 #include "job/setup.hpp"
 #include "sim/block_rows.hpp"
 #include "sim/simulate.hpp"
