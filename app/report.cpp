@@ -204,6 +204,7 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
                         {"write", f.timing.writeS},
                         {"total", f.timing.totalS}};
   if (f.timing.animateS > 0) report["timing_s"]["animate"] = f.timing.animateS;
+  if (f.timing.stepsS > 0) report["timing_s"]["steps"] = f.timing.stepsS;
   return report;
 }
 

@@ -30,6 +30,7 @@ struct RunTimings {
   double writeS = 0;    // writing the files, each writer's own time added (the pictures' in renderS)
   double totalS = 0;    // the whole command, from its start to report.json staged
   double animateS = 0;  // --animate: drawing and encoding the frames (not counted in simulateS)
+  double stepsS = 0;    // report.html's stepping: taking the stock's sections (not counted in simulateS)
 };
 
 struct RunFigures {

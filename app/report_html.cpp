@@ -278,7 +278,7 @@ void writeListing(std::ostream& out, const Json& r, const sim::BlockRows& blocks
 }  // namespace
 
 void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const interp::PagedText& programText,
-                     const std::vector<HtmlPicture>& pictures, const std::string& glb, const Json& steps,
+                     const std::vector<HtmlPicture>& pictures, bool video, const std::string& glb, const Json& steps,
                      const std::filesystem::path& html) {
   const std::string program = report.value("program", "");
   writeTextFile(html, [&](std::ostream& out) {
@@ -314,6 +314,9 @@ void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const int
       }
       out << "</div>\n";
     }
+    if (video)  // beside the page, as the run wrote it: too large to carry inside
+      out << "<h2>The cut</h2>\n<video controls preload=\"metadata\" src=\"cut.mp4\" style=\"max-width:100%\"></video>\n"
+             "<p class=\"hint\"><a href=\"cut.mp4\">cut.mp4</a>, beside this page.</p>\n";
     out << threadsSection(report) << checkSection(report);
     writeListing(out, report, blocks, programText);
     out << "</main>\n";

@@ -13,7 +13,10 @@ constexpr const char* kMarkup = R"html(
 #step-view { display: grid; grid-template-columns: minmax(0, 3fr) minmax(260px, 2fr); gap: 12px; }
 #step-canvas { width: 100%; height: 420px; background: #fff; border: 1px solid #dde1e6; border-radius: 6px; display: block; }
 #step-controls { display: flex; gap: 6px; align-items: center; flex-wrap: wrap; margin: 8px 0; }
-#step-controls input[type=range] { flex: 1 1 300px; }
+#step-track { flex: 1 1 300px; position: relative; }
+#step-track input[type=range] { width: 100%; margin: 0; }
+#step-marks { position: absolute; left: 8px; right: 8px; top: 100%; height: 6px; }
+#step-marks span { position: absolute; width: 3px; height: 6px; margin-left: -1px; }
 #step-controls button { font: inherit; padding: 2px 10px; }
 #step-info { background: #fff; border: 1px solid #dde1e6; border-radius: 6px; padding: 8px 12px; font-size: 14px; }
 #step-info table { width: 100%; }
@@ -23,7 +26,7 @@ constexpr const char* kMarkup = R"html(
 </style>
 <div id="step-controls">
   <button id="step-first" title="first block (Home)">|◀</button><button id="step-back" title="previous block (←)">◀</button>
-  <input type="range" id="step-slider" min="0" value="0" aria-label="block">
+  <span id="step-track"><input type="range" id="step-slider" min="0" value="0" aria-label="block"><span id="step-marks"></span></span>
   <button id="step-next" title="next block (→)">▶</button><button id="step-last" title="last block (End)">▶|</button>
   <button id="step-cut">next cut</button><button id="step-collision">next collision</button><button id="step-warning">next warning</button>
 </div>
@@ -208,6 +211,29 @@ constexpr const char* kScript = R"js(
     show(at < 0 ? steps.length - 1 : at);
   }));
   window.addEventListener('resize', () => draw(current));
+  // Collisions red and warnings amber under the slider, each where its first block is.
+  const marks = document.getElementById('step-marks');
+  for (const [lines, color, what] of [[warningLines, '#e37400', 'warning'], [collisionLines, '#c5221f', 'collision']])
+    steps.forEach((s, i) => {
+      if (!lines.has(s[0]) || (i > 0 && steps[i - 1][0] === s[0])) return;
+      const mark = document.createElement('span');
+      mark.style.left = (steps.length > 1 ? 100 * i / (steps.length - 1) : 0) + '%';
+      mark.style.background = color;
+      mark.title = what + ', line ' + s[0];
+      mark.className = 'mark-' + what;
+      marks.append(mark);
+    });
+  // report.html#measure: the median time of 100 redraws, written on the view (for the tests).
+  if (location.hash === '#measure') {
+    const times = [];
+    for (let i = 0; i < 100; i++) {
+      const started = performance.now();
+      show(Math.floor(i * (steps.length - 1) / 99));
+      times.push(performance.now() - started);
+    }
+    times.sort((a, b) => a - b);
+    document.getElementById('step-view').dataset.redrawMs = ((times[49] + times[50]) / 2).toFixed(2);
+  }
   const asked = /#step=(\d+)/.exec(location.hash);
   show(asked ? Number(asked[1]) - 1 : steps.length - 1);
 })();

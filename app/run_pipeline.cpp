@@ -204,7 +204,11 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.notes = run.job.notes;
   figures.stops = run.job.toolpath.stops;
   figures.skipped = run.job.skippedBlocks;
-  if (run.steps) run.steps->finish(*run.stock);
+  if (run.steps) {
+    run.steps->finish(*run.stock);
+    figures.timing.stepsS = run.steps->secondsSpent();
+  }
+  run.video = recording != nullptr;
   if (recording) {
     run.progress->stage("finishing the video");
     recording->finish(*run.stock, figures.simulation.collisions);
@@ -219,7 +223,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   // A thread is measured on the part: after a part-off, on the piece that fell.
   figures.threads =
       measure::measureThreads(run.partStock(), streams ? threadToolpath : run.job.toolpath, outlines, setup.dialect);
-  figures.timing.simulateS = clock.lap() - figures.timing.animateS;
+  figures.timing.simulateS = clock.lap() - figures.timing.animateS - figures.timing.stepsS;
   for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
   for (const auto& collision : figures.simulation.collisions) {
     figures.collisions.push_back(collisionDiagnostic(run.job, collision));
@@ -421,7 +425,7 @@ void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report,
     out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
     if (run.outputs.html)
       out.write("report.html", [&](const Path& file) {
-        writeReportHtml(report, blocks, run.job.programText.text(), run.pictures, run.modelGlb,
+        writeReportHtml(report, blocks, run.job.programText.text(), run.pictures, run.video, run.modelGlb,
                         run.steps ? run.steps->json(blocks, run.job.setup, run.job.toolpath.startPosition) : nullptr, file);
       });
   });

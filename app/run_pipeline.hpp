@@ -64,6 +64,7 @@ struct SimulatedRun {
   std::unique_ptr<render::DrawnToolpath> drawn;
   // The run block by block for report.html's stepping; null when no report.html is written.
   std::unique_ptr<StepRecording> steps;
+  bool video = false;  // cut.mp4 was recorded: report.html shows it
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
   /// The finished part: the piece that parted off, or else the stock.

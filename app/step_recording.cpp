@@ -1,6 +1,7 @@
 #include "app/step_recording.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -78,6 +79,12 @@ void StepRecording::take(interp::Move move) {
 
 void StepRecording::take(const sim::Stock& stock, std::size_t afterMove, bool always) {
   if (!always && !sections_.empty() && afterMove < sections_.back().afterMove + everyMoves_) return;
+  const auto started = std::chrono::steady_clock::now();
+  struct Spent {  // however take() returns
+    double& seconds;
+    std::chrono::steady_clock::time_point since;
+    ~Spent() { seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count(); }
+  } spent{secondsSpent_, started};
   Polylines polylines;
   for (const auto& line : profilePolylines(MeridianProfile::fromSection(stock.meridianSection()), toleranceMm_)) {
     auto& points = polylines.emplace_back();

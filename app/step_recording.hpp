@@ -37,6 +37,9 @@ class StepRecording final : public interp::MoveSink {
   /// The section as the program leaves the stock.
   void finish(const sim::Stock& stock);
 
+  /// Wall time spent taking sections so far (s).
+  double secondsSpent() const { return secondsSpent_; }
+
   /// report.html's "steps" data (see writeReportHtml), or null when the program has too many blocks.
   nlohmann::ordered_json json(const sim::BlockRows& rows, const job::Setup& setup, const RZ& start) const;
 
@@ -60,6 +63,7 @@ class StepRecording final : public interp::MoveSink {
   std::vector<Step> steps_;
   std::vector<long> path_;  // per move: its kind, where it ends (r, z); an arc its centre too
   std::size_t moves_ = 0;
+  double secondsSpent_ = 0;
 };
 
 }  // namespace lathesim::app
