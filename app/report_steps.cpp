@@ -164,7 +164,13 @@ constexpr const char* kScript = R"js(
                   ['feed', feed ? String(feed) : '—', ''], ['S', String(spindle), Math.round(rpm) + ' rpm at the end'],
                   ['tool', 'T' + String(tool).padStart(2, '0'), ''],
                   ['ends at', 'X' + (2 * r / 1000).toFixed(3) + ' Z' + (z / 1000).toFixed(3), '']];
-    if (data.every_moves > 1) rows.push(['section', 'every ' + data.every_moves + ' moves', 'a long program: thinned']);
+    // A long program's sections are thinned (to keep the run fast): say which block's is shown.
+    const taken = sections[sectionAfter(current)][0];
+    let before = current;
+    while (before >= 0 && steps[before][2] > taken) before--;
+    let cutSince = false;
+    for (let s = before + 1; s <= current; s++) cutSince = cutSince || steps[s][3] > 0;
+    if (cutSince) rows.push(['section', 'as after block ' + (before + 1), 'sections thinned in a long run']);
     const figures = document.getElementById('step-figures');
     figures.replaceChildren(...rows.map(cells => {
       const tr = document.createElement('tr');

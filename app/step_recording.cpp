@@ -80,6 +80,8 @@ void StepRecording::take(interp::Move move) {
 void StepRecording::take(const sim::Stock& stock, std::size_t afterMove, bool always) {
   if (!always && !sections_.empty() && afterMove < sections_.back().afterMove + everyMoves_) return;
   const auto started = std::chrono::steady_clock::now();
+  const double besides = std::chrono::duration<double>(started - started_).count() - secondsSpent_;
+  if (!always && secondsSpent_ > kFreeSeconds && secondsSpent_ > kTimeShare * besides) return;  // over its share
   struct Spent {  // however take() returns
     double& seconds;
     std::chrono::steady_clock::time_point since;
@@ -103,7 +105,10 @@ void StepRecording::take(const sim::Stock& stock, std::size_t afterMove, bool al
 
 sim::CutObserver StepRecording::observer() {
   return [this](std::size_t firstMove, std::size_t, const sim::Stock& stock, const std::vector<sim::Collision>&) {
-    take(stock, firstMove, false);
+    // Only between blocks: the page shows the stock after a block, never part way through one
+    // (a G71 cuts in some forty groups).
+    while (nextStep_ < steps_.size() && steps_[nextStep_].firstMove < firstMove) ++nextStep_;
+    if (nextStep_ < steps_.size() && steps_[nextStep_].firstMove == firstMove) take(stock, firstMove, false);
   };
 }
 

@@ -6,14 +6,17 @@
 //
 // It takes every move as the interpreter makes it (a MoveSink beside the simulation) and a
 // section as the simulation goes (sim::CutObserver, before each group of moves it cuts: the
-// stock then holds every move before the group), kept only when it differs from the last one.
+// stock then holds every move before the group) when the group starts a block, kept only when
+// it differs from the last one.
 // Sections are written in whole micrometres, each as its change from the one before (the
 // points a cut left unchanged at either end of a polyline are not repeated), so a 2,000-block
-// program's page stays small. A long program is thinned, and the page says so: past
-// kMaxSections every other section is dropped and sections are taken half as often; past
-// kMaxSteps blocks the stepping is left out.
+// program's page stays small. A long program is thinned, and the page says so: sections take
+// at most kTimeShare of the run's time beside them (past a first kFreeSeconds), skipping
+// blocks when they would take more; past kMaxSections every other section is dropped and
+// sections are taken half as often; past kMaxSteps blocks the stepping is left out.
 
 #include <array>
+#include <chrono>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -28,6 +31,8 @@ class StepRecording final : public interp::MoveSink {
  public:
   static constexpr std::size_t kMaxSections = 1500;
   static constexpr std::size_t kMaxSteps = 100000;
+  static constexpr double kTimeShare = 0.1;
+  static constexpr double kFreeSeconds = 0.2;  // under a tenth of a run that draws its pictures (≥ 2.5 s)
 
   explicit StepRecording(double voxelMm) : toleranceMm_(voxelMm / 4) {}
 
@@ -63,7 +68,9 @@ class StepRecording final : public interp::MoveSink {
   std::vector<Step> steps_;
   std::vector<long> path_;  // per move: its kind, where it ends (r, z); an arc its centre too
   std::size_t moves_ = 0;
+  std::size_t nextStep_ = 0;  // the observer's place in steps_
   double secondsSpent_ = 0;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace lathesim::app
