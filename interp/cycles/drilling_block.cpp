@@ -24,86 +24,95 @@ constexpr double kMsPerS = 1000.0;
 // the lead under G99 (the tap follows the spindle), the spindle must turn, and it reverses for
 // the feed back out to R (those moves carry the reversed direction).
 Status runDrillingCycle(BlockWork& work, const std::optional<Code>& code) {
-  const bool haas = work.options.dialect == Dialect::Haas;
-  const int cycle = code ? code->number : work.state.drillingCycle;
+  ParsedBlock& block = work.block;
+  ModalState& state = work.state;
+  const InterpreterOptions& options = work.options;
+  const bool haas = options.dialect == Dialect::Haas;
+  const int cycle = code ? code->number : state.drillingCycle;
   const std::string name = fmt::format("G{}", cycle);
-  const int anchor = code ? code->column : work.block.column;
+  const int anchor = code ? code->column : block.column;
   auto axes = work.takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();
-  RZ start = work.state.position;
+  RZ start = state.position;
   if (a.x) start.x() = work.length(*a.x) / 2.0;
   if (a.u) start.x() += work.length(*a.u) / 2.0;
   if (std::abs(start.x()) > 1e-9) {
-    return work.errorAt(a.x ? a.x->column : a.u ? a.u->column : anchor,
-                   fmt::format("{} drills on the spindle's axis, but the tool would stand at X{:g}: a hole off the axis "
-                               "needs live tooling, which this lathe does not have (give X0)",
-                               name, 2.0 * start.x()));
+    return work.errorAt(
+        a.x   ? a.x->column
+        : a.u ? a.u->column
+              : anchor,
+        fmt::format("{} drills on the spindle's axis, but the tool would stand at X{:g}: a hole off the axis "
+                    "needs live tooling, which this lathe does not have (give X0)",
+                    name, 2.0 * start.x()));
   }
   if (code && !a.z && !a.w) return work.errorAt(anchor, fmt::format("{} needs Z(W): the hole's bottom", name));
-  if (a.z) work.state.drillingBottomZ = work.length(*a.z);
-  if (a.w) work.state.drillingBottomZ = work.state.position.y() + work.length(*a.w);
-  const double bottomZ = work.state.drillingBottomZ;
-  const auto r = work.block.take('R');
-  const auto q = work.block.take('Q');
-  const auto p = work.block.take('P');
+  if (a.z) state.drillingBottomZ = work.length(*a.z);
+  if (a.w) state.drillingBottomZ = state.position.y() + work.length(*a.w);
+  const double bottomZ = state.drillingBottomZ;
+  const auto r = block.take('R');
+  const auto q = block.take('Q');
+  const auto p = block.take('P');
   if (code) {  // a new cycle: its R point, peck and dwell are kept for the blocks that repeat it
-    work.state.drillingCycle = cycle;
-    work.state.drillingRPlaneZ = !r ? work.state.position.y() : haas ? work.length(*r) : work.state.position.y() + work.length(*r);
-    work.state.drillingPeckMm = 0;
-    work.state.drillingDwellS = 0;
+    state.drillingCycle = cycle;
+    state.drillingRPlaneZ = !r ? state.position.y() : haas ? work.length(*r) : state.position.y() + work.length(*r);
+    state.drillingPeckMm = 0;
+    state.drillingDwellS = 0;
   } else if (r) {
-    work.state.drillingRPlaneZ = haas ? work.length(*r) : work.state.position.y() + work.length(*r);
+    state.drillingRPlaneZ = haas ? work.length(*r) : state.position.y() + work.length(*r);
   }
   if (q) {
     if (cycle != 83) return work.errorAt(q->column, fmt::format("{} {}: only G83 pecks", name, q->text()));
     const double peck = haas ? work.length(*q) : incrementLengthMm(*q, work.reading());
-    if (!(peck > 0)) return work.errorAt(q->column, fmt::format("G83 {} is not a peck depth: expected a number > 0", q->text()));
-    work.state.drillingPeckMm = peck;
+    if (!(peck > 0))
+      return work.errorAt(q->column, fmt::format("G83 {} is not a peck depth: expected a number > 0", q->text()));
+    state.drillingPeckMm = peck;
   }
   if (p) {
-    if (cycle == 81) return work.errorAt(p->column, fmt::format("G81 {}: G81 does not dwell; G82 dwells P at the bottom", p->text()));
-    const bool seconds = work.options.control.dwellPWord == DwellPWord::SecondsWithPoint &&
-                         (p->evaluated || hasDecimalPoint(*p));
-    work.state.drillingDwellS = std::max(seconds ? p->value : p->value / kMsPerS, 0.0);
+    if (cycle == 81)
+      return work.errorAt(p->column, fmt::format("G81 {}: G81 does not dwell; G82 dwells P at the bottom", p->text()));
+    const bool seconds =
+        options.control.dwellPWord == DwellPWord::SecondsWithPoint && (p->evaluated || hasDecimalPoint(*p));
+    state.drillingDwellS = std::max(seconds ? p->value : p->value / kMsPerS, 0.0);
   }
-  if (!work.state.feed) {
-    return work.errorAt(anchor, fmt::format("feed rate F is not set: {} drills at feed; give F in this block or before it",
-                                       name));
+  if (!state.feed) {
+    return work.errorAt(
+        anchor, fmt::format("feed rate F is not set: {} drills at feed; give F in this block or before it", name));
   }
-  if (auto problem = zeroFeedProblem(work.state.feed, name)) return work.errorAt(anchor, *problem);
+  if (auto problem = zeroFeedProblem(state.feed, name)) return work.errorAt(anchor, *problem);
   const bool tapping = cycle == 84;
-  if (tapping && !work.state.spindleOn) {
-    return work.errorAt(anchor, "G84 taps with the spindle turning (the tap follows it down, and the spindle reverses to back "
-                           "it out): give M03 (or M04) and S before it");
+  if (tapping && !state.spindleOn) {
+    return work.errorAt(anchor,
+                        "G84 taps with the spindle turning (the tap follows it down, and the spindle reverses to back "
+                        "it out): give M03 (or M04) and S before it");
   }
-  const RZ from = work.state.position;
+  const RZ from = state.position;
   DrillingParams params;
-  params.rPlaneZ = work.state.drillingRPlaneZ;
+  params.rPlaneZ = state.drillingRPlaneZ;
   params.bottomZ = bottomZ;
-  params.peckMm = work.state.drillingPeckMm;
-  params.clearanceMm = work.options.control.peckRetractMm;
+  params.peckMm = state.drillingPeckMm;
+  params.clearanceMm = options.control.peckRetractMm;
   params.tapping = tapping;
   // X0 in the block: the tool goes to the axis first, at rapid.
   if (from.x() != start.x()) work.emit(MoveKind::Rapid, from, RZ(start.x(), from.y()), 0);
-  const auto drilled = drillingLegs(RZ(start.x(), from.y()), params, work.options.maxMoves);
-  if (!drilled) return *moveLimitError(work.options.maxMoves + 1, work.options.maxMoves, work.block.line, anchor);
+  const auto drilled = drillingLegs(RZ(start.x(), from.y()), params, options.maxMoves);
+  if (!drilled) return *moveLimitError(options.maxMoves + 1, options.maxMoves, block.line, anchor);
   const DrillingLegs& legs = *drilled;
   work.emitLegs(legs.down);
-  if (work.state.drillingDwellS > 0) {
+  if (state.drillingDwellS > 0) {
     const RZ bottom(start.x(), bottomZ);
     work.emit(MoveKind::Dwell, bottom, bottom, 0);
-    work.moves.back().dwellS = work.state.drillingDwellS;
+    work.moves.back().dwellS = state.drillingDwellS;
   }
   const std::size_t firstUp = work.moves.size();
   work.emitLegs(legs.up);
   for (std::size_t i = firstUp; i < work.moves.size(); ++i) {  // a tap backs out with the spindle reversed
     if (work.moves[i].kind != MoveKind::Feed) continue;
-    work.moves[i].spindleDirection = work.state.spindleDirection == SpindleDirection::Clockwise
-                                     ? SpindleDirection::CounterClockwise
-                                     : SpindleDirection::Clockwise;
+    work.moves[i].spindleDirection = state.spindleDirection == SpindleDirection::Clockwise
+                                         ? SpindleDirection::CounterClockwise
+                                         : SpindleDirection::Clockwise;
   }
-  work.state.position = RZ(start.x(), from.y());
+  state.position = RZ(start.x(), from.y());
   return success();
 }
 

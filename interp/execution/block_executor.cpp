@@ -40,8 +40,7 @@ constexpr double kMsPerS = 1000.0;
 // order; the cycles run on the same BlockWork.
 class Executor {
  public:
-  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal,
-           const BlockPlace* place)
+  Executor(ParsedBlock block, ModalState state, const InterpreterOptions& options, int ordinal, const BlockPlace* place)
       : work_(std::move(block), std::move(state), options, ordinal), place_(place) {}
 
   Result<BlockOutcome> run();
@@ -95,9 +94,7 @@ Result<BlockOutcome> Executor::run() {
   }
   applySpindleMode();
   if (auto code = work_.block.gCode(GGroup::NoseRadius)) {
-    work_.state.noseSide = code->number == 41   ? NoseSide::Left
-                      : code->number == 42 ? NoseSide::Right
-                                           : NoseSide::None;
+    work_.state.noseSide = code->number == 41 ? NoseSide::Left : code->number == 42 ? NoseSide::Right : NoseSide::None;
   }
 
   // A one-shot code takes the block's axis words; a motion code beside it (G28 G00 U0 W0) only
@@ -110,9 +107,10 @@ Result<BlockOutcome> Executor::run() {
   // (at X0 only: a hole elsewhere needs live tooling, and is refused rather than moved to).
   const auto drillCode = work_.block.gCode(GGroup::DrillingCycle);
   if ((drillCode && drillCode->number == 80) || work_.block.gCode(GGroup::Motion)) work_.state.drillingCycle = 0;
-  const bool drills = !oneShot && ((drillCode && drillCode->number != 80) ||
-                                   (!drillCode && work_.state.drillingCycle != 0 &&
-                                    (work_.block.has('X') || work_.block.has('U') || work_.block.has('Z') || work_.block.has('W'))));
+  const bool drills =
+      !oneShot && ((drillCode && drillCode->number != 80) ||
+                   (!drillCode && work_.state.drillingCycle != 0 &&
+                    (work_.block.has('X') || work_.block.has('U') || work_.block.has('Z') || work_.block.has('W'))));
   const bool compound = oneShot && isCompoundCycle(*oneShot);  // G70–G75: after F, S, T
   if (oneShot && !compound) {
     if (auto status = applyOneShot(*oneShot); !status.ok()) return status.error();
@@ -126,14 +124,15 @@ Result<BlockOutcome> Executor::run() {
   const auto coolant = work_.block.mCode(MGroup::Coolant);
   if (spindle && spindle->number != 5) {
     work_.state.spindleOn = true;
-    work_.state.spindleDirection = spindle->number == 3 ? SpindleDirection::Clockwise : SpindleDirection::CounterClockwise;
+    work_.state.spindleDirection =
+        spindle->number == 3 ? SpindleDirection::Clockwise : SpindleDirection::CounterClockwise;
   }
   if (coolant && coolant->number == 8) work_.state.coolantOn = true;
 
-  const Status moved = compound   ? applyCompoundCycle(*oneShot)
-                       : oneShot  ? success()
-                       : drills   ? runDrillingCycle(work_, drillCode)
-                                  : applyMotion();
+  const Status moved = compound  ? applyCompoundCycle(*oneShot)
+                       : oneShot ? success()
+                       : drills  ? runDrillingCycle(work_, drillCode)
+                                 : applyMotion();
   if (!moved.ok()) return moved.error();
   if (auto status = checkAllWordsUsed(); !status.ok()) return status.error();
   if (auto status = checkToolCalledBeforeCut(); !status.ok()) return status.error();
@@ -145,7 +144,8 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number == 5) work_.state.spindleOn = false;
   if (coolant && coolant->number == 9) work_.state.coolantOn = false;
   if (work_.block.mCode(MGroup::ProgramEnd)) work_.state.ended = true;
-  return BlockOutcome{std::move(work_.state), std::move(work_.moves), std::move(work_.warnings), std::move(work_.cycleStarts), flow_};
+  return BlockOutcome{std::move(work_.state), std::move(work_.moves), std::move(work_.warnings),
+                      std::move(work_.cycleStarts), flow_};
 }
 
 Status Executor::applySubprogramCode() {
@@ -163,9 +163,10 @@ Status Executor::applySubprogramCode() {
     return success();
   }
   if (code->number == 97 && work_.options.dialect != Dialect::Haas) {
-    return work_.errorAt(code->column, fmt::format("M97 is Haas's local subprogram call, not a code of dialect {}: choose "
-                                             "--dialect haas, or call an O program with M98",
-                                             dialectName(work_.options.dialect)));
+    return work_.errorAt(code->column,
+                         fmt::format("M97 is Haas's local subprogram call, not a code of dialect {}: choose "
+                                     "--dialect haas, or call an O program with M98",
+                                     dialectName(work_.options.dialect)));
   }
   auto call = code->number == 97 ? takeLocalSubprogramCall(work_.block, *code) : takeSubprogramCall(work_.block, *code);
   if (!call.ok()) return call.error();
@@ -178,8 +179,8 @@ Status Executor::applyFeed() {
   if (!f) return success();
   if (f->value < 0) {
     return work_.errorAt(f->column, fmt::format("{} is not a feed rate: expected a number ≥ 0 "
-                                          "(mm/rev under G99, mm/min under G98)",
-                                          f->text()));
+                                                "(mm/rev under G99, mm/min under G98)",
+                                                f->text()));
   }
   work_.state.feed = work_.reading().mm(f->value);  // mm (inch) per minute or revolution
   work_.state.feedWord = f->text();
@@ -195,7 +196,7 @@ void Executor::applySpindleMode() {
   const SpindleMode mode = code->number == 96 ? SpindleMode::SurfaceSpeed : SpindleMode::Rpm;
   if (mode == SpindleMode::Rpm && work_.state.spindleMode == SpindleMode::SurfaceSpeed) {
     work_.state.spindleSpeed = surfaceSpeedRpm(work_.state.surfaceSpeedMPerMin, work_.state.position.x(),
-                                          work_.state.spindleLimitRpm, work_.options.machine);
+                                               work_.state.spindleLimitRpm, work_.options.machine);
   }
   if (mode == SpindleMode::SurfaceSpeed && work_.state.spindleMode == SpindleMode::Rpm)
     work_.state.surfaceSpeedAwaitingMove = std::pair{work_.block.line, code->column};
@@ -207,8 +208,7 @@ Status Executor::applySpindleSpeed() {
   const auto s = work_.block.take('S');
   if (!s) return success();
   if (s->value < 0) {
-    return work_.errorAt(s->column,
-                   fmt::format("{} is not a spindle speed: expected a number ≥ 0", s->text()));
+    return work_.errorAt(s->column, fmt::format("{} is not a spindle speed: expected a number ≥ 0", s->text()));
   }
   // Under G96, S is a surface speed: m/min, or ft/min under G20.
   if (work_.state.spindleMode == SpindleMode::SurfaceSpeed)
@@ -223,9 +223,9 @@ Status Executor::applyTool() {
   const auto toolChange = work_.block.mCode(MGroup::ToolChange);
   if (toolChange && !t) {
     work_.warnings.push_back({work_.block.line, toolChange->column,
-                         fmt::format("{} changes to the tool a T word in its block names, and this block has "
-                                     "none: the tool in place stays (write {} T0101)",
-                                     toolChange->text, toolChange->text)});
+                              fmt::format("{} changes to the tool a T word in its block names, and this block has "
+                                          "none: the tool in place stays (write {} T0101)",
+                                          toolChange->text, toolChange->text)});
   }
   if (!t) return success();
   auto read = readToolWord(*t, work_.options.control.toolWordForms, work_.block.line, toolChange.has_value());
@@ -249,19 +249,17 @@ Status Executor::applyTool() {
       seen.push_back(text);
       used += fmt::format("{}{} (line {})", used.empty() ? "" : ", ", text, b.line);
     }
-    return work_.errorAt(t->column,
-                   fmt::format("tool {} ({}) is defined neither in the setup nor by a comment on its "
-                               "block naming an insert (CNMG 120408) or a kind (GROOVE 3MM, DRILL 12, "
-                               "THREAD 60 DEG); the program's tools: {}; add it to the setup:\n{}",
-                               tool, t->text(), used, work_.options.toolDefinitionHint(tool)));
+    return work_.errorAt(t->column, fmt::format("tool {} ({}) is defined neither in the setup nor by a comment on its "
+                                                "block naming an insert (CNMG 120408) or a kind (GROOVE 3MM, DRILL 12, "
+                                                "THREAD 60 DEG); the program's tools: {}; add it to the setup:\n{}",
+                                                tool, t->text(), used, work_.options.toolDefinitionHint(tool)));
   }
   if (std::find(tools.begin(), tools.end(), tool) == tools.end()) {
     std::string defined;
     for (int number : tools) defined += (defined.empty() ? "" : ", ") + std::to_string(number);
-    return work_.errorAt(t->column,
-                   fmt::format("tool {} ({}) is not defined in the setup; defined tools: {} "
-                               "(T is written tool number then offset number, e.g. T0101)",
-                               tool, t->text(), defined.empty() ? "none" : defined));
+    return work_.errorAt(t->column, fmt::format("tool {} ({}) is not defined in the setup; defined tools: {} "
+                                                "(T is written tool number then offset number, e.g. T0101)",
+                                                tool, t->text(), defined.empty() ? "none" : defined));
   }
   work_.state.tool = tool;
   work_.state.toolCalled = true;
@@ -274,17 +272,16 @@ Status Executor::applyTool() {
 // once, as the control's cut_without_tool says.
 Status Executor::checkToolCalledBeforeCut() {
   if (work_.state.toolCalled || work_.state.cutWithoutToolSaid) return success();
-  const auto cuts = std::find_if(work_.moves.begin(), work_.moves.end(), [](const Move& m) {
-    return m.kind != MoveKind::Rapid && m.kind != MoveKind::Dwell;
-  });
+  const auto cuts = std::find_if(work_.moves.begin(), work_.moves.end(),
+                                 [](const Move& m) { return m.kind != MoveKind::Rapid && m.kind != MoveKind::Dwell; });
   if (cuts == work_.moves.end()) return success();
   const bool refused = work_.options.control.cutWithoutTool == CutWithoutTool::Error;
-  const std::string message =
-      fmt::format("this block cuts with no tool selected (no T word has named one, or T0/T00 deselected it): {}; "
-                  "call the tool first (T0101, or M06 T0101 on a trainer)",
-                  refused ? "this control does not cut with no tool selected (cut_without_tool = error)"
-                          : fmt::format("the machine cuts with the tool its turret was left at, tool {} assumed",
-                                        work_.state.tool));
+  const std::string message = fmt::format(
+      "this block cuts with no tool selected (no T word has named one, or T0/T00 deselected it): {}; "
+      "call the tool first (T0101, or M06 T0101 on a trainer)",
+      refused
+          ? "this control does not cut with no tool selected (cut_without_tool = error)"
+          : fmt::format("the machine cuts with the tool its turret was left at, tool {} assumed", work_.state.tool));
   if (refused) return Error{work_.block.line, work_.block.column, message};
   work_.warnings.push_back({work_.block.line, work_.block.column, message});
   work_.state.cutWithoutToolSaid = true;
@@ -314,15 +311,15 @@ Status Executor::applyDwell(const Code&) {
     if (!word) continue;
     if (time) {
       work_.warnings.push_back({work_.block.line, word->column,
-                           fmt::format("{} is ignored: {} gives G04's time (P before X before U, GSK980TDi §3.14)",
-                                       word->text(), time->text())});
+                                fmt::format("{} is ignored: {} gives G04's time (P before X before U, GSK980TDi §3.14)",
+                                            word->text(), time->text())});
       continue;
     }
     time = word;
   }
   if (!time) return success();
-  const bool pInSeconds = work_.options.control.dwellPWord == DwellPWord::SecondsWithPoint &&
-                          (time->evaluated || hasDecimalPoint(*time));
+  const bool pInSeconds =
+      work_.options.control.dwellPWord == DwellPWord::SecondsWithPoint && (time->evaluated || hasDecimalPoint(*time));
   const double seconds = time->letter != 'P' ? dwellSeconds(*time, work_.reading())
                          : pInSeconds        ? time->value
                                              : time->value / kMsPerS;
@@ -359,20 +356,21 @@ Status Executor::applyReferenceReturn(const Code& code) {
   if (second) {
     if (const auto p = work_.block.take('P'); p && p->value != 2) {
       return work_.errorAt(p->column, fmt::format("G30 {}: only the second reference point (P2) is known; a third or "
-                                            "fourth is not in the setup",
-                                            p->text()));
+                                                  "fourth is not in the setup",
+                                                  p->text()));
     }
     if (!work_.options.secondReferencePosition) {
-      return work_.errorAt(code.column, "G30 returns to the second reference point, which the setup does not give: add "
-                                  "[machine] second_reference = [X, Z]");
+      return work_.errorAt(code.column,
+                           "G30 returns to the second reference point, which the setup does not give: add "
+                           "[machine] second_reference = [X, Z]");
     }
   }
   // Haas: G28 with no axis word sends every axis home, straight from where it stands.
   const bool everyAxis = !a.any() && work_.options.dialect == Dialect::Haas;
   if (!a.any() && !everyAxis) {
     return work_.errorAt(code.column, fmt::format("{} needs X(U) and/or Z(W): the intermediate point of the axes "
-                                            "to return ({} U0 W0 returns both straight from here)",
-                                            code.text, code.text));
+                                                  "to return ({} U0 W0 returns both straight from here)",
+                                                  code.text, code.text));
   }
   const RZ& p = work_.state.position;
   std::optional<double> radiusMm, zMm;
@@ -447,9 +445,9 @@ void Executor::applyWorkSystem(const std::optional<Code>& oneShot) {
   if (!code) return;
   if (oneShot && oneShot->number == 50) {
     work_.warnings.push_back({work_.block.line, code->column,
-                         fmt::format("{} in a G50 block is ignored: G50 sets the coordinates "
-                                     "(GSK980TDi 3.21); select the work system in a block of its own",
-                                     code->text)});
+                              fmt::format("{} in a G50 block is ignored: G50 sets the coordinates "
+                                          "(GSK980TDi 3.21); select the work system in a block of its own",
+                                          code->text)});
     return;
   }
   selectWorkSystem(*code, work_.state);
@@ -470,10 +468,14 @@ Status Executor::applyMotion() {
   const auto code = work_.block.gCode(GGroup::Motion);
   if (code) selectMotion(*code);
   switch (work_.state.motion) {
-    case MotionMode::AxialCycle: return runAxialCycle(work_, code);
-    case MotionMode::FaceCycle: return runFaceCycle(work_, code);
-    case MotionMode::Thread: return runThreadCut(work_, code);
-    case MotionMode::ThreadCycle: return runThreadCycle(work_, code);
+    case MotionMode::AxialCycle:
+      return runAxialCycle(work_, code);
+    case MotionMode::FaceCycle:
+      return runFaceCycle(work_, code);
+    case MotionMode::Thread:
+      return runThreadCut(work_, code);
+    case MotionMode::ThreadCycle:
+      return runThreadCycle(work_, code);
     case MotionMode::ArcCW:
     case MotionMode::ArcCCW: return applyArc(code);
     case MotionMode::Rapid:
@@ -489,9 +491,9 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   const std::optional<Word> angle = takeAngleWord();
   if (angle && !a.any()) {
     return work_.errorAt(angle->column, fmt::format("{} alone starts a drawing dimension of two lines (their "
-                                              "intersection found by the control), which lathesim does not read "
-                                              "yet; give this line's end X or Z with the angle",
-                                              angle->text()));
+                                                    "intersection found by the control), which lathesim does not read "
+                                                    "yet; give this line's end X or Z with the angle",
+                                                    angle->text()));
   }
   if (!a.any()) return success();
   const RZ from = work_.state.position;
@@ -499,12 +501,13 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   const bool givesX = a.x || a.u;
   const bool givesZ = a.z || a.w;
   if (angle && givesX && givesZ) {
-    work_.warnings.push_back({work_.block.line, angle->column,
-                         fmt::format("{} is ignored: X and Z give the end point (GSK980TDi §3.13)", angle->text())});
+    work_.warnings.push_back(
+        {work_.block.line, angle->column,
+         fmt::format("{} is ignored: X and Z give the end point (GSK980TDi §3.13)", angle->text())});
   } else if (angle) {
-    auto end = lineEndByAngle(from, givesX ? std::optional(to.x()) : std::nullopt,
-                              givesZ ? std::optional(to.y()) : std::nullopt, angleDegrees(*angle), *angle,
-                              work_.block.line);
+    auto end =
+        lineEndByAngle(from, givesX ? std::optional(to.x()) : std::nullopt,
+                       givesZ ? std::optional(to.y()) : std::nullopt, angleDegrees(*angle), *angle, work_.block.line);
     if (!end.ok()) return end.error();
     to = end.value();
   }
@@ -513,7 +516,7 @@ Status Executor::applyStraightMove(const std::optional<Code>& code) {
   if (!corner.ok()) return corner.error();
   if (feed && !work_.state.feed) {
     return work_.errorAt(code ? code->column : work_.block.column,
-                   "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G01 move");
+                         "feed rate F is not set: give F (e.g. F0.2 mm/rev) before the first G01 move");
   }
   if (auto problem = feed ? zeroFeedProblem(work_.state.feed, "G01") : std::nullopt)
     return work_.errorAt(code ? code->column : work_.block.column, *problem);
@@ -531,14 +534,14 @@ Result<std::optional<CornerRequest>> Executor::takeCornerWord() {
   const auto chamfer = work_.block.take(gsk ? 'L' : 'c');
   const auto round = work_.block.take(gsk ? 'D' : 'r');
   if (chamfer && round) {
-    return work_.errorAt(round->column, fmt::format("{} and {} both ask for a corner; give one of them", chamfer->text(),
-                                              round->text()));
+    return work_.errorAt(round->column, fmt::format("{} and {} both ask for a corner; give one of them",
+                                                    chamfer->text(), round->text()));
   }
   const std::optional<Word>& word = chamfer ? chamfer : round;
   if (!word) return std::optional<CornerRequest>();
   if (word->value <= 0) {
     return work_.errorAt(word->column, fmt::format("{} is not a {}: expected a size > 0", word->text(),
-                                             chamfer ? "chamfer" : "corner radius"));
+                                                   chamfer ? "chamfer" : "corner radius"));
   }
   const bool chamferLength = chamfer && gsk && work_.options.control.chamferSize == ChamferSize::Length;
   return std::optional(CornerRequest{!chamfer, work_.length(*word), chamferLength, word->text(), word->column});
@@ -546,9 +549,12 @@ Result<std::optional<CornerRequest>> Executor::takeCornerWord() {
 
 std::optional<Word> Executor::takeAngleWord() {
   switch (work_.options.control.drawingAngleWord) {
-    case DrawingAngleWord::Q: return work_.block.take('Q');
-    case DrawingAngleWord::A: return work_.block.take('A');
-    case DrawingAngleWord::CommaA: return work_.block.take('a');
+    case DrawingAngleWord::Q:
+      return work_.block.take('Q');
+    case DrawingAngleWord::A:
+      return work_.block.take('A');
+    case DrawingAngleWord::CommaA:
+      return work_.block.take('a');
   }
   return std::nullopt;
 }
@@ -578,25 +584,27 @@ Status Executor::applyArc(const std::optional<Code>& code) {
   const int anchor = code ? code->column : work_.block.column;
   auto axes = work_.takeAxisWords();
   if (!axes.ok()) return axes.error();
-  ArcRequest arc{name, clockwise, work_.state.position, work_.endPoint(axes.value()),
-                 arcWord('R'), arcWord('I'), arcWord('K'), work_.block.line, anchor};
+  ArcRequest arc{name,         clockwise,    work_.state.position, work_.endPoint(axes.value()),
+                 arcWord('R'), arcWord('I'), arcWord('K'),         work_.block.line,
+                 anchor};
   if (!axes.value().any() && !arc.r && !arc.i && !arc.k) return success();
   auto corner = takeCornerWord();
   if (!corner.ok()) return corner.error();
   if (corner.value()) {
-    return work_.errorAt(corner.value()->column, fmt::format("{} after an arc: chamfers and corners next to arcs are not "
-                                                       "simulated yet; give the corner as its own G01 or G02/G03",
-                                                       corner.value()->word));
+    return work_.errorAt(corner.value()->column,
+                         fmt::format("{} after an arc: chamfers and corners next to arcs are not "
+                                     "simulated yet; give the corner as its own G01 or G02/G03",
+                                     corner.value()->word));
   }
   if (work_.state.plane != Plane::ZX) {
     return work_.errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so an arc "
-                                       "needs the ZX plane; select it with G18",
-                                       name, work_.state.plane == Plane::XY ? "G17" : "G19"));
+                                             "needs the ZX plane; select it with G18",
+                                             name, work_.state.plane == Plane::XY ? "G17" : "G19"));
   }
   if (!work_.state.feed) {
     return work_.errorAt(anchor, fmt::format("feed rate F is not set: give F (e.g. F0.2 mm/rev) "
-                                       "before the first {} move",
-                                       name));
+                                             "before the first {} move",
+                                             name));
   }
   if (auto problem = zeroFeedProblem(work_.state.feed, name)) return work_.errorAt(anchor, *problem);
   arc.radiusToleranceMm = work_.options.control.arcRadiusToleranceMm;
@@ -656,8 +664,8 @@ Status Executor::checkAllWordsUsed() const {
   }
   if (const auto lacking = missingMachineryOf(*first)) return work_.errorAt(first->column, *lacking);
   return work_.errorAt(first->column, fmt::format("{} is not used by any code in this block; remove "
-                                            "it or add the code that takes {}",
-                                            first->text(), first->letter));
+                                                  "it or add the code that takes {}",
+                                                  first->text(), first->letter));
 }
 
 // G70–G73's contour blocks, each run on its own.

@@ -21,8 +21,8 @@ Result<AxisWords> BlockWork::takeAxisWords(Coordinates meaning) {
   }
   // X with U (Z with W): the GSK takes the absolute word (§3.2), other controls alarm. Under
   // G91 both are distances: always an error.
-  const bool absoluteWins = options.control.absoluteWithIncremental == AbsoluteWithIncremental::AbsoluteWins &&
-                            !state.incremental;
+  const bool absoluteWins =
+      options.control.absoluteWithIncremental == AbsoluteWithIncremental::AbsoluteWins && !state.incremental;
   for (auto [absolute, incremental, axis] : {std::tuple{&axes.x, &axes.u, 'X'}, std::tuple{&axes.z, &axes.w, 'Z'}}) {
     if (!*absolute || !*incremental) continue;
     if (!absoluteWins) {

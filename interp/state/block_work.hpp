@@ -37,7 +37,7 @@ struct BlockWork {
   ParsedBlock block;
   ModalState state;
   const InterpreterOptions& options;
-  int ordinal;                         // the block's 0-based number among the blocks read
+  int ordinal;  // the block's 0-based number among the blocks read
   std::vector<Move> moves;
   std::vector<Error> warnings;
   std::vector<CycleStart> cycleStarts;
