@@ -16,7 +16,7 @@
 #include "interp/cycles/haas_g76.hpp"
 #include "interp/cycles/thread_words.hpp"
 #include "interp/compensation/nose_compensation.hpp"
-#include "interp/execution/program_runner.hpp"
+#include "interp/state/move_limit.hpp"
 #include "interp/cycles/peck_cycle.hpp"
 #include "interp/text/label_number.hpp"
 #include "interp/cycles/roughing_cycle.hpp"

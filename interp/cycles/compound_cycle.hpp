@@ -7,10 +7,10 @@
 #include <optional>
 #include <vector>
 
-#include "interp/execution/block_executor.hpp"
+#include "interp/cycles/block_runner.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/contour/cycle_leg.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/state/modal_state.hpp"
 #include "interp/base/result.hpp"
 

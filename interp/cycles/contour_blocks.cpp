@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/execution/sorted_words.hpp"
+#include "interp/cycles/sorted_words.hpp"
 #include "interp/motion/corners.hpp"
 #include "interp/text/label_number.hpp"
 
@@ -155,9 +155,9 @@ Result<ContourSpan> findContourBlocks(const BlockPlace& cycle, const ContourRequ
   return span;
 }
 
-Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
-                                      ModalState state, const InterpreterOptions& options) {
-  BlockOutcome outcome;
+Result<BlockRun> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
+                                  ModalState state, const InterpreterOptions& options) {
+  BlockRun outcome;
   // The contour's blocks describe the cycle's path; whether a tool is selected when it cuts is
   // asked of the cycle's own block and its moves (block_executor.cpp), not of each contour block.
   const bool cutWithoutToolSaid = state.cutWithoutToolSaid;
@@ -167,7 +167,7 @@ Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
     if (block.skipped) continue;
     auto words = sortedWords(cycle.program, block, cycle.variables, state, options);
     if (!words.ok()) return words.error();
-    auto done = executeBlock(words.value(), std::move(state), options, block.ordinal);
+    auto done = cycle.runner.run(words.value(), std::move(state), options, block.ordinal);
     if (!done.ok()) return done.error();
     state = std::move(done.value().state);
     const auto& moves = done.value().moves;

@@ -10,9 +10,9 @@
 #include <string_view>
 #include <vector>
 
-#include "interp/execution/block_executor.hpp"
+#include "interp/cycles/block_runner.hpp"
 #include "interp/contour/contour.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/text/lexer.hpp"
 #include "interp/state/modal_state.hpp"
 #include "interp/text/program.hpp"
@@ -56,7 +56,7 @@ struct ExtractedContour {
   bool firstBlockHasZ = false;         // the ns block gives Z or W
 };
 
-/// Runs the span's blocks through the block executor from `state`; their moves, dwells left
+/// Runs the span's blocks through `cycle.runner` from `state`; their moves, dwells left
 /// out, become the contour, each segment located at its block. Nothing of the state is kept.
 Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan span,
                                         const ModalState& state,
@@ -64,7 +64,7 @@ Result<ExtractedContour> extractContour(const BlockPlace& cycle, ContourSpan spa
 
 /// G70: runs the span's blocks as written from `state`. The moves carry their own blocks'
 /// lines; the state is the one after the last block.
-Result<BlockOutcome> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
+Result<BlockRun> runContourBlocks(const BlockPlace& cycle, ContourSpan span,
                                       ModalState state, const InterpreterOptions& options);
 
 }  // namespace lathesim::interp

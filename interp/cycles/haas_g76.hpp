@@ -7,7 +7,7 @@
 
 #include "interp/contour/cycle_leg.hpp"
 #include "interp/state/modal_state.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "interp/macro/variables.hpp"
+#include "interp/cycles/block_runner.hpp"
 #include "interp/text/block_parser.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/state/modal_state.hpp"
 #include "interp/text/program.hpp"
 #include "interp/execution/program_flow.hpp"
@@ -24,19 +24,13 @@ struct BlockOutcome {
   ProgramFlow flow;         // M98, M99, or where G71–G73 resume
 };
 
-/// Where a block stands in the whole program; the compound cycles (G70–G73) need it to find
-/// their contour blocks.
-struct BlockPlace {
-  const Program& program;
-  std::size_t index;  // its ordinal (Program::block)
-  const macro::VariableStore* variables = nullptr;  // the macro variables, for contour blocks
-                                                    // whose words are expressions
-};
-
 /// Runs `block` from `state`. `ordinal` is the block's 0-based number among the blocks read.
 /// Without `place` (a block on its own) G70–G73 are errors.
 Result<BlockOutcome> executeBlock(ParsedBlock block, ModalState state,
                                   const InterpreterOptions& options, int ordinal,
                                   const BlockPlace* place = nullptr);
+
+/// The block executor as the cycles run it (cycles/block_runner.hpp).
+const BlockRunner& blockExecutor();
 
 }  // namespace lathesim::interp

@@ -12,7 +12,7 @@
 // G10 P0 (the T series' work coordinate system shift) and other L numbers are refused.
 
 #include "interp/state/modal_state.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "interp/compensation/nose_compensation.hpp"
 #include "interp/compensation/tool_offset.hpp"
-#include "interp/execution/program_runner.hpp"
+#include "interp/state/move_limit.hpp"
 #include "interp/motion/corners.hpp"
 #include "interp/motion/rapid_path.hpp"
 #include "interp/motion/travel_limits.hpp"

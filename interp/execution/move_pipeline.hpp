@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "interp/compensation/uncompensated_nose.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/motion/travel_limits.hpp"
 #include "interp/base/move_sink.hpp"
 #include "interp/base/result.hpp"

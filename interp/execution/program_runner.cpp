@@ -14,6 +14,7 @@
 #include "interp/execution/call_stack.hpp"
 #include "interp/execution/macro_flow.hpp"
 #include "interp/state/modal_state.hpp"
+#include "interp/state/move_limit.hpp"
 #include "interp/state/step_guard.hpp"
 #include "interp/macro/block_words.hpp"
 #include "interp/macro/macro_call.hpp"
@@ -196,7 +197,7 @@ Result<std::size_t> ProgramRunner::runMacroWords(std::size_t index, const macro:
 
 Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock& words) {
   const int source = program_.block(index).source;
-  const BlockPlace place{program_, index, &variables_};
+  const BlockPlace place{program_, index, blockExecutor(), &variables_};
   auto outcome = executeBlock(words, state_, options_, program_.block(index).ordinal, &place);
   if (!outcome.ok()) return outcome.error();
 
@@ -337,15 +338,6 @@ Status ProgramRunner::loadProgram(int programNumber, std::string_view code, int 
 }
 
 }  // namespace
-
-std::optional<Error> moveLimitError(std::size_t moves, std::size_t maxMoves, int line, int column) {
-  if (moves <= maxMoves) return std::nullopt;
-  return Error{line, column,
-               fmt::format("the program makes more than {} moves (the limit) by this block: a toolpath that long takes "
-                           "hours to simulate, and nested repeats can ask for billions; if it is meant, raise the "
-                           "limit with --max-moves or [sim] max_moves",
-                           maxMoves)};
-}
 
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
                   std::vector<Error>& warnings, std::vector<Error>& notes, std::vector<SkippedBlock>& skipped) {

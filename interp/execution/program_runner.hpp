@@ -9,11 +9,11 @@
 // moves carry the line of the call in the main program that led there, so every line of the
 // toolpath is a line of the program.
 
-#include <optional>
 #include <vector>
 
 #include "interp/execution/move_pipeline.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/base/skipped_block.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/base/result.hpp"
 #include "interp/text/program.hpp"
 
@@ -26,9 +26,5 @@ namespace lathesim::interp {
 /// execution reaches it.
 Status runProgram(Program& program, const InterpreterOptions& options, Toolpath& toolpath, MovePipeline& moves,
                   std::vector<Error>& warnings, std::vector<Error>& notes, std::vector<SkippedBlock>& skipped);
-
-/// When `moves` passes `maxMoves` (InterpreterOptions::maxMoves), the error at `line`,
-/// `column` (the block that made the move past the limit) that names the limit.
-std::optional<Error> moveLimitError(std::size_t moves, std::size_t maxMoves, int line, int column);
 
 }  // namespace lathesim::interp

@@ -8,7 +8,7 @@
 //                 the move is a G00 and it cancels G41/G42 (the G53 move is the cancel move).
 
 #include "interp/state/modal_state.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 

@@ -5,7 +5,7 @@
 // G70–G73).
 
 #include "interp/state/modal_state.hpp"
-#include "interp/interpreter.hpp"
+#include "interp/state/interpreter_options.hpp"
 #include "interp/macro/variables.hpp"
 #include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"

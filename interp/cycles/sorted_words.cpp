@@ -1,4 +1,4 @@
-#include "interp/execution/sorted_words.hpp"
+#include "interp/cycles/sorted_words.hpp"
 
 #include "interp/macro/block_words.hpp"
 #include "interp/text/word_units.hpp"

@@ -1,0 +1,111 @@
+#include "interp/cycles/single_cycle_block.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "interp/compensation/cycle_nose_compensation.hpp"
+#include "interp/compensation/tool_offset.hpp"
+#include "interp/control/gcode_table.hpp"
+#include "interp/cycles/g90_cycle.hpp"
+#include "interp/cycles/g94_cycle.hpp"
+
+namespace lathesim::interp {
+namespace {
+
+// What sets G90 and G94 apart; the rest of a single cycle (modal retention, the checks,
+// emitting its legs) is one code path for both.
+struct SingleCycle {
+  int code;            // the system-A code, 90 or 94 (the dialect may write another)
+  bool taperAgainstX;  // the R alarm compares R with U (G90) or with W (G94)
+  std::vector<CycleLeg> (*legs)(const RZ& start, const RZ& end, double rMm);
+  std::optional<std::string> (*taperProblem)(double travelMm, double rMm);
+};
+
+constexpr SingleCycle kAxialCycle{90, true, axialCycleLegs, axialCycleTaperProblem};
+constexpr SingleCycle kFaceCycle{94, false, faceCycleLegs, faceCycleTaperProblem};
+
+Status runSingleCycle(BlockWork& work, const SingleCycle& cycle, const std::optional<Code>& code) {
+  ParsedBlock& block = work.block;
+  ModalState& state = work.state;
+  const InterpreterOptions& options = work.options;
+  const char taperLetter = cycleTaperLetter(cycle.code, options.dialect);
+  // A block runs the cycle when it gives any of X U Z W R; the code alone (a G90 on a safety
+  // line) makes it the modal motion and moves nothing.
+  if (!block.has('X') && !block.has('U') && !block.has('Z') && !block.has('W') && !block.has(taperLetter)) {
+    return success();
+  }
+  const int anchor = code ? code->column : block.column;
+  const std::string name = writtenGCode(cycle.code, GGroup::Motion, options.dialect);
+  warnIfCycleRepeatsAfterG80(work, code, name);
+  if (state.plane != Plane::ZX) {
+    return work.errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
+                                            "needs the ZX plane; select it with G18",
+                                            name, state.plane == Plane::XY ? "G17" : "G19"));
+  }
+  auto axes = work.takeAxisWords();
+  if (!axes.ok()) return axes.error();
+  const AxisWords& a = axes.value();
+  const auto r = block.take(taperLetter);
+  const RZ start = state.position;  // A
+  CycleRetained& kept = state.cycle;
+
+  std::optional<double> xDiameterMm = kept.xDiameterMm;
+  if (a.x) xDiameterMm = work.length(*a.x);
+  if (a.u) xDiameterMm = diameterOf(start) + work.length(*a.u);
+  std::optional<double> zMm = kept.zMm;
+  if (a.z) zMm = work.length(*a.z);
+  if (a.w) zMm = start.y() + work.length(*a.w);
+  if (!xDiameterMm || !zMm) {
+    return work.errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
+                                            "in this block nor kept from an earlier {0} block",
+                                            name, !xDiameterMm ? "X(U)" : "Z(W)"));
+  }
+  const double rMm = r ? work.length(*r) : kept.rMm.value_or(0.0);
+  if (!state.feed) {
+    return work.errorAt(anchor, fmt::format("feed rate F is not set: {} cuts at feed; give F (e.g. "
+                                            "F0.2 mm/rev) in this block or before it",
+                                            name));
+  }
+  if (auto problem = zeroFeedProblem(state.feed, name)) return work.errorAt(anchor, *problem);
+  // The alarm compares R with the travel U (G90, a diameter) or W (G94); without R in this
+  // block it points at that travel's word.
+  const double travelMm = cycle.taperAgainstX ? *xDiameterMm - diameterOf(start) : *zMm - start.y();
+  if (auto problem = cycle.taperProblem(travelMm, rMm)) {
+    const std::optional<Word>& absolute = cycle.taperAgainstX ? a.x : a.z;
+    const std::optional<Word>& incremental = cycle.taperAgainstX ? a.u : a.w;
+    const int column = r ? r->column : absolute ? absolute->column : incremental ? incremental->column : anchor;
+    return work.errorAt(column, *problem);
+  }
+  kept = CycleRetained{xDiameterMm, zMm, rMm};
+  work.noteCycleStart(start, name);
+  const RZ end(*xDiameterMm / 2.0, *zMm);  // C
+  const NoseComp comp = noseCompWith(state.noseSide, state.offset);
+  work.emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
+  return success();  // the cycle ends at A: the position is unchanged
+}
+
+}  // namespace
+
+Status runAxialCycle(BlockWork& work, const std::optional<Code>& code) {
+  return runSingleCycle(work, kAxialCycle, code);
+}
+
+Status runFaceCycle(BlockWork& work, const std::optional<Code>& code) { return runSingleCycle(work, kFaceCycle, code); }
+
+void warnIfCycleRepeatsAfterG80(BlockWork& work, const std::optional<Code>& code, std::string_view name) {
+  ParsedBlock& block = work.block;
+  ModalState& state = work.state;
+  const auto g80 = state.drillCancelWithCycle;
+  state.drillCancelWithCycle.reset();
+  if (code || !g80) return;
+  work.warnings.push_back({block.line, block.column,
+                           fmt::format("this block repeats {}: the G80 on line {} cancels drilling "
+                                       "cycles only, and {} stays modal until a G00, G01, G02 or G03 "
+                                       "(Fanuc and GSK group 01)",
+                                       name, g80->first, name)});
+}
+
+}  // namespace lathesim::interp

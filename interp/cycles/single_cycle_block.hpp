@@ -1,0 +1,27 @@
+#pragma once
+// G90 and G94 read from their block (lathe-cycles.md §1; their legs: g90_cycle.hpp,
+// g94_cycle.hpp): the end point given or kept from an earlier block of the cycle, the taper
+// R checked against the travel, and the legs emitted, offset by the tip number under G41/G42
+// (cycle_nose_compensation.hpp). A block that gives none of X U Z W R only makes the cycle
+// the modal motion.
+
+#include <optional>
+#include <string_view>
+
+#include "interp/base/result.hpp"
+#include "interp/state/block_work.hpp"
+#include "interp/text/block_parser.hpp"
+
+namespace lathesim::interp {
+
+/// G90 on `work`'s block: `code` as written, or none when the block repeats the modal cycle.
+Status runAxialCycle(BlockWork& work, const std::optional<Code>& code);
+
+/// G94 on `work`'s block, as runAxialCycle.
+Status runFaceCycle(BlockWork& work, const std::optional<Code>& code);
+
+/// When a block repeats modal cycle `name` (no `code` written) right after a G80 that
+/// stood with it, the warning that G80 cancels drilling cycles only.
+void warnIfCycleRepeatsAfterG80(BlockWork& work, const std::optional<Code>& code, std::string_view name);
+
+}  // namespace lathesim::interp
