@@ -143,7 +143,7 @@ Simulated simulatePart(const job::Setup& setup, const interp::Toolpath& toolpath
   Simulated out;
   out.stockVolumeMm3 = stock.volumeMm3();
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck too
-  out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {.checks = &checks});
+  out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {{}, &checks, {}, {}});
   out.stubVolumeMm3 = out.finalVolumeMm3 = stock.volumeMm3();
   for (const auto& off : out.result.partOffs) out.finalVolumeMm3 += off.volumeMm3;
   return out;
