@@ -10,7 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/printed_diagnostics.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 #include "measure/deviation.hpp"
 #include "measure/drawing.hpp"
 #include "measure/gouge_causes.hpp"

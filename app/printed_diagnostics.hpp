@@ -5,7 +5,7 @@
 #include <iostream>
 #include <utility>
 
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "job/job.hpp"
 
 namespace lathesim::app {

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/control/tool_word.hpp"
+#include "interp/text/tool_word.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/text/stated_stock.hpp"
 #include "interp/text/program.hpp"
@@ -75,7 +75,7 @@ void mountToolsNamedInComments(Job& job, const std::string& programName, Diagnos
 }
 
 // The program's evidence read, and the dialect and control not stated chosen from it
-// (interp/control/machine_choice.hpp); the setup's [control] keys kept over a chosen preset.
+// (interp/text/machine_choice.hpp); the setup's [control] keys kept over a chosen preset.
 void chooseMachineOf(Job& job, Diagnostics& said) {
   Setup& setup = job.setup;
   job.evidence = interp::readMachineEvidence(job.programText.text());

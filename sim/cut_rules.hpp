@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "sim/simulation_result.hpp"
 
 namespace lathesim::sim {

@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
-#include "interp/move.hpp"
-#include "interp/move_sink.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/move_sink.hpp"
 #include "sim/cut_history.hpp"
 #include "sim/holder_check.hpp"
 #include "sim/part_off.hpp"
