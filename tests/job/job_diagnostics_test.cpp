@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "job/job.hpp"
 #include "tests/support/lathesim_process.hpp"
@@ -64,15 +65,27 @@ TEST(JobDiagnostics, AProgramsErrorComesBackLocatedAndNoJobWithIt) {
   EXPECT_EQ(last.line, 2);
 }
 
-TEST(JobDiagnostics, AJobComesBackWithItsWarningsAndNotesInTheOrderFound) {
+TEST(JobDiagnostics, AJobComesBackWithItsWarningsInTheOrderFound) {
   test::ScratchDir dir("job-diagnostics");
-  test::writeFile(dir.path() / "p.nc", "G00 X40. Z2.\nG01 Z-10. F0.2\nM30\n");
-  const auto loaded = loadSilently({dir.path() / "p.nc", {}, {}, {}, {}});
+  // Tool 2 from its comment (found when the job is opened), then tool 1's (same pass, later line).
+  test::writeFile(dir.path() / "p.nc",
+                  "G21 G99\nT0202 (CNMG 120408)\nG97 S1000 M03\nG00 X44. Z2.\nT0101 (CNMG 120408)\n"
+                  "G00 X44. Z2.\nM30\n");
+  const auto loaded = loadSilently({dir.path() / "p.nc", {}, {}, {}, "D40xL60"});
   ASSERT_TRUE(loaded.value);
-  // Everything the job keeps as a warning or note was said, and nothing else was.
-  std::size_t kept = loaded.value->warnings.size() + loaded.value->notes.size();
-  EXPECT_EQ(loaded.diagnostics.size(), kept);
-  for (const interp::Diagnostic& d : loaded.diagnostics) EXPECT_NE(d.severity, interp::Severity::Error) << interp::format(d);
+  std::vector<std::string> mounted;
+  for (const interp::Diagnostic& d : loaded.diagnostics) {
+    EXPECT_NE(d.severity, interp::Severity::Error) << interp::format(d);
+    if (d.message.rfind("tool ", 0) == 0 && d.message.find("is mounted from the comment") != std::string::npos)
+      mounted.push_back(std::to_string(d.line) + ": " + d.message.substr(0, 6));
+  }
+  EXPECT_EQ(mounted, (std::vector<std::string>{"2: tool 2", "5: tool 1"}));
+  // What the job keeps as warnings is what it said as warnings, in the same order.
+  std::vector<std::string> said, kept;
+  for (const interp::Diagnostic& d : loaded.diagnostics)
+    if (d.severity == interp::Severity::Warning) said.push_back(interp::format(d));
+  for (const interp::Diagnostic& d : loaded.value->warnings) kept.push_back(interp::format(d));
+  EXPECT_EQ(said, kept);
 }
 
 }  // namespace
