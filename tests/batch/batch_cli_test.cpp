@@ -118,7 +118,7 @@ class MixedBatch : public ::testing::Test {
   static test::ProcessOutcome run(std::vector<std::string> extra, const std::string& manifest = "batch.toml") {
     std::vector<std::string> args{"batch", (dir_->path() / manifest).string(), "--out", out().string(), "--jobs", "2"};
     args.insert(args.end(), extra.begin(), extra.end());
-    return lathesim(args, *dir_.path());
+    return lathesim(args, dir_->path());
   }
 
   static ScratchDir* dir_;
@@ -304,7 +304,7 @@ TEST_F(MixedBatch, ShardsMergedAreTheWholeBatch) {
   std::vector<std::string> args{"batch", "merge"};
   args.insert(args.end(), files.begin(), files.end());
   args.insert(args.end(), {"--out", merged.string()});
-  const test::ProcessOutcome outcome = lathesim(args, *dir_.path());
+  const test::ProcessOutcome outcome = lathesim(args, dir_->path());
   EXPECT_EQ(outcome.status, 1) << outcome.out << outcome.err;
   Json whole = withoutResumed(*summary_);
   for (auto& row : whole.at("jobs")) row["folder"] = "../out/" + row.at("folder").get<std::string>();
