@@ -1,6 +1,8 @@
 #include "app/batch_cli.hpp"
 
+#include <functional>
 #include <iostream>
+#include <memory>
 
 #include "app/commands.hpp"
 #include "batch/merge.hpp"
@@ -8,11 +10,30 @@
 #include "batch/summary.hpp"
 #include "interp/base/printable_text.hpp"
 #include "job/exit_status.hpp"
+#include "render/drawing_libraries.hpp"
+#include "render/offscreen_display.hpp"
 
 namespace lathesim::app {
 
+namespace {
+
+// The batch's jobs draw: one display for all of them (they inherit DISPLAY), and the libraries
+// drawing loads learnt and loaded into the batch while its first jobs run, for its forks.
+batch::JobPreparation drawingPreparation() {
+  batch::JobPreparation preparation;
+  preparation.beforeJobs = [] { render::ensureDisplay(); };
+  preparation.forForks = [] {
+    auto preload = std::make_shared<render::DrawingLibrariesPreload>();
+    return std::function<bool()>([preload] { return preload->loadIfDone().has_value(); });
+  };
+  return preparation;
+}
+
+}  // namespace
+
 BatchCli::BatchCli(CLI::App& cli, batch::InProcessMain jobMain) {
   options_.jobMain = std::move(jobMain);
+  options_.preparation = drawingPreparation();
   command_ = cli.add_subcommand("batch", "simulate many programs, each in its own folder, and summarise them");
   command_->add_option("source", source_, "a manifest (.toml or .csv) or a folder of programs");
   command_->add_option("--out", options_.out, "output folder: a folder per job and the summary")->capture_default_str();

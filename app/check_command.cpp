@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/printed_diagnostics.hpp"
 #include "interp/base/printable_text.hpp"
 #include "measure/deviation.hpp"
 #include "measure/drawing.hpp"
@@ -34,7 +35,7 @@ using Json = nlohmann::ordered_json;
 /// rest of the file (lines, tolerances, callouts) into `file`.
 std::optional<MeridianProfile> loadProfile(const std::filesystem::path& path, measure::DrawingResult& file) {
   file = measure::loadDrawing(path);
-  for (const auto& d : file.diagnostics) std::cerr << interp::format(d) << '\n';
+  printDiagnostics(file.diagnostics);
   if (!file.outline) return std::nullopt;
   return MeridianProfile::fromPolygon(*file.outline);
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
+#include "app/printed_diagnostics.hpp"
 #include "interp/text/machine_choice.hpp"
 #include "interp/base/printable_text.hpp"
 #include "interp/output/toolpath_csv_spool.hpp"
@@ -12,7 +13,7 @@ namespace lathesim::app {
 
 int expandCommand(const job::JobRequest& request) {
   interp::ToolpathCsvSpool csv;
-  const auto job = job::loadJob(request, csv);
+  const auto job = printed(job::loadJob(request, csv));
   if (!job) return job::kExitBadInput;
   // The CSV is standard output's: the machine it was read for is said on standard error.
   std::cerr << "lathesim: " << interp::printable(request.program.string()) << ": "

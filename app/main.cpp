@@ -47,6 +47,69 @@ int runJobInProcess(const std::vector<std::string>& args) {
   return lathesimMain(static_cast<int>(words.size()), argv.data());
 }
 
+// --programs and --stock: where the program's subprograms and its bar come from.
+void addProgramSourceOptions(CLI::App& command, lathesim::app::RunOptions& options) {
+  command.add_option("--programs", options.programDirectories,
+                     "a directory of the control's programs: subprograms M98 calls that the file lacks")
+      ->check(CLI::ExistingDirectory);
+  command.add_option("--stock", options.stock,
+                     "the bar: D<diameter>[xd<bore>]xL<length>[xZ<face>], e.g. D40xL80 or the tube D60xd40xL80 "
+                     "(over the setup's)")
+      ->check([](const std::string& text) {
+        const auto bar = lathesim::job::parseStockOption(text);
+        const auto* problem = std::get_if<std::string>(&bar);
+        if (!problem) return std::string();
+        // CLI11 names the option itself; the message names it too, for the setup's callers.
+        const std::string named = "--stock ";
+        return problem->rfind(named, 0) == 0 ? problem->substr(named.size()) : *problem;
+      });
+}
+
+// --dialect, --control, --block-skip, --max-steps and --max-moves on every command that reads
+// a program (and --collisions on those that simulate), as given.
+struct OverrideArguments {
+  std::string dialect, control, blockSkip, collisions;
+  std::optional<long long> maxSteps;
+  std::optional<std::size_t> maxMoves;
+};
+
+void addOverrideOptions(CLI::App& command, OverrideArguments& args, bool simulates) {
+  std::vector<std::string> dialects;
+  for (auto dialect : lathesim::interp::kDialects) dialects.emplace_back(lathesim::interp::dialectName(dialect));
+  std::vector<std::string> presets;
+  for (auto preset : lathesim::interp::controlPresets()) presets.emplace_back(preset);
+  command.add_option("--dialect", args.dialect, "how the program writes its codes (overrides [machine] dialect; neither given: read from the program)")
+      ->check(CLI::IsMember(dialects));
+  command.add_option("--control", args.control, "the control preset (overrides [control] name; neither given: read from the program)")
+      ->check(CLI::IsMember(presets));
+  command.add_option("--block-skip", args.blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
+      ->check(CLI::IsMember({"on", "off"}));
+  if (simulates)
+    command.add_option("--collisions", args.collisions,
+                       "a collision fails the run with exit status 4 (error, the default) or is only printed "
+                       "(warn) (overrides [sim] collisions)")
+        ->check(CLI::IsMember({"error", "warn"}));
+  command.add_option("--max-steps", args.maxSteps,
+                     "blocks the program may run again before it is stopped as an endless loop (overrides "
+                     "[macro] max_steps)")
+      ->check(CLI::PositiveNumber);
+  command.add_option("--max-moves", args.maxMoves,
+                     "moves the program may make before it is refused (overrides [sim] max_moves; default " +
+                         std::to_string(lathesim::interp::kDefaultMaxMoves) + ")")
+      ->check(CLI::PositiveNumber);
+}
+
+lathesim::job::SetupOverrides overridesOf(const OverrideArguments& args) {
+  lathesim::job::SetupOverrides overrides;
+  if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
+  if (!args.control.empty()) overrides.controlPreset = args.control;
+  if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
+  if (!args.collisions.empty()) overrides.collisionsWarn = args.collisions == "warn";
+  overrides.maxSteps = args.maxSteps;
+  overrides.maxMoves = args.maxMoves;
+  return overrides;
+}
+
 int lathesimMain(int argc, char** argv) {
   CLI::App cli{"lathesim — simulates a lathe program on a bar and shows the part it makes", "lathesim"};
   cli.require_subcommand(1);
@@ -104,62 +167,15 @@ int lathesimMain(int argc, char** argv) {
       "Example:\n  lathesim expand parts/g71-g70-shaft/program.nc --setup parts/g71-g70-shaft/setup.toml > toolpath.csv\n"
       "one row per move: line,kind,x0,z0,x1,z1,feed,xc,zc,time_s (X as a diameter).\n" +
       std::string(kExitStatuses));
-  for (auto* command : {runCmd, checkCmd, expandCmd}) {
-    auto& directories = command == runCmd ? run.programDirectories
-                        : command == checkCmd ? check.run.programDirectories
-                                              : expand.programDirectories;
-    command->add_option("--programs", directories,
-                        "a directory of the control's programs: subprograms M98 calls that the file lacks")
-        ->check(CLI::ExistingDirectory);
-    auto& stock = command == runCmd ? run.stock : command == checkCmd ? check.run.stock : expand.stock;
-    command->add_option("--stock", stock,
-                        "the bar: D<diameter>[xd<bore>]xL<length>[xZ<face>], e.g. D40xL80 or the tube D60xd40xL80 "
-                        "(over the setup's)")
-        ->check([](const std::string& text) {
-          const auto bar = lathesim::job::parseStockOption(text);
-          const auto* problem = std::get_if<std::string>(&bar);
-          if (!problem) return std::string();
-          // CLI11 names the option itself; the message names it too, for the setup's callers.
-          const std::string named = "--stock ";
-          return problem->rfind(named, 0) == 0 ? problem->substr(named.size()) : *problem;
-        });
-  }
+  for (auto [command, options] : {std::pair{runCmd, &run}, {checkCmd, &check.run}, {expandCmd, &expand}})
+    addProgramSourceOptions(*command, *options);
   expandCmd->add_option("--setup", expandSetup, "setup file (TOML)")->check(CLI::ExistingFile);
   lathesim::app::addPictureOptions(*runCmd, run);
   lathesim::app::addPictureOptions(*checkCmd, check.run);
 
-  // --dialect, --control, --block-skip, --max-steps and --max-moves on every command that reads a program.
-  struct OverrideArguments {
-    std::string dialect, control, blockSkip, collisions;
-    std::optional<long long> maxSteps;
-    std::optional<std::size_t> maxMoves;
-  };
   OverrideArguments runArgs, checkArgs, expandArgs;
-  std::vector<std::string> dialects;
-  for (auto dialect : lathesim::interp::kDialects) dialects.emplace_back(lathesim::interp::dialectName(dialect));
-  std::vector<std::string> presets;
-  for (auto preset : lathesim::interp::controlPresets()) presets.emplace_back(preset);
-  for (auto [command, args] : {std::pair{runCmd, &runArgs}, {checkCmd, &checkArgs}, {expandCmd, &expandArgs}}) {
-    command->add_option("--dialect", args->dialect, "how the program writes its codes (overrides [machine] dialect; neither given: read from the program)")
-        ->check(CLI::IsMember(dialects));
-    command->add_option("--control", args->control, "the control preset (overrides [control] name; neither given: read from the program)")
-        ->check(CLI::IsMember(presets));
-    command->add_option("--block-skip", args->blockSkip, "the block skip switch: '/' blocks skipped (on) or run (off)")
-        ->check(CLI::IsMember({"on", "off"}));
-    if (command != expandCmd)
-      command->add_option("--collisions", args->collisions,
-                          "a collision fails the run with exit status 4 (error, the default) or is only printed "
-                          "(warn) (overrides [sim] collisions)")
-          ->check(CLI::IsMember({"error", "warn"}));
-    command->add_option("--max-steps", args->maxSteps,
-                        "blocks the program may run again before it is stopped as an endless loop (overrides "
-                        "[macro] max_steps)")
-        ->check(CLI::PositiveNumber);
-    command->add_option("--max-moves", args->maxMoves,
-                        "moves the program may make before it is refused (overrides [sim] max_moves; default " +
-                            std::to_string(lathesim::interp::kDefaultMaxMoves) + ")")
-        ->check(CLI::PositiveNumber);
-  }
+  for (auto [command, args] : {std::pair{runCmd, &runArgs}, {checkCmd, &checkArgs}, {expandCmd, &expandArgs}})
+    addOverrideOptions(*command, *args, command != expandCmd);
 
   lathesim::app::WatchOptions watch;
   auto* watchCmd = cli.add_subcommand(
@@ -188,16 +204,6 @@ int lathesimMain(int argc, char** argv) {
       cli.exit(e);
     return lathesim::job::kExitBadCommandLine;
   }
-  const auto overridesOf = [](const OverrideArguments& args) {
-    lathesim::job::SetupOverrides overrides;
-    if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
-    if (!args.control.empty()) overrides.controlPreset = args.control;
-    if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
-    if (!args.collisions.empty()) overrides.collisionsWarn = args.collisions == "warn";
-    overrides.maxSteps = args.maxSteps;
-    overrides.maxMoves = args.maxMoves;
-    return overrides;
-  };
   const auto optionalPath = [](const std::string& s) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
   };

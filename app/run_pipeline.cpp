@@ -11,6 +11,7 @@
 #include "app/cut_recording.hpp"
 #include "app/output_names.hpp"
 #include "app/part_pictures.hpp"
+#include "app/printed_diagnostics.hpp"
 #include "job/collision_checks.hpp"
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
@@ -27,7 +28,6 @@
 #include "render/scene_export.hpp"
 #include "render/thumbnail.hpp"
 #include "sim/simulate.hpp"
-#include "sim/simulation.hpp"
 
 namespace lathesim::app {
 
@@ -100,7 +100,7 @@ class StreamedMoves final : public interp::MoveSink {
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out,
                                             bool spoolMoves) {
   const job::JobRequest request = jobRequestOf(options);
-  std::optional<job::Job> opened = job::openJob(request);
+  std::optional<job::Job> opened = printed(job::openJob(request));
   if (!opened) return std::nullopt;
   const double voxel = options.voxelMm.value_or(opened->setup.voxelMm.value_or(kDefaultVoxelMm));
   const auto gridProblem = sim::gridProblem(opened->setup.stock, voxel);
@@ -109,7 +109,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   if (!streams) {
     std::vector<interp::Move> moves;
     interp::MoveCollector collect(moves);
-    if (!job::interpretJob(*opened, request, collect)) return std::nullopt;
+    if (!printed(job::interpretJob(*opened, request, collect))) return std::nullopt;
     opened->toolpath.moves = std::move(moves);
     if (!cutAtLine(options.atLine, *opened)) return std::nullopt;
   }
@@ -175,7 +175,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   // A streamed run's toolpath for measuring threads: its thread moves (thread_moves.hpp).
   interp::Toolpath threadToolpath;
   if (streams) {
-    sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup), observer);
+    sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, {progress, &checks, thicknessesOf(setup), observer});
     if (options.outputs.csv && out) {
       run.csv = std::make_unique<interp::ToolpathCsvSpool>();
       others.push_back(run.csv.get());
@@ -184,7 +184,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     run.blockRows = std::make_unique<sim::SpooledBlockRows>();
     simulation.sendBlocksTo([rows = run.blockRows.get()](const sim::BlockRemoval& row) { rows->add(row); });
     StreamedMoves moves(simulation, std::move(others), threadMoves);
-    if (!job::interpretJob(run.job, request, moves)) return std::nullopt;
+    if (!printed(job::interpretJob(run.job, request, moves))) return std::nullopt;
     figures.moves = moves.count;
     figures.cycleTimeS = moves.cycleTimeS;
     if (barProblem) warn(run, *barProblem);  // after the program's warnings, as when it ran first
@@ -198,7 +198,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
     if (barProblem) warn(run, *barProblem);
     figures.simulation =
-        sim::simulate(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup), observer);
+        sim::simulate(run.job.toolpath, outlines, *run.stock, {progress, &checks, thicknessesOf(setup), observer});
   }
   figures.warnings.insert(figures.warnings.begin(), run.job.warnings.begin(), run.job.warnings.end());
   figures.notes = run.job.notes;

@@ -19,8 +19,6 @@
 #include "batch/manifest.hpp"
 #include "batch/resources.hpp"
 #include "batch/summary.hpp"
-#include "render/drawing_libraries.hpp"
-#include "render/offscreen_display.hpp"
 
 namespace lathesim::batch {
 namespace {
@@ -102,7 +100,7 @@ class BatchRun {
     // start some when they are loaded (log4cplus, under OpenVDB, a pool that stays idle):
     // those were there before the batch began, and a job does not use them.
     inProcess_ = options_.jobMain && threadCount() > 0 && threadCount() == options_.threadsAtStart;
-    if (inProcess_) drawingLibraries_.emplace();  // learnt while the first jobs run
+    if (inProcess_ && options_.preparation.forForks) forkPreparation_ = options_.preparation.forForks();  // while the first jobs run
     if (options_.memoryBytes) {
       budget_ = options_.memoryBytes;
     } else if (auto free = availableMemoryBytes()) {
@@ -128,7 +126,7 @@ class BatchRun {
       }
       killOverdue();
       std::vector<Ended> ended = reapEnded();
-      loadDrawingLibraries();
+      finishForkPreparation();
       startWhatFits();  // before the stamps: no CPU waits on the batch's own work
       for (const Ended& e : ended) finish(e.job, e.waitStatus);
     }
@@ -183,12 +181,12 @@ class BatchRun {
     running_.push_back(std::move(running));
   }
 
-  /// Once the child learning them has ended, the libraries that drawing loads (the GL driver,
-  /// LLVM) are loaded here, so that each job forked from then on finds them loaded. They start
-  /// no thread; should one have, the next jobs are started anew instead.
-  void loadDrawingLibraries() {
-    if (!drawingLibraries_ || !drawingLibraries_->loadIfDone()) return;
-    drawingLibraries_.reset();
+  /// Once the preparation for forks is done (the libraries that drawing loads, the GL driver and
+  /// LLVM, loaded here), each job forked from then on finds it done. It starts no thread;
+  /// should one have, the next jobs are started anew instead.
+  void finishForkPreparation() {
+    if (!forkPreparation_ || !forkPreparation_()) return;
+    forkPreparation_ = nullptr;
     inProcess_ = threadCount() == options_.threadsAtStart;
   }
 
@@ -287,7 +285,7 @@ class BatchRun {
   std::optional<std::uint64_t> budget_;
   int slots_ = 1;
   bool inProcess_ = false;  // jobs forked from the batch (options_.jobMain), not started anew
-  std::optional<render::DrawingLibrariesPreload> drawingLibraries_;  // while it is learning them
+  std::function<bool()> forkPreparation_;  // until it is done (JobPreparation::forForks)
   int done_ = 0, total_ = 0;
 };
 
@@ -329,7 +327,7 @@ int runBatch(const BatchOptions& options) {
 
   int stoppedBy = 0;
   if (!pending.empty()) {
-    render::ensureDisplay();  // one display for every job: they inherit DISPLAY
+    if (options.preparation.beforeJobs) options.preparation.beforeJobs();
     stoppedBy = BatchRun(resolved, summary).run(std::move(pending), upToDate);
   }
   std::sort(summary.jobs.begin(), summary.jobs.end(),

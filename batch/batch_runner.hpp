@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 
 #include "batch/batch_job.hpp"
@@ -16,6 +17,18 @@ namespace lathesim::batch {
 
 /// The log a job's lathesim writes in its folder (its stdout and stderr).
 inline constexpr const char* kJobLogFileName = "lathesim.log";
+
+/// What the command that runs a batch does for its jobs' processes (app/ gives render/'s):
+struct JobPreparation {
+  /// Before the first job starts, once: what every job inherits (a display to draw on: one for
+  /// all of them, rather than one each).
+  std::function<void()> beforeJobs;
+  /// When jobs are forked from the batch, started once before the first: work done while the
+  /// first jobs run (learning which libraries drawing loads) that is finished in the batch by
+  /// calling what it returns until that says true, so that each job forked after finds it done
+  /// (the libraries loaded). It must start no thread.
+  std::function<std::function<bool()>()> forForks;
+};
 
 struct BatchOptions {
   std::filesystem::path source;  // a .toml or .csv manifest, or a folder of programs
@@ -30,6 +43,9 @@ struct BatchOptions {
   /// `threadsAtStart` (threadCount() before it started any work: the libraries' own).
   InProcessMain jobMain;
   int threadsAtStart = 0;
+  /// How the command prepares the processes the batch starts; batch/ itself knows nothing of
+  /// what they draw with. Either may be empty.
+  JobPreparation preparation;
 };
 
 /// The batch's exit status: 0 every job passed, 1 some failed (or the manifest is bad: its

@@ -1,7 +1,6 @@
 #include "job/job.hpp"
 
 #include <algorithm>
-#include <iostream>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -13,14 +12,14 @@
 #include "job/comment_tools.hpp"
 #include "job/stock_option.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/base/printable_text.hpp"
 #include "job/control_setup.hpp"
 
 namespace lathesim::job {
 namespace {
 
-void print(const std::vector<interp::Diagnostic>& diagnostics) {
-  for (const auto& d : diagnostics) std::cerr << interp::format(d) << '\n';
+// An error of the command line's, said as "lathesim: error: …".
+interp::Diagnostic commandLineError(std::string message) {
+  return {interp::Severity::Error, "lathesim", 0, 0, std::move(message), {}};
 }
 
 bool hasError(const std::vector<interp::Diagnostic>& diagnostics) {
@@ -38,7 +37,7 @@ std::string toolDefinitionHint(int number) {
 }
 
 // T words no setup defines, mounted from what their blocks' comments name (comment_tools.hpp).
-void mountToolsNamedInComments(Job& job, const std::string& programName) {
+void mountToolsNamedInComments(Job& job, const std::string& programName, Diagnostics& said) {
   const interp::Program program = interp::readProgram(job.programText.text(), job.setup.control.parameters.blockSkip,
                                                       job.setup.dialect, job.setup.control.parameters.machineMCodes);
   Setup& setup = job.setup;
@@ -69,7 +68,7 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
       for (const std::string& w : named->warnings) message += "; " + w;
       job.warnings.push_back({interp::Severity::Warning, programName, block.line, t.column, message,
                               interp::lineOf(job.programText.text(), block.line)});
-      print({job.warnings.back()});
+      said.push_back(job.warnings.back());
       break;
     }
   }
@@ -77,7 +76,7 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
 
 // The program's evidence read, and the dialect and control not stated chosen from it
 // (interp/text/machine_choice.hpp); the setup's [control] keys kept over a chosen preset.
-void chooseMachineOf(Job& job) {
+void chooseMachineOf(Job& job, Diagnostics& said) {
   Setup& setup = job.setup;
   job.evidence = interp::readMachineEvidence(job.programText.text());
   interp::MachineStatement stated;
@@ -91,7 +90,7 @@ void chooseMachineOf(Job& job) {
   if (job.machine.control != setup.control.preset) setup.control = *withPreset(setup.control, job.machine.control);
   for (const interp::Error& w : job.machine.warnings) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
-    print({job.warnings.back()});
+    said.push_back(job.warnings.back());
   }
 }
 
@@ -184,7 +183,7 @@ interp::Diagnostic Job::diagnosticAt(interp::Severity severity, int line, int co
           programLines->lineOf(programText.text().view(), line)};
 }
 
-std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
+Reported<std::optional<Setup>> overridden(Setup setup, const SetupOverrides& overrides) {
   if (overrides.dialect) {
     setup.dialect = *overrides.dialect;
     setup.dialectBy = "--dialect";
@@ -194,9 +193,8 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
     if (!chosen) {
       std::string names;
       for (std::string_view n : interp::controlPresets()) names += (names.empty() ? "" : ", ") + std::string(n);
-      std::cerr << "lathesim: error: --control " << interp::printable(*overrides.controlPreset) << ": no such control preset (expected "
-                << names << ")\n";
-      return std::nullopt;
+      return {std::nullopt, {commandLineError("--control " + *overrides.controlPreset +
+                                              ": no such control preset (expected " + names + ")")}};
     }
     setup.control = std::move(*chosen);
     setup.controlBy = "--control";
@@ -206,53 +204,59 @@ std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides) {
     (void)setup.control.set("block_skip", std::string(*overrides.blockSkip ? "on" : "off"), "command line");
   if (overrides.maxSteps) setup.macro.maxSteps = *overrides.maxSteps;
   if (overrides.collisionsWarn) setup.collisionsWarn = *overrides.collisionsWarn;
-  return setup;
+  return {std::move(setup), {}};
 }
 
-std::optional<Job> loadJob(const JobRequest& request) {
+Reported<std::optional<Job>> loadJob(const JobRequest& request) {
   std::vector<interp::Move> moves;
   interp::MoveCollector collector(moves);
-  std::optional<Job> job = loadJob(request, collector);
-  if (job) job->toolpath.moves = std::move(moves);
+  Reported<std::optional<Job>> job = loadJob(request, collector);
+  if (job.value) job.value->toolpath.moves = std::move(moves);
   return job;
 }
 
-std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves) {
-  std::optional<Job> job = openJob(request);
-  if (!job || !interpretJob(*job, request, moves)) return std::nullopt;
+Reported<std::optional<Job>> loadJob(const JobRequest& request, interp::MoveSink& moves) {
+  Reported<std::optional<Job>> job = openJob(request);
+  if (!job.value) return job;
+  Reported<bool> interpreted = interpretJob(*job.value, request, moves);
+  job.diagnostics.insert(job.diagnostics.end(), interpreted.diagnostics.begin(), interpreted.diagnostics.end());
+  if (!interpreted.value) job.value.reset();
   return job;
 }
 
-std::optional<Job> openJob(const JobRequest& request) {
+Reported<std::optional<Job>> openJob(const JobRequest& request) {
+  Reported<std::optional<Job>> opened{std::nullopt, {}};
+  Diagnostics& said = opened.diagnostics;
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
   Job job{defaultSetup(), {}, {}, {}, {}, {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
-    print(loaded.diagnostics);
-    if (!loaded.setup || hasError(loaded.diagnostics)) return std::nullopt;
+    said = loaded.diagnostics;
+    if (!loaded.setup || hasError(loaded.diagnostics)) return opened;
     job.setup = std::move(*loaded.setup);
     job.warnings = std::move(loaded.diagnostics);  // what is left are warnings (e.g. an insert that
                                                    // does not match its holder's seat)
   }
-  std::optional<Setup> setup = overridden(std::move(job.setup), request.overrides);
-  if (!setup) return std::nullopt;
-  job.setup = std::move(*setup);
+  Reported<std::optional<Setup>> setup = overridden(std::move(job.setup), request.overrides);
+  said.insert(said.end(), setup.diagnostics.begin(), setup.diagnostics.end());
+  if (!setup.value) return opened;
+  job.setup = std::move(*setup.value);
 
   try {
     job.programText = interp::FileText::read(program);
   } catch (const std::system_error& error) {
-    std::cerr << interp::printable(program.string()) << ": error: cannot read the program file ("
-              << interp::printable(error.code().message()) << ")\n";
-    return std::nullopt;
+    said.push_back({interp::Severity::Error, program.string(), 0, 0,
+                    "cannot read the program file (" + error.code().message() + ")", {}});
+    return opened;
   }
   job.toolpath.programName = program.string();  // the name warningAt locates warnings in
-  chooseMachineOf(job);
+  chooseMachineOf(job, said);
   if (request.stock) {
     auto stock = parseStockOption(*request.stock);
     if (const auto* problem = std::get_if<std::string>(&stock)) {
-      std::cerr << "lathesim: error: " << interp::printable(*problem) << '\n';
-      return std::nullopt;
+      said.push_back(commandLineError(*problem));
+      return opened;
     }
     job.setup.stock = std::get<sim::StockSpec>(stock);
     job.setup.stockGiven = true;
@@ -267,19 +271,20 @@ std::optional<Job> openJob(const JobRequest& request) {
                                        "{} (no setup gives the stock)",
                                        stated->diameterMm, stated->lengthMm, stated->text),
                            interp::lineOf(job.programText.text(), stated->line)});
-      print({job.notes.back()});
+      said.push_back(job.notes.back());
     }
   }
   for (const interp::Error& w : interp::lengthWarnings(job.evidence, job.setup.control.parameters,
                                                       job.setup.control.preset, job.setup.stock.diameterMm)) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
-    print({job.warnings.back()});
+    said.push_back(job.warnings.back());
   }
-  mountToolsNamedInComments(job, program.string());
-  return job;
+  mountToolsNamedInComments(job, program.string(), said);
+  opened.value = std::move(job);
+  return opened;
 }
 
-bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves) {
+Reported<bool> interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves) {
   const std::filesystem::path& program = request.program;
   interp::InterpreterOptions options = interpreterOptionsOf(job.setup);
   options.toolDefinitionHint = toolDefinitionHint;
@@ -290,8 +295,8 @@ bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves) 
   interp::InterpretResult result = interp::interpret(job.programText.text(), program.string(), options, timed);
   for (interp::Diagnostic& d : result.diagnostics)
     if (d.severity == interp::Severity::Error) d.message = withCure(job, d, program.string());
-  print(result.diagnostics);
-  if (!result.ok()) return false;
+  Reported<bool> interpreted{result.ok(), result.diagnostics};
+  if (!result.ok()) return interpreted;
   for (auto& d : result.diagnostics)
     if (d.severity == interp::Severity::Warning) job.warnings.push_back(std::move(d));
     else if (d.severity == interp::Severity::Note) job.notes.push_back(std::move(d));
@@ -299,9 +304,9 @@ bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves) 
   job.skippedBlocks = std::move(result.skippedBlocks);
   for (const interp::Error& w : timed.warnings()) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
-    print({job.warnings.back()});
+    interpreted.diagnostics.push_back(job.warnings.back());
   }
-  return true;
+  return interpreted;
 }
 
 }  // namespace lathesim::job

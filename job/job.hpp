@@ -1,6 +1,7 @@
 #pragma once
-// What every command starts from: the setup read, the program interpreted. Diagnostics are
-// printed as they are found; a job with errors is not returned.
+// What every command starts from: the setup read, the program interpreted. Nothing is printed
+// here: each step returns what it found to say (errors, warnings, notes) in the order it found
+// it, for the caller to print; a job with errors is not returned.
 
 #include <filesystem>
 #include <optional>
@@ -17,6 +18,16 @@
 #include "interp/text/file_text.hpp"
 
 namespace lathesim::job {
+
+using Diagnostics = std::vector<interp::Diagnostic>;
+
+/// A step's result and what the step said, in order: an error of the command line's (an
+/// unknown --control, a bad --stock) has the file "lathesim" and no line.
+template <class T>
+struct Reported {
+  T value;
+  Diagnostics diagnostics;
+};
 
 struct Job {
   Setup setup;
@@ -50,9 +61,8 @@ struct SetupOverrides {
   std::optional<bool> collisionsWarn;        // --collisions warn|error: [sim] collisions
 };
 
-/// The setup with the command line's overrides; nullopt (the problem printed) for an unknown
-/// preset.
-std::optional<Setup> overridden(Setup setup, const SetupOverrides& overrides);
+/// The setup with the command line's overrides; nullopt (and the error) for an unknown preset.
+Reported<std::optional<Setup>> overridden(Setup setup, const SetupOverrides& overrides);
 
 /// What a command names: the program, and what the command line says of the setup.
 struct JobRequest {
@@ -67,20 +77,20 @@ struct JobRequest {
 /// The bar comes from --stock, else the setup's [stock], else the program's own statement
 /// (interp/text/stated_stock.hpp: a billet line or a stock comment, face at Z0, with a note),
 /// else the default setup's.
-std::optional<Job> loadJob(const JobRequest& request);
+Reported<std::optional<Job>> loadJob(const JobRequest& request);
 
 /// The same, the moves timed and handed to `moves` as the program makes them (the job's
 /// toolpath has no moves): a long program is never held whole. A job with errors may have
 /// handed on moves before its error: the consumer drops them.
-std::optional<Job> loadJob(const JobRequest& request, interp::MoveSink& moves);
+Reported<std::optional<Job>> loadJob(const JobRequest& request, interp::MoveSink& moves);
 
 /// loadJob's first step: the setup read (with the command line's overrides, the bar and the
 /// tools the program's comments name) and the program opened, not yet interpreted; for a
 /// consumer of the moves that needs the setup before the first move (a simulation's stock).
-std::optional<Job> openJob(const JobRequest& request);
+Reported<std::optional<Job>> openJob(const JobRequest& request);
 
 /// loadJob's second step: the opened job's program interpreted, the moves timed and handed
-/// to `moves`; false (the errors printed) for a program with errors.
-bool interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves);
+/// to `moves`; false (with the errors) for a program with errors.
+Reported<bool> interpretJob(Job& job, const JobRequest& request, interp::MoveSink& moves);
 
 }  // namespace lathesim::job

@@ -34,7 +34,7 @@ struct ProcessFigures {
 double pathLengthMm(const interp::Move& move);
 
 /// From the moves and the simulation's rows of the same run, read in step: row k is the k-th
-/// run of consecutive moves of one block (sim/simulation.hpp cuts them so). Holds two bits a
+/// run of consecutive moves of one block (sim/simulate.hpp cuts them so). Holds two bits a
 /// source block and a total for each block run more than once (a subprogram's, a loop's),
 /// not a figure a move. Throws std::logic_error if the rows are not the moves'.
 ProcessFigures processFigures(const interp::MoveSpool& moves, const sim::BlockRows& rows, double voxelMm);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "interp/output/spool_file.hpp"
-#include "sim/simulate.hpp"
+#include "sim/simulation_result.hpp"
 
 namespace lathesim::sim {
 

@@ -4,7 +4,7 @@
 
 #include "geometry/convex_overlap.hpp"
 #include "sim/move_sweep.hpp"
-#include "sim/simulate.hpp"
+#include "sim/cut_rules.hpp"
 
 namespace lathesim::sim {
 namespace {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "geometry/meridian_profile.hpp"
+#include "sim/cut_rules.hpp"
 
 namespace lathesim::sim {
 namespace {

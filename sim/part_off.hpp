@@ -17,7 +17,7 @@
 
 #include "geometry/revolved_region.hpp"
 #include "interp/base/move.hpp"
-#include "sim/simulate.hpp"
+#include "sim/simulation_result.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::sim {

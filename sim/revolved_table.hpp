@@ -174,6 +174,19 @@ class RevolvedTable {
     std::uint8_t copyBits;
   };
 
+  // A write's working parts (revolved_table_write.cpp).
+  struct WritePass;
+  struct Candidates;
+  struct Place;
+  struct WriteScratch;
+  struct Ghost;
+  static WriteScratch& threadScratch();
+  void reachedChunks(const WritePass& pass, double rhoMid, std::vector<int>& reached) const;
+  void writeBinRange(WritePass& pass, std::size_t binBegin, std::size_t binEnd);
+  void writeChunk(WritePass& pass, int c, const Place& place, std::vector<Candidates>& found, MeridianBox& flips);
+  void clearGhosts(WritePass& pass, double& lost);
+  void findGhosts(WritePass& pass, std::vector<Ghost>& ghosts, std::vector<std::pair<Ghost, VoxelIndex>>& airVoxels) const;
+
   int classOf(int i, int j) const;
   const float* cellsOf(int c, int chunk, std::uint8_t& activeBits) const;
   void open(int c, int chunk, ChunkCells& cells);

@@ -1,94 +1,33 @@
 #pragma once
-// Runs a toolpath through the stock: every move sweeps its tool's outline from start to end
-// and removes what it covers — revolved about the spindle axis while the spindle turns, along
-// the helix for a thread move (geometry/helical_sweep.hpp), and as a straight slot the
-// insert's thickness wide when the spindle stands (geometry/straight_slot.hpp).
+// The simulation: a toolpath run through the stock. Every move sweeps its tool's outline from
+// start to end and removes what it covers — revolved about the spindle axis while the spindle
+// turns, along the helix for a thread move (geometry/helical_sweep.hpp), and as a straight
+// slot the insert's thickness wide when the spindle stands (geometry/straight_slot.hpp).
+//
+// One entry, in two forms: simulate() cuts a whole toolpath; a Simulation is fed one move at a
+// time (a MoveSink), so that the moves can come straight from the interpreter and a long
+// program's toolpath is never held. simulate() is a Simulation fed every move. What either
+// found is a SimulationResult (simulation_result.hpp).
 
+#include <cstddef>
+#include <deque>
 #include <functional>
 #include <map>
-#include <memory>
 #include <optional>
-#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/base/move.hpp"
+#include "interp/base/move_sink.hpp"
+#include "sim/cut_history.hpp"
 #include "sim/holder_check.hpp"
+#include "sim/part_off.hpp"
+#include "sim/simulation_result.hpp"
 #include "sim/stock.hpp"
+#include "sim/thread_history.hpp"
 
 namespace lathesim::sim {
-
-/// A crash: something that must never touch the material or the chuck did.
-struct Collision {
-  int line = 0;
-  int column = 0;
-  std::string kind;  // "rapid_into_stock", "holder_into_stock", "into_chuck"
-  double volumeMm3 = 0.0;
-  int tool = 0;    // the tool of the move that collided
-  RZ at{0, 0};     // where the tool stood (radius, Z) at the end of the block's first colliding
-                   // move: where the machine would have stopped, the tool in what it hit
-};
-
-struct BlockRemoval {
-  int block = 0;  // ordinal in the program
-  int line = 0;
-  int column = 0;
-  double removedMm3 = 0.0;
-  double timeS = 0.0;  // the machine time of the block's moves
-};
-
-/// Something the program does that a machine would let it do, but a machinist would not
-/// want: cutting with the spindle stopped, a cycle started inside the material.
-struct SimulationWarning {
-  int line = 0;
-  int column = 0;
-  std::string message;
-};
-
-/// A cut that parted the bar: after it, some material no longer hung together with the
-/// material at the chuck's end (Stock::takeLoosePieces), and fell.
-struct PartOff {
-  int line = 0;    // the block whose cut parted it
-  int column = 0;
-  double zMm = 0;  // Z of that cut's deepest point (its move ending nearest the axis, or past it)
-  double volumeMm3 = 0;  // the piece that fell, measured on its level set
-  std::optional<interp::PartsCatcherCommand> catcher;  // the parts catcher command in force, if any
-};
-
-/// A piece a cut set loose that the program did not part off on purpose (part_off.hpp): a skin,
-/// a ring, a chip far smaller than what stays. It falls (or flies off), and is in no output
-/// mesh; the part is still what the chuck holds.
-struct LoosePiece {
-  int line = 0;  // the block whose cut set it loose
-  int column = 0;
-  double volumeMm3 = 0;  // measured on its level set
-  // Its extent in the meridian section (mm): radii and Z of its material.
-  double rInnerMm = 0, rOuterMm = 0, zLowMm = 0, zHighMm = 0;
-  double beyondMm3 = 0;  // the material that stays, at Z from the piece's lowest Z on
-};
-
-struct SimulationResult {
-  std::vector<BlockRemoval> blocks;  // blocks that made moves (a dwell counts), in program order
-  std::vector<Collision> collisions;
-  std::vector<SimulationWarning> warnings;
-  std::vector<PartOff> partOffs;     // in program order: the first piece is the part
-  std::vector<LoosePiece> loosePieces;  // pieces set loose that are no part-off, in program order
-  std::shared_ptr<const Stock> part;  // the first piece's level set, taken out of the stock; null
-                                      // when nothing parted off (the stock is the part)
-};
-
-/// Adds a collision, or grows the block's own (same line and column) of the same kind when the
-/// block's are the last ones: one collision for the two legs of a dog-leg rapid, or for the
-/// moves of one cycle.
-void recordCollision(std::vector<Collision>& collisions, const interp::Move& move, const char* kind, double volumeMm3);
-
-/// A rapid that removes more than this many voxels' worth of material is a collision;
-/// below it, the removal is rounding at a surface the rapid merely grazes.
-inline constexpr double kCollisionVoxels = 10.0;
-
-/// A cycle start point deeper in the material than this many voxels is inside the stock
-/// (one voxel: points on the surface, such as a corner just cut, are not).
-inline constexpr double kInsideStockVoxels = 1.0;
 
 using ToolOutlines = std::map<int, ConvexPolygon>;  // tool number → outline (radial, axial) mm
 /// tool number → the insert's thickness across the tool's plane (mm): what a cut with the
@@ -103,6 +42,14 @@ using BlockProgress = std::function<void(int blocksDone, int blocksTotal)>;
 using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMove, const Stock& stock,
                                        const std::vector<Collision>& collisions)>;
 
+/// What a simulation may be given besides the toolpath, the tools and the stock.
+struct SimulationOptions {
+  BlockProgress progress;                   // told as blocks are finished
+  const CollisionChecks* checks = nullptr;  // holder and chuck collisions (holder_check.hpp), when given
+  ToolThicknesses thicknesses;              // the inserts' thicknesses, for cuts with the spindle stopped
+  CutObserver observer;                     // told of each group of moves before it is cut
+};
+
 /// Removes every move's swept region from `stock` in program order. Consecutive feeds and
 /// arcs of one block made with the spindle turning are united, revolved, and written once (a
 /// cycle's cut and retract overlap heavily); each rapid is written on its own so that a rapid
@@ -113,20 +60,57 @@ using CutObserver = std::function<void(std::size_t firstMove, std::size_t endMov
 /// write that removed material, what came loose is taken out of `stock` (part_off.hpp): the
 /// stock is then the stub left in the chuck, and the first piece is the result's `part`.
 SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress = {});
+                          const SimulationOptions& options = {});
 
-/// The same, and each move is also checked for holder and chuck collisions (holder_check.hpp)
-/// when `checks` is given.
-SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress, const CollisionChecks* checks);
+/// The same, fed one move at a time.
+class Simulation final : public interp::MoveSink {
+ public:
+  /// Cuts `stock`. `recorded` is the toolpath the moves belong to, whose cycle starts, parts
+  /// catcher commands and block count are read as the moves come (its own moves are not): a
+  /// whole toolpath, or the one the interpreter fills as it runs (recordingIn rebinds it).
+  Simulation(const interp::Toolpath& recorded, ToolOutlines tools, Stock& stock, SimulationOptions options = {});
 
-/// The same, with the tools' insert thicknesses for cuts made with the spindle stopped, and
-/// telling `observer` (if set) of each group of moves before it is cut.
-SimulationResult simulate(const interp::Toolpath& toolpath, const ToolOutlines& tools, Stock& stock,
-                          const BlockProgress& progress, const CollisionChecks* checks,
-                          const ToolThicknesses& thicknesses, const CutObserver& observer = {});
+  /// Each block's row to `sink` once the block is finished, instead of into the result's
+  /// blocks (which finish then leaves empty). Before the first move.
+  void sendBlocksTo(std::function<void(const BlockRemoval&)> sink) { blockSink_ = std::move(sink); }
 
-/// Whether the spindle turns during `move` (M03/M04 in force and S > 0).
-bool spindleTurns(const interp::Move& move);
+  void recordingIn(const interp::Toolpath& toolpath) override { recorded_ = &toolpath; }
+  /// The next move of the toolpath: the group before it is cut once the move cannot join it.
+  void take(interp::Move move) override;
+  /// Cuts the last group; what the whole toolpath did. `recorded` is the toolpath as the
+  /// interpreter left it (the one recorded into may be gone). Once, after the last move.
+  SimulationResult finish(const interp::Toolpath& recorded);
+
+ private:
+  /// Writes group_ into the stock and clears it.
+  void cutGroup();
+  /// block_ to the sink or the result.
+  void finishBlock();
+  /// Checks the cycle start made by this run of `block`, if it made one.
+  void checkCycleStart(int block);
+
+  const interp::Toolpath* recorded_;
+  ToolOutlines tools_;
+  Stock& stock_;
+  SimulationOptions options_;
+
+  SimulationResult result_;
+  std::function<void(const BlockRemoval&)> blockSink_;
+  std::optional<BlockRemoval> block_;    // the row of the block being cut
+  std::vector<interp::Move> group_;      // the moves written together next
+  std::size_t groupFirst_ = 0;           // the toolpath's index of group_'s first move
+  std::optional<interp::Move> previous_;  // the last move cut (a thread pass may continue it)
+  // Cycle starts not yet checked, by block ordinal, each block's in the order they were made;
+  // the first startsSeen_ of recorded_->cycleStarts are in here or checked.
+  std::unordered_map<int, std::deque<std::size_t>> pendingStarts_;
+  std::size_t startsSeen_ = 0;
+  int spindleWarnedBlock_ = -1;  // one spindle warning per block
+  int threadWarnedBlock_ = -1;   // one thread-start warning per block
+  RZ frame_{0, 0};               // the G50 frame of the moves so far
+  bool checkShift_ = false;      // after G50 moved it: until the first cut, or a warning
+  PartOffWatch partOffs_;
+  CutHistory history_;           // what turning writes removed: bounds where the next can change anything
+  ThreadHistory threads_;        // the same for thread passes
+};
 
 }  // namespace lathesim::sim

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <string>
 
+#include "sim/cut_rules.hpp"
+
 namespace lathesim::sim {
 namespace {
 

@@ -2,7 +2,7 @@
 // The warnings the simulation gives, worded in one place (see SimulationWarning).
 
 #include "interp/base/move.hpp"
-#include "sim/simulate.hpp"
+#include "sim/simulation_result.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::sim {

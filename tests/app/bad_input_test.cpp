@@ -20,15 +20,11 @@ namespace {
 namespace fs = std::filesystem;
 using interp::linesOf;
 using test::ProcessOutcome;
+using test::lathesim;
 using test::ScratchDir;
 using test::writeFile;
 
-const fs::path kBinary = LATHESIM_BINARY;
 const fs::path kPartsDir = LATHESIM_PARTS_DIR;
-
-ProcessOutcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
-  return test::runProcess(kBinary, args, scratch);
-}
 
 std::string part(const std::string& name, const std::string& file) { return (kPartsDir / name / file).string(); }
 

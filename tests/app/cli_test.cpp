@@ -32,18 +32,13 @@ namespace {
 namespace fs = std::filesystem;
 using interp::linesOf;
 
-const fs::path kBinary = LATHESIM_BINARY;
 const fs::path kPartsDir = LATHESIM_PARTS_DIR;
 
 using test::readFile;
+using test::lathesim;
 using test::writeFile;
 using TempDir = test::ScratchDir;
 using Outcome = test::ProcessOutcome;
-
-/// Runs lathesim with `args`, capturing stdout and stderr through files in `scratch`.
-Outcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
-  return test::runProcess(kBinary, args, scratch);
-}
 
 /// The same bound as parts_test: 5 % of a voxel layer over the bar's whole surface.
 double volumeToleranceMm3(double diameterMm, double lengthMm, double voxelMm) {

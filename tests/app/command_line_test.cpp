@@ -16,14 +16,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using test::readFile;
+using test::lathesim;
 using test::writeFile;
 
-const fs::path kBinary = LATHESIM_BINARY;
 const fs::path kPartsDir = LATHESIM_PARTS_DIR;
-
-test::ProcessOutcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
-  return test::runProcess(kBinary, args, scratch);
-}
 
 std::string part(const std::string& name, const std::string& file) { return (kPartsDir / name / file).string(); }
 

@@ -33,10 +33,10 @@ using Json = nlohmann::json;
 using render::test::Png;
 using render::test::Rgb;
 using test::readFile;
+using test::lathesim;
 using test::ScratchDir;
 using test::writeFile;
 
-const fs::path kBinary = LATHESIM_BINARY;
 const fs::path kPartsDir = LATHESIM_PARTS_DIR;
 const fs::path kSetup = kPartsDir / "seed001-taper-r20" / "setup.toml";
 const fs::path kDrawing = kPartsDir / "seed001-taper-r20" / "drawing.toml";
@@ -47,10 +47,6 @@ std::string program(const std::string& rapidZ) {
   return "M03 S500;\nG00 X54 Z5;\nG00 X30 Z2;\nG00 Z" + rapidZ + ";\nG00 X54 Z5;\nM30;\n";
 }
 
-test::ProcessOutcome lathesim(const ScratchDir& dir, const std::vector<std::string>& args) {
-  return test::runProcess(kBinary, args, dir.path());
-}
-
 std::vector<std::string> runArgs(const fs::path& nc, const fs::path& out, const fs::path& setup = kSetup) {
   return {"run", nc.string(), "--setup", setup.string(), "--out", out.string(), "--voxel", "0.25"};
 }
@@ -59,7 +55,7 @@ TEST(Crash, ARapidIntoTheFaceIsAnErrorAtItsBlockExitsFourAndStillWritesTheOutput
   ScratchDir dir("crash-run");
   const fs::path nc = dir.path() / "rapid.nc", out = dir.path() / "out";
   writeFile(nc, program("-1"));
-  const auto outcome = lathesim(dir, runArgs(nc, out));
+  const auto outcome = lathesim(runArgs(nc, out), dir.path());
   EXPECT_EQ(outcome.status, 4) << outcome.err;
   // The interpreter's diagnostic form: file:line:col, the block, a caret under its start.
   const std::string located = nc.string() + ":4:1: error: rapid into the stock removes ";
@@ -94,7 +90,7 @@ TEST(Crash, CollisionsWarnKeepsExitZeroWithALocatedWarning) {
   writeFile(nc, program("-1"));
   auto args = runArgs(nc, dir.path() / "out");
   args.insert(args.end(), {"--collisions", "warn"});
-  const auto warned = lathesim(dir, args);
+  const auto warned = lathesim(args, dir.path());
   EXPECT_EQ(warned.status, 0) << warned.err;
   EXPECT_NE(warned.err.find(nc.string() + ":4:1: warning: rapid into the stock removes "), std::string::npos)
       << warned.err;
@@ -105,20 +101,20 @@ TEST(Crash, CollisionsWarnKeepsExitZeroWithALocatedWarning) {
   // The setup's [sim] collisions says the same; the command line overrides it.
   const fs::path setup = dir.path() / "setup.toml";
   writeFile(setup, readFile(kSetup) + "\n[sim]\ncollisions = \"warn\"\n");
-  EXPECT_EQ(lathesim(dir, runArgs(nc, dir.path() / "setup-warn", setup)).status, 0);
+  EXPECT_EQ(lathesim(runArgs(nc, dir.path() / "setup-warn", setup), dir.path()).status, 0);
   auto error = runArgs(nc, dir.path() / "setup-error", setup);
   error.insert(error.end(), {"--collisions", "error"});
-  EXPECT_EQ(lathesim(dir, error).status, 4);
+  EXPECT_EQ(lathesim(error, dir.path()).status, 4);
 
   const fs::path bad = dir.path() / "bad.toml";
   writeFile(bad, readFile(kSetup) + "\n[sim]\ncollisions = \"maybe\"\n");
-  const auto refused = lathesim(dir, runArgs(nc, dir.path() / "bad-out", bad));
+  const auto refused = lathesim(runArgs(nc, dir.path() / "bad-out", bad), dir.path());
   EXPECT_EQ(refused.status, 1);
   EXPECT_NE(refused.err.find("sim.collisions must be \"error\""), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(dir.path() / "bad-out"));
   auto badOption = runArgs(nc, dir.path() / "bad-option");
   badOption.insert(badOption.end(), {"--collisions", "ignore"});
-  EXPECT_EQ(lathesim(dir, badOption).status, 2);
+  EXPECT_EQ(lathesim(badOption, dir.path()).status, 2);
 }
 
 // check exits 4 for a crash, over 3 (the part is out of tolerance too: the taper was never cut).
@@ -126,12 +122,12 @@ TEST(Crash, CheckExitsFourForACrashOverOutOfTolerance) {
   ScratchDir dir("crash-check");
   const fs::path nc = dir.path() / "rapid.nc";
   writeFile(nc, program("-1"));
-  const auto crashed = lathesim(dir, {"check", nc.string(), "--setup", kSetup.string(), "--target", kDrawing.string(),
-                                      "--out", (dir.path() / "out").string(), "--voxel", "0.5"});
+  const auto crashed = lathesim({"check", nc.string(), "--setup", kSetup.string(), "--target", kDrawing.string(),
+                                      "--out", (dir.path() / "out").string(), "--voxel", "0.5"}, dir.path());
   EXPECT_EQ(crashed.status, 4) << crashed.err;
   EXPECT_TRUE(fs::exists(dir.path() / "out" / "report.json"));
-  const auto warned = lathesim(dir, {"check", nc.string(), "--setup", kSetup.string(), "--target", kDrawing.string(),
-                                     "--out", (dir.path() / "warn").string(), "--voxel", "0.5", "--collisions", "warn"});
+  const auto warned = lathesim({"check", nc.string(), "--setup", kSetup.string(), "--target", kDrawing.string(),
+                                     "--out", (dir.path() / "warn").string(), "--voxel", "0.5", "--collisions", "warn"}, dir.path());
   EXPECT_EQ(warned.status, 3) << warned.err;
 }
 
@@ -149,7 +145,7 @@ Eigen::Vector2i crashPixel(const fs::path& nc, render::PartView view) {
   job::JobRequest request;
   request.program = nc;
   request.setup = kSetup;
-  const std::optional<job::Job> loaded = job::loadJob(request);
+  const std::optional<job::Job> loaded = job::loadJob(request).value;
   EXPECT_TRUE(loaded);
   if (!loaded) return {0, 0};
   render::PartImageOptions options = partPictureOptions(loaded->setup, loaded->toolpath, "", kWidthPx, kHeightPx);
@@ -178,7 +174,7 @@ TEST(Crash, EveryPictureAndTheVideoMarkTheCrashWhereItHappened) {
     auto args = runArgs(nc, out);
     args.insert(args.end(), {"--views", "front,section", "--size", "800x600", "--export", "glb"});
     if (video) args.insert(args.end(), {"--animate", "--frames", "8", "--video-size", "800x600"});
-    const auto outcome = lathesim(dir, args);
+    const auto outcome = lathesim(args, dir.path());
     ASSERT_EQ(outcome.status, crash ? 4 : 0) << outcome.err;
     for (const auto& [file, view] : {std::pair{"part.png", render::PartView::Iso},
                                      std::pair{"part-front.png", render::PartView::Front},

@@ -30,6 +30,7 @@
 #include "interp/output/toolpath_csv.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock.hpp"
+#include "tests/support/lathesim_process.hpp"
 
 namespace lathesim::app {
 namespace {
@@ -46,12 +47,7 @@ std::vector<std::string> partNames() {
   return names;
 }
 
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::readFile;
 
 /// A collision a part is meant to have (a crash worked out by hand), `[[collision]]`.
 struct ExpectedCollision {
@@ -147,7 +143,7 @@ Simulated simulatePart(const job::Setup& setup, const interp::Toolpath& toolpath
   Simulated out;
   out.stockVolumeMm3 = stock.volumeMm3();
   const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck too
-  out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {}, &checks);
+  out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {{}, &checks, {}, {}});
   out.stubVolumeMm3 = out.finalVolumeMm3 = stock.volumeMm3();
   for (const auto& off : out.result.partOffs) out.finalVolumeMm3 += off.volumeMm3;
   return out;
@@ -254,11 +250,16 @@ TEST_P(Part, StreamsTheSameToolpathAsItHolds) {
   }
 
   const job::JobRequest request{kPartsDir / part / "program.nc", kPartsDir / part / "setup.toml", {}, {}, {}};
-  const std::optional<job::Job> held = job::loadJob(request);
+  const job::Reported<std::optional<job::Job>> heldJob = job::loadJob(request);
   std::vector<interp::Move> streamedMoves;
   interp::MoveCollector sink(streamedMoves);
-  const std::optional<job::Job> streamed = job::loadJob(request, sink);
+  const job::Reported<std::optional<job::Job>> streamedJob = job::loadJob(request, sink);
+  const std::optional<job::Job>& held = heldJob.value;
+  const std::optional<job::Job>& streamed = streamedJob.value;
   ASSERT_EQ(held.has_value(), streamed.has_value());
+  ASSERT_EQ(heldJob.diagnostics.size(), streamedJob.diagnostics.size());
+  for (std::size_t i = 0; i < heldJob.diagnostics.size(); ++i)
+    EXPECT_EQ(interp::format(heldJob.diagnostics[i]), interp::format(streamedJob.diagnostics[i]));
   if (!held) return;
   EXPECT_TRUE(streamed->toolpath.moves.empty());
   interp::Toolpath fromSink = streamed->toolpath;

@@ -33,6 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using test::readFile;
+using test::lathesim;
 using test::ScratchDir;
 using test::writeFile;
 
@@ -46,10 +47,6 @@ std::string part(const std::string& name, const std::string& file) { return (kPa
 std::string partJob(const std::string& name, const std::string& partName, const std::string& more = "") {
   return "[[job]]\nname = \"" + name + "\"\nprogram = \"" + part(partName, "program.nc") + "\"\nsetup = \"" +
          part(partName, "setup.toml") + "\"\n" + more + "\n";
-}
-
-test::ProcessOutcome lathesim(const ScratchDir& dir, const std::vector<std::string>& args) {
-  return test::runProcess(kBinary, args, dir.path());
 }
 
 Json jsonFile(const fs::path& file) { return Json::parse(readFile(file)); }
@@ -121,7 +118,7 @@ class MixedBatch : public ::testing::Test {
   static test::ProcessOutcome run(std::vector<std::string> extra, const std::string& manifest = "batch.toml") {
     std::vector<std::string> args{"batch", (dir_->path() / manifest).string(), "--out", out().string(), "--jobs", "2"};
     args.insert(args.end(), extra.begin(), extra.end());
-    return lathesim(*dir_, args);
+    return lathesim(args, dir_->path());
   }
 
   static ScratchDir* dir_;
@@ -307,7 +304,7 @@ TEST_F(MixedBatch, ShardsMergedAreTheWholeBatch) {
   std::vector<std::string> args{"batch", "merge"};
   args.insert(args.end(), files.begin(), files.end());
   args.insert(args.end(), {"--out", merged.string()});
-  const test::ProcessOutcome outcome = lathesim(*dir_, args);
+  const test::ProcessOutcome outcome = lathesim(args, dir_->path());
   EXPECT_EQ(outcome.status, 1) << outcome.out << outcome.err;
   Json whole = withoutResumed(*summary_);
   for (auto& row : whole.at("jobs")) row["folder"] = "../out/" + row.at("folder").get<std::string>();
@@ -407,7 +404,7 @@ TEST(BatchCollision, ACrashIsCountedApartAndTheBatchExitsFour) {
   writeFile(dir.path() / "batch.toml",
             "[defaults]\nvoxel = 0.5\n\n" + partJob("dogleg", "dogleg-groove-retract") + partJob("arc-fillet", "arc-fillet"));
   const fs::path out = dir.path() / "out";
-  const auto outcome = lathesim(dir, {"batch", (dir.path() / "batch.toml").string(), "--out", out.string()});
+  const auto outcome = lathesim({"batch", (dir.path() / "batch.toml").string(), "--out", out.string()}, dir.path());
   EXPECT_EQ(outcome.status, 4) << outcome.out << outcome.err;
   const Json summary = jsonFile(out / "summary.json");
   EXPECT_EQ(summary.at("exit_status"), 4);
@@ -476,7 +473,7 @@ TEST(BatchInterrupted, ResumesWithoutRedoingFinishedJobs) {
   EXPECT_EQ(test::processesLeftMentioning(out.string(), std::chrono::seconds(5)), std::vector<std::string>{});
 
   // To the end: the stamped jobs are taken as they are, the rest run.
-  const test::ProcessOutcome last = lathesim(dir, args);
+  const test::ProcessOutcome last = lathesim(args, dir.path());
   EXPECT_EQ(last.status, 0) << last.out << last.err;
   const std::set<std::string> done = waitForStamps(out, 4, std::chrono::seconds(0));
   EXPECT_EQ(done.size(), 4u);

@@ -53,7 +53,7 @@ void expand(benchmark::State& state, bool stated) {
   }
   for (auto _ : state) {
     interp::ToolpathCsvSpool csv;
-    if (!job::loadJob(request, csv)) state.SkipWithError("the program did not run");
+    if (!job::loadJob(request, csv).value) state.SkipWithError("the program did not run");
     benchmark::DoNotOptimize(csv);
   }
 }

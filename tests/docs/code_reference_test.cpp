@@ -2,6 +2,7 @@
 // now, and what the generator writes must say what the interpreter reads.
 
 #include "tests/docs/code_reference.hpp"
+#include "tests/support/lathesim_process.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +13,7 @@
 namespace lathesim::docs {
 namespace {
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::readFile;
 
 // The lines of `section`: from its heading to the next heading of the same or a higher level.
 std::string section(const std::string& text, const std::string& heading) {

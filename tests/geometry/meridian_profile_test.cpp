@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tests/support/cylinder_section.hpp"
+
 namespace lathesim {
 namespace {
 
@@ -40,28 +42,11 @@ TEST(MeridianProfile, OutlineEndingWhereItStartsIsABoredPart) {
   EXPECT_NEAR(ring.signedDistance({12, -15}).signedMm, -2.0, 1e-12);
 }
 
-/// φ of the rectangle r ≤ 10, −5 ≤ z ≤ 5 (exact signed distance), sampled every `h` from
-/// z = −8, clamped at ±3h as a narrow band is.
-SampledSection rectangleSection(double h) {
-  SampledSection s;
-  s.stepMm = h;
-  s.zFirstMm = -8;
-  s.rCount = static_cast<int>(14 / h);
-  s.zCount = static_cast<int>(16 / h);
-  s.clampMm = 3 * h;
-  for (int k = 0; k < s.zCount; ++k)
-    for (int i = 0; i < s.rCount; ++i) {
-      const double dr = i * h - 10, dz = std::abs(s.zFirstMm + k * h) - 5;
-      const double outside = std::hypot(std::max(dr, 0.0), std::max(dz, 0.0));
-      const double phi = outside > 0 ? outside : std::max(dr, dz);
-      s.phi.push_back(static_cast<float>(std::clamp(phi, -3 * h, 3 * h)));
-    }
-  return s;
-}
+using test::cylinderSection;
 
 TEST(MeridianProfile, SectionSurfaceLiesOnTheZeroCrossings) {
   const double h = 0.3;  // the rectangle's sides fall between samples
-  const MeridianProfile part = MeridianProfile::fromSection(rectangleSection(h));
+  const MeridianProfile part = MeridianProfile::fromSection(cylinderSection(h));
   for (const Segment& s : part.surface())
     for (const RZ& p : {s.a, s.b}) {
       // Every vertex is on a side (r = 10 or |z| = 5), up to float rounding.

@@ -35,7 +35,7 @@ std::vector<sim::Collision> collisionsOf(std::string_view program) {
   sim::Stock stock(setup.setup->stock, 0.25);
   sim::ToolOutlines outlines{{1, setup.setup->tools[0].outline}};
   const sim::CollisionChecks checks = collisionChecksOf(*setup.setup);
-  return sim::simulate(run.toolpath, outlines, stock, {}, &checks).collisions;
+  return sim::simulate(run.toolpath, outlines, stock, {{}, &checks, {}, {}}).collisions;
 }
 
 TEST(ToolCollisions, ShallowTurningPassTouchesNothing) {

@@ -7,26 +7,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tests/support/cylinder_section.hpp"
+
 namespace lathesim::measure {
 namespace {
 
-/// φ of the solid r ≤ 10, −5 ≤ z ≤ 5 (exact signed distance), sampled every `h` from
-/// z = −8 out to r 14, clamped at ±3h as a narrow band is.
-SampledSection cylinderSection(double h) {
-  SampledSection s;
-  s.stepMm = h;
-  s.zFirstMm = -8;
-  s.rCount = static_cast<int>(14 / h);
-  s.zCount = static_cast<int>(16 / h);
-  s.clampMm = 3 * h;
-  for (int k = 0; k < s.zCount; ++k)
-    for (int i = 0; i < s.rCount; ++i) {
-      const double dr = i * h - 10, dz = std::abs(s.zFirstMm + k * h) - 5;
-      const double outside = std::hypot(std::max(dr, 0.0), std::max(dz, 0.0));
-      s.phi.push_back(static_cast<float>(std::clamp(outside > 0 ? outside : std::max(dr, dz), -3 * h, 3 * h)));
-    }
-  return s;
-}
+using test::cylinderSection;
 
 // A part measured against itself (as --target-program with the same program): nothing.
 TEST(Deviation, SectionAgainstItselfIsZeroEverywhere) {

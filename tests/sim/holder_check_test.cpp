@@ -63,7 +63,7 @@ TEST(HolderCheck, RapidAlongsideTheBarIntoTheJawsIsIntoChuck) {
   // Z −50..15, meets them in r 35..45, Z −50..−40: area 100, centroid r 40 → 100·2π·40 =
   // 25132.7 mm³, the larger, which is reported.
   path.moves.push_back(move(interp::MoveKind::Rapid, {30, 5}, {30, -50}, 0, 7));
-  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {}, &checks);
+  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {{}, &checks, {}, {}});
   ASSERT_EQ(result.collisions.size(), 1u);
   EXPECT_EQ(result.collisions[0].kind, "into_chuck");
   EXPECT_EQ(result.collisions[0].line, 7);
@@ -81,14 +81,14 @@ TEST(HolderCheck, ArcDippingIntoTheJawsIsFollowedNotCutShort) {
   interp::Move arc = move(interp::MoveKind::ArcCW, {50, -30}, {50, -70}, 0, 12);
   arc.center = RZ(50, -50);
   path.moves.push_back(arc);
-  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {}, &checks);
+  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {{}, &checks, {}, {}});
   ASSERT_EQ(result.collisions.size(), 1u);
   EXPECT_EQ(result.collisions[0].kind, "into_chuck");
   EXPECT_EQ(result.collisions[0].line, 12);
   // A straight move along the chord touches nothing.
   path.moves[0].kind = interp::MoveKind::Feed;
   Stock fresh(bar, 0.25);
-  EXPECT_TRUE(simulate(path, {{1, checks.cutters.at(1)}}, fresh, {}, &checks).collisions.empty());
+  EXPECT_TRUE(simulate(path, {{1, checks.cutters.at(1)}}, fresh, {{}, &checks, {}, {}}).collisions.empty());
 }
 
 TEST(HolderCheck, HolderDrivenIntoTheBarIsMeasuredNotCut) {
@@ -104,7 +104,7 @@ TEST(HolderCheck, HolderDrivenIntoTheBarIsMeasuredNotCut) {
   // π(25² − 20.2²)·9.8 = 6679.7 mm³.
   path.moves.push_back(move(interp::MoveKind::Feed, {15, 5}, {15, -10}, 0, 9));
   const double before = stock.volumeMm3();
-  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {}, &checks);
+  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {{}, &checks, {}, {}});
   ASSERT_EQ(result.collisions.size(), 1u);
   EXPECT_EQ(result.collisions[0].kind, "holder_into_stock");
   EXPECT_EQ(result.collisions[0].line, 9);
@@ -122,7 +122,7 @@ TEST(HolderCheck, HolderAboveTheBarIsNoCollision) {
   path.blockCount = 1;
   // A 3 mm deep turning pass at r 22: the holder (from r 27) clears the bar's r 25.
   path.moves.push_back(move(interp::MoveKind::Feed, {22, 2}, {22, -30}, 0, 4));
-  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {}, &checks);
+  const SimulationResult result = simulate(path, {{1, checks.cutters.at(1)}}, stock, {{}, &checks, {}, {}});
   EXPECT_TRUE(result.collisions.empty()) << result.collisions[0].kind << " " << result.collisions[0].volumeMm3;
 }
 

@@ -124,7 +124,7 @@ TEST(PartOff, ASlotCutWithTheSpindleStoppedPartsOnlyWhenItSevers) {
   const double voxel = 0.25;
   Stock stock(bar, voxel);
   const SimulationResult through = simulate(toolpathOf("G99\nG00 X44. Z-20.\nG01 X-44. F0.05\nM30\n"),
-                                            tools(), stock, {}, nullptr, ToolThicknesses{{1, 50.0}});
+                                            tools(), stock, {{}, nullptr, ToolThicknesses{{1, 50.0}}, {}});
   ASSERT_EQ(through.partOffs.size(), 1u);
   EXPECT_NEAR(through.partOffs[0].volumeMm3, 400 * M_PI * 20, tolerance(surface(20, 0, 20), voxel));
   EXPECT_NEAR(stock.volumeMm3(), 400 * M_PI * 27, tolerance(surface(20, 0, 27), voxel));

@@ -18,6 +18,7 @@
 #include "interp/interpreter.hpp"
 #include "sim/cut_history.hpp"
 #include "sim/move_sweep.hpp"
+#include "sim/cut_rules.hpp"
 #include "sim/revolved_table.hpp"
 #include "sim/simulate.hpp"
 #include "test_moves.hpp"

@@ -1,8 +1,8 @@
-// A simulation fed straight from the interpreter (sim/simulation.hpp), its block rows spooled
+// A simulation fed straight from the interpreter (sim/simulate.hpp), its block rows spooled
 // (sim/block_rows.hpp), finds what simulate() finds in the whole toolpath: the cycle starts
 // and thread passes it reads beside the moves are the ones the interpreter records as it goes.
 
-#include "sim/simulation.hpp"
+#include "sim/simulate.hpp"
 
 #include <gtest/gtest.h>
 

@@ -184,7 +184,7 @@ TEST(StraightSlot, FeedWithTheSpindleStoppedCutsASlotAtItsAngle) {
     plunge.spindleAngleDeg = 90;
     path.moves.push_back(plunge);
     const std::vector<RZ> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-    simulate(path, {{1, *ConvexPolygon::fromOutline(square).polygon}}, stock, {}, nullptr, {{1, 3.0}});
+    simulate(path, {{1, *ConvexPolygon::fromOutline(square).polygon}}, stock, {{}, nullptr, {{1, 3.0}}, {}});
     const double y = 1.5;
     const double chord = y * std::sqrt(400 - y * y) + 400 * std::asin(y / 20);  // ∫_{−y}^{y} √(400 − t²) dt
     const double exact = 4 * (chord - 12 * 2 * y);

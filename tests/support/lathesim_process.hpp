@@ -79,6 +79,14 @@ inline ProcessOutcome runProcess(const fs::path& binary, const std::vector<std::
   return outcome;
 }
 
+#ifdef LATHESIM_BINARY
+/// Runs the lathesim command the tests were built with (the target's LATHESIM_BINARY) with
+/// `args`, capturing stdout and stderr through files in `scratch`.
+inline ProcessOutcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
+  return runProcess(LATHESIM_BINARY, args, scratch);
+}
+#endif
+
 struct MeasuredOutcome {
   int status = -1;     // the exit status, or -1 if the process did not exit normally
   double peakMb = 0;   // its peak resident memory, as the kernel counted it (wait4's ru_maxrss)
