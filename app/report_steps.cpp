@@ -250,7 +250,8 @@ constexpr const char* kScript = R"js(
 std::string stepSection(const Json& steps, const Json& report) {
   if (steps.is_null())
     return "<h2 id=\"steps\">Step through the program</h2>\n<p class=\"hint\">Left out: the program runs more than " +
-           std::to_string(StepRecording::kMaxSteps) + " blocks, too many for one page.</p>\n";
+           std::to_string(StepRecording::kMaxSteps) + " blocks or " + std::to_string(StepRecording::kMaxMoves) +
+           " moves, too many to keep while it runs.</p>\n";
   if (steps.at("steps").empty()) return "";
   Json data = steps;
   Json collisions = Json::array(), warnings = Json::array();

@@ -62,7 +62,12 @@ double rounded(double value, double step) { return std::round(value / step) * st
 
 void StepRecording::take(interp::Move move) {
   const std::size_t index = moves_++;
-  if (moves_ > kMaxSteps * 4 || steps_.size() > kMaxSteps) return;  // json() leaves the stepping out
+  if (leftOut_) return;
+  if (moves_ > kMaxMoves || steps_.size() > kMaxSteps) {  // json() leaves the stepping out
+    leftOut_ = true;
+    steps_ = {}, path_ = {}, sections_ = {};
+    return;
+  }
   if (steps_.empty() || steps_.back().block != move.block || steps_.back().endMove != index)
     steps_.push_back({move.block, move.line, move.tool, index, index});
   Step& step = steps_.back();
@@ -78,7 +83,7 @@ void StepRecording::take(interp::Move move) {
 }
 
 void StepRecording::take(const sim::Stock& stock, std::size_t afterMove, bool always) {
-  if (!always && !sections_.empty() && afterMove < sections_.back().afterMove + everyMoves_) return;
+  if (leftOut_ || (!always && !sections_.empty() && afterMove < sections_.back().afterMove + everyMoves_)) return;
   const auto started = std::chrono::steady_clock::now();
   const double besides = std::chrono::duration<double>(started - started_).count() - secondsSpent_;
   if (!always && secondsSpent_ > kFreeSeconds && secondsSpent_ > kTimeShare * besides) return;  // over its share
@@ -115,7 +120,7 @@ sim::CutObserver StepRecording::observer() {
 void StepRecording::finish(const sim::Stock& stock) { take(stock, moves_, true); }
 
 Json StepRecording::json(const sim::BlockRows& rows, const job::Setup& setup, const RZ& start) const {
-  if (steps_.size() > kMaxSteps || moves_ > kMaxSteps * 4) return nullptr;
+  if (leftOut_) return nullptr;
   // The sections some step shows (the last taken at or before its end; a block of several
   // groups had one taken before each), the bar's first; each as its change from the one before.
   std::vector<std::size_t> shown{0};

@@ -13,7 +13,9 @@
 // program's page stays small. A long program is thinned, and the page says so: sections take
 // at most kTimeShare of the run's time beside them (past a first kFreeSeconds), skipping
 // blocks when they would take more; past kMaxSections every other section is dropped and
-// sections are taken half as often; past kMaxSteps blocks the stepping is left out.
+// sections are taken half as often. Past kMaxSteps blocks or kMaxMoves moves the stepping is
+// left out and what it held is let go: a long program's run holds nothing a block (the
+// streamed run's promise).
 
 #include <array>
 #include <chrono>
@@ -30,7 +32,8 @@ namespace lathesim::app {
 class StepRecording final : public interp::MoveSink {
  public:
   static constexpr std::size_t kMaxSections = 1500;
-  static constexpr std::size_t kMaxSteps = 100000;
+  static constexpr std::size_t kMaxSteps = 5000;
+  static constexpr std::size_t kMaxMoves = 20000;
   static constexpr double kTimeShare = 0.1;
   static constexpr double kFreeSeconds = 0.2;  // under a tenth of a run that draws its pictures (≥ 2.5 s)
 
@@ -69,6 +72,7 @@ class StepRecording final : public interp::MoveSink {
   std::vector<long> path_;  // per move: its kind, where it ends (r, z); an arc its centre too
   std::size_t moves_ = 0;
   std::size_t nextStep_ = 0;  // the observer's place in steps_
+  bool leftOut_ = false;      // past the limits: nothing more is kept
   double secondsSpent_ = 0;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
