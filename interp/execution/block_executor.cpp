@@ -128,6 +128,7 @@ class Executor {
   const InterpreterOptions& options_;
   int ordinal_;
   const BlockPlace* place_;
+  std::optional<ContourPass> contourPass_;
   std::vector<Move> moves_;
   ProgramFlow flow_;
   std::vector<Error> warnings_;
@@ -201,7 +202,8 @@ Result<BlockOutcome> Executor::run() {
   if (spindle && spindle->number == 5) state_.spindleOn = false;
   if (coolant && coolant->number == 9) state_.coolantOn = false;
   if (block_.mCode(MGroup::ProgramEnd)) state_.ended = true;
-  return BlockOutcome{std::move(state_), std::move(moves_), std::move(warnings_), std::move(cycleStarts_), flow_};
+  return BlockOutcome{std::move(state_), std::move(moves_), std::move(warnings_), std::move(cycleStarts_), flow_,
+                      contourPass_};
 }
 
 Status Executor::applySubprogramCode() {
@@ -942,7 +944,17 @@ Status Executor::applyCompoundCycle(const Code& code) {
   moves_.insert(moves_.end(), done.contourMoves.begin(), done.contourMoves.end());
   warnings_.insert(warnings_.end(), done.warnings.begin(), done.warnings.end());
   if (code.number == 76) warnIfThreadTooFast(done.legs, code.column);
+  const std::size_t firstLeg = moves_.size();
   emitLegs(done.legs);
+  if (done.contour) {
+    contourPass_ = ContourPass{done.contour->first, done.contour->last, code.number == 70, done.contourCompensated};
+    // G71–G73 rough under G40 (GSK suspends a G41/G42 for them): the legs along a contour its
+    // blocks do not compensate keep the offset's R and tip, which the nose check weighs
+    // (compensation/uncompensated_nose.hpp).
+    if (!contourPass_->finishes && !done.contourCompensated && state_.noseSide == NoseSide::None)
+      for (std::size_t i = firstLeg; i < moves_.size(); ++i)
+        moves_[i].noseComp = noseCompWith(NoseSide::None, state_.offset);
+  }
   flow_.continueAfter = done.continueAfter;
   return success();
 }
@@ -1142,9 +1154,14 @@ Status Executor::applyDrillingCycle(const std::optional<Code>& code) {
 // against a contour already offset, G90/G94 are offset by their tip number
 // (cycle_nose_compensation.hpp), G74/G75 and the thread codes get none; an open chain ends
 // at the first leg.
+// A leg that follows a contour block is that block's line: the surface it cuts is blamed there.
 void Executor::emitLegs(const std::vector<CycleLeg>& legs) {
   const std::size_t first = moves_.size();
-  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center, leg.thread);
+  for (const CycleLeg& leg : legs) {
+    const std::size_t before = moves_.size();
+    emit(leg.kind, leg.from, leg.to, leg.step, leg.center, leg.thread);
+    if (leg.line > 0 && moves_.size() > before) std::tie(moves_.back().line, moves_.back().column) = std::pair{leg.line, leg.column};
+  }
   for (std::size_t i = first; i < moves_.size(); ++i) moves_[i].noseComp = {};
 }
 
