@@ -299,10 +299,11 @@ TEST_P(RoughingUnderG40, AG70OfAnotherContourLeavesTheRoughingWarned) {
 }
 
 // G42 in the ns block: G71 roughs against the compensated contour, its last pass is the
-// compensated path, and nothing is said even with no G70 after it.
+// compensated path, and nothing is said even with no G70 after it (the tool's insert known too).
 TEST_P(RoughingUnderG40, ACompensatedContourRoughedAloneSaysNothing) {
   InterpreterOptions options = test::under(GetParam());
   options.offsets[1] = ToolOffset{0, 0, 0.8, 3, 0, 0};
+  options.toolNoses[1] = ToolNose{0.8, 3};
   std::string program = roughedChamfer("");
   program.replace(program.find("N10 G00 X14."), 12, "N10 G00 G42 X14.");
   const auto result = test::run(program, options);
