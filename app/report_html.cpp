@@ -9,6 +9,7 @@
 #include <string_view>
 #include <stdexcept>
 
+#include "app/inspection_text.hpp"
 #include "app/report_steps.hpp"
 #include "app/staged_output.hpp"
 #include "batch/html_text.hpp"
@@ -134,12 +135,48 @@ std::string problems(const Json& r) {
   return html + "</table>\n";
 }
 
+std::string lineLink(int line) {
+  return "<a href=\"#L" + std::to_string(line) + "\">" + std::to_string(line) + "</a>";
+}
+
+// check.sizes as the text inspection report gives them: each size drawn and measured, its
+// tolerance and where that came from, the verdict, and for a size not within, the line that
+// made it and the line its X (or Z) came from.
+std::string sizesTable(const Json& sizes) {
+  if (sizes.empty()) return "";
+  std::string html = "<h3>Sizes</h3>\n<table class=\"sizes\">\n<tr><th>size</th><th class=\"num\">drawn</th><th>tolerance</th>"
+                     "<th class=\"num\">measured</th><th>at</th><th>verdict</th><th>made by line</th><th>value from line</th></tr>\n";
+  for (const Json& s : sizes) {
+    const bool face = s.value("kind", "") == "face";
+    const std::string sign = face ? "Z" : "Ø";
+    const std::string verdict = s.value("verdict", "out");
+    const Json& at = s.at("worst_at");
+    std::string lines;
+    for (const Json& l : s.value("lines", Json::array())) lines += (lines.empty() ? "" : ", ") + lineLink(l.get<int>());
+    const int valueLine = s.value("value_line", 0);
+    const bool told = verdict != "within";
+    const Json& t = s.at("tolerance");
+    const std::string limits = limitsText(t.value("upper_mm", 0.0), t.value("lower_mm", 0.0));
+    const std::string source = s.value("tolerance_source", "");
+    html += std::string("<tr") + (verdict == "out" ? " class=\"problem-collision\"" : verdict == "undecided" ? " class=\"problem-warning\"" : "") +
+            "><td>" + escaped(s.value("kind", "")) + " (drawing line " + std::to_string(s.value("drawing_line", 0)) +
+            ")</td><td class=\"num\">" + sign + fixed(s.value("nominal_mm", 0.0), 3) + "</td><td>" + escaped(limits) +
+            (source == limits ? "" : " (" + escaped(source) + ")") + "</td><td class=\"num\">" + sign + fixed(s.value("worst_mm", 0.0), 3) +
+            " ±" + fixed(s.value("uncertainty_mm", 0.0), 3) + "</td><td>" +
+            (face ? "Ø" + fixed(at.value("diameter", 0.0), 3) : "Z" + fixed(at.value("z", 0.0), 3)) + "</td><td>" +
+            (verdict == "within" ? "within" : verdict == "undecided" ? "UNDECIDED" : "OUT, " + fixed(s.value("beyond_mm", 0.0), 3) + " beyond") +
+            "</td><td>" + (told ? lines : "") + "</td><td>" + (told && valueLine > 0 ? lineLink(valueLine) : "") + "</td></tr>\n";
+  }
+  return html + "</table>\n";
+}
+
 std::string checkSection(const Json& r) {
   if (!r.contains("check")) return "";
   const Json& c = r.at("check");
   std::string html = "<h2>Against the drawing</h2>\n<p>" + escaped(c.value("target", "")) + ": max excess " +
                      fixed(c.value("max_excess_mm", 0.0), 3) + " mm, max gouge " + fixed(c.value("max_gouge_mm", 0.0), 3) +
                      " mm; tolerances as the drawing states them, else " + escaped(c.value("general_tolerance", "")) + ".</p>\n";
+  html += sizesTable(c.value("sizes", Json::array()));
   if (c.at("regions").empty()) return html + "<p>No region is out of tolerance.</p>\n";
   html += "<table>\n<tr><th>kind</th><th class=\"num\">max, mm</th><th>at</th><th>Z range</th><th>Ø range</th><th>lines</th></tr>\n";
   for (const Json& g : c.at("regions")) {

@@ -59,9 +59,16 @@ std::optional<NoseDeviation> uncompensatedDeviation(const Move& move, double rad
   return worst;
 }
 
+void UncompensatedNoseCheck::noteContourPass(int block, const ContourPass& pass) {
+  const ContourKey key{pass.first, pass.last};
+  (pass.finishes ? finishedAt_ : roughedAt_)[key] = ++passes_;
+  if (!pass.finishes) roughedBy_[block] = key;
+  if (!pass.finishes && pass.compensated) roughedCompensated_.insert(block);
+}
+
 void UncompensatedNoseCheck::look(const std::vector<Move>& moves) {
   for (const Move& move : moves) {
-    if (move.noseComp.side != NoseSide::None) continue;
+    if (move.noseComp.side != NoseSide::None || roughedCompensated_.count(move.block)) continue;
     const bool ofOffset = move.noseComp.radiusMm > 0;
     ToolNose nose{move.noseComp.radiusMm, move.noseComp.tip};
     if (!ofOffset) {
@@ -69,34 +76,40 @@ void UncompensatedNoseCheck::look(const std::vector<Move>& moves) {
       if (tool == toolNoses_.end()) continue;
       nose = tool->second;
     }
-    const auto deviation = uncompensatedDeviation(move, nose.radiusMm, nose.tip);
-    if (!deviation || (worst_ && std::abs(deviation->mm) <= std::abs(worst_->mm))) continue;
-    worst_ = deviation;
-    at_ = move;
-    nose_ = nose;
-    ofOffset_ = ofOffset;
+    const Worst seen{uncompensatedDeviation(move, nose.radiusMm, nose.tip), move, nose, ofOffset};
+    const auto roughs = roughedBy_.find(move.block);
+    Worst& kept = roughs == roughedBy_.end() ? worst_ : roughing_[roughs->second];
+    if (seen.exceeds(kept)) kept = seen;
   }
 }
 
 std::optional<Error> UncompensatedNoseCheck::warning() const {
-  if (!worst_ || std::abs(worst_->mm) < kToldMm) return std::nullopt;
+  Worst told = worst_;
+  for (const auto& [contour, worst] : roughing_) {
+    const auto finished = finishedAt_.find(contour);
+    if (finished != finishedAt_.end() && finished->second > roughedAt_.at(contour)) continue;
+    if (worst.exceeds(told)) told = worst;
+  }
+  if (!told.deviation || std::abs(told.deviation->mm) < kToldMm) return std::nullopt;
+  const Move& at = told.at;
+  const double mm = told.deviation->mm;
   std::string surface;
-  if (isArc(at_.kind)) {
-    surface = fmt::format("R{:g} arc", (at_.from - at_.center).norm());
+  if (isArc(at.kind)) {
+    surface = fmt::format("R{:g} arc", (at.from - at.center).norm());
   } else {
-    const RZ along = at_.to - at_.from;
+    const RZ along = at.to - at.from;
     const double degrees = std::atan2(std::abs(along.x()), std::abs(along.y())) * 180 / std::numbers::pi;
     surface = fmt::format("{:.4g}° line", degrees);
   }
-  const std::string whose = ofOffset_ ? fmt::format("offset {}", at_.toolOffset)
-                                      : fmt::format("tool {}'s insert (its offset gives no R)", at_.tool);
-  return Error{at_.line, at_.column,
+  const std::string whose = told.ofOffset ? fmt::format("offset {}", at.toolOffset)
+                                      : fmt::format("tool {}'s insert (its offset gives no R)", at.tool);
+  return Error{at.line, at.column,
                fmt::format("this contour is cut under G40 with the nose radius R{:g} of {} (tip {}): the finish is "
                            "off the drawing by up to {:.3f} mm normal to the surface, {} on this block's {}; program "
                            "G42 (G41 in a bore) in a G00/G01 move before the contour, or in G70's ns block, with R "
                            "and the tip in the offset (said once, at the worst block)",
-                           nose_.radiusMm, whose, nose_.tip, std::abs(worst_->mm),
-                           worst_->mm > 0 ? "material left" : "cut into the part", surface)};
+                           told.nose.radiusMm, whose, told.nose.tip, std::abs(mm),
+                           mm > 0 ? "material left" : "cut into the part", surface)};
 }
 
 }  // namespace lathesim::interp

@@ -12,9 +12,15 @@
 // is not stated under G40: a surface whose normal is square to s (a face for a tip 5 tool)
 // tells nothing and is left out, as the tip then touches only by its own corner; tip 0/9
 // (P = C) is R off everywhere.
+// G71–G73 only rough a contour: their passes along it (the last one above all) make the surface
+// only when no G70 finishes that contour after them, so they are weighed apart, by contour.
 
+#include <cstddef>
+#include <cmath>
 #include <map>
 #include <optional>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "interp/base/move.hpp"
@@ -37,6 +43,14 @@ struct NoseDeviation {
 /// `tip` with no compensation; none for other moves or where no side can be told.
 std::optional<NoseDeviation> uncompensatedDeviation(const Move& move, double radiusMm, int tip);
 
+/// A compound cycle's pass over its contour, the P–Q blocks by their indices in the program:
+/// G71–G73 rough it, G70 finishes it.
+struct ContourPass {
+  std::size_t first = 0, last = 0;
+  bool finishes = false;
+  bool compensated = false;  // a roughing against a contour its blocks' G41/G42 offset
+};
+
 /// The worst deviation over a run's moves, told once, as one warning at the block that has it:
 /// the same error repeats on every contour a program cuts this way.
 class UncompensatedNoseCheck {
@@ -44,17 +58,33 @@ class UncompensatedNoseCheck {
   /// The nose of a move is its offset's R and tip (what G41/G42 would use), or where the
   /// offset gives no R, its tool's insert from `toolNoses`.
   explicit UncompensatedNoseCheck(const std::map<int, ToolNose>& toolNoses) : toolNoses_(toolNoses) {}
+  /// Block `block` (its ordinal) ran `pass`; told in program order, before its moves are looked at.
+  void noteContourPass(int block, const ContourPass& pass);
   /// Looks at `moves` as programmed, before compensation: those under G40.
   void look(const std::vector<Move>& moves);
-  /// The warning, if the worst deviation is 0.001 mm or more.
+  /// The warning, if the worst deviation is 0.001 mm or more, of the moves that made the part's
+  /// surface: the roughing of a contour a G70 finished after it is left out.
   std::optional<Error> warning() const;
 
  private:
+  struct Worst {
+    std::optional<NoseDeviation> deviation;
+    Move at;                // the move that has it
+    ToolNose nose;          // and the nose it was cut with
+    bool ofOffset = true;   // that nose is its offset's, else its tool's insert
+    bool exceeds(const Worst& other) const {
+      return deviation && (!other.deviation || std::abs(deviation->mm) > std::abs(other.deviation->mm));
+    }
+  };
+  using ContourKey = std::pair<std::size_t, std::size_t>;  // its first and last block
+
   const std::map<int, ToolNose>& toolNoses_;
-  std::optional<NoseDeviation> worst_;
-  Move at_;        // the move that has it
-  ToolNose nose_;  // and the nose it was cut with
-  bool ofOffset_ = true;  // that nose is its offset's, else its tool's insert
+  Worst worst_;                             // of the moves that are no roughing
+  std::map<ContourKey, Worst> roughing_;    // of the roughing passes, by contour
+  std::map<int, ContourKey> roughedBy_;     // the G71–G73 blocks (ordinals) and their contours
+  std::set<int> roughedCompensated_;        // those whose legs follow a compensated contour
+  std::map<ContourKey, std::size_t> roughedAt_, finishedAt_;  // the last pass of each kind, in order
+  std::size_t passes_ = 0;
 };
 
 }  // namespace lathesim::interp

@@ -18,6 +18,10 @@ struct CycleLeg {
   int step = 0;       // the cycle's own step number (1–4 for G90/G94); 0 when it has none
   RZ center{0, 0};    // arcs only
   ThreadMotion thread{};  // Thread legs only
+  // The contour block (G71–G73 P–Q) whose segment the leg follows, so that the surface it cuts
+  // is blamed on the block that drew it; 0: the leg is the cycle block's own.
+  int line = 0;
+  int column = 0;
 };
 
 /// The legs in order, the zero-length ones left out.

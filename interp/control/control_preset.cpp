@@ -222,7 +222,11 @@ const std::vector<PresetDefinition>& presetTable() {
            {"thread_runout", 0.0, "Fanuc 5130 (in 0.1 lead); its value assumed", false},
            {"thread_runout_angle", 0.0, "Fanuc 5131 (0 means 45°); its value assumed", false},
            {"thread_e_word", "lead", "E the lead with more digits for inch threads (Fanuc 0-TD G34; 0i-T unchecked)", false},
-           {"cut_without_tool", "warning", "the turret keeps the tool it was left at; unchecked", false},
+           {"cut_without_tool", "warning",
+            "a turret always has a station at the cutting position: the tool it was left at cuts, T□□00 only cancels "
+            "the offset (a Fanuc-style lathe manual's T function); no manual found refuses a cut before a T word, so "
+            "a warning; unchecked on a 0i-T",
+            false},
        }},
       {"haas",
        "fanuc-0i-t",
@@ -246,6 +250,10 @@ const std::vector<PresetDefinition>& presetTable() {
             false},
            {"g76_min_depth", 0.0254, "Haas Setting 99 (thread minimum cut, 0.0010 in), the one-block G76's least depth a pass adds", false},
            {"g76_allowance", 0.0, "Haas Setting 86 (thread finish allowance), what the one-block G76's last pass removes", false},
+           {"cut_without_tool", "warning",
+            "the turret keeps the tool it was left at; no Haas manual found says a cut before a T word is refused, "
+            "so a warning; unchecked",
+            false},
        }},
   };
   return table;

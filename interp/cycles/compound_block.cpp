@@ -19,7 +19,17 @@ Result<std::optional<std::size_t>> runCompoundCycleBlock(BlockWork& work, const 
   work.moves.insert(work.moves.end(), done.contourMoves.begin(), done.contourMoves.end());
   work.warnings.insert(work.warnings.end(), done.warnings.begin(), done.warnings.end());
   if (code.number == 76) warnIfThreadTooFast(work, done.legs, code.column);
+  const std::size_t firstLeg = work.moves.size();
   work.emitLegs(done.legs);
+  if (done.contour) {
+    work.contourPass = ContourPass{done.contour->first, done.contour->last, code.number == 70, done.contourCompensated};
+    // G71–G73 rough under G40 (GSK suspends a G41/G42 for them): the legs along a contour its
+    // blocks do not compensate keep the offset's R and tip, which the nose check weighs
+    // (compensation/uncompensated_nose.hpp).
+    if (!work.contourPass->finishes && !done.contourCompensated && state.noseSide == NoseSide::None)
+      for (std::size_t i = firstLeg; i < work.moves.size(); ++i)
+        work.moves[i].noseComp = noseCompWith(NoseSide::None, state.offset);
+  }
   return done.continueAfter;
 }
 

@@ -59,6 +59,7 @@ class CompoundCycle {
   Result<ContourBlock> contourBlock();
   ModalState contourStartState() const;
   void continueAfter(ContourSpan span);
+  void roughs(const ContourBlock& b);
 
   Status finishing();  // G70
   Status roughing();   // G71, G72
@@ -186,6 +187,14 @@ void CompoundCycle::continueAfter(ContourSpan span) {
   if (span.last > place_->index) outcome_.continueAfter = span.last;
 }
 
+// G71–G73 rough the contour of `b`: said in the outcome, with whether its blocks compensate it.
+void CompoundCycle::roughs(const ContourBlock& b) {
+  outcome_.contour = b.span;
+  const auto& comps = b.contour.noseComps;
+  outcome_.contourCompensated =
+      std::any_of(comps.begin(), comps.end(), [](const NoseComp& comp) { return comp.side != NoseSide::None; });
+}
+
 // G70 P Q: the contour blocks as written, with their own F, S and T, then rapid back to A.
 // A G41/G42 in force (`G00 G42 X42. Z2.` then `G70 P Q`, the manuals' form on Fanuc and GSK)
 // carries on into the contour: its moves continue the chain the G42 block started
@@ -208,6 +217,7 @@ Status CompoundCycle::finishing() {
   state_ = std::move(run.value().state);
   state_.noseSide = before;
   outcome_.contourMoves = std::move(run.value().moves);
+  outcome_.contour = span.value();
   outcome_.warnings = std::move(run.value().warnings);
   outcome_.legs.push_back({MoveKind::Rapid, state_.position, start, 0, RZ(0, 0)});
   if (state_.position == start) outcome_.legs.clear();
@@ -264,6 +274,7 @@ Status CompoundCycle::roughing() {
                       : facingRoughingLegs(start, c.contour, params);
   if (!legs.ok()) return legs.error();
   outcome_.legs = std::move(legs.value());
+  roughs(b);
   continueAfter(b.span);
   return success();
 }
@@ -310,6 +321,7 @@ Status CompoundCycle::haasRoughing() {
                       : facingRoughingLegs(state_.position, b.contour.contour, params);
   if (!legs.ok()) return legs.error();
   outcome_.legs = std::move(legs.value());
+  roughs(b);
   continueAfter(b.span);
   return success();
 }
@@ -380,6 +392,7 @@ Status CompoundCycle::patternRepeat() {
                                 options_.maxMoves);
   if (!legs) return *moveLimitError(options_.maxMoves + 1, options_.maxMoves, block_.line, code_.column);
   outcome_.legs = std::move(*legs);
+  roughs(b);
   continueAfter(b.span);
   return success();
 }

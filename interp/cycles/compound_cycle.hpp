@@ -10,6 +10,7 @@
 #include "interp/cycles/block_runner.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/contour/cycle_leg.hpp"
+#include "interp/cycles/contour_blocks.hpp"
 #include "interp/state/interpreter_options.hpp"
 #include "interp/state/modal_state.hpp"
 #include "interp/base/result.hpp"
@@ -20,6 +21,8 @@ struct CompoundOutcome {
   std::vector<Move> contourMoves;  // G70: the contour blocks' own moves, before the legs
   std::vector<CycleLeg> legs;      // the cycle block's moves
   std::optional<std::size_t> continueAfter;  // G71–G73: the nf block, when it follows
+  std::optional<ContourSpan> contour;        // G70–G73: the P–Q blocks it finished or roughed
+  bool contourCompensated = false;           // G71–G73: G41/G42 in those blocks offset it
   std::vector<Error> warnings;               // G70's contour blocks', and the cycle's own
 };
 

@@ -36,8 +36,8 @@ std::optional<std::vector<CycleLeg>> patternRepeatLegs(const RZ& start, const Co
       const bool nsBlock = i < firstBlockSegments;
       MoveKind kind = segment.kind == MoveKind::Rapid ? MoveKind::Feed : segment.kind;
       if (nsBlock) kind = firstBlockRapid ? MoveKind::Rapid : MoveKind::Feed;
-      add({kind, segment.from + shift, segment.to + shift, nsBlock ? 2 : 3,
-           segment.center + shift});
+      add({kind, segment.from + shift, segment.to + shift, nsBlock ? 2 : 3, segment.center + shift, {},
+           segment.line, segment.column});
     }
     at = (contour.empty() ? start : contour.back().to) + shift;
   }

@@ -161,19 +161,20 @@ class LegList {
   /// More levels are coming than legs allowed: full whatever was kept.
   void overflow() { overflowed_ = true; }
 
-  void straight(MoveKind kind, const RZ& to, int step) {
-    if (!full() && (to - at_).norm() > kTolMm) legs_.push_back({kind, at_, to, step});
+  /// `drawnBy`: the contour segment the leg makes (its block's line goes with it), if any.
+  void straight(MoveKind kind, const RZ& to, int step, const ContourSegment* drawnBy = nullptr) {
+    if (!full() && (to - at_).norm() > kTolMm)
+      legs_.push_back({kind, at_, to, step, RZ(0, 0), {}, drawnBy ? drawnBy->line : 0, drawnBy ? drawnBy->column : 0});
     at_ = to;
   }
 
   /// Along a contour segment from the current point to `to` (a straight segment at feed,
-  /// an arc as an arc about its centre).
+  /// an arc as an arc about its centre), on the segment's block's line.
   void follow(const ContourSegment& segment, const RZ& to, int step) {
-    if (!isArc(segment.kind)) {
-      straight(MoveKind::Feed, to, step);
-      return;
-    }
-    if (!full() && (to - at_).norm() > kTolMm) legs_.push_back({segment.kind, at_, to, step, segment.center});
+    const MoveKind kind = isArc(segment.kind) ? segment.kind : MoveKind::Feed;
+    const RZ center = isArc(segment.kind) ? segment.center : RZ(0, 0);
+    if (!full() && (to - at_).norm() > kTolMm)
+      legs_.push_back({kind, at_, to, step, center, {}, segment.line, segment.column});
     at_ = to;
   }
 
@@ -226,7 +227,7 @@ struct Plan {
 };
 
 void semiFinishAndReturn(const Plan& plan, LegList& legs, int infeedStep) {
-  legs.straight(plan.infeedKind, plan.finish.front().to, infeedStep);
+  legs.straight(plan.infeedKind, plan.finish.front().to, infeedStep, &plan.finish.front());  // the ns block's move
   for (std::size_t i = 1; i < plan.finish.size(); ++i) {
     legs.follow(plan.finish[i], plan.finish[i].to, 7);
   }

@@ -4,8 +4,10 @@
 // state is untouched and no move of the block is emitted. Every word must be used by some
 // code of the block; a word left over is an error.
 
+#include <optional>
 #include <vector>
 
+#include "interp/compensation/uncompensated_nose.hpp"
 #include "interp/cycles/block_runner.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/state/interpreter_options.hpp"
@@ -22,6 +24,7 @@ struct BlockOutcome {
   std::vector<Error> warnings;         // located like errors; they do not stop the program
   std::vector<CycleStart> cycleStarts;  // the cycle this block ran, if any
   ProgramFlow flow;         // M98, M99, or where G71–G73 resume
+  std::optional<ContourPass> contourPass;  // G70–G73: the contour it finished or roughed
 };
 
 /// Runs `block` from `state`. `ordinal` is the block's 0-based number among the blocks read.

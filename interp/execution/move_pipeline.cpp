@@ -27,7 +27,10 @@ void placeInSetupFrame(std::vector<Move>& moves) {
 MovePipeline::MovePipeline(const InterpreterOptions& options, MoveSink& sink, std::vector<Error>& warnings)
     : options_(options), sink_(sink), warnings_(warnings), uncompensated_(options.toolNoses) {}
 
-void MovePipeline::add(const std::vector<Move>& moves) { held_.insert(held_.end(), moves.begin(), moves.end()); }
+void MovePipeline::add(const std::vector<Move>& moves, const std::optional<ContourPass>& pass) {
+  if (pass && !moves.empty()) uncompensated_.noteContourPass(moves.front().block, *pass);
+  held_.insert(held_.end(), moves.begin(), moves.end());
+}
 
 bool MovePipeline::cutAfterLast() const {
   if (held_.empty()) return false;

@@ -13,6 +13,7 @@
 // which is held until it is cancelled.
 
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -29,8 +30,9 @@ class MovePipeline {
   /// Warnings of the stages (a corner that does nothing) go to `warnings`.
   MovePipeline(const InterpreterOptions& options, MoveSink& sink, std::vector<Error>& warnings);
 
-  /// The moves of one block, as it made them, in order.
-  void add(const std::vector<Move>& moves);
+  /// The moves of one block, as it made them, in order; `pass`: the block was a G70–G73 that
+  /// finished or roughed a contour.
+  void add(const std::vector<Move>& moves, const std::optional<ContourPass>& pass = std::nullopt);
   /// Lets the moves held go if there are `window` of them and they can be cut after;
   /// `anyCount`: however few there are (a parts catcher command counts the moves before it).
   Status release(bool anyCount = false);

@@ -82,6 +82,7 @@ class ProgramRunner {
   Toolpath& toolpath_;
   MovePipeline& moves_;
   std::vector<Move> blockMoves_;  // the moves of the block that ran last, not yet in moves_
+  std::optional<ContourPass> blockContourPass_;  // and the contour it finished or roughed
   std::optional<PartsCatcherCommand> catcher_;  // its parts catcher command, not yet listed
   std::size_t movesMade_ = 0;  // by the blocks, before corners and dog-legs
   std::vector<Error>& warnings_;
@@ -213,6 +214,7 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   notePartsCatcher(index, words);
   movesMade_ += done.moves.size();
   blockMoves_ = std::move(done.moves);
+  blockContourPass_ = done.contourPass;
   const ProgramBlock& made = program_.block(index);
   if (auto tooMany = moveLimitError(movesMade_, options_.maxMoves, made.line, made.column)) return *tooMany;
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
@@ -289,7 +291,7 @@ Status ProgramRunner::passBlockMoves() {
     catcher_->movesBefore = moves_.passed() + moves_.held();
     toolpath_.partsCatcher.push_back(*std::exchange(catcher_, std::nullopt));
   }
-  moves_.add(blockMoves_);
+  moves_.add(blockMoves_, std::exchange(blockContourPass_, std::nullopt));
   blockMoves_.clear();
   return moves_.release();
 }

@@ -109,10 +109,15 @@ void BlockWork::warnIfSurfaceSpeedUnclamped() {
 // A cycle's legs are never part of a G41/G42 chain (lathe-cycles.md §8): G71–G73 rough
 // against a contour already offset, G90/G94 are offset by their tip number
 // (cycle_nose_compensation.hpp), G74/G75 and the thread codes get none; an open chain ends
-// at the first leg.
+// at the first leg. A leg that follows a contour block is that block's line: the surface it
+// cuts is blamed there.
 void BlockWork::emitLegs(const std::vector<CycleLeg>& legs) {
   const std::size_t first = moves.size();
-  for (const CycleLeg& leg : legs) emit(leg.kind, leg.from, leg.to, leg.step, leg.center, leg.thread);
+  for (const CycleLeg& leg : legs) {
+    const std::size_t before = moves.size();
+    emit(leg.kind, leg.from, leg.to, leg.step, leg.center, leg.thread);
+    if (leg.line > 0 && moves.size() > before) moves.back().line = leg.line, moves.back().column = leg.column;
+  }
   for (std::size_t i = first; i < moves.size(); ++i) moves[i].noseComp = {};
 }
 

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "interp/compensation/uncompensated_nose.hpp"
 #include "interp/base/move.hpp"
 #include "interp/base/result.hpp"
 #include "interp/contour/cycle_leg.hpp"
@@ -41,6 +42,7 @@ struct BlockWork {
   std::vector<Move> moves;
   std::vector<Error> warnings;
   std::vector<CycleStart> cycleStarts;
+  std::optional<ContourPass> contourPass;  // G70–G73: the contour it finished or roughed
   bool chainedThread = false;  // this block continued (or began) a chain of G32 cuts
   bool feedGiven = false;      // the block gave F
 

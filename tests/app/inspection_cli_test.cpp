@@ -224,5 +224,105 @@ TEST(InspectionReport, BlamesTheChangedContourBlockOfAG70) {
   }
 }
 
+// The line to blame for undersize and for excess alike, with its block's text, swept over
+// which block is wrong in four ways of turning the stepped shaft: a plain contour, G90 passes,
+// a G71 with no G70 (U0 W0: its last pass along the contour makes the surface) and a G71 with
+// its G70. The diameter a wrong X turns is made by the cut along it: the contour block after
+// the changed one (its X from the changed one), or the G90 block itself. A G71's last pass is
+// blamed on its P–Q block, as G70's cut is, not on the G71 line.
+TEST(InspectionReport, BlamesTheChangedBlockWithItsTextForUndersizeAndExcess) {
+  // A block's text with its one number in place of %g.
+  const auto block = [](const char* format, double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, format, v);
+    return std::string(text);
+  };
+  for (const std::string form : {"plain", "g90", "g71", "g71+g70"})
+    for (const double delta : {-0.5, +0.5})
+      for (int which = 0; which < 3; ++which) {
+        double x[3] = {20, 28, 36};
+        x[which] += delta;
+        std::vector<std::string> lines{"G99 G00 X100 Z5 M03 S1000"};
+        int changed = 0, cut = 0;
+        if (form == "plain") {
+          for (const std::string& l : {block("G00 X%g Z2", x[0]), std::string("G01 Z-10 F0.1"), block("X%g", x[1]),
+                                       std::string("Z-20"), block("X%g", x[2]), std::string("Z-30"), std::string("X42")})
+            lines.push_back(l);
+          changed = 2 + 2 * which, cut = changed + 1;
+        } else if (form == "g90") {
+          for (const std::string& l : {std::string("G00 X42 Z2"), block("G90 X%g Z-30 F0.1", x[2]), block("X%g Z-20", x[1]),
+                                       block("X%g Z-10", x[0])})
+            lines.push_back(l);
+          changed = 5 - which, cut = changed;
+        } else {
+          const bool finish = form == "g71+g70";
+          for (const std::string& l :
+               {std::string("G00 X42 Z2"), std::string("G71 U1 R0.5"),
+                std::string(finish ? "G71 P10 Q20 U0.4 W0.1 F0.2" : "G71 P10 Q20 U0 W0 F0.1"), block("N10 G00 X%g", x[0]),
+                std::string("G01 Z-10 F0.1"), block("X%g", x[1]), std::string("Z-20"), block("X%g", x[2]), std::string("Z-30"),
+                std::string("N20 X42")})
+            lines.push_back(l);
+          if (finish) lines.push_back("G70 P10 Q20");
+          changed = 5 + 2 * which, cut = changed + 1;
+        }
+        lines.push_back("G00 X100 Z5");
+        lines.push_back("M30");
+        std::string program;
+        for (const std::string& l : lines) program += l + "\n";
+        const double nominal = 20 + 8 * which;
+        SCOPED_TRACE(testing::Message() << form << ", Ø" << nominal << (delta < 0 ? " undersize" : " oversize") << ":\n" << program);
+        ScratchDir dir("inspect-blame");
+        const Checked run = checkProgram(dir, program, steppedDrawing("0.1"), 0.1);
+        EXPECT_EQ(run.outcome.status, 3) << run.outcome.out << run.outcome.err;
+        const nlohmann::json* d = sizeAt(run.check, "diameter", nominal);
+        ASSERT_NE(d, nullptr) << run.outcome.out;
+        EXPECT_EQ(d->at("verdict"), "out") << run.outcome.out;
+        EXPECT_NEAR(d->at("worst_mm").get<double>(), nominal + delta, 0.02);
+        EXPECT_EQ(d->at("lines"), nlohmann::json::array({cut})) << run.outcome.out;
+        EXPECT_EQ(d->at("value_line"), changed) << run.outcome.out;
+        std::string said = "made by line ";  // appended piece by piece (GCC 12 warns of "…" + string&&)
+        said += std::to_string(cut) + " `" + lines[cut - 1] + "`";
+        if (cut != changed) said += " (its X from line " + std::to_string(changed) + " `" + lines[changed - 1] + "`)";
+        EXPECT_NE(run.outcome.out.find(said), std::string::npos) << said << "\n" << run.outcome.out;
+      }
+}
+
+// report.html gives check.sizes as a table, as the text report does: the journal's Φ20 cut
+// Φ19.5 is OUT 0.400 beyond ±0.1, made by line 3, its X from line 2; Φ28 and Φ36 within, with
+// no line named.
+TEST(InspectionReport, ReportHtmlTablesTheSizes) {
+  ScratchDir dir("inspect-html");
+  test::writeFile(dir.path() / "p.nc", "G99 G00 X100 Z5 M03 S1000\nG00 X19.5 Z2\nG01 Z-10 F0.1\nX28\nZ-20\nX36\nZ-30\nX42\nG00 X100 Z5\nM30\n");
+  test::writeFile(dir.path() / "setup.toml", "[stock]\ndiameter = 40\nlength = 50\nface_z = 0\n");
+  test::writeFile(dir.path() / "drawing.toml", steppedDrawing("0.1"));
+  const auto outcome = test::runProcess(kBinary, {"check", (dir.path() / "p.nc").string(), "--setup", (dir.path() / "setup.toml").string(),
+                                                  "--target", (dir.path() / "drawing.toml").string(), "--voxel", "0.1", "--out",
+                                                  (dir.path() / "out").string(), "--outputs", "report,html"},
+                                        dir.path());
+  ASSERT_EQ(outcome.status, 3) << outcome.out << outcome.err;
+  const std::string html = test::readFile(dir.path() / "out" / "report.html");
+  const auto row = [&](double nominal) {
+    char drawn[64];
+    std::snprintf(drawn, sizeof drawn, "<td class=\"num\">Ø%.3f</td>", nominal);
+    const std::size_t at = html.find(drawn);
+    if (at == std::string::npos) return std::string();
+    return html.substr(html.rfind("<tr", at), html.find("</tr>", at) - html.rfind("<tr", at));
+  };
+  ASSERT_NE(html.find("<h3>Sizes</h3>"), std::string::npos);
+  const std::string out = row(20);
+  ASSERT_FALSE(out.empty()) << html;
+  EXPECT_NE(out.find("class=\"problem-collision\""), std::string::npos) << out;
+  EXPECT_NE(out.find("<td>±0.1</td>"), std::string::npos) << out;  // the drawing's own ±, its source said once
+  EXPECT_NE(out.find("<td class=\"num\">Ø19.5"), std::string::npos) << out;
+  EXPECT_NE(out.find("<td>OUT, 0.4"), std::string::npos) << out;
+  EXPECT_NE(out.find("<td><a href=\"#L3\">3</a></td><td><a href=\"#L2\">2</a></td>"), std::string::npos) << out;
+  for (const double nominal : {28.0, 36.0}) {
+    const std::string within = row(nominal);
+    ASSERT_FALSE(within.empty()) << nominal;
+    EXPECT_NE(within.find("<td>within</td><td></td><td></td>"), std::string::npos) << within;
+    EXPECT_EQ(within.find("problem-"), std::string::npos) << within;
+  }
+}
+
 }  // namespace
 }  // namespace lathesim::app

@@ -311,6 +311,54 @@ TEST(RevolvedTable, GivesTheSameTableOnOneThreadAsSharedAmongThreads) {
   EXPECT_GT(airVoxels, 0u);  // the route of ghosts a class's columns disagree on was taken
 }
 
+// A write's volume is the material its voxels held before less what they hold after, each
+// voxel's share counted as the level set counts it (½ − φ/h, clamped to 0…1) with its air
+// voxels read as air. The face and taper passes leave air voxels (ghosts some of a class's
+// columns disagree on) beside cells still partly material; then the bar is faced to X0 well
+// past its back face and everything goes. Counted here voxel by voxel through value(), the
+// lost volume must match the write's own sum, which takes back what the air voxels (already
+// air) did not lose: without that term it counts them twice.
+double materialVoxels(const RevolvedTable& table, int halfWidth, int kFirst, int kLast, double h) {
+  std::vector<float> column(kLast - kFirst + 1);
+  double sum = 0.0;
+  for (int i = -halfWidth; i <= halfWidth; ++i)
+    for (int j = -halfWidth; j <= halfWidth; ++j) {
+      table.columnValues(i, j, kFirst, static_cast<int>(column.size()), column.data(), 1);
+      for (const float v : column) sum += std::clamp(0.5 - v / h, 0.0, 1.0);
+    }
+  return sum;
+}
+
+TEST(RevolvedTable, AWriteLosesWhatItsVoxelsHeldCountingAirVoxelsAsAir) {
+  struct FaceCase {
+    double voxelMm, facedDiameterMm, shiftMm;
+  };
+  for (const FaceCase& c : {FaceCase{0.2, 48.0, 0.0}, {0.13, 46.0, 0.037}, {0.1, 44.4, 0.0}}) {
+    SCOPED_TRACE(testing::Message() << "voxel " << c.voxelMm << " mm, faced to X" << c.facedDiameterMm << ", shift " << c.shiftMm);
+    const StockSpec spec{50.0, 45.0, 0.8, 0.0};
+    const double h = c.voxelMm, radius = spec.diameterMm / 2.0, back = spec.faceZMm - spec.lengthMm;
+    const int halfWidth = static_cast<int>(std::ceil(radius / h)) + 5;
+    const int kFirst = static_cast<int>(std::floor(back / h)) - 5, kLast = static_cast<int>(std::ceil(spec.faceZMm / h)) + 5;
+    RevolvedTable table(halfWidth, kFirst, kLast, h, static_cast<float>(kHalfBandVoxels * h), radius + kHalfBandVoxels * h + 2.0 * h);
+    const std::vector<RZ> section{{-radius, back}, {radius, back}, {radius, spec.faceZMm}, {-radius, spec.faceZMm}};
+    table.write(RevolvedRegion({ConvexPolygon::hullOf(section)}), true);
+    const ToolOutlines outlines = tools();
+    const interp::Toolpath toolpath = faceAndTaperPasses(c.facedDiameterMm, c.shiftMm);
+    for (const interp::Move& move : toolpath.moves) {
+      const std::vector<ConvexPolygon> pieces = sweptPieces(move, outlines.at(move.tool), h);
+      if (!pieces.empty()) table.write(RevolvedRegion(pieces), false);
+    }
+    ASSERT_GT(table.airVoxelCount(), 0u);
+    const double before = materialVoxels(table, halfWidth, kFirst, kLast, h);
+    // A block wider and longer than the bar: every voxel turns to air.
+    const std::vector<RZ> everything{{-radius - 1.0, back - 1.0}, {radius + 1.0, back - 1.0},
+                                      {radius + 1.0, spec.faceZMm + 1.0}, {-radius - 1.0, spec.faceZMm + 1.0}};
+    const double lost = table.write(RevolvedRegion({ConvexPolygon::hullOf(everything)}), false);
+    EXPECT_NEAR(materialVoxels(table, halfWidth, kFirst, kLast, h), 0.0, 1e-9);
+    EXPECT_NEAR(lost, before, 1e-7 * before);
+  }
+}
+
 // The table's cells follow the band of the profile: on a Φ40 × 120 bar at 0.1 mm a chunk of 8
 // cells holds cells exactly where some cell lies nearer the surface than the band (worked out
 // here from the rectangle's own distance), and the table weighs a small part of what one float

@@ -360,7 +360,7 @@ TEST(NoseCompensationInCycles, G71RoughsAgainstTheOffsetContour) {
   std::vector<Move> passEnds;     // step 3: each level's cut along Z
   std::vector<Move> semiFinish;   // step 7: along the rough contour B′ → C′
   for (const Move& m : result.toolpath.moves) {
-    if (m.line != 4) continue;
+    if (m.block != 3) continue;  // the G71 block's moves (those along the contour carry its lines)
     if (m.cycleStep == 3) passEnds.push_back(m);
     if (m.cycleStep == 7) semiFinish.push_back(m);
     EXPECT_EQ(m.noseComp.side, NoseSide::None);  // the legs are already compensated
@@ -386,7 +386,7 @@ TEST(NoseCompensationInCycles, G70CompensatesItsContourAndTheReturnCancels) {
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
   std::vector<Move> finishing;
   for (const Move& m : result.toolpath.moves) {
-    if (m.line >= 5 && m.line <= 9) finishing.push_back(m);
+    if (m.line >= 5 && m.line <= 9 && m.block != 3) finishing.push_back(m);  // not G71's pass along them
   }
   // G70 from A: the ns block's G00 is the start-up to B′, the contour as above, then G70's
   // rapid back to A is the cancel move, from the tip (21.2, -10).

@@ -224,5 +224,94 @@ TEST(UncompensatedNose, CompensatedContoursSayNothing) {
   EXPECT_TRUE(noseWarnings(result).empty());
 }
 
+// G71 roughs a contour and its last pass runs along it: under G40 that pass is as far off the
+// drawing as any uncompensated contour, but it makes the surface only when no G70 finishes the
+// contour afterwards. The shaft Φ14 → 45° chamfer (line 7) → Φ20, roughed by G71 with no
+// allowance; then finished by G70 under G42, under G40, or not at all. Under both presets,
+// with R0.8 tip 3 in the offset or, with no R there, R0.4 tip 3 on the tool's insert.
+class RoughingUnderG40 : public testing::TestWithParam<const char*> {};
+
+std::string roughedChamfer(const std::string& after) {
+  return "T0101 G99 M03 S800\n"
+         "G00 X42. Z2.\n"
+         "G71 U1. R0.5\n"
+         "G71 P10 Q20 U0. W0. F0.2\n"
+         "N10 G00 X14.\n"
+         "G01 Z0. F0.1\n"
+         "X20. Z-3.\n"
+         "Z-10.\n"
+         "N20 X42.\n" +
+         after + "G00 X60. Z5.\nM30\n";
+}
+
+TEST_P(RoughingUnderG40, WarnsOnlyWhenNoCompensatedG70FinishesTheContour) {
+  struct Nose {
+    InterpreterOptions options;
+    double radiusMm;
+  };
+  InterpreterOptions ofOffset = test::under(GetParam());
+  ofOffset.offsets[1] = ToolOffset{0, 0, 0.8, 3, 0, 0};
+  InterpreterOptions ofInsert = test::under(GetParam());
+  ofInsert.toolNoses[1] = ToolNose{0.4, 3};
+  for (const Nose& nose : {Nose{ofOffset, 0.8}, Nose{ofInsert, 0.4}}) {
+    SCOPED_TRACE(testing::Message() << "R" << nose.radiusMm);
+    const std::string said = fmt::format("off the drawing by up to {:.3f} mm", nose.radiusMm * (std::sqrt(2.0) - 1));
+    // G71 alone: its last pass made the chamfer, at line 7's block.
+    auto result = test::run(roughedChamfer(""), nose.options);
+    ASSERT_TRUE(result.ok()) << test::messageOf(result);
+    auto warnings = noseWarnings(result);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].line, 7);
+    EXPECT_NE(warnings[0].message.find(said), std::string::npos) << warnings[0].message;
+    // Away, back under G42 and G70 finishes it compensated: the roughing made no surface, nothing to say.
+    result = test::run(roughedChamfer("G00 X60. Z20.\nG42 G00 X42. Z2.\nG70 P10 Q20\nG40 "), nose.options);
+    ASSERT_TRUE(result.ok()) << test::messageOf(result);
+    EXPECT_TRUE(noseWarnings(result).empty()) << noseWarnings(result)[0].message;
+    // G70 under G40: the finish itself is off, at the same block.
+    result = test::run(roughedChamfer("G70 P10 Q20\n"), nose.options);
+    ASSERT_TRUE(result.ok()) << test::messageOf(result);
+    warnings = noseWarnings(result);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].line, 7);
+    EXPECT_NE(warnings[0].message.find(said), std::string::npos) << warnings[0].message;
+  }
+}
+
+// A G70 finishes the contour it names, not another: the chamfered contour roughed by G71 and
+// left, a plain contour N30–N40 (diameters only, exact under tip 3) roughed and finished by G70
+// under G42. The first contour's last pass still made its surface: warned at line 7.
+TEST_P(RoughingUnderG40, AG70OfAnotherContourLeavesTheRoughingWarned) {
+  InterpreterOptions options = test::under(GetParam());
+  options.offsets[1] = ToolOffset{0, 0, 0.8, 3, 0, 0};
+  const auto result = test::run(roughedChamfer("G71 P30 Q40 U0. W0. F0.2\n"
+                                               "N30 G00 X10.\n"
+                                               "G01 Z-20. F0.1\n"
+                                               "N40 X42.\n"
+                                               "G00 X60. Z20.\n"
+                                               "G42 G00 X42. Z2.\n"
+                                               "G70 P30 Q40\n"
+                                               "G40 "),
+                                options);
+  ASSERT_TRUE(result.ok()) << test::messageOf(result);
+  const auto warnings = noseWarnings(result);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].line, 7);
+}
+
+// G42 in the ns block: G71 roughs against the compensated contour, its last pass is the
+// compensated path, and nothing is said even with no G70 after it (the tool's insert known too).
+TEST_P(RoughingUnderG40, ACompensatedContourRoughedAloneSaysNothing) {
+  InterpreterOptions options = test::under(GetParam());
+  options.offsets[1] = ToolOffset{0, 0, 0.8, 3, 0, 0};
+  options.toolNoses[1] = ToolNose{0.8, 3};
+  std::string program = roughedChamfer("");
+  program.replace(program.find("N10 G00 X14."), 12, "N10 G00 G42 X14.");
+  const auto result = test::run(program, options);
+  ASSERT_TRUE(result.ok()) << test::messageOf(result);
+  EXPECT_TRUE(noseWarnings(result).empty()) << noseWarnings(result)[0].message;
+}
+
+INSTANTIATE_TEST_SUITE_P(Presets, RoughingUnderG40, testing::Values("gsk980tdi", "fanuc-0i-t"));
+
 }  // namespace
 }  // namespace lathesim::interp

@@ -45,8 +45,11 @@ TEST(CompoundCycleArcs, SemiFinishingPassAndG70CarryTheArcAndItsCentre) {
     EXPECT_NEAR(arc.center.y(), -10, 1e-9);
     EXPECT_NEAR(arc.feed, 0.2, 1e-12);  // G71's F, modal into G70's contour
   }
-  EXPECT_EQ(arcs[0].line, 3);  // the semi-finishing pass belongs to the G71 block
-  EXPECT_EQ(arcs[1].line, 6);  // G70 runs the contour block itself
+  // Both are the G02 block's (line 6): the surface they cut is blamed on the block that drew
+  // it, G71's pass along the contour as G70's (G71's own legs keep line 3).
+  EXPECT_EQ(arcs[0].line, 6);
+  EXPECT_EQ(arcs[0].block, 2);  // still the G71 block's move (its ordinal), for the block rows
+  EXPECT_EQ(arcs[1].line, 6);
 }
 
 TEST(CompoundCycleArcs, FanucBWritesTheSameCompoundCycle) {

@@ -98,7 +98,12 @@ TEST(G73, TwoPassesShiftedByReliefAndAllowance) {
                                       {kFeed, 10.5, 2.5, 10.5, -9.5, 0.25, 3},
                                       {kRapid, 10.5, -9.5, 30, 2, 0, 4},
                                       {kRapid, 30, 2, 50, 2, 0, 0}});
-  EXPECT_EQ(result.toolpath.moves[3].line, 3);  // the legs carry the cycle block's line
+  // The legs along the contour carry its blocks' lines (N20's is line 5), the others the cycle
+  // block's.
+  EXPECT_EQ(result.toolpath.moves[1].line, 3);
+  EXPECT_EQ(result.toolpath.moves[2].line, 4);  // step 2: the ns block's move, shifted
+  EXPECT_EQ(result.toolpath.moves[3].line, 5);
+  EXPECT_EQ(result.toolpath.moves[4].line, 3);
   EXPECT_EQ(result.toolpath.moves[8].line, 6);
 }
 
@@ -282,6 +287,13 @@ TEST(G71, RoughsThenG70Finishes) {
                                       {kFeed, 15, -10, 20, -10, 0.1, 0},
                                       {kRapid, 20, -10, 20, 2, 0, 0}});
   EXPECT_EQ(result.toolpath.moves[2].line, 3);
+  // The infeed to B′ (the ns block's move) and the semi-finishing pass along N20 and N30 carry
+  // their blocks' lines, as G70's cut does; the rapid back to A is the cycle's own.
+  EXPECT_EQ(result.toolpath.moves[8].line, 3);
+  EXPECT_EQ(result.toolpath.moves[9].line, 4);
+  EXPECT_EQ(result.toolpath.moves[10].line, 5);
+  EXPECT_EQ(result.toolpath.moves[11].line, 6);
+  EXPECT_EQ(result.toolpath.moves[12].line, 3);
   EXPECT_EQ(result.toolpath.moves[14].line, 5);
   EXPECT_EQ(result.toolpath.moves[16].line, 7);
 }

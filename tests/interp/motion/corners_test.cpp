@@ -154,14 +154,14 @@ TEST(Corners, AContoursChamferIsRoughedAndFinished) {
   bool finished = false;
   for (std::size_t i = 0; i + 1 < result.toolpath.moves.size(); ++i) {
     const Move& m = result.toolpath.moves[i];
-    if (m.line != 5 || (m.to - (RZ(15, 0) + u1)).norm() > 1e-9) continue;
+    if (m.line != 5 || m.block == 2 || (m.to - (RZ(15, 0) + u1)).norm() > 1e-9) continue;  // G70's, not G71's
     EXPECT_NEAR((result.toolpath.moves[i + 1].to - RZ(15, -1)).norm(), 0, 1e-9);
     finished = true;
   }
   EXPECT_TRUE(finished);
   // G71's semi-finishing pass (step 7, no allowance) follows the same chamfer.
   const auto chamfer = std::find_if(result.toolpath.moves.begin(), result.toolpath.moves.end(), [&](const Move& m) {
-    return m.line == 3 && m.cycleStep == 7 && (m.from - (RZ(15, 0) + u1)).norm() < 1e-9;
+    return m.block == 2 && m.cycleStep == 7 && (m.from - (RZ(15, 0) + u1)).norm() < 1e-9;
   });
   ASSERT_NE(chamfer, result.toolpath.moves.end());
   EXPECT_NEAR((chamfer->to - RZ(15, -1)).norm(), 0, 1e-9);
