@@ -12,7 +12,7 @@
 #include <string>
 
 #include "job/job.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::app {
 

@@ -6,7 +6,7 @@
 #include "batch/merge.hpp"
 #include "batch/shard.hpp"
 #include "batch/summary.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 #include "job/exit_status.hpp"
 
 namespace lathesim::app {

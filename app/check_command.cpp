@@ -9,7 +9,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 #include "measure/deviation.hpp"
 #include "measure/drawing.hpp"
 #include "measure/gouge_causes.hpp"

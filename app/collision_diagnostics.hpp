@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "job/job.hpp"
 #include "render/crash_mark.hpp"
 #include "sim/simulate.hpp"

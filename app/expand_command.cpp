@@ -4,9 +4,9 @@
 #include <stdexcept>
 
 #include "app/commands.hpp"
-#include "interp/control/machine_choice.hpp"
-#include "interp/printable_text.hpp"
-#include "interp/toolpath_csv_spool.hpp"
+#include "interp/text/machine_choice.hpp"
+#include "interp/base/printable_text.hpp"
+#include "interp/output/toolpath_csv_spool.hpp"
 
 namespace lathesim::app {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 
 namespace lathesim::app {
 namespace {

@@ -10,9 +10,10 @@
 #include "app/commands.hpp"
 #include "app/interrupts.hpp"
 #include "app/picture_cli.hpp"
+#include "app/watch/watch_command.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 #include "job/exit_status.hpp"
 #include "job/stock_option.hpp"
 
@@ -160,6 +161,18 @@ int lathesimMain(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
   }
 
+  lathesim::app::WatchOptions watch;
+  auto* watchCmd = cli.add_subcommand(
+      "watch", "run a program again whenever it (or its setup or drawing) is saved; report.html follows on 127.0.0.1");
+  watchCmd->add_option("--port", watch.port, "the port on 127.0.0.1 (default 0: a free one, printed)")
+      ->check(CLI::Range(0, 65535));
+  watchCmd->allow_extras();  // run's options, or check's with --target: handed to each run as given
+  watchCmd->footer(
+      "Example:\n  lathesim watch parts/g71-g70-shaft/program.nc --setup parts/g71-g70-shaft/setup.toml --out out/shaft\n"
+      "prints the page's address; open it, edit and save the program, and the page shows the new part\n"
+      "(or the error, above the last good part). Each run is `lathesim run` with these options\n"
+      "(`lathesim check` when --target or --target-program is given). Ctrl-C stops it (exit 130).");
+
   lathesim::app::BatchCli batch(cli, runJobInProcess);
 
   try {
@@ -170,7 +183,7 @@ int lathesimMain(int argc, char** argv) {
     const bool unknownCommand = argc > 1 && argv[1][0] != '-' && cli.get_subcommands().empty();
     if (unknownCommand)  // CLI11 would only say that a subcommand is required
       std::cerr << "lathesim: unknown command '" << lathesim::interp::printable(argv[1])
-                << "': expected run, check, expand or batch\nRun 'lathesim --help' for more.\n";
+                << "': expected run, check, expand, watch or batch\nRun 'lathesim --help' for more.\n";
     else
       cli.exit(e);
     return lathesim::job::kExitBadCommandLine;
@@ -190,6 +203,14 @@ int lathesimMain(int argc, char** argv) {
   };
   try {
     if (batch.chosen()) return batch.run();  // it stops its jobs on a signal itself
+    if (*watchCmd) {  // its runs are processes of their own, each cleaning up after itself
+      watch.arguments = watchCmd->remaining();
+      if (watch.arguments.empty()) {
+        std::cerr << "lathesim watch: give the program, and run's options (see lathesim watch --help)\n";
+        return lathesim::job::kExitBadCommandLine;
+      }
+      return lathesim::app::watchCommand(watch);
+    }
     lathesim::app::removeOutputsOnInterrupt();
     if (*runCmd) {
       run.setup = optionalPath(runSetup);

@@ -9,13 +9,13 @@
 
 #include "geometry/mesh_shells.hpp"
 #include "interp/control/control_preset.hpp"
-#include "interp/control/machine_choice.hpp"
+#include "interp/text/machine_choice.hpp"
 #include "interp/control/machine_limits.hpp"
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "interp/interpreter.hpp"
 #include "job/machine_assumptions.hpp"
 #include "measure/thread_measure.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "sim/block_rows.hpp"
 #include "sim/simulate.hpp"
 

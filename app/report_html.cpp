@@ -9,6 +9,7 @@
 #include <string_view>
 #include <stdexcept>
 
+#include "app/report_steps.hpp"
 #include "app/staged_output.hpp"
 #include "batch/html_text.hpp"
 #include "viewer/viewer_script.hpp"
@@ -277,7 +278,8 @@ void writeListing(std::ostream& out, const Json& r, const sim::BlockRows& blocks
 }  // namespace
 
 void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const interp::PagedText& programText,
-                     const std::vector<HtmlPicture>& pictures, const std::string& glb, const std::filesystem::path& html) {
+                     const std::vector<HtmlPicture>& pictures, const std::string& glb, const Json& steps,
+                     const std::filesystem::path& html) {
   const std::string program = report.value("program", "");
   writeTextFile(html, [&](std::ostream& out) {
     out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -300,6 +302,8 @@ void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const int
             << fixed(at.value("z_mm", 0.0), 3) << " (" << escaped(c.value("message", "")) << ")</p>\n";
       }
     }
+    const std::string stepping = stepSection(steps, report);
+    out << stepping;
     if (!pictures.empty()) {
       out << "<h2>Pictures</h2>\n<div class=\"pictures\">\n";
       for (const HtmlPicture& p : pictures) {
@@ -313,6 +317,7 @@ void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const int
     out << threadsSection(report) << checkSection(report);
     writeListing(out, report, blocks, programText);
     out << "</main>\n";
+    if (!stepping.empty() && !steps.is_null()) out << stepScript();
     if (!glb.empty()) out << "<script type=\"application/octet-stream\" id=\"part-model\">" << batch::base64(glb)
                           << "</script>\n<script>" << viewer::viewerScript() << "</script>\n";
     out << "</body>\n</html>\n";

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "interp/text/paged_text.hpp"
+#include "interp/base/paged_text.hpp"
 #include "sim/block_rows.hpp"
 
 namespace lathesim::app {
@@ -23,8 +23,9 @@ struct HtmlPicture {
 /// `programText`, with `pictures` and the 3D model `glb` (empty: no 3D view). The listing is
 /// written as the text and the rows are read, holding figures only for the lines run more
 /// than once or out of order: a long program's page takes no more memory than a short one's.
+/// `steps` (StepRecording::json) adds the stepping through the program (app/report_steps.hpp).
 void writeReportHtml(const nlohmann::ordered_json& report, const sim::BlockRows& blocks,
                      const interp::PagedText& programText, const std::vector<HtmlPicture>& pictures,
-                     const std::string& glb, const std::filesystem::path& html);
+                     const std::string& glb, const nlohmann::ordered_json& steps, const std::filesystem::path& html);
 
 }  // namespace lathesim::app

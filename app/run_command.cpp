@@ -2,7 +2,7 @@
 
 #include "app/commands.hpp"
 #include "app/run_pipeline.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 
 namespace lathesim::app {
 

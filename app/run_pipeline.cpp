@@ -14,9 +14,9 @@
 #include "job/collision_checks.hpp"
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
-#include "interp/printable_text.hpp"
-#include "interp/toolpath_csv.hpp"
-#include "interp/toolpath_csv_spool.hpp"
+#include "interp/base/printable_text.hpp"
+#include "interp/output/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv_spool.hpp"
 #include "measure/thread_moves.hpp"
 #include "measure/thread_measure.hpp"
 #include "render/close_up_region.hpp"
@@ -143,9 +143,11 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   if (drawsToolpath(options))
     run.drawn = std::make_unique<render::DrawnToolpath>(
         drawnToleranceMm(setup, options.pictures.widthPx, options.pictures.heightPx));
+  if (options.outputs.html && out) run.steps = std::make_unique<StepRecording>(voxel);
   // The sinks besides the simulation that every move goes to, whether streamed or kept.
   std::vector<interp::MoveSink*> others;
-  for (interp::MoveSink* sink : {static_cast<interp::MoveSink*>(run.moves.get()), static_cast<interp::MoveSink*>(run.drawn.get())})
+  for (interp::MoveSink* sink : {static_cast<interp::MoveSink*>(run.moves.get()), static_cast<interp::MoveSink*>(run.drawn.get()),
+                                 static_cast<interp::MoveSink*>(run.steps.get())})
     if (sink) others.push_back(sink);
   run.progress = std::make_unique<Progress>(figures.program);
   Stopwatch bar;
@@ -160,10 +162,20 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   std::unique_ptr<CutRecording> recording;
   if (options.animation.mp4 && out)
     recording = std::make_unique<CutRecording>(run.job, options.animation, figures.program, *out);
+  // What the simulation shows the stock to as it cuts: the video's frames, the page's steps.
+  std::vector<sim::CutObserver> observers;
+  if (recording) observers.push_back(recording->observer());
+  if (run.steps) observers.push_back(run.steps->observer());
+  const sim::CutObserver observer =
+      observers.empty() ? sim::CutObserver{}
+                        : [observers](std::size_t first, std::size_t end, const sim::Stock& stock,
+                                      const std::vector<sim::Collision>& collisions) {
+                            for (const auto& each : observers) each(first, end, stock, collisions);
+                          };
   // A streamed run's toolpath for measuring threads: its thread moves (thread_moves.hpp).
   interp::Toolpath threadToolpath;
   if (streams) {
-    sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup));
+    sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup), observer);
     if (options.outputs.csv && out) {
       run.csv = std::make_unique<interp::ToolpathCsvSpool>();
       others.push_back(run.csv.get());
@@ -185,13 +197,14 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     figures.moves = run.job.toolpath.moves.size();
     figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
     if (barProblem) warn(run, *barProblem);
-    figures.simulation = sim::simulate(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup),
-                                       recording ? recording->observer() : sim::CutObserver{});
+    figures.simulation =
+        sim::simulate(run.job.toolpath, outlines, *run.stock, progress, &checks, thicknessesOf(setup), observer);
   }
   figures.warnings.insert(figures.warnings.begin(), run.job.warnings.begin(), run.job.warnings.end());
   figures.notes = run.job.notes;
   figures.stops = run.job.toolpath.stops;
   figures.skipped = run.job.skippedBlocks;
+  if (run.steps) run.steps->finish(*run.stock);
   if (recording) {
     run.progress->stage("finishing the video");
     recording->finish(*run.stock, figures.simulation.collisions);
@@ -408,7 +421,8 @@ void stageReports(const SimulatedRun& run, const nlohmann::ordered_json& report,
     out.write("report.json", [&](const Path& file) { writeReport(report, blocks, file); });
     if (run.outputs.html)
       out.write("report.html", [&](const Path& file) {
-        writeReportHtml(report, blocks, run.job.programText.text(), run.pictures, run.modelGlb, file);
+        writeReportHtml(report, blocks, run.job.programText.text(), run.pictures, run.modelGlb,
+                        run.steps ? run.steps->json(blocks, run.job.setup, run.job.toolpath.startPosition) : nullptr, file);
       });
   });
 }

@@ -13,9 +13,10 @@
 #include "app/report.hpp"
 #include "app/report_html.hpp"
 #include "app/staged_output.hpp"
+#include "app/step_recording.hpp"
 #include "geometry/triangle_mesh.hpp"
-#include "interp/move_spool.hpp"
-#include "interp/toolpath_csv_spool.hpp"
+#include "interp/output/move_spool.hpp"
+#include "interp/output/toolpath_csv_spool.hpp"
 #include "render/drawn_toolpath.hpp"
 #include "render/rgb_image.hpp"
 #include "sim/block_rows.hpp"
@@ -61,6 +62,8 @@ struct SimulatedRun {
   std::unique_ptr<interp::MoveSpool> moves;
   // The toolpath as the pictures and the 3D view draw it, when they are asked for; null otherwise.
   std::unique_ptr<render::DrawnToolpath> drawn;
+  // The run block by block for report.html's stepping; null when no report.html is written.
+  std::unique_ptr<StepRecording> steps;
 
   bool partedOff() const { return figures.simulation.part != nullptr; }
   /// The finished part: the piece that parted off, or else the stock.

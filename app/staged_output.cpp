@@ -12,7 +12,7 @@
 
 #include "app/interrupts.hpp"
 #include "app/output_names.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 
 namespace lathesim::app {
 namespace {

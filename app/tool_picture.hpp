@@ -3,7 +3,7 @@
 // standing at that move's end (or at the start position if there are no moves).
 
 #include "job/setup.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "render/part_image.hpp"
 
 namespace lathesim::app {

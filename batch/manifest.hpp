@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "batch/batch_job.hpp"
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 
 namespace lathesim::batch {
 

@@ -9,18 +9,18 @@
 #include <string_view>
 #include <vector>
 
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "interp/control/control_parameters.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
-#include "interp/execution/step_guard.hpp"
-#include "interp/move.hpp"
-#include "interp/move_sink.hpp"
+#include "interp/state/step_guard.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/move_sink.hpp"
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/compensation/uncompensated_nose.hpp"
 #include "interp/text/control_family.hpp"
-#include "interp/text/paged_text.hpp"
-#include "interp/execution/work_frame.hpp"
+#include "interp/base/paged_text.hpp"
+#include "interp/state/work_frame.hpp"
 
 namespace lathesim::interp {
 
@@ -55,7 +55,7 @@ struct InterpreterOptions {
   std::optional<RZ> machineZero;  // G53's zero (radius, Z) in the setup's frame; the
                                   // reference point (or the start) if unset
   long long maxSteps = kDefaultMaxSteps;  // blocks a run may run again (a block's first run is
-                                         // free): ends endless loops (execution/step_guard.hpp)
+                                         // free): ends endless loops (state/step_guard.hpp)
   std::map<int, double> macroVariables;  // common macro variables set before the run
                                          // (#100–#199, #500–#999)
   std::size_t maxMoves = kDefaultMaxMoves;  // more is an error at the block that passes it

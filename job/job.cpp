@@ -6,14 +6,14 @@
 
 #include <fmt/format.h>
 
-#include "interp/control/tool_word.hpp"
+#include "interp/text/tool_word.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/text/stated_stock.hpp"
 #include "interp/text/program.hpp"
 #include "job/comment_tools.hpp"
 #include "job/stock_option.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/printable_text.hpp"
+#include "interp/base/printable_text.hpp"
 #include "job/control_setup.hpp"
 
 namespace lathesim::job {
@@ -76,7 +76,7 @@ void mountToolsNamedInComments(Job& job, const std::string& programName) {
 }
 
 // The program's evidence read, and the dialect and control not stated chosen from it
-// (interp/control/machine_choice.hpp); the setup's [control] keys kept over a chosen preset.
+// (interp/text/machine_choice.hpp); the setup's [control] keys kept over a chosen preset.
 void chooseMachineOf(Job& job) {
   Setup& setup = job.setup;
   job.evidence = interp::readMachineEvidence(job.programText.text());

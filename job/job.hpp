@@ -9,11 +9,11 @@
 
 #include "job/setup.hpp"
 #include "interp/control/dialect.hpp"
-#include "interp/control/machine_choice.hpp"
+#include "interp/text/machine_choice.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/text/machine_evidence.hpp"
-#include "interp/move.hpp"
-#include "interp/move_sink.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/move_sink.hpp"
 #include "interp/text/file_text.hpp"
 
 namespace lathesim::job {

@@ -12,7 +12,7 @@
 
 #include <toml++/toml.h>
 
-#include "interp/execution/step_guard.hpp"
+#include "interp/state/step_guard.hpp"
 #include "job/offset_setup.hpp"  // ReportProblem
 
 namespace lathesim::job {

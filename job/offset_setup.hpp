@@ -22,7 +22,7 @@
 #include <toml++/toml.h>
 
 #include "interp/compensation/tool_offset.hpp"
-#include "interp/execution/work_frame.hpp"
+#include "interp/state/work_frame.hpp"
 
 namespace lathesim::job {
 

@@ -9,14 +9,14 @@
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/control/machine_limits.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "interp/compensation/tool_offset.hpp"
-#include "interp/execution/work_frame.hpp"
+#include "interp/state/work_frame.hpp"
 #include "job/macro_setup.hpp"
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar

@@ -47,7 +47,7 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "measure/iso_tolerances.hpp"
 
 namespace lathesim::measure {

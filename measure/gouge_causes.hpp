@@ -8,7 +8,7 @@
 // bar never held (the drawing asks for more than the stock has) has no cause.
 
 #include "measure/deviation.hpp"
-#include "interp/move_spool.hpp"
+#include "interp/output/move_spool.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock_spec.hpp"
 

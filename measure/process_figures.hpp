@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "interp/move_spool.hpp"
+#include "interp/output/move_spool.hpp"
 #include "sim/block_rows.hpp"
 
 namespace lathesim::measure {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/move_spool.hpp"
+#include "interp/output/move_spool.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::measure {

@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "interp/move.hpp"
-#include "interp/move_sink.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/move_sink.hpp"
 
 namespace lathesim::measure {
 

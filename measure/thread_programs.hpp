@@ -14,7 +14,7 @@
 
 #include "geometry/convex_polygon.hpp"
 #include "interp/control/dialect.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::measure {
 

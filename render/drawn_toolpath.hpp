@@ -15,7 +15,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "interp/move_sink.hpp"
+#include "interp/base/move_sink.hpp"
 
 namespace lathesim::render {
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::render {
 

@@ -12,7 +12,7 @@
 #include "geometry/meridian_profile.hpp"
 #include "geometry/part_dimensions.hpp"
 #include "geometry/triangle_mesh.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "render/crash_mark.hpp"
 #include "render/picture_frame.hpp"
 #include "render/rgb_image.hpp"

@@ -9,7 +9,7 @@
 
 #include "geometry/part_dimensions.hpp"
 #include "interp/motion/toolpath_clock.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "render/overlay_2d.hpp"
 #include "render/part_image.hpp"
 #include "render/picture_frame.hpp"

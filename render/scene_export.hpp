@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "geometry/triangle_mesh.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "render/crash_mark.hpp"
 
 namespace lathesim::render {

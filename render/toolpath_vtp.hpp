@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "interp/move_spool.hpp"
+#include "interp/output/move_spool.hpp"
 
 namespace lathesim::render {
 

@@ -19,7 +19,7 @@
 
 #include <vtkSmartPointer.h>
 
-#include "interp/spool_file.hpp"
+#include "interp/output/spool_file.hpp"
 
 class vtkDataCompressor;
 

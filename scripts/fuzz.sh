@@ -17,7 +17,7 @@ cd "$(dirname "$0")/.."
 
 harnesses=(lexer interpreter setup drawing iso_codes)
 build=build-fuzz
-flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g -O1"
+flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -gline-tables-only -O1"
 
 build() {
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLATHESIM_FUZZ_ONLY=ON \

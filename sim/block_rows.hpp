@@ -7,7 +7,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "interp/spool_file.hpp"
+#include "interp/output/spool_file.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::sim {

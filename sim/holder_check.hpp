@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "sim/chuck_spec.hpp"
 #include "sim/stock.hpp"
 #include "sim/stock_spec.hpp"

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "geometry/revolved_region.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock.hpp"
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "sim/holder_check.hpp"
 #include "sim/stock.hpp"
 

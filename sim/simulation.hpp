@@ -11,8 +11,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "interp/move.hpp"
-#include "interp/move_sink.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/move_sink.hpp"
 #include "sim/cut_history.hpp"
 #include "sim/part_off.hpp"
 #include "sim/simulate.hpp"

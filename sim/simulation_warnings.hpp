@@ -1,7 +1,7 @@
 #pragma once
 // The warnings the simulation gives, worded in one place (see SimulationWarning).
 
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock.hpp"
 

@@ -12,8 +12,8 @@
 
 #include <vector>
 
-#include "interp/cycles/cycle_leg.hpp"
-#include "interp/move.hpp"
+#include "interp/contour/cycle_leg.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::interp {
 

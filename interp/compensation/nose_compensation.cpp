@@ -15,7 +15,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/cycles/contour_geometry.hpp"
+#include "interp/contour/contour_geometry.hpp"
 #include "interp/compensation/tool_offset.hpp"
 
 namespace lathesim::interp {

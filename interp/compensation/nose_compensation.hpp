@@ -29,9 +29,9 @@
 
 #include <vector>
 
-#include "interp/cycles/contour.hpp"
-#include "interp/move.hpp"
-#include "interp/result.hpp"
+#include "interp/contour/contour.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

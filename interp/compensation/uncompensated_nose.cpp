@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "geometry/imaginary_tip.hpp"
-#include "interp/cycles/contour.hpp"
-#include "interp/cycles/contour_geometry.hpp"
+#include "interp/contour/contour.hpp"
+#include "interp/contour/contour_geometry.hpp"
 
 namespace lathesim::interp {
 namespace {

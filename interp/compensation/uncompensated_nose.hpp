@@ -17,8 +17,8 @@
 #include <optional>
 #include <vector>
 
-#include "interp/move.hpp"
-#include "interp/result.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

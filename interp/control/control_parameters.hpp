@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "interp/control/machine_m_codes.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::interp {
 

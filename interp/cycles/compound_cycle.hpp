@@ -9,10 +9,10 @@
 
 #include "interp/execution/block_executor.hpp"
 #include "interp/text/block_parser.hpp"
-#include "interp/cycles/cycle_leg.hpp"
+#include "interp/contour/cycle_leg.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/execution/modal_state.hpp"
-#include "interp/result.hpp"
+#include "interp/state/modal_state.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

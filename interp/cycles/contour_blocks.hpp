@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "interp/execution/block_executor.hpp"
-#include "interp/cycles/contour.hpp"
+#include "interp/contour/contour.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/text/lexer.hpp"
-#include "interp/execution/modal_state.hpp"
+#include "interp/state/modal_state.hpp"
 #include "interp/text/program.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

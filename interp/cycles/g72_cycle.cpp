@@ -7,7 +7,7 @@
 // running the G71 engine (stock_removal.cpp, whose move list and step numbers apply with X and
 // Z exchanged), and mirroring the legs back.
 
-#include "interp/cycles/contour_geometry.hpp"
+#include "interp/contour/contour_geometry.hpp"
 #include "interp/cycles/roughing_cycle.hpp"
 #include "interp/cycles/stock_removal.hpp"
 

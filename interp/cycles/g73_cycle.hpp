@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/cycles/contour.hpp"
-#include "interp/cycles/cycle_leg.hpp"
+#include "interp/contour/contour.hpp"
+#include "interp/contour/cycle_leg.hpp"
 
 namespace lathesim::interp {
 

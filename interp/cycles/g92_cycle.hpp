@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/cycles/cycle_leg.hpp"
+#include "interp/contour/cycle_leg.hpp"
 #include "interp/cycles/thread_cut.hpp"
 
 namespace lathesim::interp {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/cycles/cycle_leg.hpp"
+#include "interp/contour/cycle_leg.hpp"
 
 namespace lathesim::interp {
 

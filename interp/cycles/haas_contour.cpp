@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/cycles/contour_geometry.hpp"
+#include "interp/contour/contour_geometry.hpp"
 
 namespace lathesim::interp {
 namespace {

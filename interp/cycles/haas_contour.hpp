@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "geometry/rz.hpp"
-#include "interp/cycles/contour.hpp"
-#include "interp/result.hpp"
+#include "interp/contour/contour.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

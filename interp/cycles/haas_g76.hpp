@@ -5,10 +5,10 @@
 #include <functional>
 #include <vector>
 
-#include "interp/cycles/cycle_leg.hpp"
-#include "interp/execution/modal_state.hpp"
+#include "interp/contour/cycle_leg.hpp"
+#include "interp/state/modal_state.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 
 namespace lathesim::interp {

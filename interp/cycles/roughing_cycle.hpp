@@ -6,9 +6,9 @@
 #include <limits>
 #include <vector>
 
-#include "interp/cycles/contour.hpp"
-#include "interp/cycles/cycle_leg.hpp"
-#include "interp/result.hpp"
+#include "interp/contour/contour.hpp"
+#include "interp/contour/cycle_leg.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

@@ -83,8 +83,8 @@
 
 #include <fmt/format.h>
 
-#include "interp/cycles/contour_geometry.hpp"
-#include "interp/cycles/contour_troughs.hpp"
+#include "interp/contour/contour_geometry.hpp"
+#include "interp/contour/contour_troughs.hpp"
 
 namespace lathesim::interp {
 namespace {

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "geometry/rz.hpp"
-#include "interp/cycles/contour.hpp"
-#include "interp/cycles/cycle_leg.hpp"
-#include "interp/result.hpp"
+#include "interp/contour/contour.hpp"
+#include "interp/contour/cycle_leg.hpp"
+#include "interp/base/result.hpp"
 #include "interp/cycles/roughing_cycle.hpp"
 
 namespace lathesim::interp {

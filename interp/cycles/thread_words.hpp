@@ -11,8 +11,8 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/control/threading_words.hpp"
 #include "interp/cycles/thread_cut.hpp"
-#include "interp/execution/modal_state.hpp"
-#include "interp/result.hpp"
+#include "interp/state/modal_state.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/text/word_units.hpp"
 

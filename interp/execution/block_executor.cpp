@@ -28,7 +28,7 @@
 #include "interp/execution/data_setting.hpp"
 #include "interp/execution/program_runner.hpp"
 #include "interp/execution/subprogram_call.hpp"
-#include "interp/control/tool_word.hpp"
+#include "interp/text/tool_word.hpp"
 #include "interp/execution/work_coordinates.hpp"
 #include "interp/text/label_number.hpp"
 #include "interp/text/word_units.hpp"

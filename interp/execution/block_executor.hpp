@@ -9,10 +9,10 @@
 #include "interp/macro/variables.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/execution/modal_state.hpp"
+#include "interp/state/modal_state.hpp"
 #include "interp/text/program.hpp"
 #include "interp/execution/program_flow.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

@@ -16,7 +16,7 @@
 #include "interp/macro/macro_call.hpp"
 #include "interp/text/program.hpp"
 #include "interp/execution/program_flow.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

@@ -11,9 +11,9 @@
 //                          at once: the tool stays where it is, its coordinates change.
 // G10 P0 (the T series' work coordinate system shift) and other L numbers are refused.
 
-#include "interp/execution/modal_state.hpp"
+#include "interp/state/modal_state.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 
 namespace lathesim::interp {

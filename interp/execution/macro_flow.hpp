@@ -1,6 +1,6 @@
 #pragma once
 // The statements of Custom Macro B run against the variables: assignments (#3000 raises an
-// alarm, #3006 stops with a message), IF, GOTO, WHILE/DO/END (macro/statement.hpp). What a
+// alarm, #3006 stops with a message), IF, GOTO, WHILE/DO/END (text/statement.hpp). What a
 // statement decides is the block to run next; jumps back are reported to the step guard.
 // The loops running are kept per program (the main program, and each subprogram or macro
 // called), innermost last: an END continues only the loop its WHILE started, so a GOTO may
@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "interp/execution/step_guard.hpp"
+#include "interp/state/step_guard.hpp"
 #include "interp/macro/loop_pairs.hpp"
-#include "interp/macro/statement.hpp"
+#include "interp/text/statement.hpp"
 #include "interp/macro/variables.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp {

@@ -19,8 +19,8 @@
 #include "interp/compensation/uncompensated_nose.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/motion/travel_limits.hpp"
-#include "interp/move_sink.hpp"
-#include "interp/result.hpp"
+#include "interp/base/move_sink.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

@@ -14,7 +14,7 @@
 
 #include "interp/execution/move_pipeline.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp {

@@ -4,10 +4,10 @@
 // variables. For blocks run from elsewhere than the program runner (the contour blocks of
 // G70–G73).
 
-#include "interp/execution/modal_state.hpp"
+#include "interp/state/modal_state.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/macro/variables.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/text/program.hpp"
 

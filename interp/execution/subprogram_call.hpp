@@ -8,7 +8,7 @@
 
 #include "interp/text/block_parser.hpp"
 #include "interp/execution/program_flow.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

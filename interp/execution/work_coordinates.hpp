@@ -1,15 +1,15 @@
 #pragma once
 // G54–G59 (work coordinate systems) and G53 (a one-shot move in machine coordinates), on the
-// frame of interp/execution/work_frame.hpp.
+// frame of interp/state/work_frame.hpp.
 //   G54…G59       selects a system; the tool stays where it is, its coordinates change.
 //   G53 X_ Z_     rapid to the machine coordinates X (a diameter) and Z: machine zero is where
 //                 the setup puts it (InterpreterOptions::machineZero, by default the reference
 //                 point). Absolute only: U/W, or G91, are errors. As on the GSK980TDi (3.20),
 //                 the move is a G00 and it cancels G41/G42 (the G53 move is the cancel move).
 
-#include "interp/execution/modal_state.hpp"
+#include "interp/state/modal_state.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/block_parser.hpp"
 
 namespace lathesim::interp {

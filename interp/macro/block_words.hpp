@@ -25,9 +25,9 @@
 #include <string>
 #include <vector>
 
-#include "interp/macro/statement.hpp"
+#include "interp/text/statement.hpp"
 #include "interp/macro/variables.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/lexer.hpp"
 #include "interp/text/word_units.hpp"
 

@@ -11,9 +11,9 @@
 
 #include <optional>
 
-#include "interp/macro/expression.hpp"
+#include "interp/text/expression.hpp"
 #include "interp/macro/variables.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp::macro {
 

@@ -26,8 +26,8 @@
 #include <optional>
 #include <vector>
 
-#include "interp/macro/expression.hpp"
-#include "interp/result.hpp"
+#include "interp/text/expression.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp::macro {
 

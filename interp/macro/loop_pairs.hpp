@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <map>
 
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/program.hpp"
 
 namespace lathesim::interp::macro {

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "interp/macro/variables.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp::macro {

@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp::macro {
 

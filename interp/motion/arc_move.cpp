@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv.hpp"
 
 namespace lathesim::interp {
 namespace {

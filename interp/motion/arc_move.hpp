@@ -25,7 +25,7 @@
 
 #include "geometry/rz.hpp"
 #include "interp/control/control_parameters.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

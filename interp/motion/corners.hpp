@@ -15,8 +15,8 @@
 
 #include <vector>
 
-#include "interp/move.hpp"
-#include "interp/result.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

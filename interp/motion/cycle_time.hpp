@@ -19,8 +19,8 @@
 
 #include "interp/control/machine_limits.hpp"
 #include "interp/motion/spindle_angle.hpp"
-#include "interp/move.hpp"
-#include "interp/result.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

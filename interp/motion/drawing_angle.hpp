@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "geometry/rz.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::interp {
 

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "interp/cycles/cycle_leg.hpp"
+#include "interp/contour/cycle_leg.hpp"
 
 namespace lathesim::interp {
 

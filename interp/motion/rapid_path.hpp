@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "interp/control/machine_limits.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::interp {
 

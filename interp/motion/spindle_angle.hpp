@@ -11,7 +11,7 @@
 //     (held at the end point's value during a rapid, lathe-cycles.md §7); none while stopped.
 
 #include "interp/control/machine_limits.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::interp {
 

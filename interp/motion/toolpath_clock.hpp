@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::interp {
 

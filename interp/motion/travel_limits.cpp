@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "interp/cycles/contour_geometry.hpp"
-#include "interp/toolpath_csv.hpp"
+#include "interp/contour/contour_geometry.hpp"
+#include "interp/output/toolpath_csv.hpp"
 
 namespace lathesim::interp {
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "interp/control/machine_limits.hpp"
-#include "interp/move.hpp"
-#include "interp/result.hpp"
+#include "interp/base/move.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

@@ -12,7 +12,7 @@
 #include "interp/control/gcode_table.hpp"
 #include "interp/control/machine_m_codes.hpp"
 #include "interp/text/lexer.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "interp/text/regex_text.hpp"
-#include "interp/text/utf8.hpp"
+#include "interp/base/utf8.hpp"
 
 namespace lathesim::interp {
 namespace {

@@ -16,7 +16,7 @@
 #include <string_view>
 #include <utility>
 
-#include "interp/text/paged_text.hpp"
+#include "interp/base/paged_text.hpp"
 
 namespace lathesim::interp {
 

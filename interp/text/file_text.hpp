@@ -21,7 +21,7 @@
 #include <memory>
 #include <string>
 
-#include "interp/text/paged_text.hpp"
+#include "interp/base/paged_text.hpp"
 
 namespace lathesim::interp {
 

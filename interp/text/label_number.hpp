@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp {

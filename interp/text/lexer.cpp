@@ -11,7 +11,7 @@
 
 #include "interp/text/lookalikes.hpp"
 #include "interp/text/typing_slips.hpp"
-#include "interp/text/utf8.hpp"
+#include "interp/base/utf8.hpp"
 
 namespace lathesim::interp {
 namespace {

@@ -36,7 +36,7 @@
 #include <string_view>
 #include <vector>
 
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/text/utf8.hpp"
+#include "interp/base/utf8.hpp"
 
 namespace lathesim::interp {
 namespace {

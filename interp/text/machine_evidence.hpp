@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "interp/text/control_family.hpp"
-#include "interp/text/paged_text.hpp"
+#include "interp/base/paged_text.hpp"
 
 namespace lathesim::interp {
 

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "interp/macro/block_syntax.hpp"
+#include "interp/text/block_syntax.hpp"
 #include "interp/text/label_number.hpp"
 #include "interp/text/lexer.hpp"
 

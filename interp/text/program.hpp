@@ -32,12 +32,12 @@
 #include <variant>
 #include <vector>
 
-#include "interp/macro/statement.hpp"
+#include "interp/text/statement.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/text/file_text.hpp"
 #include "interp/text/lexer.hpp"
-#include "interp/text/paged_text.hpp"
-#include "interp/result.hpp"
+#include "interp/base/paged_text.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp {
 

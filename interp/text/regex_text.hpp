@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "interp/text/utf8.hpp"
+#include "interp/base/utf8.hpp"
 
 namespace lathesim::interp {
 

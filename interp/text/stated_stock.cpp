@@ -4,7 +4,7 @@
 #include <string>
 
 #include "interp/text/regex_text.hpp"
-#include "interp/text/utf8.hpp"
+#include "interp/base/utf8.hpp"
 
 namespace lathesim::interp {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "interp/text/paged_text.hpp"
+#include "interp/base/paged_text.hpp"
 
 namespace lathesim::interp {
 

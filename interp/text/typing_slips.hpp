@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp {

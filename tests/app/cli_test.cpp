@@ -23,7 +23,7 @@
 
 #include "interp/control/control_preset.hpp"
 #include "interp/text/text_lines.hpp"
-#include "interp/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::app {

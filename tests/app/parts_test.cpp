@@ -27,7 +27,7 @@
 #include "job/setup.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/interpreter.hpp"
-#include "interp/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock.hpp"
 

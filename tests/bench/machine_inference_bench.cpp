@@ -1,5 +1,5 @@
 // The cost of reading the machine from the program (interp/text/machine_evidence.hpp and
-// interp/control/machine_choice.hpp) against `lathesim expand` of the same program, measured
+// interp/text/machine_choice.hpp) against `lathesim expand` of the same program, measured
 // in one run: a generated program of 20,000 blocks (a system-B header, then feed moves back
 // and forth along a Φ40 bar). The bound: the inference under 5 % of the expand.
 //   BM_Expand           the whole expand as the command runs it: the job opened (the evidence
@@ -17,10 +17,10 @@
 
 #include <fmt/format.h>
 
-#include "interp/control/machine_choice.hpp"
+#include "interp/text/machine_choice.hpp"
 #include "interp/text/file_text.hpp"
 #include "interp/text/machine_evidence.hpp"
-#include "interp/toolpath_csv_spool.hpp"
+#include "interp/output/toolpath_csv_spool.hpp"
 #include "job/job.hpp"
 
 namespace {

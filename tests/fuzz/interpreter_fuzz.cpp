@@ -12,7 +12,7 @@
 #include "interp/control/control_preset.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/motion/cycle_time.hpp"
-#include "interp/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace lathesim;

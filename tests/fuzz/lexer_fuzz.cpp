@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "interp/control/dialect.hpp"
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "interp/text/block_parser.hpp"
 #include "interp/text/lexer.hpp"
 #include "interp/text/program.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "interp/interpreter.hpp"
-#include "interp/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv.hpp"
 #include "test_support.hpp"
 
 namespace lathesim::interp {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "interp/control/control_preset.hpp"
-#include "interp/cycles/cycle_leg.hpp"
+#include "interp/contour/cycle_leg.hpp"
 #include "interp/interpreter.hpp"
 
 namespace lathesim::interp::test {

@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "geometry/triangle_mesh.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 
 namespace lathesim::render::test {
 

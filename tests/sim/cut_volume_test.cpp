@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "interp/interpreter.hpp"
 #include "sim/simulate.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "sim/simulate.hpp"
 
 namespace lathesim::sim::test {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/convex_polygon.hpp"
-#include "interp/move.hpp"
+#include "interp/base/move.hpp"
 #include "test_moves.hpp"
 
 namespace lathesim::sim::test {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "interp/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv.hpp"
 
 namespace lathesim::test {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "../test_support.hpp"
-#include "interp/cycles/contour_geometry.hpp"
+#include "interp/contour/contour_geometry.hpp"
 #include "interp/cycles/roughing_cycle.hpp"
 #include "roughing_test_support.hpp"
 

@@ -12,10 +12,10 @@
 #include <string_view>
 #include <vector>
 
-#include "interp/cycles/contour.hpp"
-#include "interp/cycles/cycle_leg.hpp"
+#include "interp/contour/contour.hpp"
+#include "interp/contour/cycle_leg.hpp"
 #include "interp/cycles/roughing_cycle.hpp"
-#include "interp/result.hpp"
+#include "interp/base/result.hpp"
 
 namespace lathesim::interp::test {
 

@@ -12,7 +12,7 @@
 
 #include "../test_support.hpp"
 #include "interp/motion/cycle_time.hpp"
-#include "interp/toolpath_csv.hpp"
+#include "interp/output/toolpath_csv.hpp"
 
 namespace lathesim::interp {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "interp/macro/expression_parser.hpp"
+#include "interp/text/expression_parser.hpp"
 #include "interp/text/lexer.hpp"
 
 namespace lathesim::interp::macro {

@@ -22,7 +22,7 @@
 #include <thread>
 
 #include "../test_support.hpp"
-#include "interp/diagnostic.hpp"
+#include "interp/base/diagnostic.hpp"
 #include "interp/text/control_family.hpp"
 #include "interp/text/file_text.hpp"
 #include "interp/text/program.hpp"

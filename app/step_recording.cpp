@@ -1,0 +1,150 @@
+#include "app/step_recording.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "app/tool_picture.hpp"
+#include "geometry/meridian_profile.hpp"
+#include "geometry/profile_polylines.hpp"
+#include "sim/stock.hpp"
+
+namespace lathesim::app {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+long micrometres(double mm) { return std::lround(mm * 1000.0); }
+
+Json flat(const std::vector<std::array<long, 2>>& points, std::size_t from, std::size_t to) {
+  Json values = Json::array();
+  for (std::size_t i = from; i < to; ++i) values.push_back(points[i][0]), values.push_back(points[i][1]);
+  return values;
+}
+
+/// A polyline as its change from the most alike one of `before`: [index, head, tail, the points
+/// between] keeps `head` points from that one's start and `tail` from its end; [-1, 0, 0, all]
+/// when none shares its start or its end.
+Json delta(const std::vector<std::array<long, 2>>& now, const std::vector<std::vector<std::array<long, 2>>>& before) {
+  long best = -1;
+  std::size_t bestHead = 0, bestTail = 0;
+  for (std::size_t p = 0; p < before.size(); ++p) {
+    const auto& old = before[p];
+    const std::size_t limit = std::min(old.size(), now.size());
+    std::size_t head = 0;
+    while (head < limit && old[head] == now[head]) ++head;
+    std::size_t tail = 0;
+    while (tail < limit - head && old[old.size() - 1 - tail] == now[now.size() - 1 - tail]) ++tail;
+    if (head + tail > bestHead + bestTail) best = static_cast<long>(p), bestHead = head, bestTail = tail;
+  }
+  return Json::array({best, bestHead, bestTail, flat(now, bestHead, now.size() - bestTail)});
+}
+
+/// The spindle's speed at the end of `move`: S under G97; under G96 the surface speed at that
+/// diameter, held to the G50 limit.
+double rpmAtEnd(const interp::Move& move) {
+  if (move.spindleMode == interp::SpindleMode::Rpm) return move.spindleS;
+  const double rpm = 1000.0 * move.spindleS / (std::numbers::pi * std::max(diameterOf(move.to), 1e-3));
+  return move.spindleLimitRpm ? std::min(rpm, *move.spindleLimitRpm) : rpm;
+}
+
+Json polygon(const std::vector<RZ>& points) {
+  Json values = Json::array();
+  for (const RZ& p : points) values.push_back(micrometres(p.x())), values.push_back(micrometres(p.y()));
+  return values;
+}
+
+double rounded(double value, double step) { return std::round(value / step) * step; }
+
+}  // namespace
+
+void StepRecording::take(interp::Move move) {
+  const std::size_t index = moves_++;
+  if (moves_ > kMaxSteps * 4 || steps_.size() > kMaxSteps) return;  // json() leaves the stepping out
+  if (steps_.empty() || steps_.back().block != move.block || steps_.back().endMove != index)
+    steps_.push_back({move.block, move.line, move.tool, index, index});
+  Step& step = steps_.back();
+  step.endMove = index + 1;
+  step.timeS += move.timeS;
+  if (move.kind != interp::MoveKind::Rapid && move.kind != interp::MoveKind::Dwell) step.feed = move.feed;
+  step.spindleS = move.spindleS;
+  step.rpm = rpmAtEnd(move);
+  step.tool = move.tool;
+  step.end = {micrometres(move.to.x()), micrometres(move.to.y())};
+  path_.insert(path_.end(), {static_cast<long>(move.kind), step.end[0], step.end[1]});
+  if (interp::isArc(move.kind)) path_.insert(path_.end(), {micrometres(move.center.x()), micrometres(move.center.y())});
+}
+
+void StepRecording::take(const sim::Stock& stock, std::size_t afterMove, bool always) {
+  if (!always && !sections_.empty() && afterMove < sections_.back().afterMove + everyMoves_) return;
+  Polylines polylines;
+  for (const auto& line : profilePolylines(MeridianProfile::fromSection(stock.meridianSection()), toleranceMm_)) {
+    auto& points = polylines.emplace_back();
+    for (const RZ& p : line) points.push_back({micrometres(p.x()), micrometres(p.y())});
+  }
+  if (!sections_.empty() && sections_.back().polylines == polylines) return;
+  sections_.push_back({afterMove, std::move(polylines)});
+  if (sections_.size() > kMaxSections) {  // thin: keep the first, every other one after it, and the newest
+    std::vector<Section> kept;
+    for (std::size_t s = 0; s < sections_.size(); ++s)
+      if (s % 2 == 0 || s + 1 == sections_.size()) kept.push_back(std::move(sections_[s]));
+    sections_ = std::move(kept);
+    everyMoves_ *= 2;
+  }
+}
+
+sim::CutObserver StepRecording::observer() {
+  return [this](std::size_t firstMove, std::size_t, const sim::Stock& stock, const std::vector<sim::Collision>&) {
+    take(stock, firstMove, false);
+  };
+}
+
+void StepRecording::finish(const sim::Stock& stock) { take(stock, moves_, true); }
+
+Json StepRecording::json(const sim::BlockRows& rows, const job::Setup& setup, const RZ& start) const {
+  if (steps_.size() > kMaxSteps || moves_ > kMaxSteps * 4) return nullptr;
+  // The sections some step shows (the last taken at or before its end; a block of several
+  // groups had one taken before each), the bar's first; each as its change from the one before.
+  std::vector<std::size_t> shown{0};
+  for (std::size_t s = 1, step = 0; s < sections_.size(); ++s) {
+    while (step < steps_.size() && steps_[step].endMove < sections_[s].afterMove) ++step;
+    const bool nextShownInstead = s + 1 < sections_.size() && step < steps_.size() &&
+                                  sections_[s + 1].afterMove <= steps_[step].endMove;
+    if (!nextShownInstead) shown.push_back(s);
+  }
+  Json sections = Json::array();
+  for (std::size_t k = 0; k < shown.size(); ++k) {
+    const Section& section = sections_[shown[k]];
+    Json polylines = Json::array();
+    for (const auto& line : section.polylines)
+      polylines.push_back(delta(line, k == 0 ? Polylines{} : sections_[shown[k - 1]].polylines));
+    sections.push_back(Json::array({section.afterMove, polylines}));
+  }
+  // The rows are one a block run with moves, in the same order as the steps.
+  std::vector<double> removed(steps_.size(), 0.0);
+  std::size_t next = 0;
+  rows.forEach([&](const sim::BlockRemoval& row) {
+    while (next < steps_.size() && steps_[next].block != row.block) ++next;
+    if (next < steps_.size()) removed[next++] = row.removedMm3;
+  });
+  Json steps = Json::array(), tools = Json::object();
+  for (std::size_t s = 0; s < steps_.size(); ++s) {
+    const Step& step = steps_[s];
+    steps.push_back(Json::array({step.line, step.firstMove, step.endMove, rounded(removed[s], 0.1),
+                                 rounded(step.timeS, 0.01), step.end[0], step.end[1], rounded(step.feed, 0.0001),
+                                 step.spindleS, std::round(step.rpm), step.tool}));
+    const std::string tool = std::to_string(step.tool);
+    if (tools.contains(tool)) continue;
+    const render::ToolPicture picture = toolPicture(setup, step.tool, RZ{0, 0});
+    tools[tool] = {{"insert", polygon(picture.insert)}, {"holder", polygon(picture.holder)}};
+  }
+  return {{"every_moves", everyMoves_},
+          {"start", {micrometres(start.x()), micrometres(start.y())}},
+          {"sections", sections},
+          {"steps", steps},
+          {"path", path_},
+          {"tools", tools}};
+}
+
+}  // namespace lathesim::app
