@@ -134,6 +134,14 @@ TEST(MachineEvidence, LengthValuesAsWritten) {
     EXPECT_DOUBLE_EQ(evidence.largestPointLength, c.largestPoint);
     EXPECT_DOUBLE_EQ(evidence.largestBareLength, c.largestBare);
   }
+  // Signed as written, and exact to the last digit written.
+  const auto bare = bareLengthsIn("G01 W-7 U+3 X1234567890123 Z-0000000000000000012", 1);
+  ASSERT_EQ(bare.size(), 4u);
+  EXPECT_EQ(bare[0].value, -7.0);
+  EXPECT_EQ(bare[1].value, 3.0);
+  EXPECT_EQ(bare[2].value, 1234567890123.0);
+  EXPECT_EQ(bare[3].value, -12.0);  // 19 digits: read by from_chars
+  EXPECT_EQ(readMachineEvidence("G01 X37.999 Z-30.125\n").largestPointLength, 37.999);
   // Four hundred digits are no finite number: read as zero, not as an error.
   const MachineEvidence huge = readMachineEvidence("G01 X" + std::string(400, '9') + " Z5.\n");
   EXPECT_EQ(huge.bareLengths, 0u);
