@@ -47,7 +47,9 @@ void mountToolsNamedInComments(Job& job, const std::string& programName, Diagnos
     const auto words = program.plainWords(block);
     if (!words || !words->has('T')) continue;
     const interp::Word t = words->words.at('T');
-    const auto read = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line);
+    // Beside M06 a short T word is the tool, as the interpreter reads it (trainers' M06 T02).
+    const bool besideToolChange = words->mCode(interp::MGroup::ToolChange).has_value();
+    const auto read = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line, besideToolChange);
     if (!read.ok() || read.value().tool == 0) continue;  // the interpreter reports a bad T word
     const int number = read.value().tool;
     const bool defined = std::any_of(setup.tools.begin(), setup.tools.end(), [&](const ToolDefinition& tool) {

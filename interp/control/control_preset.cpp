@@ -255,6 +255,26 @@ const std::vector<PresetDefinition>& presetTable() {
             "so a warning; unchecked",
             false},
        }},
+      // School trainers (Denford's Fanuc-style turning software and the lathes it drives, and
+      // Boxford's and Emco's alike): Fanuc's words, as their programs write them. No Denford
+      // manual was at hand; each value says what it rests on.
+      {"denford",
+       "fanuc-0i-t",
+       {
+           {"decimal_point_input", "calculator",
+            "trainer programs as published write bare millimetres (G00 X26 Z2 beside M06 T0101 and G94 X0 Z-0.5); "
+            "unchecked against a Denford manual",
+            false},
+           {"tool_word", Names{"2+2"}, "M06 T0101: tool 1 with offset 1 (M06 T01, tool 1 with its own offset, is read "
+                                       "as well, tool_word.hpp)", false},
+           {"m_codes", "fanuc-0i-t",
+            "no Denford M-code list at hand: the Fanuc builders' common codes; a trainer's own code is refused by name",
+            false},
+           {"cut_without_tool", "warning",
+            "no source says the trainer's software refuses a cut before M06 names a tool: warned of, as on a lathe; "
+            "set \"error\" in the setup's [control] for a trainer that refuses",
+            false},
+       }},
   };
   return table;
 }

@@ -1,9 +1,11 @@
-// The tables. Sources: the Haas lathe operator's manual, chapter "M-codes" (its list, number by
-// number, from memory of its current edition; checked against no printed copy here); the
-// GSK980TDi user manual's M-code table; the Fanuc builders' codes are each builder's (Doosan,
-// Mori Seiki, Romi …), no Fanuc manual fixes them, so they are the common assignments and
-// marked so. A code whose meaning differs between builders of one family is left out of it:
-// an unknown code is an error, which is better than a guess that hides a move.
+// The tables. Sources: for Haas, the public Autodesk HAAS lathe post processor (haas lathe.cps,
+// its getCode() table, which writes the codes a Haas lathe reads for each function), and for
+// the codes it does not write the Haas lathe operator's manual's M-code list as recalled,
+// marked unchecked; the GSK980TDi user manual's M-code table; the Fanuc builders' codes are
+// each builder's (Doosan, Mori Seiki, Romi …), no Fanuc manual fixes them, so they are the
+// common assignments and marked so. A code whose meaning differs between builders of one
+// family is left out of it: an unknown code is an error, which is better than a guess that
+// hides a move.
 #include "interp/control/machine_m_codes.hpp"
 
 #include <array>
@@ -55,26 +57,28 @@ constexpr std::array kFanuc{
 
 constexpr std::string_view kHaasManual =
     "Haas lathe operator's manual, M-codes chapter (its list as recalled; unchecked against a printed copy)";
+constexpr std::string_view kHaasPost =
+    "Autodesk HAAS lathe post processor (haas lathe.cps, getCode()), which writes it for this function";
 
 // Haas lathes. M12–M15 are Haas's own (air blast, spindle brake), not live-tool codes; Haas's
 // live tool is M133–M135 and its second spindle M143–M145, refused by name (gcode_table.cpp).
 // Its parts catcher M35–M37 is in the common table: the part-off it catches is simulated.
 // M23/M24 (thread chamfer on/off) change a thread's run-out and are not here.
 constexpr std::array kHaas{
-    MachineMCode{10, "chuck clamp", None, kHaasManual},
-    MachineMCode{11, "chuck unclamp: the bar is free in the chuck", Unsimulated, kHaasManual},
-    MachineMCode{12, "auto air jet on", None, kHaasManual},
-    MachineMCode{13, "auto air jet off", None, kHaasManual},
-    MachineMCode{14, "main spindle clamp", None, kHaasManual},
-    MachineMCode{15, "main spindle unclamp", None, kHaasManual},
+    MachineMCode{10, "chuck clamp", None, kHaasPost},
+    MachineMCode{11, "chuck unclamp: the bar is free in the chuck", Unsimulated, kHaasPost},
+    MachineMCode{12, "auto air jet on", None, kHaasPost},
+    MachineMCode{13, "auto air jet off", None, kHaasPost},
+    MachineMCode{14, "main spindle brake on", None, kHaasPost},
+    MachineMCode{15, "main spindle brake off", None, kHaasPost},
     MachineMCode{17, "turret rotation forward", None, kHaasManual},
     MachineMCode{18, "turret rotation reverse", None, kHaasManual},
-    MachineMCode{21, "tailstock advance", Unsimulated, kHaasManual},
-    MachineMCode{22, "tailstock retract", Unsimulated, kHaasManual},
-    MachineMCode{31, "chip auger forward", None, kHaasManual},
-    MachineMCode{33, "chip auger stop", None, kHaasManual},
-    MachineMCode{38, "spindle speed variation on", None, kHaasManual},
-    MachineMCode{39, "spindle speed variation off", None, kHaasManual},
+    MachineMCode{21, "tailstock advance", Unsimulated, kHaasPost},
+    MachineMCode{22, "tailstock retract", Unsimulated, kHaasPost},
+    MachineMCode{31, "chip auger forward", None, kHaasPost},
+    MachineMCode{33, "chip auger stop", None, kHaasPost},
+    MachineMCode{38, "spindle speed variation on", None, kHaasPost},
+    MachineMCode{39, "spindle speed variation off", None, kHaasPost},
     MachineMCode{41, "spindle low gear", None, kHaasManual},
     MachineMCode{42, "spindle high gear", None, kHaasManual},
     // The user relays drive whatever the shop wired to them: a bar puller, a door, a gantry.
@@ -96,14 +100,14 @@ constexpr std::array kHaas{
     MachineMCode{67, "user relay 7 off", None, kHaasManual},
     MachineMCode{68, "user relay 8 off", None, kHaasManual},
     MachineMCode{69, "output relay clear", None, kHaasManual},
-    MachineMCode{85, "automatic door open", None, kHaasManual},
-    MachineMCode{86, "automatic door close", None, kHaasManual},
-    MachineMCode{88, "high pressure coolant on", None, kHaasManual},
-    MachineMCode{89, "high pressure coolant off", None, kHaasManual},
+    MachineMCode{85, "automatic door open", None, kHaasPost},
+    MachineMCode{86, "automatic door close", None, kHaasPost},
+    MachineMCode{88, "coolant through the tool on", None, kHaasPost},
+    MachineMCode{89, "coolant through the tool off", None, kHaasPost},
     MachineMCode{104, "probe arm extend", Unsimulated, kHaasManual},
     MachineMCode{105, "probe arm retract", Unsimulated, kHaasManual},
-    MachineMCode{110, "tailstock chuck clamp", Unsimulated, kHaasManual},
-    MachineMCode{111, "tailstock chuck unclamp", Unsimulated, kHaasManual},
+    MachineMCode{110, "secondary spindle chuck clamp", Unsimulated, kHaasPost},
+    MachineMCode{111, "secondary spindle chuck unclamp", Unsimulated, kHaasPost},
 };
 
 constexpr std::array kFamilies{MachineMCodes::Gsk980tdi, MachineMCodes::Fanuc0iT, MachineMCodes::Haas};

@@ -626,6 +626,17 @@ std::optional<std::string> Executor::missingMachineryOf(const Word& word) const 
                        "or write {} for it",
                        word.text(), word.letter == 'c' ? 'L' : 'D');
   }
+  // A line's angle in the word another control reads it in (drawing_angle_word).
+  const bool angleA = word.letter == 'A' && options_.control.drawingAngleWord != DrawingAngleWord::A;
+  const bool angleCommaA = word.letter == 'a' && options_.control.drawingAngleWord != DrawingAngleWord::CommaA;
+  if (angleA || angleCommaA) {
+    const std::string_view own = options_.control.drawingAngleWord == DrawingAngleWord::Q ? "Q" :
+                                 options_.control.drawingAngleWord == DrawingAngleWord::A ? "A" : ",A";
+    return fmt::format("{} is a line's angle where the control reads its angle in {} (drawing_angle_word), which "
+                       "this control does not (its angle word is {}): {}",
+                       word.text(), angleA ? "A" : ",A", own,
+                       angleA ? "run with --control fanuc-0i-t" : "set drawing_angle_word = \",A\" in the setup's [control]");
+  }
   if (word.letter == 'C') {
     return fmt::format("{}: this lathe has no C axis (the spindle cannot be positioned or "
                        "milled around); live tooling and C-axis work cannot be simulated",

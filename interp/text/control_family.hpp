@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "interp/base/paged_text.hpp"
 
@@ -40,19 +41,23 @@ void forEachCodeLine(PagedText text, Read&& read);
 std::optional<ForeignProgram> foreignSignOf(const std::string& line, int lineNumber, bool first);
 
 namespace detail {
+/// Line [begin, end) of `text` as a code line, into `line` (whose storage is kept).
+void codeLineInto(std::string& line, std::string_view text, std::size_t begin, std::size_t end);
 std::string codeLineAt(std::string_view text, std::size_t begin, std::size_t end);
-}
+}  // namespace detail
 
 template <class Read>
 void forEachCodeLine(PagedText paged, Read&& read) {
   const std::string_view text = paged.view();
   int lineNumber = 0;
   std::size_t begin = 0;
+  std::string line;  // one buffer for every line: a long program is read without an allocation a line
   while (begin <= text.size()) {
     paged.readingAt(begin);
     std::size_t end = text.find('\n', begin);
     if (end == std::string_view::npos) end = text.size();
-    if (!read(++lineNumber, detail::codeLineAt(text, begin, end))) return;
+    detail::codeLineInto(line, text, begin, end);
+    if (!read(++lineNumber, std::as_const(line))) return;
     if (end == text.size()) return;
     begin = end + 1;
   }

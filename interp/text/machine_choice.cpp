@@ -155,14 +155,19 @@ MachineChoice chooseMachine(const MachineEvidence& evidence, const MachineStatem
   } else {
     inferDialect(evidence, choice);
   }
-  // The control: stated, else implied by the dialect, else Fanuc's when its corner words are
-  // written, else the default.
+  // The control: stated, else implied by the dialect, else the trainers' when a trainer's
+  // stock line or tool change is written, else Fanuc's when its corner words are, else the
+  // default.
   if (stated.control) {
     choice.control = *stated.control;
     choice.because.push_back(fmt::format("{} {}", stated.controlBy, *stated.control));
   } else if (const auto implied = controlImpliedBy(choice.dialect)) {
     choice.control = std::string(*implied);
     choice.controlInferred = choice.dialectInferred;
+  } else if (evidence.count(EvidenceKind::Trainer) > 0) {
+    choice.control = "denford";
+    choice.controlInferred = true;
+    choice.because.push_back(markText(evidence.of(EvidenceKind::Trainer).front()) + " (a school trainer's)");
   } else if (evidence.count(EvidenceKind::FanucCorner) > 0) {
     choice.control = "fanuc-0i-t";
     choice.controlInferred = true;

@@ -10,7 +10,8 @@
 //     fanuc-b, hnc, haas that every kind present admits; when no dialect is admitted by all
 //     the evidence conflicts: reported with one mark of each kind, the default kept; with no
 //     evidence the default is taken, saying which codes could not be told apart;
-//   - the control is, unless stated or implied, fanuc-0i-t when the program writes Fanuc's ,C
+//   - the control is, unless stated or implied, denford when the program writes a school
+//     trainer's `[BILLET` line or M06 beside its T word, fanuc-0i-t when it writes Fanuc's ,C
 //     or ,R corner words, else the default (gsk980tdi).
 
 #include <optional>

@@ -1,8 +1,11 @@
 #include "interp/text/machine_evidence.hpp"
 
 #include <algorithm>
-#include <cctype>
+#include <array>
+#include <charconv>
+#include <cstdint>
 #include <cmath>
+#include <system_error>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -24,24 +27,61 @@ struct ScannedWord {
 };
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 
-// The words of a comment-free line. A ';' ends the block (Fanuc's end of block).
-std::vector<ScannedWord> scanWords(std::string_view line) {
-  std::vector<ScannedWord> words;
+// The value of a number as written ("-23", "+.5", "12."); a number of hundreds of digits is
+// no length: it is read as 0, never as an error. Up to 15 digits the digits as an integer,
+// divided by the power of ten the point gives, are exact doubles, so the one division rounds as
+// from_chars would (Clinger's fast path): most words of a program take it.
+double numberValue(std::string_view number) {
+  if (!number.empty() && number.front() == '+') number.remove_prefix(1);  // from_chars takes no '+'
+  const bool negative = !number.empty() && number.front() == '-';
+  std::int64_t digits = 0;
+  int count = 0;
+  int decimals = -1;  // digits after the point; -1: no point yet
+  for (const char c : number.substr(negative ? 1 : 0)) {
+    if (c == '.') {
+      decimals = 0;
+      continue;
+    }
+    digits = digits * 10 + (c - '0');
+    ++count;
+    if (decimals >= 0) ++decimals;
+  }
+  if (count <= 15) {
+    static constexpr std::array<double, 16> kPowers{1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                    1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    const double value = static_cast<double>(digits) / kPowers[static_cast<std::size_t>(std::max(decimals, 0))];
+    return negative ? -value : value;
+  }
+  double value = 0;
+  const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+  return error == std::errc() && std::isfinite(value) ? value : 0;
+}
+
+// The words of a comment-free line, into `words` (its storage kept from line to line). A ';'
+// ends the block (Fanuc's end of block).
+void scanWords(std::string_view line, std::vector<ScannedWord>& words) {
+  words.clear();
   std::size_t i = 0;
+  int column = 1;            // the column of line[columnAt]
+  std::size_t columnAt = 0;
   while (i < line.size()) {
     const char c = line[i];
     if (c == ';') break;
-    const bool corner = c == ',' && i + 1 < line.size() && std::isalpha(static_cast<unsigned char>(line[i + 1]));
-    if (!std::isalpha(static_cast<unsigned char>(c)) && !corner) {
+    const bool corner = c == ',' && i + 1 < line.size() && isLetter(line[i + 1]);
+    if (!isLetter(c) && !corner) {
       ++i;
       continue;
     }
     const std::size_t start = i;
     ScannedWord word;
-    word.letter = static_cast<char>(std::toupper(static_cast<unsigned char>(line[corner ? i + 1 : i])));
-    if (corner) word.letter = static_cast<char>(std::tolower(static_cast<unsigned char>(word.letter)));
-    word.column = codePointCount(line.substr(0, start)) + 1;
+    word.letter = upper(line[corner ? i + 1 : i]);
+    if (corner) word.letter = static_cast<char>(word.letter - 'A' + 'a');
+    column += codePointCount(line.substr(columnAt, start - columnAt));
+    columnAt = start;
+    word.column = column;
     i += corner ? 2 : 1;
     while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
     std::size_t number = i;
@@ -57,22 +97,19 @@ std::vector<ScannedWord> scanWords(std::string_view line) {
                                     line.begin() + static_cast<std::ptrdiff_t>(end), isDigit);
     if (digits) {
       word.hasNumber = true;
-      // A number of hundreds of digits is no length; it is read as large, never as an error.
-      word.value = std::strtod(std::string(line.substr(i, end - i)).c_str(), nullptr);
-      if (!std::isfinite(word.value)) word.value = 0;
+      word.value = numberValue(line.substr(i, end - i));
       i = end;
     }
     word.text = line.substr(start, i - start);
     while (!word.text.empty() && (word.text.back() == ' ' || word.text.back() == '\t')) word.text.remove_suffix(1);
     words.push_back(word);
   }
-  return words;
 }
 
 // A block's words, and what the rules ask of them.
 class ScannedBlock {
  public:
-  explicit ScannedBlock(std::vector<ScannedWord> words) : words_(std::move(words)) {}
+  explicit ScannedBlock(const std::vector<ScannedWord>& words) : words_(words) {}
 
   const ScannedWord* find(char letter) const {
     for (const ScannedWord& w : words_)
@@ -94,7 +131,7 @@ class ScannedBlock {
   const std::vector<ScannedWord>& words() const { return words_; }
 
  private:
-  std::vector<ScannedWord> words_;
+  const std::vector<ScannedWord>& words_;
 };
 
 class EvidenceReader {
@@ -102,8 +139,10 @@ class EvidenceReader {
   explicit EvidenceReader(MachineEvidence& evidence) : evidence_(evidence) {}
 
   void read(int line, std::string_view text) {
-    const ScannedBlock block(scanWords(text));
     line_ = line;
+    if (directive(text)) return;
+    scanWords(text, words_);
+    const ScannedBlock block(words_);
     systemA(block);
     systemB(block);
     hnc(block);
@@ -112,6 +151,8 @@ class EvidenceReader {
       if (w.letter == 'c' || w.letter == 'r') mark(EvidenceKind::FanucCorner, w, std::string(w.text));
     if (const auto* g = block.code('G', 20)) mark(EvidenceKind::Inch, *g, "G20");
     if (block.code('G', 21)) evidence_.metricStated = true;
+    if (const auto* m = block.code('M', 6); m && block.find('T') && block.find('T')->hasNumber)
+      mark(EvidenceKind::Trainer, *m, fmt::format("M06 beside {}", block.find('T')->text));
     lengths(block);
   }
 
@@ -121,6 +162,24 @@ class EvidenceReader {
     ++evidence_.counts[k];
     if (evidence_.marks[k].size() < MachineEvidence::kMarksKept)
       evidence_.marks[k].push_back({kind, line_, at.column, std::move(text)});
+  }
+
+  // A line opening with '[' is a trainer's directive (the lexer skips it, and so does this),
+  // unless it is a pasted citation, read as a block. `[BILLET` is Denford's stock line.
+  bool directive(std::string_view text) {
+    const std::size_t at = text.find_first_not_of(" \t");
+    if (at == std::string_view::npos || text[at] != '[') return false;
+    const std::string_view name = text.substr(at + 1);
+    const auto opens = [&](std::string_view word) {  // in any case
+      return name.size() >= word.size() &&
+             std::equal(word.begin(), word.end(), name.begin(), [](char a, char b) { return a == upper(b); });
+    };
+    if (opens("CITE")) return false;  // as the lexer tells a citation
+    if (opens("BILLET") && (name.size() == 6 || !isLetter(name[6]))) {
+      const ScannedWord where{0, codePointCount(text.substr(0, at)) + 1, false, false, 0, {}};
+      mark(EvidenceKind::Trainer, where, "[BILLET");
+    }
+    return true;
   }
 
   void systemA(const ScannedBlock& b) {
@@ -189,6 +248,7 @@ class EvidenceReader {
 
   MachineEvidence& evidence_;
   int line_ = 0;
+  std::vector<ScannedWord> words_;  // the line's, kept from line to line
 };
 
 }  // namespace
@@ -210,7 +270,9 @@ MachineEvidence readMachineEvidence(PagedText text) {
 std::vector<LengthWord> bareLengthsIn(std::string_view line, int lineNumber) {
   std::vector<LengthWord> bare;
   const std::string code = detail::codeLineAt(line, 0, line.size());
-  for (const ScannedWord& w : scanWords(code))
+  std::vector<ScannedWord> words;
+  scanWords(code, words);
+  for (const ScannedWord& w : words)
     if (w.hasNumber && !w.hasPoint && w.value != 0 &&
         (w.letter == 'X' || w.letter == 'Z' || w.letter == 'U' || w.letter == 'W'))
       bare.push_back({lineNumber, w.column, std::string(w.text), w.value});

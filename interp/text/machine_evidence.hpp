@@ -13,7 +13,11 @@
 //   Haas         one-block G71/G72 with D, M97, G187
 //   FanucCorner  ,C / ,R corner words (read by controls whose corner words are ,C/,R)
 //   Inch         G20
-// Text inside ( ) comments is never evidence.
+//   Trainer      a school trainer's program (Denford, Boxford, Emco): a `[BILLET` stock line,
+//                M06 beside a T word (the trainers' tool change; Fanuc, GSK and Haas lathes
+//                index the turret by the T word alone)
+// Text inside ( ) comments is never evidence; a line opening with '[' (a trainer's directive,
+// which the interpreter skips) is evidence only as a `[BILLET` line.
 
 #include <array>
 #include <cstddef>
@@ -26,8 +30,8 @@
 
 namespace lathesim::interp {
 
-enum class EvidenceKind { SystemA, SystemB, Hnc, Haas, FanucCorner, Inch };
-inline constexpr std::size_t kEvidenceKinds = 6;
+enum class EvidenceKind { SystemA, SystemB, Hnc, Haas, FanucCorner, Inch, Trainer };
+inline constexpr std::size_t kEvidenceKinds = 7;
 
 /// One mark, as written ("G95", "G92 S2500"), where it stands.
 struct EvidenceMark {

@@ -17,13 +17,16 @@ namespace lathesim::interp {
 
 inline constexpr std::size_t kRegexTextChars = 1000;
 
-/// `text` cut after kRegexTextChars bytes (at the start of a code point).
-inline std::string regexText(std::string_view text) {
-  if (text.size() <= kRegexTextChars) return std::string(text);
+/// The length of `text` cut after kRegexTextChars bytes (at the start of a code point).
+inline std::size_t regexTextLength(std::string_view text) {
+  if (text.size() <= kRegexTextChars) return text.size();
   std::size_t end = kRegexTextChars;
   while (end > 0 && !startsCodePoint(text[end])) --end;
-  return std::string(text.substr(0, end));
+  return end;
 }
+
+/// `text` cut after kRegexTextChars bytes (at the start of a code point).
+inline std::string regexText(std::string_view text) { return std::string(text.substr(0, regexTextLength(text))); }
 
 /// The value of digits a pattern matched (`[0-9]+\.?[0-9]*`), or nullopt when they are too
 /// many to be a finite number (std::stod would throw).

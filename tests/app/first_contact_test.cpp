@@ -70,6 +70,11 @@ const Expected kCorpusOutcomes[] = {
     {"s01_haas_one_block_g71.nc", Reads{"haas", "haas"}, {}, "one-block G71 with D0.06 at line 9"},
     {"s02_haas_m97.nc", Reads{"haas", "haas"}, {}, "M97 at line 8"},
     {"s03_haas_m31_conveyor.nc", Reads{"haas", "haas"}, {}, "one-block G71 with D1.5 at line 9"},
+    // School trainers (Denford, Boxford, Emco): a [BILLET stock line or M06 beside its T word
+    // brings the trainers' control, which reads bare numbers as mm and Fanuc's ,C corners.
+    {"d01_denford_billet.nc", Reads{"fanuc-a", "denford"}, {}, "[BILLET at line 1 (a school trainer's)"},
+    {"d02_trainer_m06_after_t.nc", Reads{"fanuc-a", "denford"}, {}, "M06 beside T01 at line 4 (a school trainer's)"},
+    {"d03_denford_fanuc_corners.nc", Reads{"fanuc-a", "denford"}, {}, "[BILLET at line 1 (a school trainer's)"},
     // Inch: under a millimetre everywhere on a Φ25 bar with no G20 is warned of; with G20 not.
     {"i01_inch_without_g20.nc", Reads{"fanuc-a", "gsk980tdi"}, {}, "G99 at line 4", "inch program without its G20"},
     {"i02_inch_with_g20.nc", Reads{"fanuc-a", "gsk980tdi"}, {}, "G99 at line 3"},

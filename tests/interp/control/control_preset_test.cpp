@@ -20,7 +20,7 @@ const ControlSetting& settingOf(const Control& control, std::string_view key) {
 
 TEST(ControlPreset, EveryPresetGivesEveryParameterWithItsManualReference) {
   const std::vector<std::string_view> keys = controlParameterKeys();
-  ASSERT_EQ(controlPresets(), (std::vector<std::string_view>{"gsk980tdi", "fanuc-0i-t", "haas"}));
+  ASSERT_EQ(controlPresets(), (std::vector<std::string_view>{"gsk980tdi", "fanuc-0i-t", "haas", "denford"}));
   for (std::string_view name : controlPresets()) {
     SCOPED_TRACE(name);
     const std::optional<Control> control = controlPreset(name);  // throws on a gap in the table

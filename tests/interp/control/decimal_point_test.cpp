@@ -31,6 +31,14 @@ TEST(DecimalPoint, ABareLengthIsMillimetresOnTheGskAndIncrementsOnTheFanuc) {
   expectMoves(interpret("G00 X20 Z-10.\n", "t.nc", isC).toolpath.moves, {{kRapid, 100, 200, 0.001, -10, 0, 0}});
 }
 
+// The school trainers' control reads a bare number in mm, as their programs are written
+// (G00 X26 Z2 beside M06 T0101), though it reads Fanuc's other words.
+TEST(DecimalPoint, TheTrainersControlReadsABareLengthInMillimetres) {
+  const auto denford = interpret("G00 X20 Z-10\n", "t.nc", under("denford"));
+  ASSERT_TRUE(denford.ok());
+  expectMoves(denford.toolpath.moves, {{kRapid, 100, 200, 10, -10, 0, 0}});
+}
+
 TEST(DecimalPoint, EveryReadingOfABareNumber) {
   // G00 X1234 W-567 from (r 100, Z200), under each decimal point input, increment system and unit.
   // By hand: calculator reads 1234 mm (inch); increments count 0.001 mm at IS-B, 0.0001 mm at

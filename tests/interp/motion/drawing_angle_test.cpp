@@ -55,8 +55,15 @@ TEST(DrawingAngle, TheCommaFormIsTheControlsWhenItSaysSo) {
   const auto result = interpret("G00 X20. Z0.\nG01 X30. ,A135. F0.2\n", "t.nc", options);
   ASSERT_TRUE(result.ok()) << result.diagnostics[0].message;
   expectMoves({result.toolpath.moves.begin() + 1, result.toolpath.moves.end()}, {{kFeed, 10, 0, 15, -5, 0.2, 0}});
-  // Under the GSK, A is no angle: the word is left over.
-  expectError(runUnder("gsk980tdi", "X30. A135."), 2, 10, "A135. is not used by any code in this block");
+  // Under the GSK, A is no angle: the word is left over, and the control that reads it is named;
+  // ,A is read by no preset, only by the parameter.
+  expectError(runUnder("gsk980tdi", "X30. A135."), 2, 10,
+              "A135. is a line's angle where the control reads its angle in A (drawing_angle_word), which this "
+              "control does not (its angle word is Q): run with --control fanuc-0i-t");
+  expectError(runUnder("fanuc-0i-t", "X30. ,A135."), 2, 10,
+              ",A135. is a line's angle where the control reads its angle in ,A (drawing_angle_word), which this "
+              "control does not (its angle word is A): set drawing_angle_word = \",A\" in the setup's [control]");
+  EXPECT_TRUE(runUnder("fanuc-0i-t", "X30. A135.").ok());
 }
 
 // A sweep of angles all round, X or Z given: the line ends on the given X (Z) and runs along the

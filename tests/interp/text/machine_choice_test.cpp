@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <string>
 
 #include "interp/control/control_preset.hpp"
@@ -22,6 +24,7 @@ std::string_view lineOf(EvidenceKind kind) {
     case EvidenceKind::Haas: return "M97 P100\n";
     case EvidenceKind::FanucCorner: return "G01 X30. Z-10. ,C1.\n";
     case EvidenceKind::Inch: return "G20\n";
+    case EvidenceKind::Trainer: return "M06 T0101\n";
   }
   return "";
 }
@@ -39,7 +42,8 @@ TEST(MachineChoice, EachDialectKindAloneChoosesItsDialect) {
                         Case{EvidenceKind::Hnc, Dialect::Hnc, "gsk980tdi"},
                         Case{EvidenceKind::Haas, Dialect::Haas, "haas"},
                         Case{EvidenceKind::FanucCorner, Dialect::FanucA, "fanuc-0i-t"},
-                        Case{EvidenceKind::Inch, Dialect::FanucA, "gsk980tdi"}}) {
+                        Case{EvidenceKind::Inch, Dialect::FanucA, "gsk980tdi"},
+                        Case{EvidenceKind::Trainer, Dialect::FanucA, "denford"}}) {
     SCOPED_TRACE(std::string(lineOf(c.kind)));
     const MachineChoice choice = inferred("G00 X40. Z2.\n" + std::string(lineOf(c.kind)));
     EXPECT_EQ(choice.dialect, c.dialect);
@@ -143,6 +147,24 @@ TEST(MachineChoice, FanucCornerWordsChooseFanucsControlUnlessOneIsStated) {
   EXPECT_EQ(choice.dialect, Dialect::FanucB);
   EXPECT_EQ(choice.control, "fanuc-0i-t");
   EXPECT_EQ(chooseMachine(evidence, {{}, {}, "gsk980tdi", "--control"}).control, "gsk980tdi");
+}
+
+// A trainer's stock line or tool change chooses the trainers' control, said with its mark; a
+// stated control, or one the dialect implies (Haas), wins over it; with Fanuc's corners too the
+// trainers' control reads them.
+TEST(MachineChoice, ATrainersProgramChoosesTheTrainersControl) {
+  const MachineChoice billet = inferred("[BILLET X30 Z60\nG00 X32. Z2.\n");
+  EXPECT_EQ(billet.control, "denford");
+  EXPECT_TRUE(billet.controlInferred);
+  EXPECT_NE(std::find(billet.because.begin(), billet.because.end(), "[BILLET at line 1 (a school trainer's)"),
+            billet.because.end());
+  const MachineEvidence trainerAndB = readMachineEvidence("G95 F0.2\nM06 T0101\nG01 X30. Z-10. ,C1.\n");
+  const MachineChoice both = chooseMachine(trainerAndB, {});
+  EXPECT_EQ(both.dialect, Dialect::FanucB);
+  EXPECT_EQ(both.control, "denford");
+  EXPECT_EQ(controlPreset("denford")->parameters.cornerWords, CornerWords::CommaCR);
+  EXPECT_EQ(chooseMachine(trainerAndB, {{}, {}, "gsk980tdi", "--control"}).control, "gsk980tdi");
+  EXPECT_EQ(inferred("M06 T0101\nM97 P100\n").control, "haas");
 }
 
 TEST(MachineChoice, LengthsWithoutAPointUnderALeastIncrementControl) {

@@ -42,6 +42,10 @@ TEST(MachineEvidence, EachKindAloneIsFoundWhereItStands) {
       {"G01 X30. Z-10. ,C1.\n", EvidenceKind::FanucCorner, 1, 16, ",C1."},
       {"G01 Z-10. ,R2.\n", EvidenceKind::FanucCorner, 1, 11, ",R2."},
       {"G20\n", EvidenceKind::Inch, 1, 1, "G20"},
+      {"  [BILLET X30 Z60\n", EvidenceKind::Trainer, 1, 3, "[BILLET"},
+      {"[billet x50 z100\n", EvidenceKind::Trainer, 1, 1, "[BILLET"},
+      {"G00 X40. Z2.\nM06 T0101\n", EvidenceKind::Trainer, 2, 1, "M06 beside T0101"},
+      {"N30 T02 M6\n", EvidenceKind::Trainer, 1, 9, "M06 beside T02"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.text));
@@ -70,6 +74,9 @@ TEST(MachineEvidence, LookAlikesAreNotEvidence) {
            "G80\n",                      // drilling cancel
            "(G95 G92 S2500 M97 ,C1. G20)\nG00 X20. (U-2.)\n",
            "G01 Z-5. F0.2 ; G95 after the end of block\n",
+           "T0101\nM06\n",              // a T word and an M06 in blocks of their own
+           "(M06 T01)\nG00 X20. (T02 M06)\n",
+           "[TOOLDEF T1 D6\n[BILLETS X30\n",  // other directives, and no lengths from them
        }) {
     SCOPED_TRACE(std::string(text));
     const MachineEvidence evidence = readMachineEvidence(text);
@@ -101,6 +108,44 @@ TEST(MachineEvidence, LengthsWithAndWithoutAPoint) {
   EXPECT_EQ(bare[0].text, "X35");
   EXPECT_EQ(bare[1].text, "W-7");
   EXPECT_EQ(bare[1].column, 20);
+}
+
+// A trainer's directive line is skipped as the interpreter skips it: its X and Z are the bar's,
+// not lengths of the program; a pasted citation is read as a block.
+TEST(MachineEvidence, DirectiveLinesHoldNoLengths) {
+  const MachineEvidence evidence = readMachineEvidence("[BILLET X30 Z60\nG00 X32. Z2.\n");
+  EXPECT_EQ(evidence.bareLengths, 0u);
+  EXPECT_EQ(evidence.pointLengths, 2u);
+  const MachineEvidence cited = readMachineEvidence("G00 X32. Z2. [cite: 133]\n[cite: 7] G95 F0.2\n");
+  EXPECT_EQ(cited.count(EvidenceKind::SystemB), 1u);
+  EXPECT_EQ(cited.count(EvidenceKind::Trainer), 0u);
+}
+
+// Numbers as written: signs, a point at either end, and a number too long to be finite.
+TEST(MachineEvidence, LengthValuesAsWritten) {
+  struct Case {
+    std::string_view text;
+    double largestPoint, largestBare;
+  };
+  for (const Case& c : {Case{"G01 X+.5 Z-12.\n", 12.0, 0.0}, Case{"G01 X-.25 W+7\n", 0.25, 7.0},
+                        Case{"G01 X 17 Z -3.5\n", 3.5, 17.0}, Case{"G01 U1e3 Z4.\n", 4.0, 1.0}}) {
+    SCOPED_TRACE(std::string(c.text));
+    const MachineEvidence evidence = readMachineEvidence(c.text);
+    EXPECT_DOUBLE_EQ(evidence.largestPointLength, c.largestPoint);
+    EXPECT_DOUBLE_EQ(evidence.largestBareLength, c.largestBare);
+  }
+  // Signed as written, and exact to the last digit written.
+  const auto bare = bareLengthsIn("G01 W-7 U+3 X1234567890123 Z-0000000000000000012", 1);
+  ASSERT_EQ(bare.size(), 4u);
+  EXPECT_EQ(bare[0].value, -7.0);
+  EXPECT_EQ(bare[1].value, 3.0);
+  EXPECT_EQ(bare[2].value, 1234567890123.0);
+  EXPECT_EQ(bare[3].value, -12.0);  // 19 digits: read by from_chars
+  EXPECT_EQ(readMachineEvidence("G01 X37.999 Z-30.125\n").largestPointLength, 37.999);
+  // Four hundred digits are no finite number: read as zero, not as an error.
+  const MachineEvidence huge = readMachineEvidence("G01 X" + std::string(400, '9') + " Z5.\n");
+  EXPECT_EQ(huge.bareLengths, 0u);
+  EXPECT_DOUBLE_EQ(huge.largestPointLength, 5.0);
 }
 
 TEST(MachineEvidence, TheForeignFamilyIsFoundInTheSamePass) {
