@@ -627,11 +627,11 @@ std::optional<std::string> Executor::missingMachineryOf(const Word& word) const 
                        word.text(), word.letter == 'c' ? 'L' : 'D');
   }
   // A line's angle in the word another control reads it in (drawing_angle_word).
-  const bool angleA = word.letter == 'A' && options_.control.drawingAngleWord != DrawingAngleWord::A;
-  const bool angleCommaA = word.letter == 'a' && options_.control.drawingAngleWord != DrawingAngleWord::CommaA;
+  const bool angleA = word.letter == 'A' && work_.options.control.drawingAngleWord != DrawingAngleWord::A;
+  const bool angleCommaA = word.letter == 'a' && work_.options.control.drawingAngleWord != DrawingAngleWord::CommaA;
   if (angleA || angleCommaA) {
-    const std::string_view own = options_.control.drawingAngleWord == DrawingAngleWord::Q ? "Q" :
-                                 options_.control.drawingAngleWord == DrawingAngleWord::A ? "A" : ",A";
+    const std::string_view own = work_.options.control.drawingAngleWord == DrawingAngleWord::Q ? "Q" :
+                                 work_.options.control.drawingAngleWord == DrawingAngleWord::A ? "A" : ",A";
     return fmt::format("{} is a line's angle where the control reads its angle in {} (drawing_angle_word), which "
                        "this control does not (its angle word is {}): {}",
                        word.text(), angleA ? "A" : ",A", own,
