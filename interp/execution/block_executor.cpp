@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "interp/compensation/tool_offset.hpp"
+#include "interp/execution/unused_word.hpp"
 #include "interp/cycles/compound_block.hpp"
 #include "interp/cycles/compound_cycle.hpp"
 #include "interp/cycles/drilling_block.hpp"
@@ -72,7 +73,6 @@ class Executor {
   Status applySubprogramCode();
   Status checkAllWordsUsed() const;
   Status checkToolCalledBeforeCut();
-  std::optional<std::string> missingMachineryOf(const Word& word) const;
 
   BlockWork work_;
   const BlockPlace* place_;  // null for a block run on its own
@@ -619,44 +619,6 @@ Status Executor::applyArc(const std::optional<Code>& code) {
 }
 
 // A word no code took that names machinery this two-axis, one-spindle lathe does not have.
-std::optional<std::string> Executor::missingMachineryOf(const Word& word) const {
-  if ((word.letter == 'c' || word.letter == 'r') && work_.options.control.cornerWords == CornerWords::LD) {
-    return fmt::format("{} is Fanuc's corner word (,C a chamfer, ,R a corner radius at the end of the move), which "
-                       "this control does not read (its corner words are L and D): run with --control fanuc-0i-t, "
-                       "or write {} for it",
-                       word.text(), word.letter == 'c' ? 'L' : 'D');
-  }
-  // A line's angle in the word another control reads it in (drawing_angle_word).
-  const bool angleA = word.letter == 'A' && work_.options.control.drawingAngleWord != DrawingAngleWord::A;
-  const bool angleCommaA = word.letter == 'a' && work_.options.control.drawingAngleWord != DrawingAngleWord::CommaA;
-  if (angleA || angleCommaA) {
-    const std::string_view own = work_.options.control.drawingAngleWord == DrawingAngleWord::Q ? "Q" :
-                                 work_.options.control.drawingAngleWord == DrawingAngleWord::A ? "A" : ",A";
-    return fmt::format("{} is a line's angle where the control reads its angle in {} (drawing_angle_word), which "
-                       "this control does not (its angle word is {}): {}",
-                       word.text(), angleA ? "A" : ",A", own,
-                       angleA ? "run with --control fanuc-0i-t" : "set drawing_angle_word = \",A\" in the setup's [control]");
-  }
-  if (word.letter == 'C') {
-    return fmt::format("{}: this lathe has no C axis (the spindle cannot be positioned or "
-                       "milled around); live tooling and C-axis work cannot be simulated",
-                       word.text());
-  }
-  if (word.letter == 'B') {
-    return fmt::format("{}: this lathe has no B axis (a sub-spindle's or a tilting tool "
-                       "spindle's travel)",
-                       word.text());
-  }
-  // Fanuc's multi-spindle control selects the spindle with P11, P12, P21, P22 beside S or M03.
-  const bool spindleBlock = work_.block.mCode(MGroup::Spindle) || work_.block.has('S');
-  const bool spindleSelect = word.number == "11" || word.number == "12" || word.number == "21" || word.number == "22";
-  if (word.letter == 'P' && spindleSelect && spindleBlock) {
-    return fmt::format("{} selects a spindle (multi-spindle control: P11 the main, P12 or P2x a "
-                       "sub-spindle); this lathe has one spindle",
-                       word.text());
-  }
-  return std::nullopt;
-}
 
 // G70–G76 in place of the block's motion; G71–G73 may go on after their nf block.
 Status Executor::applyCompoundCycle(const Code& code) {
@@ -673,7 +635,8 @@ Status Executor::checkAllWordsUsed() const {
   for (const auto& [letter, word] : work_.block.words) {
     if (first == nullptr || word.column < first->column) first = &word;
   }
-  if (const auto lacking = missingMachineryOf(*first)) return work_.errorAt(first->column, *lacking);
+  if (const auto lacking = missingMachineryOf(*first, work_.block, work_.options.control))
+    return work_.errorAt(first->column, *lacking);
   return work_.errorAt(first->column, fmt::format("{} is not used by any code in this block; remove "
                                                   "it or add the code that takes {}",
                                                   first->text(), first->letter));

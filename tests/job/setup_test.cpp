@@ -185,7 +185,7 @@ TEST(ParseSetup, ControlKeysOverrideThePresetWhateverTheirOrder) {
 
 TEST(ParseSetupErrors, ControlNamesAndValuesAreChecked) {
   Diagnostic d = onlyError("[control]\nname = \"fanuc-0i-m\"\n");
-  EXPECT_EQ(d.message, "control.name must be one of \"gsk980tdi\", \"fanuc-0i-t\", \"haas\" (a control preset)");
+  EXPECT_EQ(d.message, "control.name must be one of \"gsk980tdi\", \"fanuc-0i-t\", \"haas\", \"denford\" (a control preset)");
   EXPECT_EQ(d.line, 2);
   d = onlyError("[control]\n\nrapid_positioning = \"straight\"\n");
   EXPECT_EQ(d.message, "control.rapid_positioning must be one of \"nonlinear\", \"linear\", got \"straight\"");
