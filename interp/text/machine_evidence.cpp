@@ -45,7 +45,7 @@ double numberValue(std::string_view number) {
       decimals = 0;
       continue;
     }
-    digits = digits * 10 + (c - '0');
+    if (count < 15) digits = digits * 10 + (c - '0');  // longer: from_chars reads it (no overflow)
     ++count;
     if (decimals >= 0) ++decimals;
   }
