@@ -310,6 +310,25 @@ TEST(InspectionReport, AFaceBesideAnOversizeDiameterIsReadAtItsOwnZ) {
   }
 }
 
+// The same shoulder where the part beside it covers the whole face: Φ28 programmed Φ37, over
+// the drawn face Z-20 (Ø28 to Ø36) and past it. No column crosses that face alone: it is
+// undecided and not measured (no figure, rather than the face at Z-10 the columns meet).
+TEST(InspectionReport, AFaceTheNeighbourCoversIsNotMeasured) {
+  ScratchDir dir("inspect-face-covered");
+  const std::string program = "G99 G00 X100 Z5 M03 S1000\nG00 X20 Z2\nG01 Z-10 F0.1\nX37\nZ-20\nX36\nZ-30\nX42\nG00 X100 Z5\nM30\n";
+  const Checked run = checkProgram(dir, program, steppedDrawing("0.1"), 0.2);
+  ASSERT_EQ(run.outcome.status, 3) << run.outcome.out << run.outcome.err;
+  const nlohmann::json* face = sizeAt(run.check, "face", -20);
+  ASSERT_NE(face, nullptr) << run.check.dump(1);
+  EXPECT_EQ(face->at("probed"), false);
+  EXPECT_TRUE(face->at("worst_mm").is_null());
+  EXPECT_EQ(face->at("verdict"), "undecided");
+  EXPECT_NE(run.outcome.out.find("face drawn Z-20.000 (±0.2, ISO 2768-m for the length 20 mm from the front face Z0 (±0.2), "
+                                 "drawing line 3): undecided: not measured"),
+            std::string::npos)
+      << run.outcome.out;
+}
+
 TEST(InspectionReport, ReportHtmlTablesTheSizes) {
   ScratchDir dir("inspect-html");
   test::writeFile(dir.path() / "p.nc", "G99 G00 X100 Z5 M03 S1000\nG00 X19.5 Z2\nG01 Z-10 F0.1\nX28\nZ-20\nX36\nZ-30\nX42\nG00 X100 Z5\nM30\n");
