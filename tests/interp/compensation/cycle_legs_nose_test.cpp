@@ -25,13 +25,6 @@ InterpreterOptions nose08Tip3() {
   return options;
 }
 
-std::vector<Diagnostic> noseWarnings(const InterpretResult& result) {
-  std::vector<Diagnostic> found;
-  for (const Diagnostic& d : test::warningsOf(result))
-    if (d.message.find("under G40 with the nose radius") != std::string::npos) found.push_back(d);
-  return found;
-}
-
 /// The cycle's cutting leg: its feed move that changes both X and Z.
 const Move& taperLeg(const InterpretResult& result) {
   for (const Move& m : result.toolpath.moves)
@@ -44,7 +37,7 @@ TEST(CycleLegsNose, StraightG90AndG94SayNothing) {
     const auto result = test::run(std::string("T0101 G99 M03 S800\nG00 X44. Z2.\n") + cycle + "G00 X60. Z50.\nM30\n",
                                   nose08Tip3());
     ASSERT_TRUE(result.ok()) << test::messageOf(result);
-    EXPECT_TRUE(noseWarnings(result).empty()) << cycle << noseWarnings(result)[0].message;
+    EXPECT_TRUE(test::noseWarnings(result).empty()) << cycle << test::noseWarnings(result)[0].message;
   }
 }
 
@@ -65,7 +58,7 @@ TEST(CycleLegsNose, ATaperedG90NamesItsError) {
     EXPECT_NEAR(leg.to.x(), 15, 1e-9);
     EXPECT_NEAR(leg.to.y(), -20, 1e-9);
     const double hand = 0.8 * ((r < 0 ? 23 : 21) / std::sqrt(485.0) - 1);
-    const auto warnings = noseWarnings(result);
+    const auto warnings = test::noseWarnings(result);
     ASSERT_EQ(warnings.size(), 1u) << "R" << r;
     EXPECT_EQ(warnings[0].line, 3);
     EXPECT_NE(warnings[0].message.find(fmt::format("up to {:.3f} mm normal to the surface, {}", std::abs(hand),
@@ -88,7 +81,7 @@ TEST(CycleLegsNose, ATaperedG94NamesItsError) {
   EXPECT_NEAR(leg.from.y(), -3, 1e-9);
   EXPECT_NEAR(leg.to.x(), 5, 1e-9);
   EXPECT_NEAR(leg.to.y(), -2, 1e-9);
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].line, 3);
   EXPECT_NE(warnings[0].message.find(fmt::format("up to {:.3f} mm normal to the surface, material left",
@@ -105,7 +98,7 @@ TEST(CycleLegsNose, ACompensatedTaperedG90SaysNothing) {
   const auto result = test::run("T0101 G99 M03 S800\nG00 G42 X44. Z2.\nG90 X30. Z-20. R-1. F0.2\nG00 G40 X60. Z50.\nM30\n",
                                 options);
   ASSERT_TRUE(result.ok()) << test::messageOf(result);
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   EXPECT_TRUE(warnings.empty()) << warnings[0].message;
 }
 
