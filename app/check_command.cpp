@@ -97,9 +97,10 @@ Json sizeJson(const measure::SizeCheck& s) {
             {"nominal_mm", s.nominalMm},
             {"tolerance", limitsJson(s.tolerance.upperMm, s.tolerance.lowerMm)},
             {"tolerance_source", s.tolerance.source},
-            {"least_mm", s.leastMm},
-            {"greatest_mm", s.greatestMm},
-            {"worst_mm", s.worstMm},
+            {"probed", s.probed},
+            {"least_mm", s.probed ? Json(s.leastMm) : Json()},
+            {"greatest_mm", s.probed ? Json(s.greatestMm) : Json()},
+            {"worst_mm", s.probed ? Json(s.worstMm) : Json()},
             {"worst_at", place(s.worstAt)},
             {"uncertainty_mm", s.uncertaintyMm},
             {"beyond_mm", s.outsideMm},
@@ -253,6 +254,7 @@ std::string regionLabel(const measure::DeviationRegion& r) {
 }
 
 std::string sizeLabel(const measure::SizeCheck& s) {
+  if (!s.probed) return "face Z" + fixed(s.nominalMm, 3) + ": not measured, undecided";
   std::string text = s.diameter ? "Ø" + fixed(s.worstMm, 3) + " (Ø" + fixed(s.nominalMm, 3) + " " +
                                       limitsText(s.tolerance.upperMm, s.tolerance.lowerMm) + ")"
                                 : "face Z" + fixed(s.worstMm, 3) + " (Z" + fixed(s.nominalMm, 3) + " " +
@@ -325,7 +327,8 @@ void attributeSurfaces(Inspection& inspection, const interp::MoveSpool& moves, c
   const auto makers = measure::surfaceMakers(points, moves, tools, voxelMm, voxelMm);
   std::size_t n = 0;
   for (auto& s : inspection.sizes)
-    if (const auto& maker = makers[n++]) s.lines = {maker->line}, s.valueLine = s.diameter ? maker->xLine : maker->zLine;
+    if (const auto& maker = makers[n++]; maker && s.probed)
+      s.lines = {maker->line}, s.valueLine = s.diameter ? maker->xLine : maker->zLine;
   for (auto& r : inspection.deviation.regions)
     if (const auto& maker = makers[n++]) r.madeBy = {maker->line};
 }
@@ -390,6 +393,10 @@ int checkCommand(const CheckOptions& options) {
     measure::ProfileLimits limits(*drawing, *file.outline, lines, generalClass, file.cornerRadiusMm,
                                   measure::sizeMarginMm(file.cornerRadiusMm, voxel));
     for (const auto& s : inspection.sizes) {
+      if (!s.probed) {  // nothing measured: the profile judges the face
+        limits.notMeasuredBySize(s.lineIndex);
+        continue;
+      }
       // The size's offsets normal to its line: a diameter's half, turned by the side the material is on.
       const RZ normal = measure::outwardNormal(*drawing, s.drawn);
       const double scale = s.diameter ? 0.5 * normal.x() : normal.y();

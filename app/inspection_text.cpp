@@ -61,6 +61,14 @@ std::string verdictText(measure::Verdict verdict, double outsideMm, double voxel
 std::string sizeText(const measure::SizeCheck& size, double voxelMm, const BlockText& block) {
   const double off = size.worstMm - size.nominalMm;
   std::string text;
+  if (!size.probed) {
+    const std::string limits = limitsText(size.tolerance.upperMm, size.tolerance.lowerMm);
+    return "face drawn Z" + fixed(size.nominalMm, 3) + " (" + limits +
+           (size.tolerance.source == limits ? "" : ", " + size.tolerance.source) + ", drawing line " +
+           std::to_string(size.drawn.line) +
+           "): undecided: not measured, the part beside it stands over all of it, so no column crosses this face "
+           "alone (see the profile's regions there)";
+  }
   if (size.diameter) {
     text = "Ø" + fixed(size.worstMm, 3) + " ±" + fixed(size.uncertaintyMm, 3) + " measured at Z" + fixed(size.worstAt.y(), 3) +
            " (drawn " + std::string(size.bore ? "bore " : "") + "Ø" + fixed(size.nominalMm, 3) + " ";

@@ -162,8 +162,10 @@ std::string sizesTable(const Json& sizes) {
     html += std::string("<tr") + (verdict == "out" ? " class=\"problem-collision\"" : verdict == "undecided" ? " class=\"problem-warning\"" : "") +
             "><td>" + escaped(s.value("kind", "")) + " (drawing line " + std::to_string(s.value("drawing_line", 0)) +
             ")</td><td class=\"num\">" + sign + fixed(s.value("nominal_mm", 0.0), 3) + "</td><td>" + escaped(limits) +
-            (source == limits ? "" : " (" + escaped(source) + ")") + "</td><td class=\"num\">" + sign + fixed(s.value("worst_mm", 0.0), 3) +
-            " ±" + fixed(s.value("uncertainty_mm", 0.0), 3) + "</td><td>" +
+            (source == limits ? "" : " (" + escaped(source) + ")") + "</td><td class=\"num\">" +
+            (s.value("probed", true) ? sign + fixed(s.value("worst_mm", 0.0), 3) + " ±" + fixed(s.value("uncertainty_mm", 0.0), 3)
+                                     : std::string("not measured")) +
+            "</td><td>" +
             (face ? "Ø" + fixed(at.value("diameter", 0.0), 3) : "Z" + fixed(at.value("z", 0.0), 3)) + "</td><td>" +
             (verdict == "within" ? "within" : verdict == "undecided" ? "UNDECIDED" : "OUT, " + fixed(s.value("beyond_mm", 0.0), 3) + " beyond") +
             "</td><td>" + (told ? lines : "") + "</td><td>" + (told && valueLine > 0 ? lineLink(valueLine) : "") + "</td></tr>\n";

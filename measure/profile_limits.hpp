@@ -45,6 +45,9 @@ class ProfileLimits {
   /// it (excess > 0): near its ends that much is its size's finding, not the profile's too.
   void explainedBySize(std::size_t line, double lowMm, double highMm);
 
+  /// A size check could not measure line `line` (SizeCheck::probed): the profile judges it all.
+  void notMeasuredBySize(std::size_t line) { sized_[line] = false; }
+
  private:
   struct Piece {  // one chord of the outline, with its line's band
     RZ a, b;

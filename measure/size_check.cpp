@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include "measure/profile_limits.hpp"
 
@@ -27,6 +29,109 @@ Crossing nearestCrossing(const Phi& phi, int count, double first, double h, bool
     if (!best.found || std::abs(at - target) < std::abs(best.at - target)) best = {at, true};
   }
   return best;
+}
+
+/// The drawing's surface on the row at `z`: its crossing nearest the radius `guess`.
+std::optional<double> drawnRadiusOnRow(const MeridianProfile& drawing, double z, double guess) {
+  std::optional<double> best;
+  for (const Segment& s : drawing.surface()) {
+    const double za = s.a.y(), zb = s.b.y();
+    if (za == zb || z < std::min(za, zb) || z > std::max(za, zb)) continue;
+    const double r = s.a.x() + (z - za) / (zb - za) * (s.b.x() - s.a.x());
+    if (!best || std::abs(r - guess) < std::abs(*best - guess)) best = r;
+  }
+  return best;
+}
+
+/// The part beside one end of a face: the drawn line meeting the face at `end` (a diameter, a
+/// taper, an arc) measured on its grid rows, off its ends by `margin`, as a diameter is (the
+/// part's surface nearest the drawn one): per row, where the part is and how far that lies
+/// from the drawing, towards the face's other end (> 0: standing over the face).
+struct FaceEnd {
+  RZ end{0, 0};
+  double towardsFar = 1;    // +1: the face's other end lies at a greater radius
+  std::vector<double> made;  // the part's surface on each row (radius)
+  std::vector<double> over;  // how far it lies from the drawing's towards the face's other end
+  /// Where the part beside the face is, at the face: the drawn end moved by the rows' median
+  /// (a row next to a face that is not where drawn reads the face, not the neighbour).
+  double madeAtFace() const {
+    if (over.empty()) return end.x();
+    std::vector<double> sorted = over;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    return end.x() + towardsFar * sorted[sorted.size() / 2];
+  }
+};
+
+FaceEnd faceEnd(const SampledSection& section, const MeridianProfile& drawing, const DrawnLine* neighbour, const RZ& end,
+                double farR, double margin) {
+  FaceEnd result{end, farR > end.x() ? 1.0 : -1.0, {}, {}};
+  if (neighbour == nullptr) return result;  // on the axis, or beside another face
+  const double h = section.stepMm;
+  const double zLow = std::min(neighbour->from.y(), neighbour->to.y()), zHigh = std::max(neighbour->from.y(), neighbour->to.y());
+  int kFirst = static_cast<int>(std::ceil((zLow + margin - section.zFirstMm) / h));
+  int kLast = static_cast<int>(std::floor((zHigh - margin - section.zFirstMm) / h));
+  if (kFirst > kLast) kFirst = kLast = static_cast<int>(std::lround(((zLow + zHigh) / 2 - section.zFirstMm) / h));
+  for (int k = std::max(0, kFirst); k <= std::min(section.zCount - 1, kLast); ++k) {
+    const double z = section.zFirstMm + k * h;
+    // The drawn line's radius on this row: its chord's, moved onto the drawing's surface (an arc).
+    const double dz = neighbour->to.y() - neighbour->from.y();
+    const double t = dz == 0 ? 0.5 : (z - neighbour->from.y()) / dz;  // an arc may end where it starts, in Z
+    const auto drawn = drawnRadiusOnRow(drawing, z, neighbour->from.x() + t * (neighbour->to.x() - neighbour->from.x()));
+    if (!drawn) continue;
+    const bool materialInside = drawing.contains(RZ(*drawn - 1e-3, z));
+    const auto phi = [&](int i) { return static_cast<double>(section.at(i, k)); };
+    const Crossing c = nearestCrossing(phi, section.rCount, 0.0, h, materialInside, *drawn);
+    const double made = c.found ? c.at : (phi(0) >= 0 ? 0.0 : (section.rCount - 1) * h);
+    result.made.push_back(made);
+    result.over.push_back((made - *drawn) * result.towardsFar);
+  }
+  return result;
+}
+
+/// How far the part beside `near` stands over the face (mm, ≥ 0): the face's columns within
+/// it would cross the neighbour's material (an oversize diameter beside a shoulder) or its
+/// air, and read another surface. A row whose surface lies at or past where the part beside
+/// the other end is reads through the face (the face is not where drawn there: its columns
+/// measure that) and is left out; nullopt when every row does so.
+std::optional<double> reachOver(const FaceEnd& near, const FaceEnd& other, double margin) {
+  const double otherMade = other.madeAtFace();
+  double reach = 0;
+  bool bounded = false;
+  for (std::size_t n = 0; n < near.made.size(); ++n) {
+    if ((near.made[n] - otherMade) * near.towardsFar >= -margin) continue;  // through the face
+    bounded = true;
+    reach = std::max(reach, near.over[n]);
+  }
+  if (!near.made.empty() && !bounded) return std::nullopt;
+  return reach;
+}
+
+/// The grid columns a face (lines[index]) is measured on: its drawn span off its ends by
+/// `margin` (the axis is no corner), narrowed by how far the part beside each end stands over
+/// it. A face too short for that: its middle column, if the part leaves one. nullopt: no
+/// column crosses the face alone.
+std::optional<std::pair<int, int>> faceColumns(const SampledSection& section, const MeridianProfile& drawing,
+                                               const std::vector<DrawnLine>& lines, std::size_t index, double margin) {
+  const DrawnLine& face = lines[index];
+  const double h = section.stepMm;
+  const RZ inner = face.from.x() < face.to.x() ? face.from : face.to, outer = face.from.x() < face.to.x() ? face.to : face.from;
+  const auto neighbourAt = [&](const RZ& end) -> const DrawnLine* {
+    for (std::size_t n = 0; n < lines.size(); ++n)
+      if (n != index && !lines[n].face() && (lines[n].from == end || lines[n].to == end)) return &lines[n];
+    return nullptr;
+  };
+  const FaceEnd low = faceEnd(section, drawing, neighbourAt(inner), inner, outer.x(), margin);
+  const FaceEnd high = faceEnd(section, drawing, neighbourAt(outer), outer, inner.x(), margin);
+  const auto lowReach = reachOver(low, high, margin), highReach = reachOver(high, low, margin);
+  if (!lowReach || !highReach) return std::nullopt;
+  const double rLow = inner.x() + *lowReach, rHigh = outer.x() - *highReach;
+  if (rLow >= rHigh) return std::nullopt;
+  int first = static_cast<int>(std::ceil((rLow > 0 ? rLow + margin : 0.0) / h));
+  int last = static_cast<int>(std::floor((rHigh - margin) / h));
+  if (first <= last) return std::pair{first, last};
+  const int middle = static_cast<int>(std::lround((rLow + rHigh) / 2 / h));
+  if (middle * h <= rLow || middle * h >= rHigh) return std::nullopt;
+  return std::pair{middle, middle};
 }
 
 std::string plusMinus(double value) {
@@ -101,18 +206,23 @@ std::vector<SizeCheck> checkSizes(const SampledSection& section, const MeridianP
         figures.emplace_back(2 * r, RZ(r, section.zFirstMm + k * h));
       }
     } else {
-      const double z = line.from.y();
-      check.nominalMm = z;
-      const double rLow = std::min(line.from.x(), line.to.x()), rHigh = std::max(line.from.x(), line.to.x());
-      const bool materialBelow = outwardNormal(drawing, line).y() > 0;
+      check.nominalMm = line.from.y();
       check.uncertaintyMm = surfaceUncertaintyMm(h);
-      // The axis is no corner: only an end off it keeps the margin.
-      int iFirst = static_cast<int>(std::ceil((rLow > 0 ? rLow + margin : 0.0) / h));
-      int iLast = static_cast<int>(std::floor((rHigh - margin) / h));
-      if (iFirst > iLast) iFirst = iLast = static_cast<int>(std::lround((rLow + rHigh) / 2 / h));
-      for (int i = std::max(0, iFirst); i <= std::min(section.rCount - 1, iLast); ++i) {
+      const auto columns = faceColumns(section, drawing, lines, index, margin);
+      if (!columns) {
+        // No column crosses the face alone: a neighbour's excess (or a face missing) stands
+        // over all of it. Undecided, never a neighbour's figure.
+        check.probed = false;
+        check.verdict = Verdict::Undecided;
+        check.leastMm = check.greatestMm = check.worstMm = check.nominalMm;
+        check.leastAt = check.greatestAt = check.worstAt = (line.from + line.to) / 2;
+        checks.push_back(std::move(check));
+        continue;
+      }
+      const bool materialBelow = outwardNormal(drawing, line).y() > 0;
+      for (int i = std::max(0, columns->first); i <= std::min(section.rCount - 1, columns->second); ++i) {
         const auto phi = [&](int k) { return static_cast<double>(section.at(i, k)); };
-        const Crossing c = nearestCrossing(phi, section.zCount, section.zFirstMm, h, materialBelow, z);
+        const Crossing c = nearestCrossing(phi, section.zCount, section.zFirstMm, h, materialBelow, check.nominalMm);
         const double top = section.zFirstMm + (section.zCount - 1) * h;
         const double at = c.found ? c.at : ((phi(0) < 0) == materialBelow ? top : section.zFirstMm);
         figures.emplace_back(at, RZ(i * h, at));

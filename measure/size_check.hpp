@@ -7,8 +7,10 @@
 // within the allowed corner radius plus two voxels of either end (the corners are the
 // profile's business): the part's surface crossing nearest the drawn radius, with the
 // material on the drawn side, gives the radius there, exact where φ is linear across the
-// voxel. A face is measured the same way along the grid columns across it. The least and the
-// greatest value are compared with the limits.
+// voxel. A face is measured the same way along the grid columns across it, on those where
+// the part beside it (its neighbouring diameter, taper or arc, as made) leaves the face
+// bounded on both sides; where none is left, the face is undecided, never a neighbour's
+// figure. The least and the greatest value are compared with the limits.
 //
 
 #include <optional>
@@ -42,6 +44,10 @@ struct SizeCheck {
   Tolerance tolerance;    // applied
   bool stated = false;    // by the drawing's row; else general
   bool measured = false;  // false: the part has no such surface there
+  // A face is probed only on columns where the part beside it does not stand over it (an
+  // oversize diameter next to a shoulder would be read for the face). false: none is left;
+  // the verdict is undecided and the figures below are the drawn ones, not measured.
+  bool probed = true;
   double leastMm = 0, greatestMm = 0;  // the measured diameters (or Z), and where
   RZ leastAt{0, 0}, greatestAt{0, 0};
   double uncertaintyMm = 0;

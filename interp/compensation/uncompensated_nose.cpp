@@ -63,12 +63,12 @@ void UncompensatedNoseCheck::noteContourPass(int block, const ContourPass& pass)
   const ContourKey key{pass.first, pass.last};
   (pass.finishes ? finishedAt_ : roughedAt_)[key] = ++passes_;
   if (!pass.finishes) roughedBy_[block] = key;
-  if (!pass.finishes && pass.compensated) roughedCompensated_.insert(block);
+  if (!pass.finishes && pass.compensated) compensatedBlocks_.insert(block);
 }
 
 void UncompensatedNoseCheck::look(const std::vector<Move>& moves) {
   for (const Move& move : moves) {
-    if (move.noseComp.side != NoseSide::None || roughedCompensated_.count(move.block)) continue;
+    if (move.noseComp.side != NoseSide::None || compensatedBlocks_.count(move.block)) continue;
     const bool ofOffset = move.noseComp.radiusMm > 0;
     ToolNose nose{move.noseComp.radiusMm, move.noseComp.tip};
     if (!ofOffset) {

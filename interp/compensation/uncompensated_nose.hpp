@@ -60,6 +60,9 @@ class UncompensatedNoseCheck {
   explicit UncompensatedNoseCheck(const std::map<int, ToolNose>& toolNoses) : toolNoses_(toolNoses) {}
   /// Block `block` (its ordinal) ran `pass`; told in program order, before its moves are looked at.
   void noteContourPass(int block, const ContourPass& pass);
+  /// Block `block` (its ordinal) is a G90/G94 whose legs its cycle offset for the nose
+  /// (cycle_nose_compensation.hpp): they are cut compensated, whatever their NoseComp says.
+  void noteCompensatedBlock(int block) { compensatedBlocks_.insert(block); }
   /// Looks at `moves` as programmed, before compensation: those under G40.
   void look(const std::vector<Move>& moves);
   /// The warning, if the worst deviation is 0.001 mm or more, of the moves that made the part's
@@ -82,7 +85,7 @@ class UncompensatedNoseCheck {
   Worst worst_;                             // of the moves that are no roughing
   std::map<ContourKey, Worst> roughing_;    // of the roughing passes, by contour
   std::map<int, ContourKey> roughedBy_;     // the G71–G73 blocks (ordinals) and their contours
-  std::set<int> roughedCompensated_;        // those whose legs follow a compensated contour
+  std::set<int> compensatedBlocks_;  // roughings whose legs follow a compensated contour, cycles that offset theirs
   std::map<ContourKey, std::size_t> roughedAt_, finishedAt_;  // the last pass of each kind, in order
   std::size_t passes_ = 0;
 };

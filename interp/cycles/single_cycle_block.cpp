@@ -75,7 +75,15 @@ Status runSingleCycle(BlockWork& work, const SingleCycle& cycle, const std::opti
   work.noteCycleStart(start, name);
   const RZ end(xDiameterMm / 2.0, zMm);  // C
   const NoseComp comp = noseCompWith(state.noseSide, state.offset);
+  const std::size_t firstLeg = work.moves.size();
   work.emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
+  // Under G40 the legs keep the offset's R and tip, which the nose check weighs (a taper leg
+  // misses its line by R·(|s·n| − 1); compensation/uncompensated_nose.hpp), as G71–G73's do.
+  // Under G41/G42 the cycle offset them (with the offset's R): the check leaves them out.
+  if (state.noseSide == NoseSide::None)
+    for (std::size_t i = firstLeg; i < work.moves.size(); ++i) work.moves[i].noseComp = noseCompWith(NoseSide::None, state.offset);
+  else
+    work.legsCompensated = comp.radiusMm > 0;
   return success();  // the cycle ends at A: the position is unchanged
 }
 

@@ -145,7 +145,7 @@ Result<BlockOutcome> Executor::run() {
   if (coolant && coolant->number == 9) work_.state.coolantOn = false;
   if (work_.block.mCode(MGroup::ProgramEnd)) work_.state.ended = true;
   return BlockOutcome{std::move(work_.state), std::move(work_.moves), std::move(work_.warnings),
-                      std::move(work_.cycleStarts), flow_, work_.contourPass};
+                      std::move(work_.cycleStarts), flow_, work_.contourPass, work_.legsCompensated};
 }
 
 Status Executor::applySubprogramCode() {

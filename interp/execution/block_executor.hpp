@@ -25,6 +25,7 @@ struct BlockOutcome {
   std::vector<CycleStart> cycleStarts;  // the cycle this block ran, if any
   ProgramFlow flow;         // M98, M99, or where G71–G73 resume
   std::optional<ContourPass> contourPass;  // G70–G73: the contour it finished or roughed
+  bool legsCompensated = false;  // G90/G94 under G41/G42: the cycle offset its own legs
 };
 
 /// Runs `block` from `state`. `ordinal` is the block's 0-based number among the blocks read.

@@ -27,8 +27,9 @@ void placeInSetupFrame(std::vector<Move>& moves) {
 MovePipeline::MovePipeline(const InterpreterOptions& options, MoveSink& sink, std::vector<Error>& warnings)
     : options_(options), sink_(sink), warnings_(warnings), uncompensated_(options.toolNoses) {}
 
-void MovePipeline::add(const std::vector<Move>& moves, const std::optional<ContourPass>& pass) {
+void MovePipeline::add(const std::vector<Move>& moves, const std::optional<ContourPass>& pass, bool legsCompensated) {
   if (pass && !moves.empty()) uncompensated_.noteContourPass(moves.front().block, *pass);
+  if (legsCompensated && !moves.empty()) uncompensated_.noteCompensatedBlock(moves.front().block);
   held_.insert(held_.end(), moves.begin(), moves.end());
 }
 

@@ -31,8 +31,9 @@ class MovePipeline {
   MovePipeline(const InterpreterOptions& options, MoveSink& sink, std::vector<Error>& warnings);
 
   /// The moves of one block, as it made them, in order; `pass`: the block was a G70–G73 that
-  /// finished or roughed a contour.
-  void add(const std::vector<Move>& moves, const std::optional<ContourPass>& pass = std::nullopt);
+  /// finished or roughed a contour; `legsCompensated`: a G90/G94 that offset its own legs.
+  void add(const std::vector<Move>& moves, const std::optional<ContourPass>& pass = std::nullopt,
+           bool legsCompensated = false);
   /// Lets the moves held go if there are `window` of them and they can be cut after;
   /// `anyCount`: however few there are (a parts catcher command counts the moves before it).
   Status release(bool anyCount = false);

@@ -83,6 +83,7 @@ class ProgramRunner {
   MovePipeline& moves_;
   std::vector<Move> blockMoves_;  // the moves of the block that ran last, not yet in moves_
   std::optional<ContourPass> blockContourPass_;  // and the contour it finished or roughed
+  bool blockLegsCompensated_ = false;  // and whether its cycle offset its own legs
   std::optional<PartsCatcherCommand> catcher_;  // its parts catcher command, not yet listed
   std::size_t movesMade_ = 0;  // by the blocks, before corners and dog-legs
   std::vector<Error>& warnings_;
@@ -215,6 +216,7 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   movesMade_ += done.moves.size();
   blockMoves_ = std::move(done.moves);
   blockContourPass_ = done.contourPass;
+  blockLegsCompensated_ = done.legsCompensated;
   const ProgramBlock& made = program_.block(index);
   if (auto tooMany = moveLimitError(movesMade_, options_.maxMoves, made.line, made.column)) return *tooMany;
   toolpath_.cycleStarts.insert(toolpath_.cycleStarts.end(), done.cycleStarts.begin(), done.cycleStarts.end());
@@ -291,7 +293,7 @@ Status ProgramRunner::passBlockMoves() {
     catcher_->movesBefore = moves_.passed() + moves_.held();
     toolpath_.partsCatcher.push_back(*std::exchange(catcher_, std::nullopt));
   }
-  moves_.add(blockMoves_, std::exchange(blockContourPass_, std::nullopt));
+  moves_.add(blockMoves_, std::exchange(blockContourPass_, std::nullopt), std::exchange(blockLegsCompensated_, false));
   blockMoves_.clear();
   return moves_.release();
 }

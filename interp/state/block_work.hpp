@@ -43,6 +43,7 @@ struct BlockWork {
   std::vector<Error> warnings;
   std::vector<CycleStart> cycleStarts;
   std::optional<ContourPass> contourPass;  // G70–G73: the contour it finished or roughed
+  bool legsCompensated = false;  // G90/G94 under G41/G42: the cycle offset its own legs
   bool chainedThread = false;  // this block continued (or began) a chain of G32 cuts
   bool feedGiven = false;      // the block gave F
 

@@ -290,6 +290,45 @@ TEST(InspectionReport, BlamesTheChangedBlockWithItsTextForUndersizeAndExcess) {
 // report.html gives check.sizes as a table, as the text report does: the journal's Φ20 cut
 // Φ19.5 is OUT 0.400 beyond ±0.1, made by line 3, its X from line 2; Φ28 and Φ36 within, with
 // no line named.
+// The issue's face next to an oversize: Φ28 programmed Φ28.5 up to the face at Z-20, cut where
+// drawn. The face was probed at Ø28.4, inside the oversize, and read at Z-10 ("9.800 beyond:
+// OUT"). It is read past the oversize (radius 14.25 and two voxels: columns from 14.25 + 2h,
+// Ø28.9 at voxel 0.1, Ø29.3 at 0.2), at Z-20: within; the diameter alone is out.
+TEST(InspectionReport, AFaceBesideAnOversizeDiameterIsReadAtItsOwnZ) {
+  for (const double voxel : {0.2, 0.1}) {
+    ScratchDir dir("inspect-face-oversize");
+    const std::string program = "G99 G00 X100 Z5 M03 S1000\nG00 X20 Z2\nG01 Z-10 F0.1\nX28.5\nZ-20\nX36\nZ-30\nX42\nG00 X100 Z5\nM30\n";
+    const Checked run = checkProgram(dir, program, steppedDrawing("0.1"), voxel);
+    ASSERT_EQ(run.outcome.status, 3) << run.outcome.out << run.outcome.err;
+    const nlohmann::json* face = sizeAt(run.check, "face", -20);
+    ASSERT_NE(face, nullptr) << run.check.dump(1);
+    EXPECT_NEAR(face->at("worst_mm").get<double>(), -20, 1e-3) << voxel;
+    EXPECT_EQ(face->at("verdict"), "within") << voxel;
+    EXPECT_GE(face->at("worst_at").at("diameter").get<double>(), 2 * (14.25 + 2 * voxel) - 1e-9) << voxel;
+    EXPECT_EQ(sizeAt(run.check, "diameter", 28)->at("verdict"), "out");
+    EXPECT_EQ(run.outcome.out.find("beyond its limit: OUT; made by line 4"), std::string::npos) << run.outcome.out;
+  }
+}
+
+// The same shoulder where the part beside it covers the whole face: Φ28 programmed Φ37, over
+// the drawn face Z-20 (Ø28 to Ø36) and past it. No column crosses that face alone: it is
+// undecided and not measured (no figure, rather than the face at Z-10 the columns meet).
+TEST(InspectionReport, AFaceTheNeighbourCoversIsNotMeasured) {
+  ScratchDir dir("inspect-face-covered");
+  const std::string program = "G99 G00 X100 Z5 M03 S1000\nG00 X20 Z2\nG01 Z-10 F0.1\nX37\nZ-20\nX36\nZ-30\nX42\nG00 X100 Z5\nM30\n";
+  const Checked run = checkProgram(dir, program, steppedDrawing("0.1"), 0.2);
+  ASSERT_EQ(run.outcome.status, 3) << run.outcome.out << run.outcome.err;
+  const nlohmann::json* face = sizeAt(run.check, "face", -20);
+  ASSERT_NE(face, nullptr) << run.check.dump(1);
+  EXPECT_EQ(face->at("probed"), false);
+  EXPECT_TRUE(face->at("worst_mm").is_null());
+  EXPECT_EQ(face->at("verdict"), "undecided");
+  EXPECT_NE(run.outcome.out.find("face drawn Z-20.000 (±0.2, ISO 2768-m for the length 20 mm from the front face Z0 (±0.2), "
+                                 "drawing line 3): undecided: not measured"),
+            std::string::npos)
+      << run.outcome.out;
+}
+
 TEST(InspectionReport, ReportHtmlTablesTheSizes) {
   ScratchDir dir("inspect-html");
   test::writeFile(dir.path() / "p.nc", "G99 G00 X100 Z5 M03 S1000\nG00 X19.5 Z2\nG01 Z-10 F0.1\nX28\nZ-20\nX36\nZ-30\nX42\nG00 X100 Z5\nM30\n");

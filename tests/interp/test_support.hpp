@@ -70,6 +70,14 @@ inline std::vector<Diagnostic> warningsOf(const InterpretResult& result) {
   return warnings;
 }
 
+/// The warnings that speak of a nose radius under G40 (compensation/uncompensated_nose.hpp).
+inline std::vector<Diagnostic> noseWarnings(const InterpretResult& result) {
+  std::vector<Diagnostic> found;
+  for (const Diagnostic& d : warningsOf(result))
+    if (d.message.find("under G40 with the nose radius") != std::string::npos) found.push_back(d);
+  return found;
+}
+
 inline std::vector<Diagnostic> notesOf(const InterpretResult& result) {
   std::vector<Diagnostic> notes;
   for (const Diagnostic& d : result.diagnostics)

@@ -23,14 +23,6 @@ InterpreterOptions withOffset(double radiusMm, int tip) {
   return options;
 }
 
-// The warnings that speak of the nose radius.
-std::vector<Diagnostic> noseWarnings(const InterpretResult& result) {
-  std::vector<Diagnostic> found;
-  for (const Diagnostic& d : test::warningsOf(result))
-    if (d.message.find("under G40 with the nose radius") != std::string::npos) found.push_back(d);
-  return found;
-}
-
 // Shaft Φ14 → 45° chamfer to Φ20 (line 4) → Φ20 → away.
 constexpr std::string_view kChamfer =
     "T0101 G99 M03 S800\n"
@@ -46,7 +38,7 @@ TEST(UncompensatedNose, A45DegreeChamferIsMissedByRTimesRoot2MinusOne) {
     SCOPED_TRACE(testing::Message() << "R" << r);
     const auto result = test::run(kChamfer, withOffset(r, 3));
     ASSERT_TRUE(result.ok()) << test::messageOf(result);
-    const auto warnings = noseWarnings(result);
+    const auto warnings = test::noseWarnings(result);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0].line, 4);
     const double hand = r * (std::sqrt(2.0) - 1);  // R0.8: 0.331
@@ -60,7 +52,7 @@ TEST(UncompensatedNose, A45DegreeChamferIsMissedByRTimesRoot2MinusOne) {
 
 TEST(UncompensatedNose, The0Point33OfTheIssueAtR0Point8) {
   const auto result = test::run(kChamfer, withOffset(0.8, 3));
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].message.find("up to 0.331 mm"), std::string::npos) << warnings[0].message;
 }
@@ -82,7 +74,7 @@ TEST(UncompensatedNose, EveryTipNumberOnTheChamfer) {
     SCOPED_TRACE(testing::Message() << "tip " << c.tip);
     const auto result = test::run(kChamfer, withOffset(r, c.tip));
     ASSERT_TRUE(result.ok()) << test::messageOf(result);
-    const auto warnings = noseWarnings(result);
+    const auto warnings = test::noseWarnings(result);
     if (c.hand == 0) {
       EXPECT_TRUE(warnings.empty()) << warnings[0].message;
       continue;
@@ -105,7 +97,7 @@ TEST(UncompensatedNose, A30DegreeTaper) {
       "G00 X40\n"
       "M30\n",
       withOffset(0.8, 3));
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].line, 4);
   const double hand = 0.8 * (std::cos(std::numbers::pi / 6) + std::sin(std::numbers::pi / 6) - 1);  // 0.293
@@ -129,7 +121,7 @@ TEST(UncompensatedNose, AnArcEndingShortOf45DegreesIsWorstAtItsEnd) {
       "G00 X40\n"
       "M30\n",
       withOffset(r, 3));
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].line, 3);
   EXPECT_NE(warnings[0].message.find(fmt::format("up to {:.3f} mm normal to the surface, material left on this block's R5 arc", hand)),
@@ -150,7 +142,7 @@ TEST(UncompensatedNose, AnArcThrough45DegreesIsMissedByTheChamfersFigure) {
       "G00 X40\n"
       "M30\n",
       withOffset(1.2, 3));
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].line, 5);
   EXPECT_NE(warnings[0].message.find(fmt::format("up to {:.3f} mm", 1.2 * (std::sqrt(2.0) - 1))), std::string::npos)
@@ -166,10 +158,10 @@ TEST(UncompensatedNose, DiametersAndFacesWithTip3AreRightAndNoRadiusSaysNothing)
       "Z-10\n"
       "G00 X40\n"
       "M30\n";
-  EXPECT_TRUE(noseWarnings(test::run(kSquare, withOffset(0.8, 3))).empty());
-  EXPECT_TRUE(noseWarnings(test::run(kChamfer, withOffset(0.0, 3))).empty());
+  EXPECT_TRUE(test::noseWarnings(test::run(kSquare, withOffset(0.8, 3))).empty());
+  EXPECT_TRUE(test::noseWarnings(test::run(kChamfer, withOffset(0.0, 3))).empty());
   // Tip 9 (the centre is the programmed point): every cut surface is R off, into the part.
-  const auto centre = noseWarnings(test::run(kSquare, withOffset(0.8, 9)));
+  const auto centre = test::noseWarnings(test::run(kSquare, withOffset(0.8, 9)));
   ASSERT_EQ(centre.size(), 1u);
   EXPECT_NE(centre[0].message.find("up to 0.800 mm normal to the surface, cut into the part"), std::string::npos) << centre[0].message;
 }
@@ -179,7 +171,7 @@ TEST(UncompensatedNose, WithoutAnOffsetRadiusTheToolsInsertIsTheNose) {
   // chamfer; an offset's R, when there is one, is the one named.
   InterpreterOptions options = test::defaultOptions();
   options.toolNoses[1] = ToolNose{0.4, 3};
-  auto warnings = noseWarnings(test::run(kChamfer, options));
+  auto warnings = test::noseWarnings(test::run(kChamfer, options));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].message.find(fmt::format("R0.4 of tool 1's insert (its offset gives no R) (tip 3): the "
                                                  "finish is off the drawing by up to {:.3f} mm",
@@ -187,7 +179,7 @@ TEST(UncompensatedNose, WithoutAnOffsetRadiusTheToolsInsertIsTheNose) {
             std::string::npos)
       << warnings[0].message;
   options.offsets[1] = ToolOffset{0, 0, 0.8, 3, 0, 0};
-  warnings = noseWarnings(test::run(kChamfer, options));
+  warnings = test::noseWarnings(test::run(kChamfer, options));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].message.find("R0.8 of offset 1 (tip 3)"), std::string::npos) << warnings[0].message;
 }
@@ -205,7 +197,7 @@ TEST(UncompensatedNose, OneWarningForTheRunAtItsWorstBlock) {
       "G00 X40\n"
       "M30\n",
       withOffset(0.8, 3));
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].line, 6);
 }
@@ -221,7 +213,7 @@ TEST(UncompensatedNose, CompensatedContoursSayNothing) {
       "M30\n",
       withOffset(0.8, 3));
   ASSERT_TRUE(result.ok()) << test::messageOf(result);
-  EXPECT_TRUE(noseWarnings(result).empty());
+  EXPECT_TRUE(test::noseWarnings(result).empty());
 }
 
 // G71 roughs a contour and its last pass runs along it: under G40 that pass is as far off the
@@ -259,18 +251,18 @@ TEST_P(RoughingUnderG40, WarnsOnlyWhenNoCompensatedG70FinishesTheContour) {
     // G71 alone: its last pass made the chamfer, at line 7's block.
     auto result = test::run(roughedChamfer(""), nose.options);
     ASSERT_TRUE(result.ok()) << test::messageOf(result);
-    auto warnings = noseWarnings(result);
+    auto warnings = test::noseWarnings(result);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0].line, 7);
     EXPECT_NE(warnings[0].message.find(said), std::string::npos) << warnings[0].message;
     // Away, back under G42 and G70 finishes it compensated: the roughing made no surface, nothing to say.
     result = test::run(roughedChamfer("G00 X60. Z20.\nG42 G00 X42. Z2.\nG70 P10 Q20\nG40 "), nose.options);
     ASSERT_TRUE(result.ok()) << test::messageOf(result);
-    EXPECT_TRUE(noseWarnings(result).empty()) << noseWarnings(result)[0].message;
+    EXPECT_TRUE(test::noseWarnings(result).empty()) << test::noseWarnings(result)[0].message;
     // G70 under G40: the finish itself is off, at the same block.
     result = test::run(roughedChamfer("G70 P10 Q20\n"), nose.options);
     ASSERT_TRUE(result.ok()) << test::messageOf(result);
-    warnings = noseWarnings(result);
+    warnings = test::noseWarnings(result);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0].line, 7);
     EXPECT_NE(warnings[0].message.find(said), std::string::npos) << warnings[0].message;
@@ -293,7 +285,7 @@ TEST_P(RoughingUnderG40, AG70OfAnotherContourLeavesTheRoughingWarned) {
                                                "G40 "),
                                 options);
   ASSERT_TRUE(result.ok()) << test::messageOf(result);
-  const auto warnings = noseWarnings(result);
+  const auto warnings = test::noseWarnings(result);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0].line, 7);
 }
@@ -308,7 +300,7 @@ TEST_P(RoughingUnderG40, ACompensatedContourRoughedAloneSaysNothing) {
   program.replace(program.find("N10 G00 X14."), 12, "N10 G00 G42 X14.");
   const auto result = test::run(program, options);
   ASSERT_TRUE(result.ok()) << test::messageOf(result);
-  EXPECT_TRUE(noseWarnings(result).empty()) << noseWarnings(result)[0].message;
+  EXPECT_TRUE(test::noseWarnings(result).empty()) << test::noseWarnings(result)[0].message;
 }
 
 INSTANTIATE_TEST_SUITE_P(Presets, RoughingUnderG40, testing::Values("gsk980tdi", "fanuc-0i-t"));
