@@ -7,7 +7,6 @@
 
 #include "interp/text/tool_word.hpp"
 #include "interp/motion/cycle_time.hpp"
-#include "interp/text/stated_stock.hpp"
 #include "interp/text/program.hpp"
 #include "job/comment_tools.hpp"
 #include "job/stock_option.hpp"
@@ -36,29 +35,26 @@ std::string toolDefinitionHint(int number) {
       number);
 }
 
-// T words no setup defines, mounted from what their blocks' comments name (comment_tools.hpp).
-void mountToolsNamedInComments(Job& job, const std::string& programName, Diagnostics& said) {
-  const interp::Program program = interp::readProgram(job.programText.text(), job.setup.control.parameters.blockSkip,
-                                                      job.setup.dialect, job.setup.control.parameters.machineMCodes);
+// The program read through for the interpreter (interp/text/program.hpp), and on the way the T
+// words no setup defines mounted from what their blocks' comments name (comment_tools.hpp): the
+// program is lexed once for both.
+void readProgramMountingTools(Job& job, const std::string& programName, Diagnostics& said) {
   Setup& setup = job.setup;
   std::vector<int> mounted;
-  for (std::size_t ordinal = 0; ordinal < program.blockCount(); ++ordinal) {
-    const interp::ProgramBlock block = program.block(ordinal);
-    const auto words = program.plainWords(block);
-    if (!words || !words->has('T')) continue;
-    const interp::Word t = words->words.at('T');
+  const auto mountFrom = [&](const interp::ReadBlock& read) {  // a block with a T word and comments
+    const interp::ProgramBlock& block = read.block;
+    const interp::Word t = read.words->words.at('T');
     // Beside M06 a short T word is the tool, as the interpreter reads it (trainers' M06 T02).
-    const bool besideToolChange = words->mCode(interp::MGroup::ToolChange).has_value();
-    const auto read = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line, besideToolChange);
-    if (!read.ok() || read.value().tool == 0) continue;  // the interpreter reports a bad T word
-    const int number = read.value().tool;
+    const bool besideToolChange = read.words->mCode(interp::MGroup::ToolChange).has_value();
+    const auto toolWord = interp::readToolWord(t, setup.control.parameters.toolWordForms, block.line, besideToolChange);
+    if (!toolWord.ok() || toolWord.value().tool == 0) return;  // the interpreter reports a bad T word
+    const int number = toolWord.value().tool;
     const bool defined = std::any_of(setup.tools.begin(), setup.tools.end(), [&](const ToolDefinition& tool) {
       return tool.number == number && (setup.toolsGiven || number != 1);
     });
-    if (defined || std::find(mounted.begin(), mounted.end(), number) != mounted.end()) continue;
-    const interp::BlockComments& blockComments = program.commentsOf(block);
-    std::vector<std::string> comments = blockComments.own;
-    comments.insert(comments.end(), blockComments.above.begin(), blockComments.above.end());
+    if (defined || std::find(mounted.begin(), mounted.end(), number) != mounted.end()) return;
+    std::vector<std::string> comments = read.comments.own;
+    comments.insert(comments.end(), read.comments.above.begin(), read.comments.above.end());
     for (const std::string& comment : comments) {
       auto named = toolNamedIn(comment, number, setup.stock.diameterMm);
       if (!named) continue;
@@ -71,9 +67,11 @@ void mountToolsNamedInComments(Job& job, const std::string& programName, Diagnos
       job.warnings.push_back({interp::Severity::Warning, programName, block.line, t.column, message,
                               interp::lineOf(job.programText.text(), block.line)});
       said.push_back(job.warnings.back());
-      break;
+      return;
     }
-  }
+  };
+  job.program = interp::readProgram(job.programText.text(), setup.control.parameters.blockSkip, setup.dialect,
+                                    setup.control.parameters.machineMCodes, mountFrom);
 }
 
 // The program's evidence read, and the dialect and control not stated chosen from it
@@ -231,7 +229,7 @@ Reported<std::optional<Job>> openJob(const JobRequest& request) {
   Diagnostics& said = opened.diagnostics;
   const std::filesystem::path& program = request.program;
   const std::optional<std::filesystem::path>& setupFile = request.setup;
-  Job job{defaultSetup(), {}, {}, {}, {}, {}, {}, {}, {}};
+  Job job{defaultSetup(), {}, {}, {}, {}, {}, {}, {}, {}, {}};
   if (setupFile) {
     SetupResult loaded = loadSetup(*setupFile);
     said = loaded.diagnostics;
@@ -265,7 +263,7 @@ Reported<std::optional<Job>> openJob(const JobRequest& request) {
     job.setup.stockFaceGiven = stockOptionStatesFace(*request.stock);
     job.setup.sourceName += " with --stock " + *request.stock;
   } else if (!job.setup.stockGiven) {
-    if (const auto stated = interp::stockStatedIn(job.programText.text())) {
+    if (const auto& stated = job.evidence.stock) {  // found in the evidence's walk of the lines
       job.setup.stock = sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
       job.setup.stockGiven = true;  // by the program: its face at Z0 stays an assumption
       job.notes.push_back({interp::Severity::Note, program.string(), stated->line, stated->column,
@@ -281,7 +279,7 @@ Reported<std::optional<Job>> openJob(const JobRequest& request) {
     job.warnings.push_back(job.warningAt(w.line, w.column, w.message));
     said.push_back(job.warnings.back());
   }
-  mountToolsNamedInComments(job, program.string(), said);
+  readProgramMountingTools(job, program.string(), said);
   opened.value = std::move(job);
   return opened;
 }
@@ -294,7 +292,8 @@ Reported<bool> interpretJob(Job& job, const JobRequest& request, interp::MoveSin
   options.programDirectories.push_back(program.parent_path().empty() ? std::filesystem::path(".") : program.parent_path());
   TimedMoves timed(job.setup.machine, moves);
   options.foreignProgram.emplace(job.evidence.foreign);  // looked for in the evidence's pass
-  interp::InterpretResult result = interp::interpret(job.programText.text(), program.string(), options, timed);
+  interp::InterpretResult result = interp::interpret(std::move(job.program).value(), program.string(), options, timed);
+  job.program.reset();  // what is left of it after the run
   for (interp::Diagnostic& d : result.diagnostics)
     if (d.severity == interp::Severity::Error) d.message = withCure(job, d, program.string());
   Reported<bool> interpreted{result.ok(), result.diagnostics};

@@ -16,6 +16,7 @@
 #include "interp/base/move.hpp"
 #include "interp/base/move_sink.hpp"
 #include "interp/text/file_text.hpp"
+#include "interp/text/program.hpp"
 
 namespace lathesim::job {
 
@@ -41,6 +42,9 @@ struct Job {
   // Of programText, found by the first warningAt (8 B a line, not held while the interpreter
   // reads a long program unless a warning needs it): a warning per block stays linear.
   mutable std::optional<interp::LineStarts> programLines;
+  // programText read through by openJob (its blocks counted, its labels placed), for
+  // interpretJob to run without reading it again; gone once it has run.
+  std::optional<interp::Program> program;
 
   /// A warning located in the program, ready to print and report.
   interp::Diagnostic warningAt(int line, int column, std::string message) const;
