@@ -43,8 +43,9 @@ std::optional<StatedStock> stockComment(const std::string& comment) {
 }  // namespace
 
 std::optional<StatedStock> stockStatedOn(std::string_view written, int lineNumber) {
-  // Both statements open with a bracket: most lines are passed over without a pattern tried.
-  if (written.find_first_of("[(") == std::string_view::npos) return std::nullopt;
+  // Both statements open with a bracket: most lines are passed over without a pattern tried
+  // (two searches for one character: memchr, which find_first_of is not).
+  if (written.find('(') == std::string_view::npos && written.find('[') == std::string_view::npos) return std::nullopt;
   std::string line = regexText(written);
   if (!line.empty() && line.back() == '\r') line.pop_back();
   std::optional<StatedStock> found = billet(line);
