@@ -391,8 +391,8 @@ int checkCommand(const CheckOptions& options) {
                                   measure::sizeMarginMm(file.cornerRadiusMm, voxel));
     for (const auto& s : inspection.sizes) {
       // The size's offsets normal to its line: a diameter's half, turned by the side the material is on.
-      const RZ out = measure::outwardNormal(*drawing, s.drawn);
-      const double scale = s.diameter ? 0.5 * out.x() : out.y();
+      const RZ normal = measure::outwardNormal(*drawing, s.drawn);
+      const double scale = s.diameter ? 0.5 * normal.x() : normal.y();
       const double a = scale * (s.leastMm - s.nominalMm), b = scale * (s.greatestMm - s.nominalMm);
       // Widened by twice the uncertainty: a sample at the size's own extreme is then decidedly explained.
       limits.explainedBySize(s.lineIndex, std::min(a, b) - 2 * uncertainty, std::max(a, b) + 2 * uncertainty);

@@ -15,6 +15,10 @@ std::string collisionMessage(const sim::Collision& c) {
   if (c.kind == "into_chuck")
     return fmt::format("tool {} runs into the chuck, {:.1f} mm³ of the chuck inside the tool or its holder ({})", c.tool,
                        c.volumeMm3, where);
+  if (c.kind == "into_tailstock")
+    return fmt::format("tool {} runs into the tailstock's centre or quill, {:.1f} mm³ of it inside the tool or its holder "
+                       "({})",
+                       c.tool, c.volumeMm3, where);
   return fmt::format("collision ({}), {:.1f} mm³ ({})", c.kind, c.volumeMm3, where);
 }
 

@@ -9,6 +9,7 @@
 #include "app/tool_picture.hpp"
 #include "geometry/profile_polylines.hpp"
 #include "geometry/revolved_mesh.hpp"
+#include "interp/motion/cycle_time.hpp"
 #include "interp/text/text_lines.hpp"
 
 namespace lathesim::app {
@@ -26,8 +27,9 @@ std::string clockText(double clock, interp::Pace pace) {
 CutRecording::CutRecording(const job::Job& job, const AnimationRequest& request, const std::string& title,
                            StagedOutput& out)
     : job_(job) {
-  const render::PartImageOptions picture =
-      partPictureOptions(job.setup, job.toolpath, title, request.widthPx, request.heightPx);
+  render::PartImageOptions picture = partPictureOptions(job.setup, job.toolpath, title, request.widthPx, request.heightPx);
+  // The run keeps every move for a video (run_pipeline.cpp): its tools and time are known now.
+  picture.subtitle = pictureSubtitle(job.setup, toolsUsedBy(job.toolpath.moves), interp::cycleTimeS(job.toolpath));
   const sim::StockSpec& bar = job.setup.stock;
   // About half a pixel: the picture spans a little more than the bar and its jaws.
   toleranceMm_ = 0.5 * (bar.lengthMm + bar.diameterMm) / request.widthPx;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "app/tool_picture.hpp"
 #include "geometry/profile_polylines.hpp"
 #include "sim/holder_check.hpp"
@@ -22,7 +24,45 @@ render::ChuckPicture chuckPicture(const job::Setup& setup) {
   return {jawLow.x(), jawHigh.x(), jawLow.y(), jawHigh.y(), bodyLow.y()};
 }
 
+/// What a tool is, in a few words, for the picture's subtitle.
+std::string toolWords(const job::Setup& setup, int number) {
+  const auto tool = std::find_if(setup.tools.begin(), setup.tools.end(),
+                                 [number](const job::ToolDefinition& t) { return t.number == number; });
+  std::string words = fmt::format("T{:02d}", number);
+  if (tool == setup.tools.end()) return words;
+  const job::ToolFacts& f = tool->facts;
+  if (!f.insert.empty()) return words + " " + f.insert;
+  if (!f.insertShape.empty()) return words + " " + f.insertShape;
+  return words + (f.kind == "polygon" ? " a polygon tool" : " the default tool");
+}
+
+std::string clockText(double seconds) {
+  const int minutes = static_cast<int>(seconds / 60);
+  return fmt::format("{}:{:04.1f}", minutes, seconds - 60.0 * minutes);
+}
+
 }  // namespace
+
+std::string pictureTitle(const std::string& program, std::optional<int> atLine) {
+  return atLine ? fmt::format("{}, at line {}", program, *atLine) : program;
+}
+
+std::string pictureSubtitle(const job::Setup& setup, const std::vector<int>& toolsUsed, double cycleTimeS) {
+  const sim::StockSpec& bar = setup.stock;
+  // Ø, not Φ: the pictures' font has no Greek (the dimensions write Ø too).
+  std::string text = fmt::format("bar Ø{:g} × {:g}", bar.diameterMm, bar.lengthMm);
+  if (bar.boreMm > 0) text += fmt::format(", bore Ø{:g}", bar.boreMm);
+  if (!setup.stockMaterial.empty()) text += " " + setup.stockMaterial;
+  for (std::size_t n = 0; n < toolsUsed.size(); ++n) text += (n == 0 ? " · " : ", ") + toolWords(setup, toolsUsed[n]);
+  return text + " · cycle time " + clockText(cycleTimeS);
+}
+
+std::vector<int> toolsUsedBy(const std::vector<interp::Move>& moves) {
+  std::vector<int> tools;
+  for (const interp::Move& move : moves)
+    if (std::find(tools.begin(), tools.end(), move.tool) == tools.end()) tools.push_back(move.tool);
+  return tools;
+}
 
 render::PartImageOptions partPictureOptions(const job::Setup& setup, const interp::Toolpath& toolpath,
                                             const std::string& title, int widthPx, int heightPx) {
@@ -34,7 +74,17 @@ render::PartImageOptions partPictureOptions(const job::Setup& setup, const inter
   const sim::StockSpec& bar = setup.stock;
   options.bar = render::BarOutline{bar.diameterMm / 2, bar.faceZMm - bar.lengthMm, bar.faceZMm, bar.boreMm / 2};
   options.chuck = chuckPicture(setup);
+  if (setup.tailstock) {
+    const job::Tailstock& t = *setup.tailstock;
+    options.tailstock =
+        render::TailstockPicture{t.pointZMm, t.quillDiameterMm / 2, job::kQuillLengthPerDiameter * t.quillDiameterMm};
+  }
   return options;
+}
+
+render::SceneMachine sceneMachine(const job::Setup& setup, const interp::Toolpath& toolpath) {
+  const render::PartImageOptions picture = partPictureOptions(setup, toolpath, "", 1, 1);
+  return {picture.chuck, picture.tailstock, picture.tool};
 }
 
 double drawnToleranceMm(const job::Setup& setup, int widthPx, int heightPx) {

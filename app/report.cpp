@@ -141,6 +141,8 @@ nlohmann::ordered_json reportJson(const RunFigures& f) {
                       {"x_from", source(f.travel.xDerived, "travel_x")},
                       {"z_from", source(f.travel.zDerived, "travel_z")}};
   report["machine"]["assumed"] = machineAssumedJson(f.assumed);
+  report["stock"] = f.stock;
+  report["tools"] = f.tools;
   report["voxel_mm"] = f.voxelMm;
   if (f.atLine) report["at_line"] = *f.atLine;
   report["stock_volume_mm3"] = f.stockVolumeMm3;

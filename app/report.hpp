@@ -60,6 +60,9 @@ struct RunFigures {
   std::vector<interp::SkippedBlock> skipped;  // '/' blocks passed over under block delete
   std::vector<interp::Diagnostic> warnings;
   std::vector<interp::Diagnostic> notes;
+  nlohmann::ordered_json tools = nlohmann::ordered_json::array();  // the tool table (tool_table.hpp)
+  std::vector<int> toolsUsed;  // the tool numbers the moves used, in the order of first use
+  nlohmann::ordered_json stock = nlohmann::ordered_json::object();  // the bar and who stated it
   // simulation.collisions' diagnostics, one each in the same order: errors, or warnings under
   // [sim] collisions = "warn" (collision_diagnostics.hpp).
   std::vector<interp::Diagnostic> collisions;

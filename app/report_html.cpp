@@ -12,6 +12,7 @@
 #include "app/inspection_text.hpp"
 #include "app/report_steps.hpp"
 #include "app/staged_output.hpp"
+#include "app/tool_table_html.hpp"
 #include "batch/html_text.hpp"
 #include "viewer/viewer_script.hpp"
 
@@ -326,7 +327,7 @@ void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const int
         << " mm"
         << (report.contains("at_line") ? " · stopped after line " + std::to_string(report.value("at_line", 0)) : "")
         << "</p></header>\n<main>\n";
-    out << summary(report) << problems(report);
+    out << summary(report) << problems(report) << toolTableHtml(report);
     // The part in 3D first, where the page opens; the pictures and the drawing check below.
     if (!glb.empty()) {
       out << "<h2>3D view</h2>\n<div id=\"view3d\" data-state=\"loading\"></div>\n<p class=\"hint\">The part and its "

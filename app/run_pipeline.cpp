@@ -12,6 +12,7 @@
 #include "app/output_names.hpp"
 #include "app/part_pictures.hpp"
 #include "app/printed_diagnostics.hpp"
+#include "app/tool_table.hpp"
 #include "job/collision_checks.hpp"
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
@@ -75,12 +76,14 @@ bool drawsToolpath(const RunOptions& options) {
 // (as cycleTimeS sums them).
 class StreamedMoves final : public interp::MoveSink {
  public:
-  StreamedMoves(sim::Simulation& simulation, std::vector<interp::MoveSink*> others, std::vector<interp::Move>& threadMoves)
-      : simulation_(simulation), others_(std::move(others)), threads_(threadMoves) {}
+  StreamedMoves(sim::Simulation& simulation, std::vector<interp::MoveSink*> others, std::vector<interp::Move>& threadMoves,
+                ToolUsage& tools)
+      : simulation_(simulation), others_(std::move(others)), threads_(threadMoves), tools_(tools) {}
   void recordingIn(const interp::Toolpath& toolpath) override { simulation_.recordingIn(toolpath); }
   void take(interp::Move move) override {
     ++count;
     cycleTimeS += move.timeS;
+    tools_.note(move);
     for (interp::MoveSink* other : others_) other->take(move);
     threads_.take(move);
     simulation_.take(std::move(move));
@@ -93,6 +96,7 @@ class StreamedMoves final : public interp::MoveSink {
   sim::Simulation& simulation_;
   std::vector<interp::MoveSink*> others_;
   measure::ThreadMoveCollector threads_;
+  ToolUsage& tools_;
 };
 
 }  // namespace
@@ -161,7 +165,8 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   const sim::BlockProgress progress = [&](int done, int total) { run.progress->update(done, total); };
   std::unique_ptr<CutRecording> recording;
   if (options.animation.mp4 && out)
-    recording = std::make_unique<CutRecording>(run.job, options.animation, figures.program, *out);
+    recording =
+        std::make_unique<CutRecording>(run.job, options.animation, pictureTitle(figures.program, options.atLine), *out);
   // What the simulation shows the stock to as it cuts: the video's frames, the page's steps.
   std::vector<sim::CutObserver> observers;
   if (recording) observers.push_back(recording->observer());
@@ -174,6 +179,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
                           };
   // A streamed run's toolpath for measuring threads: its thread moves (thread_moves.hpp).
   interp::Toolpath threadToolpath;
+  ToolUsage toolUsage;
   if (streams) {
     sim::Simulation simulation(run.job.toolpath, outlines, *run.stock, {progress, &checks, thicknessesOf(setup), observer});
     if (options.outputs.csv && out) {
@@ -183,7 +189,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     std::vector<interp::Move> threadMoves;
     run.blockRows = std::make_unique<sim::SpooledBlockRows>();
     simulation.sendBlocksTo([rows = run.blockRows.get()](const sim::BlockRemoval& row) { rows->add(row); });
-    StreamedMoves moves(simulation, std::move(others), threadMoves);
+    StreamedMoves moves(simulation, std::move(others), threadMoves, toolUsage);
     if (!printed(job::interpretJob(run.job, request, moves))) return std::nullopt;
     figures.moves = moves.count;
     figures.cycleTimeS = moves.cycleTimeS;
@@ -194,6 +200,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   } else {
     for (interp::MoveSink* other : others)
       for (const interp::Move& move : run.job.toolpath.moves) other->take(move);
+    for (const interp::Move& move : run.job.toolpath.moves) toolUsage.note(move);
     figures.moves = run.job.toolpath.moves.size();
     figures.cycleTimeS = interp::cycleTimeS(run.job.toolpath);
     if (barProblem) warn(run, *barProblem);
@@ -201,6 +208,11 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
         sim::simulate(run.job.toolpath, outlines, *run.stock, {progress, &checks, thicknessesOf(setup), observer});
   }
   figures.warnings.insert(figures.warnings.begin(), run.job.warnings.begin(), run.job.warnings.end());
+  figures.tools = toolTableJson(setup, toolUsage.used());
+  for (const UsedToolOffset& u : toolUsage.used())
+    if (std::find(figures.toolsUsed.begin(), figures.toolsUsed.end(), u.tool) == figures.toolsUsed.end())
+      figures.toolsUsed.push_back(u.tool);
+  figures.stock = stockJson(setup);
   figures.notes = run.job.notes;
   figures.stops = run.job.toolpath.stops;
   figures.skipped = run.job.skippedBlocks;
@@ -306,7 +318,9 @@ DrawnPictures drawPictures(const SimulatedRun& run, const interp::Toolpath& tool
   DrawnPictures drawn;
   const PictureRequest& pictures = options.pictures;
   render::PartImageOptions image =
-      partPictureOptions(run.job.setup, toolpath, run.figures.program, pictures.widthPx, pictures.heightPx);
+      partPictureOptions(run.job.setup, toolpath, pictureTitle(run.figures.program, run.figures.atLine), pictures.widthPx,
+                         pictures.heightPx);
+  image.subtitle = pictureSubtitle(run.job.setup, run.figures.toolsUsed, run.figures.cycleTimeS);
   addPartSection(image, run.partStock().meridianSection(), run.figures.voxelMm);
   image.crashes = crashMarksOf(run.figures.simulation.collisions);
   std::vector<render::PartView> views{render::PartView::Iso};
@@ -392,12 +406,13 @@ void stageRunFiles(SimulatedRun& run, const RunOptions& options, StagedOutput& o
   }
   // After the pictures, not beside them: their copies of the mesh and these would add up to
   // the run's peak memory (a Φ300×600 bar at 0.2 mm: 2.53 times its grid's memory, 2.20 without).
-  if (wanted.html || std::find(options.exports.begin(), options.exports.end(), "glb") != options.exports.end())
-    run.modelGlb = render::partGlb(run.part, drawnToolpath, crashMarksOf(run.figures.simulation.collisions));
+  // report.html's shows the machine beside the part; part.glb is the part and its toolpath.
+  const auto crashes = crashMarksOf(run.figures.simulation.collisions);
+  if (wanted.html) run.modelGlb = render::partGlb(run.part, drawnToolpath, crashes, sceneMachine(run.job.setup, drawnToolpath));
   for (const std::string& format : options.exports) {
     out.write("part." + format, [&](const Path& file) {
       if (format == "gltf") render::writePartGltf(run.part, drawnToolpath, file);
-      if (format == "glb") render::writeFileBytes(run.modelGlb, file);
+      if (format == "glb") render::writeFileBytes(render::partGlb(run.part, drawnToolpath, crashes), file);
       if (format == "ply") render::writePartPly(run.part, file);
       if (format == "obj") render::writePartObj(run.part, file);
     });

@@ -2,7 +2,23 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
+#include "sim/simulate.hpp"
+
 namespace lathesim::app {
+
+DrawnToolSizes drawnToolSizes(const job::ToolDefinition& tool) {
+  DrawnToolSizes sizes;
+  const job::ToolFacts& facts = tool.facts;
+  sizes.holderHeightMm = facts.shankHeightMm.value_or(kDefaultShankHeightMm);
+  sizes.insertThicknessMm = tool.thicknessMm.value_or(sim::kDefaultInsertThicknessMm);
+  sizes.from = facts.shankHeightMm ? "the holder " + facts.holder + "'s shank height"
+                                   : fmt::format("no holder named: a {:g} mm shank assumed", kDefaultShankHeightMm);
+  sizes.from += tool.thicknessMm ? std::string(", the insert's own thickness")
+                                 : fmt::format(", the insert {:g} mm thick, assumed", sim::kDefaultInsertThicknessMm);
+  return sizes;
+}
 
 render::ToolPicture toolPicture(const job::Setup& setup, int number, const RZ& position) {
   render::ToolPicture picture;
@@ -13,6 +29,9 @@ render::ToolPicture toolPicture(const job::Setup& setup, int number, const RZ& p
   if (mounted == nullptr) return picture;
   picture.insert = mounted->outline.vertices();
   if (mounted->holderBody) picture.holder = mounted->holderBody->vertices();
+  const DrawnToolSizes sizes = drawnToolSizes(*mounted);
+  picture.holderHeightMm = sizes.holderHeightMm;
+  picture.insertThicknessMm = sizes.insertThicknessMm;
   return picture;
 }
 

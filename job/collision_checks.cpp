@@ -9,6 +9,7 @@ sim::CollisionChecks collisionChecksOf(const Setup& setup) {
     if (tool.holderBody) checks.holders.emplace(tool.number, *tool.holderBody);
   }
   checks.chuck = sim::chuckRegions(setup.chuck, setup.stock);
+  if (setup.tailstock) checks.tailstock = tailstockRegions(*setup.tailstock);
   return checks;
 }
 

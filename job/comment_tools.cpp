@@ -27,12 +27,21 @@ std::optional<char> usualStyle(char shape) {
   }
 }
 
-std::optional<CommentTool> place(BuiltTool built, int number, std::string description) {
+// The tool built, numbered; its facts' source is set by whoever finds the comment.
+std::optional<CommentTool> place(BuiltTool built, int number, std::string description, ToolFacts facts) {
   if (!built.tool) return std::nullopt;
   ToolShape& shape = *built.tool;
   return CommentTool{ToolDefinition{number, std::move(shape.cutter), std::move(shape.holderBody), shape.tipNumber,
-                                    shape.noseRadiusMm, std::nullopt},
+                                    shape.noseRadiusMm, std::nullopt, std::move(facts)},
                      std::move(description), std::move(built.warnings)};
+}
+
+ToolFacts factsOf(std::string kind, std::string shape, std::optional<double> angleDeg) {
+  ToolFacts facts;
+  facts.kind = std::move(kind);
+  facts.insertShape = std::move(shape);
+  facts.insertAngleDeg = angleDeg;
+  return facts;
 }
 
 std::optional<CommentTool> isoInsertTool(const std::string& comment, int number) {
@@ -61,7 +70,7 @@ std::optional<CommentTool> isoInsertTool(const std::string& comment, int number)
   const auto holder = parseIsoHolder(holderText);
   if (!holder.value) return std::nullopt;
   auto named = place(turningTool(*insert.value, *holder.value, std::nullopt), number,
-                     fmt::format("{} in {}{}", code, holderText, why));
+                     fmt::format("{} in {}{}", code, holderText, why), turningFacts(*insert.value, *holder.value));
   if (named) named->warnings.insert(named->warnings.end(), insert.warnings.begin(), insert.warnings.end());
   return named;
 }
@@ -86,7 +95,8 @@ std::optional<CommentTool> grooveBlade(const std::string& comment, int number, d
   if (!width || *width <= 0) return std::nullopt;
   const double depth = barDiameterMm / 2.0 + 5.0;
   return place(grooveTool(*width, 0.0, 0.0, depth, 3), number,
-               fmt::format("a grooving/parting blade {:g} mm wide, {:g} mm deep, square corners, tip 3", *width, depth));
+               fmt::format("a grooving/parting blade {:g} mm wide, {:g} mm deep, square corners, tip 3", *width, depth),
+               factsOf("groove", fmt::format("a blade {:g} mm wide, {:g} mm deep", *width, depth), std::nullopt));
 }
 
 std::optional<CommentTool> drill(const std::string& comment, int number) {
@@ -98,7 +108,8 @@ std::optional<CommentTool> drill(const std::string& comment, int number) {
   if (!diameter) diameter = numberAfter(comment, diameterBefore);
   if (!diameter || *diameter <= 0) return std::nullopt;
   return place(drillTool(*diameter, 118.0, 10.0 * *diameter), number,
-               fmt::format("a Φ{:g} drill, 118° point", *diameter));
+               fmt::format("a Φ{:g} drill, 118° point", *diameter),
+               factsOf("drill", fmt::format("a Φ{:g} drill, 118° point, {:g} mm long", *diameter, 10.0 * *diameter), 118.0));
 }
 
 std::optional<CommentTool> threadingTool(const std::string& comment, int number) {
@@ -117,9 +128,11 @@ std::optional<CommentTool> threadingTool(const std::string& comment, int number)
   constexpr double kPartialSmallestPitchMm = 0.5;
   const double drawnPitch = pitch.value_or(kPartialLargestPitchMm);
   const double nose = 0.125 * pitch.value_or(kPartialSmallestPitchMm);
-  return place(lathesim::threadTool(angle, drawnPitch, nose, 8), number,
-               pitch ? fmt::format("a {:g}° threading insert for pitch {:g}", angle, *pitch)
-                     : fmt::format("a {:g}° partial-profile threading insert (0.5–3 mm pitches, no pitch named)", angle));
+  std::string description =
+      pitch ? fmt::format("a {:g}° threading insert for pitch {:g}", angle, *pitch)
+            : fmt::format("a {:g}° partial-profile threading insert (0.5–3 mm pitches, no pitch named)", angle);
+  ToolFacts facts = factsOf("thread", description, angle);
+  return place(lathesim::threadTool(angle, drawnPitch, nose, 8), number, std::move(description), std::move(facts));
 }
 
 }  // namespace

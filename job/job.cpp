@@ -58,6 +58,7 @@ void readProgramMountingTools(Job& job, const std::string& programName, Diagnost
     for (const std::string& comment : comments) {
       auto named = toolNamedIn(comment, number, setup.stock.diameterMm);
       if (!named) continue;
+      named->tool.facts.source = fmt::format("the comment '({})' of the T word at {}:{}", comment, programName, block.line);
       std::erase_if(setup.tools, [&](const ToolDefinition& tool) { return tool.number == number; });
       setup.tools.push_back(std::move(named->tool));
       mounted.push_back(number);
@@ -262,10 +263,12 @@ Reported<std::optional<Job>> openJob(const JobRequest& request) {
     job.setup.stockGiven = true;
     job.setup.stockFaceGiven = stockOptionStatesFace(*request.stock);
     job.setup.sourceName += " with --stock " + *request.stock;
+    job.setup.stockBy = "--stock " + *request.stock;
   } else if (!job.setup.stockGiven) {
     if (const auto& stated = job.evidence.stock) {  // found in the evidence's walk of the lines
       job.setup.stock = sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
       job.setup.stockGiven = true;  // by the program: its face at Z0 stays an assumption
+      job.setup.stockBy = fmt::format("the program at {}:{}: {}", program.string(), stated->line, stated->text);
       job.notes.push_back({interp::Severity::Note, program.string(), stated->line, stated->column,
                            fmt::format("the bar is Φ{:g} × {:g}, its face at Z0, as the program states it: "
                                        "{} (no setup gives the stock)",

@@ -105,6 +105,7 @@ class Reporter {
   }
 
   std::vector<Diagnostic> take() { return std::move(diagnostics_); }
+  const std::string& fileName() const { return fileName_; }
   bool hasErrors() const {
     for (const auto& d : diagnostics_)
       if (d.severity == Severity::Error) return true;
@@ -175,8 +176,13 @@ std::optional<double> finiteMm(const toml::node& node, const std::string& name, 
   return value;
 }
 
-void readStock(const toml::table& table, sim::StockSpec& stock, bool& stockFaceGiven, Reporter& report) {
-  rejectUnknownKeys(table, "stock.", {"diameter", "length", "face_z", "bore"}, report);
+void readStock(const toml::table& table, Setup& setup, Reporter& report) {
+  sim::StockSpec& stock = setup.stock;
+  rejectUnknownKeys(table, "stock.", {"diameter", "length", "face_z", "bore", "material"}, report);
+  if (const auto* node = table.get("material")) {
+    if (const auto* text = node->as_string()) setup.stockMaterial = text->get();
+    else report.at(node->source(), "stock.material must be text in quotes (e.g. \"C45\"), got " + describe(*node));
+  }
   if (const auto* node = table.get("diameter"))
     if (auto v = positiveMm(*node, "stock.diameter", report)) stock.diameterMm = *v;
   if (const auto* node = table.get("length"))
@@ -184,7 +190,7 @@ void readStock(const toml::table& table, sim::StockSpec& stock, bool& stockFaceG
   if (const auto* node = table.get("face_z"))
     if (auto v = finiteMm(*node, "stock.face_z", report)) {
       stock.faceZMm = *v;
-      stockFaceGiven = true;
+      setup.stockFaceGiven = true;
     }
   if (const auto* node = table.get("bore")) {
     if (auto v = positiveMm(*node, "stock.bore", report)) {
@@ -276,8 +282,12 @@ std::optional<std::pair<double, double>> rangeOf(const toml::node& node, const s
 void readMachine(const toml::table& table, Setup& setup, Reporter& report) {
   rejectUnknownKeys(table, "machine.",
                     {"start", "rapid", "max_rpm", "reference", "travel_x", "travel_z", "dialect", "initial_feed_mode",
-                     "thread_runout", "zero", "second_reference"},
+                     "thread_runout", "zero", "second_reference", "tailstock"},
                     report);
+  if (const auto* node = table.get("tailstock"))
+    setup.tailstock = readTailstock(*node, [&report](const toml::source_region& where, std::string message) {
+      report.at(where, std::move(message));
+    });
   if (const auto* node = table.get("travel_x")) setup.travelXDiameterMm = rangeOf(*node, "machine.travel_x", report);
   if (const auto* node = table.get("travel_z")) setup.travelZMm = rangeOf(*node, "machine.travel_z", report);
   if (const auto* node = table.get("dialect")) {
@@ -368,7 +378,7 @@ std::optional<ToolDefinition> readTool(const toml::table& table, const std::stri
   std::vector<std::string_view> known{"number", "polygon"};
   known.insert(known.end(), toolShapeKeys().begin(), toolShapeKeys().end());
   rejectUnknownKeys(table, name + ".", known, report);
-  ToolDefinition tool{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt};
+  ToolDefinition tool{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt, {}};
   bool ok = true;
   std::vector<ToolKeyProblem> shapeProblems;
   readToolShape(table, name, tool, shapeProblems);
@@ -423,6 +433,7 @@ std::optional<ToolDefinition> readTool(const toml::table& table, const std::stri
     }
   }
   if (!ok) return std::nullopt;
+  tool.facts.source = report.fileName() + ":" + std::to_string(table.source().begin.line) + " " + name;
   return tool;
 }
 
@@ -465,7 +476,7 @@ Setup defaultSetup() {
   setup.referencePosition = setup.startPosition;
   setup.voxelMm = std::nullopt;
   setup.control = *interp::controlPreset(interp::kDefaultControlPreset);
-  setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt});
+  setup.tools.push_back(ToolDefinition{1, defaultOutline(), std::nullopt, 3, 0.0, std::nullopt, {}});
   return setup;
 }
 
@@ -514,7 +525,8 @@ SetupResult parseSetup(std::string_view tomlText, const std::string& fileName) {
     // default setup's, not a [stock] table's.
     setup.stock.faceZMm = 0.0;
     if (const auto* table = tableAt(*node, "stock", report))
-      readStock(*table, setup.stock, setup.stockFaceGiven, report);
+      readStock(*table, setup, report);
+    setup.stockBy = fileName + ":" + std::to_string(node->source().begin.line) + " [stock]";
   }
   if (const auto* node = root.get("machine"))
     if (const auto* table = tableAt(*node, "machine", report)) readMachine(*table, setup, report);

@@ -18,6 +18,8 @@
 #include "interp/compensation/tool_offset.hpp"
 #include "interp/state/work_frame.hpp"
 #include "job/macro_setup.hpp"
+#include "job/tailstock_setup.hpp"
+#include "job/tool_facts.hpp"
 #include "sim/stock_spec.hpp"
 #include "sim/chuck_spec.hpp"  // after stock_spec: the chuck is placed on the bar
 
@@ -32,12 +34,17 @@ struct ToolDefinition {
   // The insert's thickness across the tool's plane (mm): what a cut made with the spindle
   // stopped removes across it. `thickness`, or an ISO insert's own; unset: sim's default.
   std::optional<double> thicknessMm;
+  ToolFacts facts;  // what it is and where it came from, for the tool table (tool_facts.hpp)
 };
 
 struct Setup {
   std::string sourceName;  // the file it came from, or "(default setup)"
   sim::StockSpec stock;
   bool stockGiven = false;  // the file has [stock]: a bar the program states is not used
+  // Who stated the bar, for report.json's "stock": "setup.toml:3 [stock]", "--stock D40xL80",
+  // "the program at prog.nc:2: (STOCK D40 L80)"; "" when the default setup's bar is assumed.
+  std::string stockBy;
+  std::string stockMaterial;  // [stock] material, as written; "" when not stated
   bool stockFaceGiven = false;  // stock.face_z (or --stock …xZ) stated; else the face is at Z0
                                 // with a [stock] or --stock, Z2 with the default bar
   RZ startPosition{100.0, 200.0};  // (radius, Z) — the file gives [X diameter, Z]
@@ -62,6 +69,7 @@ struct Setup {
   std::vector<ToolDefinition> tools;  // in file order; the first is mounted at start
   bool toolsGiven = false;  // the file lists [[tool]]s (else tool 1 is the default placeholder)
   sim::ChuckSpec chuck;               // [chuck]: jaws on the bar's left end
+  std::optional<Tailstock> tailstock;  // [machine] tailstock; none by default
   interp::ToolOffsets offsets;        // [[offset]] (job/offset_setup.hpp); none by default
   interp::WorkOffsets workOffsets = interp::zeroWorkOffsets();  // [[work_offset]]: G54–G59
   std::optional<RZ> machineZero;      // [machine] zero: G53's zero (radius, Z); unset: the reference point

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "geometry/iso_holder.hpp"
 #include "geometry/iso_insert.hpp"
 #include "geometry/thread_insert.hpp"
@@ -176,6 +178,7 @@ void readTurning(ToolReader& r, ToolDefinition& tool) {
   if (!insert.value || !holder.value || r.failed()) return;
   take(turningTool(*insert.value, *holder.value, tip), *holderText, r, tool);
   if (!tool.thicknessMm) tool.thicknessMm = insert.value->thicknessMm;
+  tool.facts = turningFacts(*insert.value, *holder.value);
 }
 
 // A laydown threading insert (geometry/thread_insert.hpp): its profile, pitch and nose radius
@@ -198,6 +201,11 @@ void readThreadInsert(ToolReader& r, ToolDefinition& tool) {
   const auto tip = r.tip();
   if (!nose || r.failed()) return;
   take(threadTool(insert.value->profileDeg, insert.value->pitchMm, *nose, tip, insert.value->internal), *text, r, tool);
+  tool.facts.kind = "thread";
+  tool.facts.insert = text->get();
+  tool.facts.insertShape = fmt::format("{}threading insert, pitch {:g} mm", insert.value->internal ? "internal " : "",
+                                       insert.value->pitchMm);
+  tool.facts.insertAngleDeg = insert.value->profileDeg;
 }
 
 }  // namespace
@@ -234,6 +242,7 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
   }
 
   if (kind.empty()) {  // a polygon tool (or the default outline): only tip may be added
+    if (table.contains("polygon")) tool.facts.kind = "polygon";
     for (auto&& [key, node] : table) {
       const std::string_view k = key.str();
       if (k == "number" || k == "polygon" || k == "tip" || k == "thickness") continue;
@@ -248,6 +257,7 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
   }
 
   r.setKind(kind);
+  tool.facts.kind = kind;
   if (const auto* polygon = table.get("polygon"))
     r.error(*polygon, name + ".polygon cannot be combined with a " + kind + " tool's keys; give one or the other");
   const auto& allowed = std::find_if(kinds().begin(), kinds().end(), [&](const KindKeys& k) { return k.kind == kind; })->keys;
@@ -267,8 +277,10 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
     const auto corners = r.cornerRadii();
     const auto depth = r.number("depth", std::nullopt, false, "mm");
     const auto tip = r.tip();
-    if (width && corners && depth && !r.failed())
+    if (width && corners && depth && !r.failed()) {
       take(grooveTool(*width, corners->first, corners->second, *depth, tip), table, r, tool);
+      tool.facts.insertShape = fmt::format("a blade {:g} mm wide, {:g} mm deep", *width, *depth);
+    }
   } else if (kind == "thread" && table.contains("insert")) {
     readThreadInsert(r, tool);
   } else if (kind == "thread") {
@@ -278,12 +290,20 @@ bool readToolShape(const toml::table& table, const std::string& name, ToolDefini
     const double rootFactor = angle == 60.0 ? 0.125 : angle == 55.0 ? 0.137329 : 0.0;
     const auto nose = pitch ? r.number("nose_radius", rootFactor * *pitch, true, "mm") : std::nullopt;
     const auto tip = r.tip();
-    if (angle && pitch && nose && !r.failed()) take(threadTool(*angle, *pitch, *nose, tip), table, r, tool);
+    if (angle && pitch && nose && !r.failed()) {
+      take(threadTool(*angle, *pitch, *nose, tip), table, r, tool);
+      tool.facts.insertShape = fmt::format("threading insert, pitch {:g} mm", *pitch);
+      tool.facts.insertAngleDeg = *angle;
+    }
   } else {  // drill
     const auto diameter = r.number("diameter", std::nullopt, false, "mm");
     const auto point = r.number("point_angle", 118.0, false, "degrees");
     const auto length = diameter ? r.number("length", 10.0 * *diameter, false, "mm") : std::nullopt;
-    if (diameter && point && length && !r.failed()) take(drillTool(*diameter, *point, *length), table, r, tool);
+    if (diameter && point && length && !r.failed()) {
+      take(drillTool(*diameter, *point, *length), table, r, tool);
+      tool.facts.insertShape = fmt::format("a Φ{:g} drill, {:g}° point, {:g} mm long", *diameter, *point, *length);
+      tool.facts.insertAngleDeg = *point;
+    }
   }
   return true;
 }

@@ -15,6 +15,7 @@ namespace lathesim::render {
 
 using Rgb = std::array<double, 3>;  // 0–1
 using Pixel = Eigen::Vector2d;      // from the lower-left corner
+using PixelSegment = std::array<Pixel, 2>;
 
 class Overlay2D {
  public:

@@ -3,6 +3,7 @@
 // a faint ghost, the chuck's jaws, the tool where it stands, the toolpath and the main
 // dimensions; seen from three sides (isometric, front, half-section).
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -25,6 +26,11 @@ struct ToolPicture {
   std::vector<RZ> insert;  // the cutter; drawn gold
   std::vector<RZ> holder;  // the holder body; may be empty (polygon-only tools); drawn steel grey
   RZ position{0, 0};
+  // Their thickness across the meridian plane (mm), the insert's rake face in the plane and
+  // both behind it, as on the machine: the holder's shank height h and the insert's thickness.
+  // 0: drawn as thin slabs about the plane, a fixed fraction of the picture thick.
+  double holderHeightMm = 0;
+  double insertThicknessMm = 0;
 };
 
 enum class PartView {
@@ -52,6 +58,16 @@ struct ChuckPicture {
   double bodyZLowMm = 0;
 };
 
+/// The tailstock's live centre: a cone of 60° included angle from its point on the axis at
+/// `pointZMm` out to the quill's radius, then the quill, a cylinder `quillLengthMm` long.
+struct TailstockPicture {
+  double pointZMm = 0;
+  double quillRadiusMm = 0;
+  double quillLengthMm = 0;
+  /// Where the cone meets the quill.
+  double coneEndZMm() const;
+};
+
 /// A part of the picture to frame instead of the whole: the box Z `zLowMm`…`zHighMm` ×
 /// radius `radiusLowMm`…`radiusHighMm` of the meridian plane facing the viewer's up (a
 /// thread's close-up: its profile on the silhouette, its grooves on the face below).
@@ -64,10 +80,12 @@ struct PartImageOptions {
   int widthPx = 1600;
   int heightPx = 1200;
   std::string title;  // drawn in a corner: the program's name
+  std::string subtitle;  // a line under it: the bar, the tools and the cycle time
   std::optional<ToolPicture> tool{};  // drawn where it stands, if given
   PartView view = PartView::Iso;
   std::optional<BarOutline> bar{};      // the ghost; with it the picture frames the bar, not the toolpath
   std::optional<ChuckPicture> chuck{};
+  std::optional<TailstockPicture> tailstock{};  // drawn in steel green when the setup has one
   PartDimensions dimensions{};          // drawn as dimension lines
   int dimensionDecimals = 1;            // their figures' decimals
   std::optional<SampledSection> section{};  // the part's section: the cut face of the Section view
@@ -95,6 +113,18 @@ void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpat
 /// Where that picture puts things: its frame, as it frames the bar, the jaws and the tool
 /// (or, without a bar, `part`), so that a point's pixel can be found (picture_frame.hpp).
 PictureFrame partPictureFrame(const PartImageOptions& options, const interp::Toolpath& toolpath, const TriangleMesh& part);
+/// A label as the picture placed it: its text and its box in pixels from the lower-left corner.
+struct PictureLabel {
+  std::string text;
+  double left = 0, bottom = 0, right = 0, top = 0;
+};
+/// Where the picture partImage draws puts its labels, and its dimension and extension lines
+/// (which no label crosses), found without drawing it.
+struct PictureLayout {
+  std::vector<PictureLabel> labels;
+  std::vector<std::array<Eigen::Vector2d, 2>> dimensionLines;
+};
+PictureLayout partImageLayout(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);
 /// The same picture's pixels in memory: to draw it in one thread and write it in another, and
 /// to shrink it into a thumbnail without reading the PNG back.
 RgbImage partImage(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);

@@ -20,6 +20,8 @@
 
 #include "render/move_points.hpp"
 #include "render/offscreen_display.hpp"
+#include "render/label_layout.hpp"
+#include "render/machine_meshes.hpp"
 #include "render/picture_annotations.hpp"
 #include "render/scene_actors.hpp"
 #include "render/tool_actor.hpp"
@@ -35,7 +37,6 @@ constexpr double kToolNearFraction = 0.25;  // a tool this far (of the frame's s
 // read as solid, thin enough to stay in the meridian plane.
 constexpr double kToolThicknessPerSize = 0.012;
 constexpr double kCloseUpFeatureAngleDeg = 50.0;  // see setPart
-constexpr double kJawHalfWidthPerRadius = 0.18;  // as chuckActors draws them
 // The jaws' front ends framed with a bar: this far behind their face (of the bar's length)
 // and out past the bar (of its radius).
 constexpr double kJawFramedOfBarLength = 0.2;
@@ -92,6 +93,11 @@ PictureFrame framePicture(const PartImageOptions& options, const interp::Toolpat
           for (double s : {-half, half}) e.include(view, out * r + side * s + Eigen::Vector3d(0, 0, z));
     }
   }
+  if (options.tailstock) {  // its point and cone; the quill runs out of the picture
+    const TailstockPicture& t = *options.tailstock;
+    e.include(view, Eigen::Vector3d(0, 0, t.pointZMm));
+    includeCircle(e, view, t.quillRadiusMm, t.coneEndZMm());
+  }
   if (e.empty()) e.include(view, Eigen::Vector3d::Zero());
   if (options.tool && !options.tool->insert.empty()) {
     Extent insert;
@@ -104,11 +110,16 @@ PictureFrame framePicture(const PartImageOptions& options, const interp::Toolpat
   }
   // The depth of everything drawn, so that the camera clips none of it (across and up, the
   // chuck's body may run out of the picture).
-  if (options.chuck) {
-    Extent body;
-    includeCircle(body, view, options.chuck->jawOuterRadiusMm, options.chuck->bodyZLowMm);
-    e.minDepth = std::min(e.minDepth, body.minDepth), e.maxDepth = std::max(e.maxDepth, body.maxDepth);
+  Extent behind;
+  if (options.chuck) includeCircle(behind, view, options.chuck->jawOuterRadiusMm, options.chuck->bodyZLowMm);
+  if (options.tailstock) {
+    const TailstockPicture& t = *options.tailstock;
+    includeCircle(behind, view, t.quillRadiusMm, t.coneEndZMm() + t.quillLengthMm);
   }
+  if (options.tool)  // its holder's back face, behind the plane
+    for (const RZ& p : options.tool->holder)
+      behind.include(view, meridianPoint(options.tool->position + p) - Eigen::Vector3d(0, options.tool->holderHeightMm, 0));
+  if (!behind.empty()) e.minDepth = std::min(e.minDepth, behind.minDepth), e.maxDepth = std::max(e.maxDepth, behind.maxDepth);
   return frameExtent(view, e, options.widthPx, options.heightPx, kMarginFraction, kDimensionBand);
 }
 
@@ -168,6 +179,8 @@ struct PartPicture::Scene {
   vtkNew<vtkActor> part;
   std::vector<vtkSmartPointer<vtkActor>> tool;
   std::vector<vtkSmartPointer<vtkProp>> annotations;  // the overlay's, rebuilt with the progress
+  std::vector<PlacedLabel> labels;          // as the last show() placed them
+  std::vector<PixelSegment> dimensionLines;  // and the lines they keep clear of
 
   Scene(const PartImageOptions& o, const interp::Toolpath& t) : options(o), toolpath(t) {}
 };
@@ -208,6 +221,7 @@ PartPicture::PartPicture(const PartImageOptions& options, const interp::Toolpath
     if (section)
       for (const auto& actor : chuckCutActors(*options.chuck)) solids->AddActor(actor);
   }
+  if (options.tailstock) solids->AddActor(tailstockActor(*options.tailstock));
   if (section && options.section) solids->AddActor(partCutActor(*options.section));
 
   s.overlay->SetLayer(1);
@@ -255,18 +269,35 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
 
   const ClipRectangle clip = clipRectangleOf(s.frame);
   Overlay2D thick, thin, marks;
-  std::vector<Label> labels;
+  // The labels in the order of their claim to their place (label_layout.hpp): the title block
+  // and the legend stay where they are; then crashes, dimensions, the tool, the toolpath.
+  std::vector<Label> titleLabels, scaleLabels, crashLabels, dimensionLabels, toolLabels, pathLabels;
+  std::vector<PixelSegment> dimensionLines;
+  const int titlePx = std::max(12, o.heightPx / 40);
+  const int legendPx = std::max(10, titlePx * 3 / 4);
+  const double left = titlePx;
+  double lineBelow = o.heightPx - 2 * titlePx;  // the title's baseline, then each line's under it
+  titleLabels.push_back({Pixel(left, lineBelow), o.title.empty() ? s.toolpath.programName : o.title, kInkColour,
+                         Justify::Left, true});
+  for (const std::string& line : {o.subtitle, caption})
+    if (!line.empty()) {
+      lineBelow -= 1.3 * legendPx + (titleLabels.size() == 1 ? 0.4 * titlePx : 0.0);
+      titleLabels.push_back({Pixel(left, lineBelow), line, kInkColour, Justify::Left, true});
+    }
+  const double titleBlockBottomPx = lineBelow - 0.35 * legendPx;  // below the last line's descenders
+
   if (o.bar) drawBarOutline(*o.bar, o.view, s.frame, thin);
   if (o.section && o.view == PartView::Section) {  // the cut's outline over the squares of the cut face
     const MeridianProfile profile = MeridianProfile::fromSection(*o.section);
     for (const Segment& seg : profile.surface()) thin.line(s.frame.pixelOf(seg.a), s.frame.pixelOf(seg.b), kInkColour);
   }
-  if (!o.closeUp) drawToolpath(s.toolpath, shown, s.frame, clip, thick, marks, labels);
+  if (!o.closeUp) drawToolpath(s.toolpath, shown, s.frame, clip, thick, marks, pathLabels);
   if (!o.dimensions.diameters.empty() || !o.dimensions.lengths.empty()) {
     const double topPx = s.frame.heightPx * (1.0 - kMarginFraction - kDimensionBand);
-    drawDimensions(o.dimensions, o.dimensionDecimals, s.frame, topPx, thin, marks, labels);
+    drawDimensions(o.dimensions, o.dimensionDecimals, s.frame, topPx, titleBlockBottomPx, thin, marks, dimensionLabels,
+                   dimensionLines);
   }
-  if (o.view != PartView::Iso) drawScaleBar(s.frame, thin, labels);
+  if (o.view != PartView::Iso) drawScaleBar(s.frame, thin, scaleLabels);
 
   if (shownTool && !o.closeUp) {
     ToolPicture tool = *shownTool;
@@ -275,30 +306,13 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
       s.tool = toolActors(tool, std::max(s.sizeMm * kToolThicknessPerSize, 0.2));
       for (const auto& actor : s.tool) s.solids->AddActor(actor);
     } else {
-      drawToolOutside(tool.position, s.frame, clip, marks, labels);
+      drawToolOutside(tool.position, s.frame, clip, marks, toolLabels);
     }
   }
 
   Overlay2D crashes;  // drawn last: over the toolpath and the tool
-  drawCrashMarks(o.crashes, s.frame, clip, crashMarkRadiusPx(o.heightPx), crashes, labels);
+  drawCrashMarks(o.crashes, s.frame, clip, crashMarkRadiusPx(o.heightPx), crashes, crashLabels);
 
-  auto add = [&](const vtkSmartPointer<vtkProp>& prop) {
-    s.overlay->AddViewProp(prop);
-    s.annotations.push_back(prop);
-  };
-  if (!thin.empty()) add(thin.actor(1.5));
-  if (!thick.empty()) add(thick.actor(2.0));
-  if (!marks.empty()) add(marks.actor(1.0));
-  if (!crashes.empty()) add(crashes.actor(1.0));
-
-  const int titlePx = std::max(12, o.heightPx / 40);
-  const int legendPx = std::max(10, titlePx * 3 / 4);
-  const double left = titlePx;
-  labels.push_back({Pixel(left, o.heightPx - 2 * titlePx), o.title.empty() ? s.toolpath.programName : o.title,
-                    kInkColour, Justify::Left, true});
-  const std::size_t titleLabel = labels.size() - 1;
-  if (!caption.empty())
-    labels.push_back({Pixel(left, o.heightPx - 3.2 * titlePx), caption, kInkColour, Justify::Left, true});
   // The legend, bottom up.
   std::vector<std::pair<std::string, Rgb>> legend;
   if (!o.closeUp) {
@@ -308,13 +322,41 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
       legend.push_back({"— thread", kThreadColour});
   }
   if (o.bar) legend.push_back({"the bar before cutting", kGhostLineColour});
+  if (o.tailstock) legend.push_back({"green: the tailstock's centre", kTailstockColour});
   if (!o.crashes.empty()) legend.push_back({"red disc: a crash", kCrashColour});
   if (!o.dimensions.diameters.empty() || !o.dimensions.lengths.empty()) legend.push_back({"dimensions, mm", kDimensionColour});
+
+  std::vector<Label> labels;
+  std::vector<int> fontPx;
+  const auto take = [&](const std::vector<Label>& from, int px) {
+    for (const Label& l : from) labels.push_back(l), fontPx.push_back(px);
+  };
+  labels.push_back(titleLabels.front());
+  fontPx.push_back(titlePx);
+  take({titleLabels.begin() + 1, titleLabels.end()}, legendPx);
   for (std::size_t n = 0; n < legend.size(); ++n)
-    labels.push_back({Pixel(left, titlePx / 2.0 + static_cast<double>(n) * 1.5 * legendPx), legend[n].first,
-                      legend[n].second, Justify::Left, true});
-  for (std::size_t n = 0; n < labels.size(); ++n) add(textActor(labels[n], n == titleLabel ? titlePx : legendPx));
+    take({{Pixel(left, titlePx / 2.0 + static_cast<double>(n) * 1.5 * legendPx), legend[n].first, legend[n].second,
+           Justify::Left, true}},
+         legendPx);
+  take(scaleLabels, legendPx);
+  const std::size_t fixedCount = labels.size();
+  for (const auto* group : {&crashLabels, &dimensionLabels, &toolLabels, &pathLabels}) take(*group, legendPx);
+  s.labels = placeLabels(labels, fontPx, fixedCount, dimensionLines, clip, thin);
+  s.dimensionLines = std::move(dimensionLines);
+
+  auto add = [&](const vtkSmartPointer<vtkProp>& prop) {
+    s.overlay->AddViewProp(prop);
+    s.annotations.push_back(prop);
+  };
+  if (!thin.empty()) add(thin.actor(1.5));
+  if (!thick.empty()) add(thick.actor(2.0));
+  if (!marks.empty()) add(marks.actor(1.0));
+  if (!crashes.empty()) add(crashes.actor(1.0));
+  for (const PlacedLabel& placed : s.labels) add(textActor(placed.label, placed.fontPx));
 }
+
+const std::vector<PlacedLabel>& PartPicture::labels() const { return scene_->labels; }
+const std::vector<PixelSegment>& PartPicture::dimensionLines() const { return scene_->dimensionLines; }
 
 void PartPicture::writePng(const std::filesystem::path& png) { writeWindowPng(scene_->window, png); }
 RgbImage PartPicture::image() { return windowImage(scene_->window); }

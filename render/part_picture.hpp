@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "interp/motion/toolpath_clock.hpp"
+#include "render/label_layout.hpp"
 #include "render/part_image.hpp"
 #include "render/picture_frame.hpp"
 #include "render/rgb_image.hpp"
@@ -36,6 +37,10 @@ class PartPicture {
   /// shown->position when shown is given), and `caption` under the title.
   void show(const std::optional<interp::ToolpathInstant>& shown, const std::optional<ToolPicture>& tool,
             const std::string& caption);
+
+  /// The labels as the last show() placed them, and the dimension lines they keep clear of.
+  const std::vector<PlacedLabel>& labels() const;
+  const std::vector<PixelSegment>& dimensionLines() const;
 
   void writePng(const std::filesystem::path& png);
   RgbImage image();  // the picture's pixels

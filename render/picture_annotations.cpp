@@ -44,22 +44,42 @@ Label edgeLabel(const Pixel& at, const ClipRectangle& clip, std::string text, co
   return label;
 }
 
-/// Adds `label` unless one with the same text is there already; moved down a line while it
-/// would sit on another.
+/// Adds `label` unless one with the same text is there already (where it goes: label_layout.hpp).
 void place(std::vector<Label>& labels, Label label) {
   if (std::any_of(labels.begin(), labels.end(), [&](const Label& l) { return l.text == label.text; })) return;
-  for (int tries = 0; tries < 8; ++tries) {
-    const bool crowded = std::any_of(labels.begin(), labels.end(), [&](const Label& l) {
-      return std::abs(l.at.y() - label.at.y()) < 18.0 && std::abs(l.at.x() - label.at.x()) < 160.0;
-    });
-    if (!crowded) break;
-    label.at.y() -= 20.0;
-  }
   labels.push_back(std::move(label));
 }
 
-void dimensionArrows(const Pixel& a, const Pixel& b, Overlay2D& lines, Overlay2D& marks) {
+/// Whether moves[i] and moves[i + 1] are the two legs of one non-linear rapid, as
+/// interp/motion/rapid_path.hpp splits it at its dog-leg corner: rapids of the same block and
+/// cycle step, the first (both axes moving) ending where the second (one axis alone, going
+/// on the way it went) starts.
+bool dogLeg(const std::vector<interp::Move>& moves, std::size_t i) {
+  if (i + 1 >= moves.size()) return false;
+  const interp::Move& a = moves[i];
+  const interp::Move& b = moves[i + 1];
+  if (a.kind != interp::MoveKind::Rapid || b.kind != interp::MoveKind::Rapid || a.block != b.block ||
+      a.line != b.line || a.cycleStep != b.cycleStep || a.to != b.from)
+    return false;
+  const RZ first = a.to - a.from, second = b.to - b.from;
+  if (first.x() == 0 || first.y() == 0) return false;
+  const bool alongX = second.y() == 0 && second.x() != 0, alongZ = second.x() == 0 && second.y() != 0;
+  return (alongX && (second.x() > 0) == (first.x() > 0)) || (alongZ && (second.y() > 0) == (first.y() > 0));
+}
+
+/// Where the block of `moves[i]` starts and ends: a rapid's dog-leg legs are one block's move,
+/// and their corner is no point the program names.
+RZ blockStart(const std::vector<interp::Move>& moves, std::size_t i) {
+  return i > 0 && dogLeg(moves, i - 1) ? moves[i - 1].from : moves[i].from;
+}
+RZ blockEnd(const std::vector<interp::Move>& moves, std::size_t i) {
+  return dogLeg(moves, i) ? moves[i + 1].to : moves[i].to;
+}
+
+void dimensionArrows(const Pixel& a, const Pixel& b, Overlay2D& lines, Overlay2D& marks,
+                     std::vector<PixelSegment>& dimensionLines) {
   lines.line(a, b, kDimensionColour);
+  dimensionLines.push_back({a, b});
   const Eigen::Vector2d d = b - a;
   if (d.norm() < 2.5 * kArrowPx) return;  // too short for arrows inside
   marks.arrowhead(a, -d, 0.8 * kArrowPx, kDimensionColour);
@@ -106,11 +126,11 @@ void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::
       else lines.line(from, to, colour);
       if (span->t0 > 0) {  // comes in from outside
         marks.arrowhead(from + (b - a).normalized() * kArrowPx, b - a, kArrowPx, colour);
-        place(labels, edgeLabel(from, clip, "from " + programPoint(move.from), colour));
+        place(labels, edgeLabel(from, clip, "from " + programPoint(blockStart(toolpath.moves, i)), colour));
       }
       if (span->t1 < 1) {  // goes out
         marks.arrowhead(to, b - a, kArrowPx, colour);
-        place(labels, edgeLabel(to, clip, "to " + programPoint(move.to), colour));
+        place(labels, edgeLabel(to, clip, "to " + programPoint(blockEnd(toolpath.moves, i)), colour));
       }
     }
   }
@@ -166,28 +186,36 @@ void drawBarOutline(const BarOutline& bar, PartView view, const PictureFrame& fr
 }
 
 void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame& frame, double topPx,
-                    Overlay2D& lines, Overlay2D& marks, std::vector<Label>& labels) {
-  // Diameters: across the part at the middle of their face, the text in the middle, staggered
-  // so that neighbours do not collide.
+                    double ceilingPx, Overlay2D& lines, Overlay2D& marks, std::vector<Label>& labels,
+                    std::vector<PixelSegment>& dimensionLines) {
+  // Diameters: across the part at the middle of their face, the text beside the middle,
+  // staggered so that neighbours do not collide.
   for (std::size_t n = 0; n < dims.diameters.size(); ++n) {
     const DiameterDimension& d = dims.diameters[n];
     const double z = 0.5 * (d.zLowMm + d.zHighMm), r = d.diameterMm / 2;
     const Pixel top = frame.pixelOf(RZ(r, z)), bottom = frame.pixelOf(RZ(-r, z));
-    dimensionArrows(bottom, top, lines, marks);
+    dimensionArrows(bottom, top, lines, marks, dimensionLines);
     const double up = (n % 2 == 0 ? 0.15 : -0.25) * (top.y() - bottom.y());
-    labels.push_back({0.5 * (top + bottom) + Pixel(0, up), "Ø" + number(d.diameterMm, decimals), kDimensionColour,
-                      Justify::Centre, true});
+    // Beside its line rather than on it: a label never crosses a dimension line (label_layout.hpp).
+    labels.push_back({0.5 * (top + bottom) + Pixel(6, up), "Ø" + number(d.diameterMm, decimals), kDimensionColour,
+                      Justify::Left, true});
   }
   // Lengths: stacked upwards, the shortest lowest; extension lines from each face's outer
   // corner up past the dimension line.
-  const double spacing = std::max(22.0, 0.045 * frame.heightPx);
+  // The highest line's extension lines reach 6 px over it and stay clear of the title block.
+  double spacing = std::max(22.0, 0.045 * frame.heightPx);
+  if (!dims.lengths.empty())
+    spacing = std::max(14.0, std::min(spacing, (ceilingPx - 8.0 - topPx) / (static_cast<double>(dims.lengths.size()) - 0.2)));
   for (std::size_t n = 0; n < dims.lengths.size(); ++n) {
     const LengthDimension& l = dims.lengths[n];
     const double y = topPx + spacing * (static_cast<double>(n) + 0.8);
     const Pixel low = frame.pixelOf(RZ(l.radiusLowMm, l.zLowMm)), high = frame.pixelOf(RZ(l.radiusHighMm, l.zHighMm));
-    lines.line(low + Pixel(0, 4), Pixel(low.x(), y + 6), kDimensionColour);
-    lines.line(high + Pixel(0, 4), Pixel(high.x(), y + 6), kDimensionColour);
-    dimensionArrows(Pixel(low.x(), y), Pixel(high.x(), y), lines, marks);
+    for (const Pixel& face : {low, high}) {
+      const PixelSegment extension{face + Pixel(0, 4), Pixel(face.x(), y + 6)};
+      lines.line(extension[0], extension[1], kDimensionColour);
+      dimensionLines.push_back(extension);
+    }
+    dimensionArrows(Pixel(low.x(), y), Pixel(high.x(), y), lines, marks, dimensionLines);
     labels.push_back({Pixel(0.5 * (low.x() + high.x()), y + 5), number(l.zHighMm - l.zLowMm, decimals),
                       kDimensionColour, Justify::Centre, true});
   }

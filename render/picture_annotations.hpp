@@ -43,7 +43,8 @@ std::string programPoint(const RZ& p);
 
 /// The toolpath (up to `shown` if given) into `lines` (2 px), cut at `clip`; where a move
 /// leaves or enters the rectangle an arrowhead into `marks` and a label saying where it goes
-/// or comes from (one per place).
+/// or comes from (one per place): the block's programmed end or start, never a dog-leg's
+/// corner (a non-linear rapid's two legs are labelled as the one move they are).
 void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::ToolpathInstant>& shown,
                   const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& lines, Overlay2D& marks,
                   std::vector<Label>& labels);
@@ -62,9 +63,12 @@ void drawCrashMarks(const std::vector<CrashMark>& crashes, const PictureFrame& f
 void drawBarOutline(const BarOutline& bar, PartView view, const PictureFrame& frame, Overlay2D& lines);
 
 /// Diameters as vertical lines across the part with arrows at its surface; lengths as
-/// horizontal lines stacked above `topPx`, with extension lines down to the faces.
+/// horizontal lines stacked above `topPx` and below `ceilingPx` (the title block's foot), with
+/// extension lines down to the faces. Every line drawn is added to `dimensionLines` too, for
+/// the labels to keep clear of.
 void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame& frame, double topPx,
-                    Overlay2D& lines, Overlay2D& marks, std::vector<Label>& labels);
+                    double ceilingPx, Overlay2D& lines, Overlay2D& marks, std::vector<Label>& labels,
+                    std::vector<PixelSegment>& dimensionLines);
 
 /// A bar of a round length (1, 2 or 5 × 10ⁿ mm) in the lower-right corner, true to scale.
 void drawScaleBar(const PictureFrame& frame, Overlay2D& lines, std::vector<Label>& labels);

@@ -12,6 +12,7 @@
 #include <vtkProperty.h>
 
 #include "geometry/revolved_mesh.hpp"
+#include "render/machine_meshes.hpp"
 #include "render/vtk_scene.hpp"
 
 namespace lathesim::render {
@@ -51,27 +52,6 @@ vtkSmartPointer<vtkActor> steelActor(vtkPolyData* data, bool keepBelowAxis, cons
   p->SetDiffuse(0.6);
   p->SetSpecular(0.15);
   return actor;
-}
-
-/// A jaw: the box r ∈ [r0, r1], z ∈ [z0, z1], `halfWidth` either side of its middle plane,
-/// turned `angle` about the axis from +X.
-vtkSmartPointer<vtkPolyData> jawBox(const ChuckPicture& c, double halfWidth, double angle) {
-  const Eigen::Vector3d out(std::cos(angle), std::sin(angle), 0), side(-std::sin(angle), std::cos(angle), 0);
-  vtkNew<vtkPoints> points;
-  for (double z : {c.jawZLowMm, c.jawZHighMm})
-    for (double r : {c.jawInnerRadiusMm, c.jawOuterRadiusMm})
-      for (double s : {-halfWidth, halfWidth}) {
-        const Eigen::Vector3d p = out * r + side * s + Eigen::Vector3d(0, 0, z);
-        points->InsertNextPoint(p.data());
-      }
-  // Corner index = 4·(z high) + 2·(r outer) + (side +).
-  const vtkIdType faces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  vtkNew<vtkCellArray> polys;
-  for (const auto& f : faces) polys->InsertNextCell(4, f);
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  data->SetPolys(polys);
-  return data;
 }
 
 /// Rectangles [r0, r1] × [z0, z1] of the meridian plane as quads at y = 0.
@@ -117,11 +97,14 @@ vtkSmartPointer<vtkActor> ghostActor(const BarOutline& bar) {
 
 std::vector<vtkSmartPointer<vtkActor>> chuckActors(const ChuckPicture& chuck, bool keepBelowAxis) {
   std::vector<vtkSmartPointer<vtkActor>> actors;
-  const double halfWidth = 0.18 * chuck.jawOuterRadiusMm;
-  for (int jaw = 0; jaw < 3; ++jaw) actors.push_back(steelActor(jawBox(chuck, halfWidth, jaw * 2.0 * M_PI / 3.0), keepBelowAxis, kJawColour));
+  actors.push_back(steelActor(toPolyData(jawsMesh(chuck)), keepBelowAxis, kJawColour));
   const auto body = toPolyData(revolvedRectangle(0, chuck.jawOuterRadiusMm, chuck.bodyZLowMm, chuck.jawZLowMm));
   actors.push_back(steelActor(body, keepBelowAxis, kChuckColour));
   return actors;
+}
+
+vtkSmartPointer<vtkActor> tailstockActor(const TailstockPicture& tailstock) {
+  return steelActor(toPolyData(tailstockMesh(tailstock)), false, kTailstockColour);
 }
 
 vtkSmartPointer<vtkActor> partCutActor(const SampledSection& section) {

@@ -22,6 +22,7 @@ inline constexpr double kGhostOpacity = 0.30;
 inline constexpr Rgb kGhostLineColour{0.80, 0.45, 0.10}; // its outline
 inline constexpr Rgb kChuckColour{0.20, 0.27, 0.40};     // dark blue steel: the body
 inline constexpr Rgb kJawColour{0.34, 0.42, 0.58};       // the jaws, a lighter blue steel
+inline constexpr Rgb kTailstockColour{0.30, 0.50, 0.38};  // the tailstock's centre and quill: green steel
 inline constexpr Rgb kCutFaceColour{0.62, 0.70, 0.82};   // the section view's cut through the part
 inline constexpr Rgb kDimensionColour{0.55, 0.08, 0.60};
 inline constexpr Rgb kInkColour{0.15, 0.15, 0.18};
@@ -33,6 +34,9 @@ vtkSmartPointer<vtkActor> ghostActor(const BarOutline& bar);
 /// The chuck: three jaws (the first straight up, +X) on the body. `keepBelowAxis`: only x ≤ 0
 /// (the section view cuts the rest away and draws the cut).
 std::vector<vtkSmartPointer<vtkActor>> chuckActors(const ChuckPicture& chuck, bool keepBelowAxis);
+
+/// The tailstock's centre and quill, whole in every view (nothing of it is cut open).
+vtkSmartPointer<vtkActor> tailstockActor(const TailstockPicture& tailstock);
 
 /// The section view's cut faces in the plane y = 0, r ≥ 0: the part's (from its sampled
 /// section: the samples inside, as runs of squares) and the chuck's jaws and body.

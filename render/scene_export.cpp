@@ -19,7 +19,9 @@
 
 #include "render/picture_annotations.hpp"
 #include "render/scene_actors.hpp"
+#include "render/machine_meshes.hpp"
 #include "render/move_points.hpp"
+#include "render/tool_actor.hpp"
 #include "render/vtk_scene.hpp"
 
 namespace lathesim::render {
@@ -39,9 +41,10 @@ DrawnAs drawnAs(const interp::Move& move) {
 /// positions (mm, float) and indices (uint32) appended to one binary buffer.
 class GltfScene {
  public:
-  /// A mesh of `mode` (4 triangles, 1 line segments) in `colour`.
+  /// A mesh of `mode` (4 triangles, 1 line segments) in `colour`, named "mesh<n>" unless
+  /// `name` is given; `doubleSided`: drawn from both sides.
   void add(const std::vector<Eigen::Vector3f>& positions, const std::vector<std::uint32_t>& indices, int mode,
-           const Rgb& colour) {
+           const Rgb& colour, const std::string& name = "", bool doubleSided = false) {
     Eigen::Vector3f low = positions.front(), high = positions.front();
     for (const Eigen::Vector3f& p : positions) {
       low = low.cwiseMin(p);
@@ -60,8 +63,9 @@ class GltfScene {
                            {{"baseColorFactor", {colour[0], colour[1], colour[2], 1.0}},
                             {"metallicFactor", 0.3},
                             {"roughnessFactor", 1.0 / 1.06}}}});
+    if (doubleSided) materials_.back()["doubleSided"] = true;
     const auto n = meshes_.size();
-    meshes_.push_back({{"name", "mesh" + std::to_string(n)},
+    meshes_.push_back({{"name", name.empty() ? "mesh" + std::to_string(n) : name},
                        {"primitives", Json::array({{{"attributes", {{"POSITION", accessors_.size() - 2}}},
                                                     {"indices", accessors_.size() - 1},
                                                     {"material", n},
@@ -72,7 +76,7 @@ class GltfScene {
   /// (x, y, z) mm → glTF (z, x, y) / 1000.
   std::string glb() const {
     Json nodes = Json::array();
-    for (std::size_t n = 0; n < meshes_.size(); ++n) nodes.push_back({{"mesh", n}, {"name", "mesh" + std::to_string(n)}});
+    for (std::size_t n = 0; n < meshes_.size(); ++n) nodes.push_back({{"mesh", n}, {"name", meshes_[n]["name"]}});
     Json children = Json::array();
     for (std::size_t n = 0; n < meshes_.size(); ++n) children.push_back(n);
     nodes.push_back({{"name", "lathesim part"},
@@ -135,6 +139,25 @@ void addMoves(GltfScene& scene, const interp::Toolpath& toolpath, DrawnAs kind, 
   if (!segments.empty()) scene.add(points, segments, 1, colour);
 }
 
+void addMesh(GltfScene& scene, const TriangleMesh& mesh, const Rgb& colour, const std::string& name) {
+  if (mesh.triangles.empty()) return;
+  const auto* first = mesh.triangles.front().data();
+  scene.add(mesh.vertices, std::vector<std::uint32_t>(first, first + 3 * mesh.triangles.size()), 4, colour, name, true);
+}
+
+void addMachine(GltfScene& scene, const SceneMachine& machine) {
+  if (machine.chuck) addMesh(scene, jawsMesh(*machine.chuck), kJawColour, "machine jaws");
+  if (machine.tailstock) addMesh(scene, tailstockMesh(*machine.tailstock), kTailstockColour, "machine tailstock");
+  if (machine.tool) {
+    const ToolPicture& t = *machine.tool;
+    // As the pictures draw a tool of known size (tool_actor.hpp): behind the plane, the rake
+    // face a hair in front of the holder's.
+    addMesh(scene, slabMesh(t.holder, t.position, -t.holderHeightMm, 0.0), kHolderColour, "machine holder");
+    addMesh(scene, slabMesh(t.insert, t.position, -t.insertThicknessMm, kRakeFaceProudMm), kInsertColour,
+            "machine insert");
+  }
+}
+
 std::string encodeBase64(const std::string& bytes) {
   static constexpr char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string text;
@@ -158,7 +181,8 @@ std::uint32_t littleEndianWord(const std::string& bytes, std::size_t at) {
 
 }  // namespace
 
-std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::vector<CrashMark>& crashes) {
+std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath, const std::vector<CrashMark>& crashes,
+                    const SceneMachine& machine) {
   GltfScene scene;
   if (!part.triangles.empty()) {
     static_assert(sizeof(part.triangles.front()) == 3 * sizeof(std::uint32_t), "triangles are three packed indices");
@@ -187,6 +211,7 @@ std::string partGlb(const TriangleMesh& part, const interp::Toolpath& toolpath, 
     }
     scene.add(points, triangles, 4, kCrashColour);
   }
+  addMachine(scene, machine);
   return scene.glb();
 }
 

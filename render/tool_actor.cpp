@@ -13,16 +13,13 @@
 namespace lathesim::render {
 namespace {
 
-// Colours (RGB 0–1). The render test looks for the insert's gold.
-constexpr std::array<double, 3> kInsertColour{0.98, 0.76, 0.10};
-constexpr std::array<double, 3> kHolderColour{0.30, 0.33, 0.37};
 constexpr std::array<double, 3> kEdgeColour{0.08, 0.08, 0.10};
 constexpr double kInsertOverHolder = 1.6;  // the insert's thickness over the holder's
 
-/// The outline (at `position`) extruded from y = −half to +half: two caps and the sides.
-vtkSmartPointer<vtkPolyData> slab(const std::vector<RZ>& outline, const RZ& position, double half) {
+/// The outline (at `position`) extruded from y = yLow to yHigh: two caps and the sides.
+vtkSmartPointer<vtkPolyData> slab(const std::vector<RZ>& outline, const RZ& position, double yLow, double yHigh) {
   vtkNew<vtkPoints> points;
-  for (double y : {-half, half})
+  for (double y : {yLow, yHigh})
     for (const RZ& p : outline) points->InsertNextPoint(position.x() + p.x(), y, position.y() + p.y());
   const auto n = static_cast<vtkIdType>(outline.size());
   vtkNew<vtkCellArray> faces;
@@ -41,10 +38,10 @@ vtkSmartPointer<vtkPolyData> slab(const std::vector<RZ>& outline, const RZ& posi
   return polyData;
 }
 
-vtkSmartPointer<vtkActor> slabActor(const std::vector<RZ>& outline, const RZ& position, double half,
+vtkSmartPointer<vtkActor> slabActor(const std::vector<RZ>& outline, const RZ& position, double yLow, double yHigh,
                                     const std::array<double, 3>& colour) {
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(slab(outline, position, half));
+  mapper->SetInputData(slab(outline, position, yLow, yHigh));
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   vtkProperty* p = actor->GetProperty();
@@ -61,12 +58,15 @@ vtkSmartPointer<vtkActor> slabActor(const std::vector<RZ>& outline, const RZ& po
 
 }  // namespace
 
-std::vector<vtkSmartPointer<vtkActor>> toolActors(const ToolPicture& tool, double thicknessMm) {
+std::vector<vtkSmartPointer<vtkActor>> toolActors(const ToolPicture& tool, double thinMm) {
+  // The viewer looks from +y (picture_frame.hpp): behind the plane is y < 0.
+  const bool realSize = tool.holderHeightMm > 0 && tool.insertThicknessMm > 0;
+  const double holderLow = realSize ? -tool.holderHeightMm : -thinMm / 2, holderHigh = realSize ? 0.0 : thinMm / 2;
+  const double insertLow = realSize ? -tool.insertThicknessMm : -kInsertOverHolder * thinMm / 2;
+  const double insertHigh = realSize ? kRakeFaceProudMm : kInsertOverHolder * thinMm / 2;
   std::vector<vtkSmartPointer<vtkActor>> actors;
-  if (tool.holder.size() >= 3)
-    actors.push_back(slabActor(tool.holder, tool.position, thicknessMm / 2, kHolderColour));
-  if (tool.insert.size() >= 3)
-    actors.push_back(slabActor(tool.insert, tool.position, kInsertOverHolder * thicknessMm / 2, kInsertColour));
+  if (tool.holder.size() >= 3) actors.push_back(slabActor(tool.holder, tool.position, holderLow, holderHigh, kHolderColour));
+  if (tool.insert.size() >= 3) actors.push_back(slabActor(tool.insert, tool.position, insertLow, insertHigh, kInsertColour));
   return actors;
 }
 

@@ -9,12 +9,12 @@
 namespace lathesim::sim {
 namespace {
 
-/// The largest revolved volume one piece of a sweep has inside the chuck.
-double chuckVolume(const std::vector<ConvexPolygon>& chuck, const std::vector<ConvexPolygon>& swept) {
+/// The largest revolved volume one piece of a sweep has inside `regions` (the chuck's, the tailstock's).
+double volumeInside(const std::vector<ConvexPolygon>& regions, const std::vector<ConvexPolygon>& swept) {
   double largest = 0.0;
   for (const ConvexPolygon& piece : swept) {
     double volume = 0.0;
-    for (const ConvexPolygon& part : chuck) volume += revolvedVolumeMm3(overlapOf(piece, part));
+    for (const ConvexPolygon& part : regions) volume += revolvedVolumeMm3(overlapOf(piece, part));
     largest = std::max(largest, volume);
   }
   return largest;
@@ -44,12 +44,15 @@ void checkMoves(const CollisionChecks& checks, std::span<const interp::Move> mov
       const double inside = stock.materialInside(RevolvedRegion(holderSwept), h);
       if (inside > kCollisionVoxels * h * h * h) recordCollision(collisions, move, "holder_into_stock", inside);
     }
-    if (checks.chuck.empty()) continue;
-    double chuck = 0.0;
+    if (checks.chuck.empty() && checks.tailstock.empty()) continue;
+    std::vector<ConvexPolygon> cutterSwept;
     if (const auto cutter = checks.cutters.find(move.tool); cutter != checks.cutters.end())
-      chuck = chuckVolume(checks.chuck, sweptPieces(move, cutter->second, h));
-    chuck = std::max(chuck, chuckVolume(checks.chuck, holderSwept));
-    if (chuck > 0.0) recordCollision(collisions, move, "into_chuck", chuck);
+      cutterSwept = sweptPieces(move, cutter->second, h);
+    for (const auto& [regions, kind] : {std::pair{&checks.chuck, "into_chuck"}, std::pair{&checks.tailstock, "into_tailstock"}}) {
+      if (regions->empty()) continue;
+      const double inside = std::max(volumeInside(*regions, cutterSwept), volumeInside(*regions, holderSwept));
+      if (inside > 0.0) recordCollision(collisions, move, kind, inside);
+    }
   }
 }
 

@@ -21,6 +21,7 @@ struct CollisionChecks {
   std::map<int, ConvexPolygon> cutters;  // tool number → cutter outline (as swept)
   std::map<int, ConvexPolygon> holders;  // tool number → holder body; tools without one are absent
   std::vector<ConvexPolygon> chuck;      // the chuck's regions in (r, z), r ≥ 0
+  std::vector<ConvexPolygon> tailstock;  // the tailstock's centre and quill in (r, z), r ≥ 0; none without one
 };
 
 /// The chuck's regions for a bar: the jaws (bar radius … jaw radius, Z from face − grip length
@@ -31,8 +32,9 @@ std::vector<ConvexPolygon> chuckRegions(const ChuckSpec& chuck, const StockSpec&
 /// continues a collision of the same line and kind adds its volume to it.
 /// holder_into_stock: material deeper than one voxel inside the holder's swept region, more
 /// than kCollisionVoxels voxels' worth. into_chuck: the largest revolved volume any piece
-/// of the cutter's or the holder's sweep has inside the chuck (any positive volume). Arcs
-/// are swept as chords of at most 5°.
+/// of the cutter's or the holder's sweep has inside the chuck (any positive volume);
+/// into_tailstock: the same inside the tailstock's centre and quill. Arcs are swept as chords
+/// of at most 5°.
 void checkMoves(const CollisionChecks& checks, std::span<const interp::Move> moves, const Stock& stock,
                 std::vector<Collision>& collisions);
 

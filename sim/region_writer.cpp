@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -246,6 +247,11 @@ class RegionWriter {
     });
     std::vector<Task> tasks;
     for (auto& list : found) tasks.insert(tasks.end(), list.begin(), list.end());
+    // The threads found them in no fixed order; the volume lost is summed in task order, so
+    // the same write gives the same figure to the last bit only in one order.
+    std::sort(tasks.begin(), tasks.end(), [](const Task& a, const Task& b) {
+      return std::tie(a.origin, a.level, a.action) < std::tie(b.origin, b.level, b.action);
+    });
     return tasks;
   }
 

@@ -18,7 +18,7 @@ class Stock;
 struct Collision {
   int line = 0;
   int column = 0;
-  std::string kind;  // "rapid_into_stock", "holder_into_stock", "into_chuck"
+  std::string kind;  // "rapid_into_stock", "holder_into_stock", "into_chuck", "into_tailstock"
   double volumeMm3 = 0.0;
   int tool = 0;    // the tool of the move that collided
   RZ at{0, 0};     // where the tool stood (radius, Z) at the end of the block's first colliding

@@ -179,8 +179,9 @@ double Stock::volumeMm3() const {
   std::vector<const Leaf*> leaves;
   leaves.reserve(tree.leafCount());
   for (auto it = tree.cbeginLeaf(); it; ++it) leaves.push_back(&*it);
-  const double leafVoxels = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, leaves.size()), 0.0,
+  // Deterministic: the same split of the leaves, so the same sum to the last bit, every run.
+  const double leafVoxels = tbb::parallel_deterministic_reduce(
+      tbb::blocked_range<std::size_t>(0, leaves.size(), 256), 0.0,
       [&](const auto& range, double sum) {
         for (std::size_t l = range.begin(); l != range.end(); ++l) sum += impl_->leafInsideVoxels(*leaves[l]);
         return sum;

@@ -10,14 +10,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 #include "app/watch/file_watch.hpp"
 #include "app/watch/loopback_server.hpp"
 #include "app/watch/watch_page.hpp"
+#include "batch/html_text.hpp"
 #include "job/exit_status.hpp"
 
 namespace lathesim::app {
@@ -70,13 +69,6 @@ std::vector<fs::path> inputsOf(const std::vector<std::string>& arguments, const 
     inputs.push_back(path);
   }
   return inputs;
-}
-
-std::string readWhole(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string contentTypeOf(const fs::path& file) {
@@ -225,11 +217,11 @@ class Watcher {
     if (path == "/" || path == "/report.html") {
       const fs::path report = out_ / "report.html";
       if (state_.goodGeneration == 0 || !fs::exists(report)) return {200, "text/html; charset=utf-8", waitingPage(state_)};
-      return {200, "text/html; charset=utf-8", withWatchScript(readWhole(report), state_)};
+      return {200, "text/html; charset=utf-8", withWatchScript(batch::fileBytes(report), state_)};
     }
     const auto file = outputFile(out_, path);
     if (!file) return {404, "text/plain; charset=utf-8", "no such output: " + path + "\n"};
-    return {200, contentTypeOf(*file), readWhole(*file)};
+    return {200, contentTypeOf(*file), batch::fileBytes(*file)};
   }
 
   std::vector<std::string> arguments_;

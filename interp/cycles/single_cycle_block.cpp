@@ -51,18 +51,10 @@ Status runSingleCycle(BlockWork& work, const SingleCycle& cycle, const std::opti
   const auto r = block.take(taperLetter);
   const RZ start = state.position;  // A
   CycleRetained& kept = state.cycle;
-
-  std::optional<double> xDiameterMm = kept.xDiameterMm;
-  if (a.x) xDiameterMm = work.length(*a.x);
-  if (a.u) xDiameterMm = diameterOf(start) + work.length(*a.u);
-  std::optional<double> zMm = kept.zMm;
-  if (a.z) zMm = work.length(*a.z);
-  if (a.w) zMm = start.y() + work.length(*a.w);
-  if (!xDiameterMm || !zMm) {
-    return work.errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
-                                            "in this block nor kept from an earlier {0} block",
-                                            name, !xDiameterMm ? "X(U)" : "Z(W)"));
-  }
+  const auto endWords = singleCycleEndPoint(work, a, name, anchor);
+  if (!endWords.ok()) return endWords.error();
+  const double xDiameterMm = endWords.value().xDiameterMm;
+  const double zMm = endWords.value().zMm;
   const double rMm = r ? work.length(*r) : kept.rMm.value_or(0.0);
   if (!state.feed) {
     return work.errorAt(anchor, fmt::format("feed rate F is not set: {} cuts at feed; give F (e.g. "
@@ -72,7 +64,7 @@ Status runSingleCycle(BlockWork& work, const SingleCycle& cycle, const std::opti
   if (auto problem = zeroFeedProblem(state.feed, name)) return work.errorAt(anchor, *problem);
   // The alarm compares R with the travel U (G90, a diameter) or W (G94); without R in this
   // block it points at that travel's word.
-  const double travelMm = cycle.taperAgainstX ? *xDiameterMm - diameterOf(start) : *zMm - start.y();
+  const double travelMm = cycle.taperAgainstX ? xDiameterMm - diameterOf(start) : zMm - start.y();
   if (auto problem = cycle.taperProblem(travelMm, rMm)) {
     const std::optional<Word>& absolute = cycle.taperAgainstX ? a.x : a.z;
     const std::optional<Word>& incremental = cycle.taperAgainstX ? a.u : a.w;
@@ -81,13 +73,31 @@ Status runSingleCycle(BlockWork& work, const SingleCycle& cycle, const std::opti
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
   work.noteCycleStart(start, name);
-  const RZ end(*xDiameterMm / 2.0, *zMm);  // C
+  const RZ end(xDiameterMm / 2.0, zMm);  // C
   const NoseComp comp = noseCompWith(state.noseSide, state.offset);
   work.emitLegs(noseCompensatedCycle(cycle.legs(start, end, rMm), start, cycle.taperAgainstX, comp));
   return success();  // the cycle ends at A: the position is unchanged
 }
 
 }  // namespace
+
+Result<CycleEndPoint> singleCycleEndPoint(BlockWork& work, const AxisWords& axes, std::string_view name,
+                                          int anchor) {
+  const RZ start = work.state.position;
+  const CycleRetained& kept = work.state.cycle;
+  std::optional<double> xDiameterMm = kept.xDiameterMm;
+  if (axes.x) xDiameterMm = work.length(*axes.x);
+  if (axes.u) xDiameterMm = diameterOf(start) + work.length(*axes.u);
+  std::optional<double> zMm = kept.zMm;
+  if (axes.z) zMm = work.length(*axes.z);
+  if (axes.w) zMm = start.y() + work.length(*axes.w);
+  if (!xDiameterMm || !zMm) {
+    return work.errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
+                                            "in this block nor kept from an earlier {0} block",
+                                            name, !xDiameterMm ? "X(U)" : "Z(W)"));
+  }
+  return CycleEndPoint{*xDiameterMm, *zMm};
+}
 
 Status runAxialCycle(BlockWork& work, const std::optional<Code>& code) {
   return runSingleCycle(work, kAxialCycle, code);

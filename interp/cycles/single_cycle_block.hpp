@@ -14,6 +14,18 @@
 
 namespace lathesim::interp {
 
+/// The end point C of a single cycle (G90, G92, G94) in the work frame.
+struct CycleEndPoint {
+  double xDiameterMm;
+  double zMm;
+};
+
+/// C from the block's X(U) and Z(W), a word not given taken from the cycle's earlier block
+/// (the cycles are modal: lathe-cycles.md §1), or the error at `anchor` naming the one that
+/// neither gives. `name` is the cycle's code as written.
+Result<CycleEndPoint> singleCycleEndPoint(BlockWork& work, const AxisWords& axes, std::string_view name,
+                                          int anchor);
+
 /// G90 on `work`'s block: `code` as written, or none when the block repeats the modal cycle.
 Status runAxialCycle(BlockWork& work, const std::optional<Code>& code);
 

@@ -113,18 +113,11 @@ Status runThreadCycle(BlockWork& work, const std::optional<Code>& code) {
 
   const RZ start = state.position;  // A
   CycleRetained& kept = state.cycle;
-  std::optional<double> xDiameterMm = kept.xDiameterMm;
-  if (a.x) xDiameterMm = work.length(*a.x);
-  if (a.u) xDiameterMm = diameterOf(start) + work.length(*a.u);
-  std::optional<double> zMm = kept.zMm;
-  if (a.z) zMm = work.length(*a.z);
-  if (a.w) zMm = start.y() + work.length(*a.w);
-  if (!xDiameterMm || !zMm) {
-    return work.errorAt(anchor, fmt::format("{0} needs X(U) and Z(W): the end point's {1} is neither "
-                                            "in this block nor kept from an earlier {0} block",
-                                            name, !xDiameterMm ? "X(U)" : "Z(W)"));
-  }
-  if (*zMm == start.y()) {
+  const auto endWords = singleCycleEndPoint(work, a, name, anchor);
+  if (!endWords.ok()) return endWords.error();
+  const double xDiameterMm = endWords.value().xDiameterMm;
+  const double zMm = endWords.value().zMm;
+  if (zMm == start.y()) {
     return work.errorAt(a.z   ? a.z->column
                         : a.w ? a.w->column
                               : anchor,
@@ -133,7 +126,7 @@ Status runThreadCycle(BlockWork& work, const std::optional<Code>& code) {
                                     name, start.y()));
   }
   const double rMm = r ? work.length(*r) : kept.rMm.value_or(0.0);
-  if (auto problem = axialCycleTaperProblem(*xDiameterMm - diameterOf(start), rMm, name)) {
+  if (auto problem = axialCycleTaperProblem(xDiameterMm - diameterOf(start), rMm, name)) {
     return work.errorAt(r ? r->column : a.x ? a.x->column : a.u ? a.u->column : anchor, *problem);
   }
   kept = CycleRetained{xDiameterMm, zMm, rMm};
@@ -153,7 +146,7 @@ Status runThreadCycle(BlockWork& work, const std::optional<Code>& code) {
   params.runoutAcrossMm = std::abs(runout.acrossMm);
   params.starts = starts;
   params.firstStartDeg = firstStartDeg;
-  const std::vector<CycleLeg> legs = threadCycleLegs(start, RZ(*xDiameterMm / 2.0, *zMm), rMm, params);
+  const std::vector<CycleLeg> legs = threadCycleLegs(start, RZ(xDiameterMm / 2.0, zMm), rMm, params);
   warnIfThreadTooFast(work, legs, anchor);
   work.emitLegs(legs);
   return success();  // the cycle ends at A

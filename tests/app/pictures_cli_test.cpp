@@ -255,6 +255,9 @@ void checkReportInChromium(const fs::path& out) {
   EXPECT_NE(dom.outcome.out.find("<tr id=\"L3\""), std::string::npos);
   // Self-contained: nothing is fetched from anywhere.
   const std::string html = test::readFile(out / "report.html");
+  // The run made a video: the page shows it and links it, beside the page.
+  EXPECT_NE(html.find("<video controls preload=\"metadata\" src=\"cut.mp4\""), std::string::npos);
+  EXPECT_NE(html.find("<a href=\"cut.mp4\">cut.mp4</a>"), std::string::npos);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
   EXPECT_EQ(html.find("href=\"http"), std::string::npos);
 }

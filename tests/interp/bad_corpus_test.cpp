@@ -18,6 +18,7 @@
 #include "interp/control/control_preset.hpp"
 #include "interp/interpreter.hpp"
 #include "test_support.hpp"
+#include "tests/support/files.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -33,12 +34,7 @@ std::vector<fs::path> badPrograms() {
   return paths;
 }
 
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using lathesim::test::readFile;
 
 TEST(BadCorpus, HasAtLeastTwelvePrograms) { EXPECT_GE(badPrograms().size(), 12u); }
 

@@ -13,18 +13,14 @@
 #include "interp/interpreter.hpp"
 #include "interp/output/toolpath_csv.hpp"
 #include "test_support.hpp"
+#include "tests/support/files.hpp"
 
 namespace lathesim::interp {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using lathesim::test::readFile;
 
 void expectMatchesGolden(const std::string& name) {
   const fs::path dir = LATHESIM_INTERP_GOLDEN_DIR;

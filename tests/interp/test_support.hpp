@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "interp/control/control_preset.hpp"
@@ -95,6 +96,15 @@ struct Expected {
 
 constexpr MoveKind kRapid = MoveKind::Rapid;
 constexpr MoveKind kFeed = MoveKind::Feed;
+constexpr MoveKind kCw = MoveKind::ArcCW;
+constexpr MoveKind kCcw = MoveKind::ArcCCW;
+
+/// The tool and offset number of each move.
+inline std::vector<std::pair<int, int>> toolsOf(const InterpretResult& result) {
+  std::vector<std::pair<int, int>> tools;
+  for (const Move& m : result.toolpath.moves) tools.emplace_back(m.tool, m.toolOffset);
+  return tools;
+}
 
 inline void expectMoves(const std::vector<Move>& actual, const std::vector<Expected>& expected) {
   ASSERT_EQ(actual.size(), expected.size());

@@ -273,7 +273,7 @@ TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
   const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
   EXPECT_EQ(d.message,
             "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, travel_x, travel_z, dialect, "
-            "initial_feed_mode, thread_runout, zero or second_reference)");
+            "initial_feed_mode, thread_runout, zero, second_reference or tailstock)");
 }
 
 TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
@@ -293,7 +293,7 @@ TEST(ParseSetupErrors, SyntaxErrorCarriesTomlsPosition) {
 
 TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
   const Diagnostic d = onlyError("[stock]\ndiameter = 50\n  diamter = 5\n");
-  EXPECT_EQ(d.message, "unknown key 'stock.diamter' (expected diameter, length, face_z or bore)");
+  EXPECT_EQ(d.message, "unknown key 'stock.diamter' (expected diameter, length, face_z, bore or material)");
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.column, 3);
   EXPECT_EQ(d.sourceLine, "  diamter = 5");

@@ -13,21 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/files.hpp"
+
 namespace lathesim::test {
 
 namespace fs = std::filesystem;
 
-inline std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-inline void writeFile(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
 
 /// A fresh folder under the system's temporary directory, removed with everything in it.
 class ScratchDir {

@@ -52,11 +52,13 @@ function show(container, gltf) {
     }
   });
 
-  // Framed on the part (the triangle meshes), not on the rapids to a far reference point.
+  // Framed on the part (the triangle meshes), not on the rapids to a far reference point, nor
+  // on the machine beside it (the meshes named "machine …": the chuck's jaws, the tailstock,
+  // the tool), which may reach far from the part.
   const box = new THREE.Box3();
   gltf.scene.updateMatrixWorld(true);
   gltf.scene.traverse((node) => {
-    if (node.isMesh && !node.isLine && !node.isPoints) box.expandByObject(node);
+    if (node.isMesh && !node.isLine && !node.isPoints && !node.name.startsWith('machine')) box.expandByObject(node);
   });
   if (box.isEmpty()) box.setFromObject(gltf.scene);
   const size = box.getSize(new THREE.Vector3());

@@ -53,7 +53,7 @@ constexpr std::string_view kProgram =  // decimal points: fanuc-0i-t reads X14 a
     "M30\n";
 constexpr int kStartUpLine = 11;
 
-struct Expected {
+struct CompensatedMove {
   MoveKind kind;
   double r0, z0, r1, z1;
   double rc = 0, zc = 0;
@@ -68,7 +68,7 @@ void tipDirection(int tip, double& sr, double& sz) {
 }
 
 // The hand expansion above for nose radius `r` and tip `tip`, from the start-up on.
-std::vector<Expected> handExpanded(double r, int tip) {
+std::vector<CompensatedMove> handExpanded(double r, int tip) {
   double sr = 0, sz = 0;
   tipDirection(tip, sr, sz);
   const double k = std::sqrt(2.0);
@@ -87,12 +87,12 @@ std::vector<Expected> handExpanded(double r, int tip) {
   };
 }
 
-void expectMoves(const std::vector<Move>& moves, const std::vector<Expected>& expected) {
+void expectCompensatedMoves(const std::vector<Move>& moves, const std::vector<CompensatedMove>& expected) {
   ASSERT_EQ(moves.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     SCOPED_TRACE(testing::Message() << "move " << i << " (line " << moves[i].line << ")");
     const Move& m = moves[i];
-    const Expected& e = expected[i];
+    const CompensatedMove& e = expected[i];
     EXPECT_EQ(m.kind, e.kind);
     EXPECT_NEAR(m.from.x(), e.r0, 1e-9);
     EXPECT_NEAR(m.from.y(), e.z0, 1e-9);
@@ -127,7 +127,7 @@ TEST_P(G70UnderG42, FinishesTheCompensatedContourForEveryRadiusAndTip) {
       SCOPED_TRACE(testing::Message() << GetParam() << " R" << radiusMm << " tip " << tip);
       const auto result = test::run(kProgram, withOffset(GetParam(), radiusMm, tip));
       ASSERT_TRUE(result.ok()) << test::messageOf(result);
-      expectMoves(fromStartUp(result.toolpath.moves), handExpanded(radiusMm, tip));
+      expectCompensatedMoves(fromStartUp(result.toolpath.moves), handExpanded(radiusMm, tip));
     }
   }
 }

@@ -13,7 +13,7 @@
 namespace lathesim::interp {
 namespace {
 
-constexpr MoveKind kCw = MoveKind::ArcCW;
+using test::kCw;
 using test::kFeed;
 using test::kRapid;
 

@@ -16,9 +16,9 @@ namespace {
 using test::arcSegment;
 using test::segment;
 
-constexpr MoveKind kFeed = MoveKind::Feed;
-constexpr MoveKind kCw = MoveKind::ArcCW;
-constexpr MoveKind kCcw = MoveKind::ArcCCW;
+using test::kFeed;
+using test::kCw;
+using test::kCcw;
 
 void expectPoint(const RZ& actual, double r, double z) {
   EXPECT_NEAR(actual.x(), r, 1e-9);

@@ -21,11 +21,7 @@ using test::kFeed;
 using test::kRapid;
 using test::run;
 
-std::vector<std::pair<int, int>> toolsOf(const InterpretResult& result) {
-  std::vector<std::pair<int, int>> tools;
-  for (const Move& m : result.toolpath.moves) tools.emplace_back(m.tool, m.toolOffset);
-  return tools;
-}
+using test::toolsOf;
 
 // A Denford-style program, its moves expanded by hand. Offsets 1 and 2 are zero (the test
 // options have none), so the tool's programmed point is where the words say. Radii: X32 is

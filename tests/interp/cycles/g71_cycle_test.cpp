@@ -23,10 +23,10 @@ using test::params;
 using test::HandLeg;
 using test::segment;
 
-constexpr MoveKind kRapid = MoveKind::Rapid;
-constexpr MoveKind kFeed = MoveKind::Feed;
-constexpr MoveKind kCw = MoveKind::ArcCW;
-constexpr MoveKind kCcw = MoveKind::ArcCCW;
+using test::kRapid;
+using test::kFeed;
+using test::kCw;
+using test::kCcw;
 
 // A = X100 Z2 (radius 50); N10 G00 X40; N20 G01 Z-30; N30 X60 Z-40; N40 Z-60; N50 X100.
 Contour odTaperContour() {

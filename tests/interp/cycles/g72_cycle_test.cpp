@@ -18,9 +18,9 @@ using test::expectRoughingError;
 using test::params;
 using test::segment;
 
-constexpr MoveKind kRapid = MoveKind::Rapid;
-constexpr MoveKind kFeed = MoveKind::Feed;
-constexpr MoveKind kCw = MoveKind::ArcCW;
+using test::kRapid;
+using test::kFeed;
+using test::kCw;
 
 // A = X104 Z2 (radius 52). N10 G00 Z-12; N20 G01 X80 (radius 40); N30 X40 Z-2 (radius 20);
 // N40 Z0; N50 X0.

@@ -27,8 +27,8 @@ using test::expectLegsNear;
 using test::HandLeg;
 using test::segment;
 
-constexpr MoveKind kRapid = MoveKind::Rapid;
-constexpr MoveKind kFeed = MoveKind::Feed;
+using test::kRapid;
+using test::kFeed;
 
 /// One hand-worked leg given by where it ends; it starts where the one before it ended.
 struct To {

@@ -17,8 +17,8 @@ namespace {
 using test::expectError;
 using test::run;
 
-constexpr MoveKind kCw = MoveKind::ArcCW;
-constexpr MoveKind kCcw = MoveKind::ArcCCW;
+using test::kCw;
+using test::kCcw;
 
 struct ExpectedArc {
   MoveKind kind;

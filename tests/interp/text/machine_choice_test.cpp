@@ -137,7 +137,9 @@ TEST(MachineChoice, DialectAndControlAreOneChoice) {
   EXPECT_EQ(both.control, "haas");
   // Every pairing names a real preset.
   for (Dialect d : kDialects) {
-    if (const auto control = controlImpliedBy(d)) EXPECT_TRUE(controlPreset(*control).has_value()) << *control;
+    if (const auto control = controlImpliedBy(d)) {
+      EXPECT_TRUE(controlPreset(*control).has_value()) << *control;
+    }
   }
 }
 

@@ -56,7 +56,9 @@ TEST(MachineEvidence, EachKindAloneIsFoundWhereItStands) {
     EXPECT_EQ(m.column, c.column);
     EXPECT_EQ(m.text, c.written);
     for (std::size_t k = 0; k < kEvidenceKinds; ++k) {
-      if (static_cast<EvidenceKind>(k) != c.kind) EXPECT_EQ(evidence.counts[k], 0u) << "kind " << k;
+      if (static_cast<EvidenceKind>(k) != c.kind) {
+        EXPECT_EQ(evidence.counts[k], 0u) << "kind " << k;
+      }
     }
   }
 }

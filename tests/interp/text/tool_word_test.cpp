@@ -17,12 +17,7 @@ InterpretResult runWithForms(std::string_view program, std::vector<std::string> 
   return interpret(program, "t.nc", options);
 }
 
-// Tool and offset of each move.
-std::vector<std::pair<int, int>> toolsOf(const InterpretResult& result) {
-  std::vector<std::pair<int, int>> tools;
-  for (const Move& m : result.toolpath.moves) tools.emplace_back(m.tool, m.toolOffset);
-  return tools;
-}
+using test::toolsOf;
 
 TEST(ToolWord, TwoPlusTwoReadsTheLastTwoDigitsAsTheOffset) {
   // T0202: tool 2, offset 2. T101: tool 1, offset 1 (the leading zero left out). T0 and T00:
