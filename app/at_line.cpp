@@ -36,7 +36,7 @@ ToolpathAtLine toolpathAtLine(const interp::Toolpath& toolpath, int line, int so
   return {std::move(cut), ""};
 }
 
-bool cutAtLine(std::optional<int> atLine, job::Job& job) {
+bool cutAtLine(std::optional<int> atLine, setup::Job& job) {
   if (!atLine) return true;
   const std::string_view text = job.programText.text().view();
   const auto lineCount = static_cast<int>(std::count(text.begin(), text.end(), '\n') +

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-#include "job/job.hpp"
+#include "setup/job.hpp"
 #include "interp/base/move.hpp"
 
 namespace lathesim::app {
@@ -27,6 +27,6 @@ ToolpathAtLine toolpathAtLine(const interp::Toolpath& toolpath, int line, int so
 
 /// With `atLine` given, cuts the job's toolpath there; false (the problem printed) if it
 /// cannot. Without it, leaves the job alone.
-bool cutAtLine(std::optional<int> atLine, job::Job& job);
+bool cutAtLine(std::optional<int> atLine, setup::Job& job);
 
 }  // namespace lathesim::app

@@ -9,7 +9,7 @@
 #include "batch/shard.hpp"
 #include "batch/summary.hpp"
 #include "interp/base/printable_text.hpp"
-#include "job/exit_status.hpp"
+#include "setup/exit_status.hpp"
 #include "render/drawing_libraries.hpp"
 #include "render/offscreen_display.hpp"
 
@@ -67,14 +67,14 @@ int BatchCli::run() {
   if (merge_->parsed()) return batch::mergeSummaries(summaries_, mergeOut_);
   if (source_.empty()) {
     std::cerr << "lathesim batch: give a manifest (.toml, .csv) or a folder of programs (see lathesim batch --help)\n";
-    return job::kExitBadCommandLine;
+    return setup::kExitBadCommandLine;
   }
   options_.source = source_;
   if (!shard_.empty()) {
     const auto shard = batch::parseShard(shard_);
     if (!shard) {
       std::cerr << "lathesim batch: --shard " << interp::printable(shard_) << ": expected I/N with 1 ≤ I ≤ N, e.g. 2/8\n";
-      return job::kExitBadCommandLine;
+      return setup::kExitBadCommandLine;
     }
     options_.shard = *shard;
   }

@@ -357,16 +357,16 @@ int checkCommand(const CheckOptions& options) {
   std::optional<MeridianProfile> drawing;
   measure::DrawingResult file;
   if (options.drawing && !(drawing = isStl(*options.drawing) ? loadStl(*options.drawing) : loadProfile(*options.drawing, file)))
-    return job::kExitBadInput;  // before the long part
+    return setup::kExitBadInput;  // before the long part
   Stopwatch clock;
   StagedOutput out(options.run.out);
   // The gouges' causes, the surfaces' makers and the process figures read every move: spooled.
   std::optional<SimulatedRun> run = simulateProgram(options.run, clock, &out, true);
-  if (!run) return job::kExitBadInput;
+  if (!run) return setup::kExitBadInput;
   std::future<double> stockFile = stageStockFile(*run, out);
   const double voxel = run->figures.voxelMm;
   Stopwatch checkClock;
-  if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return job::kExitBadInput;
+  if (!drawing && !(drawing = simulateTarget(options, voxel, checkClock))) return setup::kExitBadInput;
 
   run->progress->stage("measuring against the drawing");
   SampledSection section = run->partStock().meridianSection();
@@ -454,8 +454,8 @@ int checkCommand(const CheckOptions& options) {
   const measure::Verdict verdict = inspection.verdict();
   const bool crashed = run->figures.crashed();
   keepUntilExit(std::move(*run));
-  if (crashed) return job::kExitCrash;  // the worse news, over a part out of tolerance
-  return verdict == measure::Verdict::Within ? job::kExitOk : job::kExitOutOfTolerance;
+  if (crashed) return setup::kExitCrash;  // the worse news, over a part out of tolerance
+  return verdict == measure::Verdict::Within ? setup::kExitOk : setup::kExitOutOfTolerance;
 }
 
 }  // namespace lathesim::app

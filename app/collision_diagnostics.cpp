@@ -22,7 +22,7 @@ std::string collisionMessage(const sim::Collision& c) {
   return fmt::format("collision ({}), {:.1f} mm³ ({})", c.kind, c.volumeMm3, where);
 }
 
-interp::Diagnostic collisionDiagnostic(const job::Job& job, const sim::Collision& collision) {
+interp::Diagnostic collisionDiagnostic(const setup::Job& job, const sim::Collision& collision) {
   const auto severity = job.setup.collisionsWarn ? interp::Severity::Warning : interp::Severity::Error;
   return job.diagnosticAt(severity, collision.line, collision.column, collisionMessage(collision));
 }

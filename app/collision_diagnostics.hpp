@@ -1,12 +1,12 @@
 #pragma once
 // A collision said as a diagnostic at its block: an error (a crash fails the run, exit status
-// job::kExitCrash), or a warning under [sim] collisions = "warn" / --collisions warn.
+// setup::kExitCrash), or a warning under [sim] collisions = "warn" / --collisions warn.
 
 #include <string>
 #include <vector>
 
 #include "interp/base/diagnostic.hpp"
-#include "job/job.hpp"
+#include "setup/job.hpp"
 #include "render/crash_mark.hpp"
 #include "sim/simulate.hpp"
 
@@ -18,7 +18,7 @@ std::string collisionMessage(const sim::Collision& collision);
 
 /// The collision at its block (with the block's text, for the caret display): an error, or a
 /// warning when the setup says collisions only warn.
-interp::Diagnostic collisionDiagnostic(const job::Job& job, const sim::Collision& collision);
+interp::Diagnostic collisionDiagnostic(const setup::Job& job, const sim::Collision& collision);
 
 /// Each collision as the pictures, the video and the 3D view mark it: "crash, line 8".
 render::CrashMark crashMarkOf(const sim::Collision& collision);

@@ -1,5 +1,5 @@
 #pragma once
-// The lathesim subcommands. Each returns the process exit status (job/exit_status.hpp):
+// The lathesim subcommands. Each returns the process exit status (setup/exit_status.hpp):
 // 0 done, 1 bad input (diagnostics printed, no output written).
 
 #include <filesystem>
@@ -8,14 +8,14 @@
 
 #include "interp/control/dialect.hpp"
 #include "interp/motion/toolpath_clock.hpp"
-#include "job/exit_status.hpp"
-#include "job/job.hpp"
-#include "job/setup.hpp"
+#include "setup/exit_status.hpp"
+#include "setup/job.hpp"
+#include "setup/setup.hpp"
 #include "render/part_image.hpp"
 
 namespace lathesim::app {
 
-using job::kDefaultVoxelMm;  // when neither --voxel nor [sim] voxel says
+using setup::kDefaultVoxelMm;  // when neither --voxel nor [sim] voxel says
 
 /// Mesh adaptivity of the exported part. Even this small value merges facets on flat and
 /// gently curved faces about 40-fold (seed 000 at 0.1 mm: 12.4 M triangles → 0.30 M, a
@@ -61,10 +61,10 @@ struct RunOptions {
   std::optional<std::filesystem::path> setup;
   std::filesystem::path out = "out";
   std::optional<double> voxelMm;
-  job::SetupOverrides overrides;  // --dialect, --control, --block-skip, --max-steps
+  setup::SetupOverrides overrides;  // --dialect, --control, --block-skip, --max-steps
   std::optional<int> atLine;  // simulate only up to this source line (app/at_line.hpp)
   std::vector<std::filesystem::path> programDirectories;  // --programs
-  std::optional<std::string> stock;  // --stock D40xL80 (job/stock_option.hpp)
+  std::optional<std::string> stock;  // --stock D40xL80 (setup/stock_option.hpp)
   PictureRequest pictures;
   AnimationRequest animation;
   std::vector<std::string> exports;  // --export: gltf, glb, ply, obj (part.gltf, …)
@@ -83,16 +83,16 @@ struct CheckOptions {
 };
 
 /// Exit status 0 when every figure is shown within its tolerance, 3 when one is out of it or
-/// undecided at the voxel, 1 on bad input (job/exit_status.hpp).
+/// undecided at the voxel, 1 on bad input (setup/exit_status.hpp).
 int checkCommand(const CheckOptions& options);
 
 /// The toolpath CSV on stdout, whole or not at all: the rows stream into an unnamed temporary
 /// file as the program makes its moves (the toolpath is never held in memory) and are copied
 /// to stdout once the program has run without error; exit status 1 and nothing on stdout
 /// when it fails, however many moves came before the error.
-int expandCommand(const job::JobRequest& request);
+int expandCommand(const setup::JobRequest& request);
 
 /// The job a run's options name.
-job::JobRequest jobRequestOf(const RunOptions& options);
+setup::JobRequest jobRequestOf(const RunOptions& options);
 
 }  // namespace lathesim::app

@@ -24,7 +24,7 @@ std::string clockText(double clock, interp::Pace pace) {
 
 }  // namespace
 
-CutRecording::CutRecording(const job::Job& job, const AnimationRequest& request, const std::string& title,
+CutRecording::CutRecording(const setup::Job& job, const AnimationRequest& request, const std::string& title,
                            StagedOutput& out)
     : job_(job) {
   render::PartImageOptions picture = partPictureOptions(job.setup, job.toolpath, title, request.widthPx, request.heightPx);

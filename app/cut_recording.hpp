@@ -7,7 +7,7 @@
 
 #include "app/commands.hpp"
 #include "app/staged_output.hpp"
-#include "job/job.hpp"
+#include "setup/job.hpp"
 #include "render/cut_animation.hpp"
 #include "sim/simulate.hpp"
 
@@ -16,7 +16,7 @@ namespace lathesim::app {
 class CutRecording {
  public:
   /// Stages cut.mp4 (and cut.gif) in `out`; frames of part.png's view without its dimensions.
-  CutRecording(const job::Job& job, const AnimationRequest& request, const std::string& title, StagedOutput& out);
+  CutRecording(const setup::Job& job, const AnimationRequest& request, const std::string& title, StagedOutput& out);
 
   /// What the simulation calls before each group of moves it cuts.
   sim::CutObserver observer();
@@ -32,7 +32,7 @@ class CutRecording {
   /// Marks the collisions not marked yet, from the next frame on.
   void markCrashes(const std::vector<sim::Collision>& collisions);
 
-  const job::Job& job_;
+  const setup::Job& job_;
   double toleranceMm_ = 0.1;  // how far the frame's mesh may stray from the section: about half a pixel
   int angularSteps_ = 12;
   std::size_t crashesMarked_ = 0;

@@ -11,16 +11,16 @@
 
 namespace lathesim::app {
 
-int expandCommand(const job::JobRequest& request) {
+int expandCommand(const setup::JobRequest& request) {
   interp::ToolpathCsvSpool csv;
-  const auto job = printed(job::loadJob(request, csv));
-  if (!job) return job::kExitBadInput;
+  const auto job = printed(setup::loadJob(request, csv));
+  if (!job) return setup::kExitBadInput;
   // The CSV is standard output's: the machine it was read for is said on standard error.
   std::cerr << "lathesim: " << interp::printable(request.program.string()) << ": "
             << interp::printable(interp::describeMachine(job->machine)) << '\n';
   csv.copyTo(std::cout);
   if (!std::cout.flush()) throw std::runtime_error("cannot write the toolpath to standard output");
-  return job::kExitOk;
+  return setup::kExitOk;
 }
 
 }  // namespace lathesim::app

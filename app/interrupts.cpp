@@ -8,7 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "job/exit_status.hpp"
+#include "setup/exit_status.hpp"
 
 namespace lathesim::app {
 namespace {
@@ -67,7 +67,7 @@ void writeText(const char* text) {
   writeText(signal == SIGINT    ? "lathesim: stopped by SIGINT (Ctrl-C); unfinished outputs removed\n"
             : signal == SIGTERM ? "lathesim: stopped by SIGTERM; unfinished outputs removed\n"
                                 : "lathesim: stopped by SIGHUP; unfinished outputs removed\n");
-  ::_exit(job::exitOnSignal(signal));
+  ::_exit(setup::exitOnSignal(signal));
 }
 
 extern "C" void onSignal(int signal) {

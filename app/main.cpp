@@ -14,8 +14,8 @@
 #include "interp/control/control_preset.hpp"
 #include "interp/control/dialect.hpp"
 #include "interp/base/printable_text.hpp"
-#include "job/exit_status.hpp"
-#include "job/stock_option.hpp"
+#include "setup/exit_status.hpp"
+#include "setup/stock_option.hpp"
 
 namespace {
 
@@ -56,7 +56,7 @@ void addProgramSourceOptions(CLI::App& command, lathesim::app::RunOptions& optio
                      "the bar: D<diameter>[xd<bore>]xL<length>[xZ<face>], e.g. D40xL80 or the tube D60xd40xL80 "
                      "(over the setup's)")
       ->check([](const std::string& text) {
-        const auto bar = lathesim::job::parseStockOption(text);
+        const auto bar = lathesim::setup::parseStockOption(text);
         const auto* problem = std::get_if<std::string>(&bar);
         if (!problem) return std::string();
         // CLI11 names the option itself; the message names it too, for the setup's callers.
@@ -99,8 +99,8 @@ void addOverrideOptions(CLI::App& command, OverrideArguments& args, bool simulat
       ->check(CLI::PositiveNumber);
 }
 
-lathesim::job::SetupOverrides overridesOf(const OverrideArguments& args) {
-  lathesim::job::SetupOverrides overrides;
+lathesim::setup::SetupOverrides overridesOf(const OverrideArguments& args) {
+  lathesim::setup::SetupOverrides overrides;
   if (!args.dialect.empty()) overrides.dialect = lathesim::interp::dialectNamed(args.dialect);
   if (!args.control.empty()) overrides.controlPreset = args.control;
   if (!args.blockSkip.empty()) overrides.blockSkip = args.blockSkip == "on";
@@ -202,7 +202,7 @@ int lathesimMain(int argc, char** argv) {
                 << "': expected run, check, expand, watch or batch\nRun 'lathesim --help' for more.\n";
     else
       cli.exit(e);
-    return lathesim::job::kExitBadCommandLine;
+    return lathesim::setup::kExitBadCommandLine;
   }
   const auto optionalPath = [](const std::string& s) {
     return s.empty() ? std::nullopt : std::optional<std::filesystem::path>(s);
@@ -213,7 +213,7 @@ int lathesimMain(int argc, char** argv) {
       watch.arguments = watchCmd->remaining();
       if (watch.arguments.empty()) {
         std::cerr << "lathesim watch: give the program, and run's options (see lathesim watch --help)\n";
-        return lathesim::job::kExitBadCommandLine;
+        return lathesim::setup::kExitBadCommandLine;
       }
       return lathesim::app::watchCommand(watch);
     }
@@ -226,7 +226,7 @@ int lathesimMain(int argc, char** argv) {
     if (*checkCmd) {
       if (!check.drawing && !check.targetProgram) {
         std::cerr << "lathesim check: give the drawing with --target or --target-program (see lathesim check --help)\n";
-        return lathesim::job::kExitBadCommandLine;
+        return lathesim::setup::kExitBadCommandLine;
       }
       check.run.setup = optionalPath(checkSetup);
       if (!checkGeneral.empty()) check.generalTolerance = checkGeneral[0];
@@ -238,7 +238,7 @@ int lathesimMain(int argc, char** argv) {
     return lathesim::app::expandCommand(lathesim::app::jobRequestOf(expand));
   } catch (const std::exception& e) {  // outputs that cannot be written, broken invariants
     std::cerr << "lathesim: error: " << lathesim::interp::printable(e.what()) << '\n';
-    return lathesim::job::kExitBadInput;
+    return lathesim::setup::kExitBadInput;
   }
 }
 

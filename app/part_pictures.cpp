@@ -12,7 +12,7 @@ namespace lathesim::app {
 namespace {
 
 /// The chuck as the collision check sees it (sim::chuckRegions: the jaws, then the body).
-render::ChuckPicture chuckPicture(const job::Setup& setup) {
+render::ChuckPicture chuckPicture(const setup::Setup& setup) {
   const std::vector<ConvexPolygon> regions = sim::chuckRegions(setup.chuck, setup.stock);
   auto bounds = [](const ConvexPolygon& p, RZ& low, RZ& high) {
     low = high = p.vertices().front();
@@ -25,12 +25,12 @@ render::ChuckPicture chuckPicture(const job::Setup& setup) {
 }
 
 /// What a tool is, in a few words, for the picture's subtitle.
-std::string toolWords(const job::Setup& setup, int number) {
+std::string toolWords(const setup::Setup& setup, int number) {
   const auto tool = std::find_if(setup.tools.begin(), setup.tools.end(),
-                                 [number](const job::ToolDefinition& t) { return t.number == number; });
+                                 [number](const setup::ToolDefinition& t) { return t.number == number; });
   std::string words = fmt::format("T{:02d}", number);
   if (tool == setup.tools.end()) return words;
-  const job::ToolFacts& f = tool->facts;
+  const setup::ToolFacts& f = tool->facts;
   if (!f.insert.empty()) return words + " " + f.insert;
   if (!f.insertShape.empty()) return words + " " + f.insertShape;
   return words + (f.kind == "polygon" ? " a polygon tool" : " the default tool");
@@ -47,7 +47,7 @@ std::string pictureTitle(const std::string& program, std::optional<int> atLine) 
   return atLine ? fmt::format("{}, at line {}", program, *atLine) : program;
 }
 
-std::string pictureSubtitle(const job::Setup& setup, const std::vector<int>& toolsUsed, double cycleTimeS) {
+std::string pictureSubtitle(const setup::Setup& setup, const std::vector<int>& toolsUsed, double cycleTimeS) {
   const sim::StockSpec& bar = setup.stock;
   // Ø, not Φ: the pictures' font has no Greek (the dimensions write Ø too).
   std::string text = fmt::format("bar Ø{:g} × {:g}", bar.diameterMm, bar.lengthMm);
@@ -64,7 +64,7 @@ std::vector<int> toolsUsedBy(const std::vector<interp::Move>& moves) {
   return tools;
 }
 
-render::PartImageOptions partPictureOptions(const job::Setup& setup, const interp::Toolpath& toolpath,
+render::PartImageOptions partPictureOptions(const setup::Setup& setup, const interp::Toolpath& toolpath,
                                             const std::string& title, int widthPx, int heightPx) {
   render::PartImageOptions options;
   options.widthPx = widthPx;
@@ -75,19 +75,19 @@ render::PartImageOptions partPictureOptions(const job::Setup& setup, const inter
   options.bar = render::BarOutline{bar.diameterMm / 2, bar.faceZMm - bar.lengthMm, bar.faceZMm, bar.boreMm / 2};
   options.chuck = chuckPicture(setup);
   if (setup.tailstock) {
-    const job::Tailstock& t = *setup.tailstock;
+    const setup::Tailstock& t = *setup.tailstock;
     options.tailstock =
-        render::TailstockPicture{t.pointZMm, t.quillDiameterMm / 2, job::kQuillLengthPerDiameter * t.quillDiameterMm};
+        render::TailstockPicture{t.pointZMm, t.quillDiameterMm / 2, setup::kQuillLengthPerDiameter * t.quillDiameterMm};
   }
   return options;
 }
 
-render::SceneMachine sceneMachine(const job::Setup& setup, const interp::Toolpath& toolpath) {
+render::SceneMachine sceneMachine(const setup::Setup& setup, const interp::Toolpath& toolpath) {
   const render::PartImageOptions picture = partPictureOptions(setup, toolpath, "", 1, 1);
   return {picture.chuck, picture.tailstock, picture.tool};
 }
 
-double drawnToleranceMm(const job::Setup& setup, int widthPx, int heightPx) {
+double drawnToleranceMm(const setup::Setup& setup, int widthPx, int heightPx) {
   constexpr double kDrawnTolerancePx = 0.2;
   const sim::StockSpec& bar = setup.stock;
   const double mmPerPx = std::max(bar.lengthMm / std::max(widthPx, 1), bar.diameterMm / std::max(heightPx, 1));

@@ -1,12 +1,12 @@
 #pragma once
-// The commands print what the libraries say: job/ and the readers return their diagnostics,
+// The commands print what the libraries say: setup/ and the readers return their diagnostics,
 // and these put them on standard error, in order, each in the compiler's format.
 
 #include <iostream>
 #include <utility>
 
 #include "interp/base/diagnostic.hpp"
-#include "job/job.hpp"
+#include "setup/job.hpp"
 
 namespace lathesim::app {
 
@@ -16,7 +16,7 @@ inline void printDiagnostics(const std::vector<interp::Diagnostic>& diagnostics)
 
 /// A job step's result, what it said printed first.
 template <class T>
-T printed(job::Reported<T> reported) {
+T printed(setup::Reported<T> reported) {
   printDiagnostics(reported.diagnostics);
   return std::move(reported.value);
 }

@@ -88,9 +88,9 @@ nlohmann::ordered_json partedOffJson(const RunFigures& f) {
 
 }  // namespace
 
-nlohmann::ordered_json machineAssumedJson(const std::vector<job::MachineAssumption>& assumed) {
+nlohmann::ordered_json machineAssumedJson(const std::vector<setup::MachineAssumption>& assumed) {
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
-  for (const job::MachineAssumption& a : assumed) {
+  for (const setup::MachineAssumption& a : assumed) {
     json[a.key] = a.values.size() == 1 ? nlohmann::ordered_json(a.values[0]) : nlohmann::ordered_json(a.values);
   }
   return json;

@@ -13,7 +13,7 @@
 #include "interp/control/machine_limits.hpp"
 #include "interp/base/diagnostic.hpp"
 #include "interp/interpreter.hpp"
-#include "job/machine_assumptions.hpp"
+#include "setup/machine_assumptions.hpp"
 #include "measure/thread_measure.hpp"
 #include "interp/base/move.hpp"
 #include "sim/block_rows.hpp"
@@ -39,7 +39,7 @@ struct RunFigures {
   interp::Control control;  // the preset and every parameter in force
   interp::MachineChoice machine;  // the dialect and control, stated or read from the program, and why
   interp::TravelLimits travel;  // the machine's travel the moves were checked against
-  std::vector<job::MachineAssumption> assumed;  // what the setup did not say of the machine
+  std::vector<setup::MachineAssumption> assumed;  // what the setup did not say of the machine
   double voxelMm = 0;
   std::optional<int> atLine;  // --at-line: the run stopped after this line's first execution
   double stockVolumeMm3 = 0;  // measured on the level set of the untouched bar
@@ -68,7 +68,7 @@ struct RunFigures {
   std::vector<interp::Diagnostic> collisions;
   RunTimings timing;
 
-  /// The run crashed, and the setup does not let a crash pass: exit status job::kExitCrash.
+  /// The run crashed, and the setup does not let a crash pass: exit status setup::kExitCrash.
   bool crashed() const {
     return std::any_of(collisions.begin(), collisions.end(),
                        [](const interp::Diagnostic& d) { return d.severity == interp::Severity::Error; });
@@ -82,7 +82,7 @@ nlohmann::ordered_json reportJson(const RunFigures& figures);
 
 /// report.json's "machine": {"assumed": {…}}: each assumption by its key, a number or a list
 /// of mm ("start": [200, 200], "stock_face_z": 0); an empty object when the setup said all.
-nlohmann::ordered_json machineAssumedJson(const std::vector<job::MachineAssumption>& assumed);
+nlohmann::ordered_json machineAssumedJson(const std::vector<setup::MachineAssumption>& assumed);
 
 /// One line for the terminal naming a thread and what was measured of it.
 std::string threadSummary(const measure::MeasuredThread& thread);

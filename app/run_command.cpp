@@ -10,7 +10,7 @@ int runCommand(const RunOptions& options) {
   Stopwatch clock;
   StagedOutput out(options.out);
   std::optional<SimulatedRun> run = simulateProgram(options, clock, &out);
-  if (!run) return job::kExitBadInput;
+  if (!run) return setup::kExitBadInput;
   std::future<double> stockFile = stageStockFile(*run, out);
   meshPart(*run, clock);
   finishStockFile(*run, stockFile);  // before the other files: they are written in one order, whatever the machine's speed
@@ -30,7 +30,7 @@ int runCommand(const RunOptions& options) {
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
             << interp::printable(options.out.string()) << "/\n";
   if (!figures.assumed.empty())
-    std::cout << "  assumed, as the setup does not say: " << job::assumptionsText(figures.assumed) << '\n';
+    std::cout << "  assumed, as the setup does not say: " << setup::assumptionsText(figures.assumed) << '\n';
   if (!figures.simulation.partOffs.empty()) {
     const sim::PartOff& off = figures.simulation.partOffs.front();
     std::cout << "  parted off at line " << off.line << ", Z" << off.zMm << ": the part " << off.volumeMm3
@@ -39,10 +39,10 @@ int runCommand(const RunOptions& options) {
   for (const auto& thread : figures.threads) std::cout << "  " << threadSummary(thread) << '\n';
   const bool crashed = figures.crashed();
   keepUntilExit(std::move(*run));
-  return crashed ? job::kExitCrash : job::kExitOk;
+  return crashed ? setup::kExitCrash : setup::kExitOk;
 }
 
-job::JobRequest jobRequestOf(const RunOptions& options) {
+setup::JobRequest jobRequestOf(const RunOptions& options) {
   return {options.program, options.setup, options.overrides, options.programDirectories, options.stock};
 }
 

@@ -13,7 +13,7 @@
 #include "app/part_pictures.hpp"
 #include "app/printed_diagnostics.hpp"
 #include "app/tool_table.hpp"
-#include "job/collision_checks.hpp"
+#include "setup/collision_checks.hpp"
 #include "measure/volume_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/base/printable_text.hpp"
@@ -43,13 +43,13 @@ void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, messa
 
 }  // namespace
 
-sim::ToolOutlines outlinesOf(const job::Setup& setup) {
+sim::ToolOutlines outlinesOf(const setup::Setup& setup) {
   sim::ToolOutlines tools;
   for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
   return tools;
 }
 
-sim::ToolThicknesses thicknessesOf(const job::Setup& setup) {
+sim::ToolThicknesses thicknessesOf(const setup::Setup& setup) {
   sim::ToolThicknesses thicknesses;
   for (const auto& tool : setup.tools)
     if (tool.thicknessMm) thicknesses.emplace(tool.number, *tool.thicknessMm);
@@ -103,8 +103,8 @@ class StreamedMoves final : public interp::MoveSink {
 
 std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch& clock, StagedOutput* out,
                                             bool spoolMoves) {
-  const job::JobRequest request = jobRequestOf(options);
-  std::optional<job::Job> opened = printed(job::openJob(request));
+  const setup::JobRequest request = jobRequestOf(options);
+  std::optional<setup::Job> opened = printed(setup::openJob(request));
   if (!opened) return std::nullopt;
   const double voxel = options.voxelMm.value_or(opened->setup.voxelMm.value_or(kDefaultVoxelMm));
   const auto gridProblem = sim::gridProblem(opened->setup.stock, voxel);
@@ -113,7 +113,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   if (!streams) {
     std::vector<interp::Move> moves;
     interp::MoveCollector collect(moves);
-    if (!printed(job::interpretJob(*opened, request, collect))) return std::nullopt;
+    if (!printed(setup::interpretJob(*opened, request, collect))) return std::nullopt;
     opened->toolpath.moves = std::move(moves);
     if (!cutAtLine(options.atLine, *opened)) return std::nullopt;
   }
@@ -127,13 +127,13 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.atLine = options.atLine;
   figures.timing.parseS = clock.lap();
 
-  const job::Setup& setup = run.job.setup;
+  const setup::Setup& setup = run.job.setup;
   figures.program = options.program.string();
   figures.setup = setup.sourceName;
   figures.control = setup.control;
   figures.machine = run.job.machine;
-  figures.travel = job::travelOf(setup);
-  figures.assumed = job::machineAssumptions(setup);
+  figures.travel = setup::travelOf(setup);
+  figures.assumed = setup::machineAssumptions(setup);
   figures.voxelMm = voxel;
   if (out && !out->foreignFiles().empty()) {
     std::string names;
@@ -160,7 +160,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   noteStockMemory(run);
   figures.stockVolumeMm3 = run.stock->volumeMm3();
   const auto barProblem = measure::barVolumeProblem(setup.stock, figures.stockVolumeMm3, voxel);
-  const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck
+  const sim::CollisionChecks checks = setup::collisionChecksOf(setup);  // holders and the chuck
   const sim::ToolOutlines outlines = outlinesOf(setup);
   const sim::BlockProgress progress = [&](int done, int total) { run.progress->update(done, total); };
   std::unique_ptr<CutRecording> recording;
@@ -190,7 +190,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
     run.blockRows = std::make_unique<sim::SpooledBlockRows>();
     simulation.sendBlocksTo([rows = run.blockRows.get()](const sim::BlockRemoval& row) { rows->add(row); });
     StreamedMoves moves(simulation, std::move(others), threadMoves, toolUsage);
-    if (!printed(job::interpretJob(run.job, request, moves))) return std::nullopt;
+    if (!printed(setup::interpretJob(run.job, request, moves))) return std::nullopt;
     figures.moves = moves.count;
     figures.cycleTimeS = moves.cycleTimeS;
     if (barProblem) warn(run, *barProblem);  // after the program's warnings, as when it ran first

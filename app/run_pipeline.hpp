@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "app/commands.hpp"
-#include "job/job.hpp"
+#include "setup/job.hpp"
 #include "app/progress.hpp"
 #include "app/report.hpp"
 #include "app/report_html.hpp"
@@ -42,7 +42,7 @@ class Stopwatch {
 };
 
 struct SimulatedRun {
-  job::Job job;
+  setup::Job job;
   std::unique_ptr<sim::Stock> stock;  // after a part-off, the stub left in the chuck
   std::unique_ptr<Progress> progress;
   RunFigures figures;  // parse and simulate filled; mesh and render by the later steps
@@ -71,8 +71,8 @@ struct SimulatedRun {
   const sim::Stock& partStock() const { return partedOff() ? *figures.simulation.part : *stock; }
 };
 
-sim::ToolOutlines outlinesOf(const job::Setup& setup);
-sim::ToolThicknesses thicknessesOf(const job::Setup& setup);
+sim::ToolOutlines outlinesOf(const setup::Setup& setup);
+sim::ToolThicknesses thicknessesOf(const setup::Setup& setup);
 
 /// Reads the setup and program, checks the grid and simulates (progress on a terminal);
 /// records the cut into `out` when options.animation asks and `out` is given. The moves are

@@ -119,7 +119,7 @@ sim::CutObserver StepRecording::observer() {
 
 void StepRecording::finish(const sim::Stock& stock) { take(stock, moves_, true); }
 
-Json StepRecording::json(const sim::BlockRows& rows, const job::Setup& setup, const RZ& start) const {
+Json StepRecording::json(const sim::BlockRows& rows, const setup::Setup& setup, const RZ& start) const {
   if (leftOut_) return nullptr;
   // The sections some step shows (the last taken at or before its end; a block of several
   // groups had one taken before each), the bar's first; each as its change from the one before.

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "interp/base/move_sink.hpp"
-#include "job/setup.hpp"
+#include "setup/setup.hpp"
 #include "sim/block_rows.hpp"
 #include "sim/simulate.hpp"
 
@@ -49,7 +49,7 @@ class StepRecording final : public interp::MoveSink {
   double secondsSpent() const { return secondsSpent_; }
 
   /// report.html's "steps" data (see writeReportHtml), or null when the program has too many blocks.
-  nlohmann::ordered_json json(const sim::BlockRows& rows, const job::Setup& setup, const RZ& start) const;
+  nlohmann::ordered_json json(const sim::BlockRows& rows, const setup::Setup& setup, const RZ& start) const;
 
  private:
   using Polylines = std::vector<std::vector<std::array<long, 2>>>;  // (r, z) in µm

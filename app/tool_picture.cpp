@@ -8,9 +8,9 @@
 
 namespace lathesim::app {
 
-DrawnToolSizes drawnToolSizes(const job::ToolDefinition& tool) {
+DrawnToolSizes drawnToolSizes(const setup::ToolDefinition& tool) {
   DrawnToolSizes sizes;
-  const job::ToolFacts& facts = tool.facts;
+  const setup::ToolFacts& facts = tool.facts;
   sizes.holderHeightMm = facts.shankHeightMm.value_or(kDefaultShankHeightMm);
   sizes.insertThicknessMm = tool.thicknessMm.value_or(sim::kDefaultInsertThicknessMm);
   sizes.from = facts.shankHeightMm ? "the holder " + facts.holder + "'s shank height"
@@ -20,12 +20,12 @@ DrawnToolSizes drawnToolSizes(const job::ToolDefinition& tool) {
   return sizes;
 }
 
-render::ToolPicture toolPicture(const job::Setup& setup, int number, const RZ& position) {
+render::ToolPicture toolPicture(const setup::Setup& setup, int number, const RZ& position) {
   render::ToolPicture picture;
   picture.position = position;
   const auto tool = std::find_if(setup.tools.begin(), setup.tools.end(),
-                                 [number](const job::ToolDefinition& t) { return t.number == number; });
-  const job::ToolDefinition* mounted = tool != setup.tools.end() ? &*tool : setup.tools.empty() ? nullptr : &setup.tools.front();
+                                 [number](const setup::ToolDefinition& t) { return t.number == number; });
+  const setup::ToolDefinition* mounted = tool != setup.tools.end() ? &*tool : setup.tools.empty() ? nullptr : &setup.tools.front();
   if (mounted == nullptr) return picture;
   picture.insert = mounted->outline.vertices();
   if (mounted->holderBody) picture.holder = mounted->holderBody->vertices();
@@ -35,7 +35,7 @@ render::ToolPicture toolPicture(const job::Setup& setup, int number, const RZ& p
   return picture;
 }
 
-render::ToolPicture toolPictureAtEnd(const job::Setup& setup, const interp::Toolpath& toolpath) {
+render::ToolPicture toolPictureAtEnd(const setup::Setup& setup, const interp::Toolpath& toolpath) {
   // The first tool is mounted at start; interp checks every T word against the setup.
   if (toolpath.moves.empty()) return toolPicture(setup, 0, toolpath.startPosition);
   return toolPicture(setup, toolpath.moves.back().tool, toolpath.moves.back().to);

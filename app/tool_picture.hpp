@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "job/setup.hpp"
+#include "setup/setup.hpp"
 #include "interp/base/move.hpp"
 #include "render/part_image.hpp"
 
@@ -19,11 +19,11 @@ struct DrawnToolSizes {
 /// A named holder's shank height, else kDefaultShankHeightMm; the insert's thickness (the
 /// tool's thickness key or an ISO insert's own), else sim's default insert thickness.
 inline constexpr double kDefaultShankHeightMm = 25.0;  // a 2525 shank, the commonest on small lathes
-DrawnToolSizes drawnToolSizes(const job::ToolDefinition& tool);
+DrawnToolSizes drawnToolSizes(const setup::ToolDefinition& tool);
 
 /// Tool `number` standing at `position` (the first tool if the setup lacks it), at its size.
-render::ToolPicture toolPicture(const job::Setup& setup, int number, const RZ& position);
+render::ToolPicture toolPicture(const setup::Setup& setup, int number, const RZ& position);
 
-render::ToolPicture toolPictureAtEnd(const job::Setup& setup, const interp::Toolpath& toolpath);
+render::ToolPicture toolPictureAtEnd(const setup::Setup& setup, const interp::Toolpath& toolpath);
 
 }  // namespace lathesim::app

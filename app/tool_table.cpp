@@ -35,7 +35,7 @@ using Json = nlohmann::ordered_json;
 
 Json optionalMm(const std::optional<double>& value) { return value ? Json(*value) : Json(nullptr); }
 
-Json offsetJson(const job::Setup& setup, const UsedToolOffset& u) {
+Json offsetJson(const setup::Setup& setup, const UsedToolOffset& u) {
   Json entry{{"offset", u.offset}, {"t_word", fmt::format("T{:02d}{:02d}", u.tool, u.offset)},
              {"first_line", u.firstLine}, {"moves", u.moves}};
   const auto defined = setup.offsets.find(u.offset);
@@ -60,11 +60,11 @@ Json offsetJson(const job::Setup& setup, const UsedToolOffset& u) {
   return entry;
 }
 
-Json toolJson(const job::Setup& setup, const job::ToolDefinition* tool, int number,
+Json toolJson(const setup::Setup& setup, const setup::ToolDefinition* tool, int number,
               const std::vector<UsedToolOffset>& used) {
   Json entry{{"number", number}};
   if (tool) {
-    const job::ToolFacts& f = tool->facts;
+    const setup::ToolFacts& f = tool->facts;
     entry["kind"] = f.kind;
     entry["insert"] = f.insert.empty() ? Json(nullptr) : Json(f.insert);
     entry["insert_shape"] = f.insertShape.empty() ? Json(nullptr) : Json(f.insertShape);
@@ -94,13 +94,13 @@ Json toolJson(const job::Setup& setup, const job::ToolDefinition* tool, int numb
 
 }  // namespace
 
-nlohmann::ordered_json toolTableJson(const job::Setup& setup, const std::vector<UsedToolOffset>& used) {
+nlohmann::ordered_json toolTableJson(const setup::Setup& setup, const std::vector<UsedToolOffset>& used) {
   Json table = Json::array();
-  for (const job::ToolDefinition& tool : setup.tools) table.push_back(toolJson(setup, &tool, tool.number, used));
+  for (const setup::ToolDefinition& tool : setup.tools) table.push_back(toolJson(setup, &tool, tool.number, used));
   std::vector<int> undeclared;
   for (const UsedToolOffset& u : used) {
     const bool declared = std::any_of(setup.tools.begin(), setup.tools.end(),
-                                      [&](const job::ToolDefinition& t) { return t.number == u.tool; });
+                                      [&](const setup::ToolDefinition& t) { return t.number == u.tool; });
     if (!declared && std::find(undeclared.begin(), undeclared.end(), u.tool) == undeclared.end())
       undeclared.push_back(u.tool);
   }
@@ -108,7 +108,7 @@ nlohmann::ordered_json toolTableJson(const job::Setup& setup, const std::vector<
   return table;
 }
 
-nlohmann::ordered_json stockJson(const job::Setup& setup) {
+nlohmann::ordered_json stockJson(const setup::Setup& setup) {
   const sim::StockSpec& s = setup.stock;
   const std::string from = setup.stockBy.empty() ? "assumed: the default setup's bar (no setup, --stock or program states one)"
                                                  : setup.stockBy;

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "interp/base/move.hpp"
-#include "job/setup.hpp"
+#include "setup/setup.hpp"
 
 namespace lathesim::app {
 
@@ -40,10 +40,10 @@ class ToolUsage {
 /// report.json's "tools": one entry a tool the setup (or a comment) declares, in its order,
 /// then any tool the run used that none declares; each with its facts, source and the offsets
 /// the run used it with (the setup's [[offset]] values and the shifts the moves had).
-nlohmann::ordered_json toolTableJson(const job::Setup& setup, const std::vector<UsedToolOffset>& used);
+nlohmann::ordered_json toolTableJson(const setup::Setup& setup, const std::vector<UsedToolOffset>& used);
 
 /// report.json's "stock": the bar's diameter, length, bore, face Z and material, and who stated
 /// each ("from": the setup, --stock, the program, or "assumed").
-nlohmann::ordered_json stockJson(const job::Setup& setup);
+nlohmann::ordered_json stockJson(const setup::Setup& setup);
 
 }  // namespace lathesim::app

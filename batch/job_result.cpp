@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "batch/number_text.hpp"
-#include "job/exit_status.hpp"
+#include "setup/exit_status.hpp"
 
 namespace lathesim::batch {
 namespace {
@@ -137,9 +137,9 @@ JobResult resultOf(const BatchJob& job, const std::string& folder, const ChildOu
   const int code = outcome.exitCode.value_or(-1);
   if (code == 0 && report) {
     result.status = JobStatus::Ok;
-  } else if (code == job::kExitOutOfTolerance && result.check && !result.check->withinTolerance) {
+  } else if (code == setup::kExitOutOfTolerance && result.check && !result.check->withinTolerance) {
     result.status = JobStatus::OutOfTolerance;
-  } else if (code == job::kExitCrash && report && !result.collisions.empty()) {
+  } else if (code == setup::kExitCrash && report && !result.collisions.empty()) {
     result.status = JobStatus::Collision;
     if (auto error = firstError(logText)) result.message = error;
   } else {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "interp/text/stated_stock.hpp"
-#include "job/setup.hpp"
-#include "job/stock_option.hpp"
+#include "setup/setup.hpp"
+#include "setup/stock_option.hpp"
 #include "sim/stock.hpp"
 
 namespace lathesim::batch {
@@ -24,12 +24,12 @@ std::optional<long long> environmentNumber(const char* name) {
   return value;
 }
 
-/// The bar the job will simulate, chosen as job::loadJob chooses it: --stock, else the
+/// The bar the job will simulate, chosen as setup::loadJob chooses it: --stock, else the
 /// setup's [stock], else the bar the program states, else the setup's default; nullopt if
 /// the setup or --stock cannot be read (the job will stop at once on them).
-std::optional<sim::StockSpec> barOf(const BatchJob& job, const job::Setup& setup) {
+std::optional<sim::StockSpec> barOf(const BatchJob& job, const setup::Setup& setup) {
   if (const auto stock = optionValues(job.settings.options, "--stock"); !stock.empty()) {
-    const auto bar = job::parseStockOption(stock.back());
+    const auto bar = setup::parseStockOption(stock.back());
     if (const auto* spec = std::get_if<sim::StockSpec>(&bar)) return *spec;
     return std::nullopt;
   }
@@ -44,11 +44,11 @@ std::optional<sim::StockSpec> barOf(const BatchJob& job, const job::Setup& setup
 }  // namespace
 
 std::uint64_t estimatedJobBytes(const BatchJob& job) {
-  std::optional<job::Setup> setup = job::defaultSetup();
-  if (job.settings.setup) setup = job::loadSetup(*job.settings.setup).setup;
+  std::optional<setup::Setup> setup = setup::defaultSetup();
+  if (job.settings.setup) setup = setup::loadSetup(*job.settings.setup).setup;
   if (!setup) return kProcessBaseBytes;
   const std::optional<sim::StockSpec> bar = barOf(job, *setup);
-  const double voxelMm = job.settings.voxelMm.value_or(setup->voxelMm.value_or(job::kDefaultVoxelMm));
+  const double voxelMm = job.settings.voxelMm.value_or(setup->voxelMm.value_or(setup::kDefaultVoxelMm));
   if (!bar || !(voxelMm > 0)) return kProcessBaseBytes;
   return kProcessBaseBytes + sim::estimatedStockBytes(*bar, voxelMm);
 }

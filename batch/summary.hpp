@@ -12,17 +12,17 @@
 
 #include "batch/job_result.hpp"
 #include "batch/shard.hpp"
-#include "job/exit_status.hpp"
+#include "setup/exit_status.hpp"
 
 namespace lathesim::batch {
 
 // The batch's exit status: every job passed; some failed (or timed out, crashed, did not
 // run) — this wins over —; some programs collided (kExitCrash) — which wins over —; some parts
 // were out of tolerance.
-inline constexpr int kExitAllPassed = job::kExitOk;
-inline constexpr int kExitSomeFailed = job::kExitBadInput;
-using job::kExitOutOfTolerance;
-using job::kExitCrash;
+inline constexpr int kExitAllPassed = setup::kExitOk;
+inline constexpr int kExitSomeFailed = setup::kExitBadInput;
+using setup::kExitOutOfTolerance;
+using setup::kExitCrash;
 
 struct BatchSummary {
   std::string version;  // lathesim's version and build ID

@@ -1,6 +1,7 @@
 #include "interp/interpreter.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <optional>
 #include <utility>
 
@@ -55,12 +56,21 @@ InterpretResult interpret(PagedText programText, const std::string& fileName,
 
 InterpretResult interpret(PagedText programText, const std::string& fileName,
                           const InterpreterOptions& options, MoveSink& moves) {
+  return interpret(readProgram(programText, options.control.blockSkip, options.dialect, options.control.machineMCodes),
+                   fileName, options, moves);
+}
+
+InterpretResult interpret(Program&& program, const std::string& fileName, const InterpreterOptions& options,
+                          MoveSink& moves) {
+  assert(program.sources.front().blockDelete == options.control.blockSkip &&
+         program.sources.front().dialect == options.dialect &&
+         program.sources.front().machine == options.control.machineMCodes);
+  const PagedText programText = program.sources.front().text;  // a copy: sources grows as M98 reads files
   InterpretResult result;
   result.toolpath.programName = fileName;
   result.toolpath.startPosition = options.startPosition;
   std::vector<Error> warnings;
   std::vector<Error> notes;
-  Program program = readProgram(programText, options.control.blockSkip, options.dialect, options.control.machineMCodes);
   for (const ReadNote& note : program.notes) (note.warning ? warnings : notes).push_back({note.line, note.column, note.message});
   Status status = refuseForeignProgram(programText, options);
   if (status.ok()) status = refuseEmptyProgram(program, programText.view());

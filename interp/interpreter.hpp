@@ -13,6 +13,8 @@
 
 namespace lathesim::interp {
 
+class Program;
+
 struct InterpretResult {
   Toolpath toolpath;
   std::vector<SkippedBlock> skippedBlocks;  // every '/' block the run reached and skipped, once each
@@ -32,5 +34,11 @@ InterpretResult interpret(PagedText programText, const std::string& fileName,
 /// their blocks made them (what `interpret` without a sink gives after those handed on).
 InterpretResult interpret(PagedText programText, const std::string& fileName,
                           const InterpreterOptions& options, MoveSink& moves);
+
+/// The same for `program`, its text already read through by readProgram (text/program.hpp) with
+/// the options' block skip, dialect and machine M codes, so that a caller that read it for a
+/// purpose of its own (the tools named in comments) does not have it read again.
+InterpretResult interpret(Program&& program, const std::string& fileName, const InterpreterOptions& options,
+                          MoveSink& moves);
 
 }  // namespace lathesim::interp

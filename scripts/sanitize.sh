@@ -46,7 +46,7 @@ if [[ $scope == all ]]; then
   exec ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --timeout 900
 fi
 
-cmake --build "$build" --parallel "$jobs" --target geometry_tests interp_tests job_tests measure_tests sim_table_tests command_tests lathesim
+cmake --build "$build" --parallel "$jobs" --target geometry_tests interp_tests setup_tests measure_tests sim_table_tests command_tests lathesim
 status=0
 for suite in geometry interp job measure; do
   echo "sanitize: ${suite}_tests"

@@ -17,7 +17,7 @@
 #include "app/watch/loopback_server.hpp"
 #include "app/watch/watch_page.hpp"
 #include "batch/html_text.hpp"
-#include "job/exit_status.hpp"
+#include "setup/exit_status.hpp"
 
 namespace lathesim::app {
 namespace {
@@ -135,7 +135,7 @@ int exitStatusOf(int waited) {
 }
 
 bool wroteOutputs(int status) {
-  return status == job::kExitOk || status == job::kExitOutOfTolerance || status == job::kExitCrash;
+  return status == setup::kExitOk || status == setup::kExitOutOfTolerance || status == setup::kExitCrash;
 }
 
 class Watcher {
@@ -163,12 +163,12 @@ class Watcher {
       }
       pollfd ready[4] = {{signalPipe[0], POLLIN, 0}, {server_.fd(), POLLIN, 0}, {files_.fd(), POLLIN, 0},
                          {run_ ? run_->diagnostics : -1, POLLIN, 0}};
-      if (::poll(ready, 4, pendingSince_ ? 50 : -1) < 0 && errno != EINTR) return job::kExitBadInput;
+      if (::poll(ready, 4, pendingSince_ ? 50 : -1) < 0 && errno != EINTR) return setup::kExitBadInput;
       if (ready[0].revents) return stop();
       if (ready[2].revents && files_.changed()) pendingSince_ = Clock::now();
       if (ready[3].revents && !readDiagnostics()) {
         const int status = finishRun();
-        if (status == job::kExitBadCommandLine && state_.generation == 1) return status;  // no save cures it
+        if (status == setup::kExitBadCommandLine && state_.generation == 1) return status;  // no save cures it
       }
       if (ready[1].revents) server_.serveOne([this](const std::string& path) { return respond(path); });
     }

@@ -140,7 +140,7 @@ std::optional<ForeignProgram> foreignSignOf(const std::string& line, int lineNum
 std::optional<ForeignProgram> recogniseForeignProgram(PagedText paged) {
   std::optional<ForeignProgram> found;
   bool first = true;
-  forEachCodeLine(paged, [&](int lineNumber, const std::string& line) {
+  forEachCodeLine(paged, [&](int lineNumber, const std::string& line, std::string_view) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) return true;
     found = foreignSignOf(line, lineNumber, first);
     first = false;

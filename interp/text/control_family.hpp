@@ -30,9 +30,9 @@ struct ForeignProgram {
 std::optional<ForeignProgram> recogniseForeignProgram(PagedText text);
 
 /// The program's lines in order, each with its ( ) comments blanked out (columns stay where
-/// they were) and cut to kRegexTextChars: the one line walk that the foreign families' signs
-/// and the machine's evidence (machine_evidence.hpp) share. `read(lineNumber, line)` returns
-/// false to stop.
+/// they were) and cut to kRegexTextChars: the one line walk that the foreign families' signs,
+/// the machine's evidence and the stated bar (machine_evidence.hpp) share. `read(lineNumber,
+/// line, written)`, `written` the line as written (without its '\n'), returns false to stop.
 template <class Read>
 void forEachCodeLine(PagedText text, Read&& read);
 
@@ -57,7 +57,7 @@ void forEachCodeLine(PagedText paged, Read&& read) {
     std::size_t end = text.find('\n', begin);
     if (end == std::string_view::npos) end = text.size();
     detail::codeLineInto(line, text, begin, end);
-    if (!read(++lineNumber, std::as_const(line))) return;
+    if (!read(++lineNumber, std::as_const(line), text.substr(begin, end - begin))) return;
     if (end == text.size()) return;
     begin = end + 1;
   }

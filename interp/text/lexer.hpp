@@ -22,7 +22,7 @@
 //     A word followed by prose (`; M08 coolant on`) is not a comment: it is an error at the
 //     first letter that is not a word.
 //   - A line that opens with '[' is a school trainer's directive (`[BILLET X56.4 Z84`), not a
-//     block: skipped with a note (job/ reads the billet as the bar); a Macro B block never
+//     block: skipped with a note (setup/ reads the billet as the bar); a Macro B block never
 //     opens with '['.
 //   - A '%' line before the first block opens the program; one after it closes it: the text
 //     ends there (what follows is not run, and the interpreter says so).

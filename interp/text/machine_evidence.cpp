@@ -257,7 +257,8 @@ MachineEvidence readMachineEvidence(PagedText text) {
   MachineEvidence evidence;
   EvidenceReader reader(evidence);
   bool first = true;
-  forEachCodeLine(text, [&](int line, const std::string& code) {
+  forEachCodeLine(text, [&](int line, const std::string& code, std::string_view written) {
+    if (!evidence.stock) evidence.stock = stockStatedOn(written, line);  // a comment line may state it
     if (code.find_first_not_of(" \t\r") == std::string::npos) return true;
     if (!evidence.foreign) evidence.foreign = foreignSignOf(code, line, first);
     first = false;

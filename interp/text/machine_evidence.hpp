@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "interp/text/control_family.hpp"
+#include "interp/text/stated_stock.hpp"
 #include "interp/base/paged_text.hpp"
 
 namespace lathesim::interp {
@@ -70,11 +71,15 @@ struct MachineEvidence {
   double largestBareLength = 0;
   bool metricStated = false;  // G21 seen
 
+  // Not of the machine but found in the same walk of the lines, so that the text is read once:
+  // the bar the program states for itself (stated_stock.hpp), the first statement.
+  std::optional<StatedStock> stock;
+
   const std::vector<EvidenceMark>& of(EvidenceKind kind) const { return marks[static_cast<std::size_t>(kind)]; }
   std::size_t count(EvidenceKind kind) const { return counts[static_cast<std::size_t>(kind)]; }
 };
 
-/// The evidence of `text`, read once, line by line.
+/// The evidence of `text` (and the bar it states), read once, line by line.
 MachineEvidence readMachineEvidence(PagedText text);
 
 /// The length words without a decimal point in `line` (a line of program text), in order.

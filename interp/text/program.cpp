@@ -52,8 +52,9 @@ Result<SortedContent> contentOf(const std::vector<Token>& tokens, const RawBlock
 
 // What a read needs of a block: all it says; what reading a source through needs (its labels,
 // its machine M codes, whether it is a DO or END: the words of a block without an M are not
-// sorted); or its N and O numbers alone (a search for a label).
-enum class Reading { Whole, Survey, LabelsOnly };
+// sorted), with or without the words of the blocks with a T word and comments (a
+// ToolBlockVisitor's); or its N and O numbers alone (a search for a label).
+enum class Reading { Whole, Survey, SurveyWithTools, LabelsOnly };
 
 bool holdsLetter(const RawBlock& raw, std::string_view letters) {
   return std::any_of(raw.chars.begin(), raw.chars.end(), [&](const SourceChar& c) {
@@ -94,7 +95,10 @@ std::optional<ReadBlock> readNext(BlockReader& reader, const SourceText& text, i
     if (tokens.ok()) {
       const Status sequence = readLabel(tokens.value(), 'N', raw.line, block.sequenceNumber);
       const Status number = readLabel(tokens.value(), 'O', raw.line, block.programNumber);
-      const bool sorted = reading == Reading::Whole || macro::needsMacroReader(tokens.value()) || holdsLetter(raw, "Mm");
+      const bool toolBlock = reading == Reading::SurveyWithTools && holdsLetter(raw, "Tt") &&
+                             (!raw.comments.empty() || !raw.commentsAbove.empty());
+      const bool sorted =
+          reading == Reading::Whole || toolBlock || macro::needsMacroReader(tokens.value()) || holdsLetter(raw, "Mm");
       if (reading != Reading::LabelsOnly && sorted) {
         content = !sequence.ok() ? Result<SortedContent>(sequence.error())
                   : !number.ok() ? Result<SortedContent>(number.error())
@@ -310,7 +314,7 @@ Program::Held Program::held() const {
   return held;
 }
 
-std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFor) {
+std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFor, const ToolBlockVisitor& toolBlocks) {
   SourceText& text = sources[static_cast<std::size_t>(source)];
   const int first = source == 0 ? 0 : sources[static_cast<std::size_t>(source) - 1].firstOrdinal +
                                            sources[static_cast<std::size_t>(source) - 1].blockCount;
@@ -321,8 +325,12 @@ std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFo
   int ordinal = first;
   int lastCheckpoint = first;  // the source's start serves as one
   std::vector<ReadNote> machineNotes;  // each machine M code, where it first appears
-  while (std::optional<ReadBlock> read = readNext(reader, text, source, ordinal, program, Reading::Survey)) {
+  const Reading reading = toolBlocks ? Reading::SurveyWithTools : Reading::Survey;
+  while (std::optional<ReadBlock> read = readNext(reader, text, source, ordinal, program, reading)) {
     const ProgramBlock& block = read->block;
+    if (toolBlocks && read->words && read->words->has('T') &&
+        (!read->comments.own.empty() || !read->comments.above.empty()))
+      toolBlocks(*read);
     if (read->words) {
       for (const Code& code : read->words->machineCodes) {
         if (!notedMachineCodes.insert(code.number).second) continue;
@@ -387,9 +395,14 @@ std::vector<ReadNote> Program::readThrough(int source, std::optional<int> readFo
 }
 
 Program readProgram(PagedText text, bool blockDelete, Dialect dialect, MachineMCodes machine) {
+  return readProgram(text, blockDelete, dialect, machine, {});
+}
+
+Program readProgram(PagedText text, bool blockDelete, Dialect dialect, MachineMCodes machine,
+                    const ToolBlockVisitor& toolBlocks) {
   Program program;
   program.sources.push_back({"", text, nullptr, blockDelete, dialect, machine});
-  program.readThrough(0);
+  program.readThrough(0, std::nullopt, toolBlocks);
   return program;
 }
 

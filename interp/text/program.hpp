@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -126,6 +127,11 @@ struct ReadBlock {
   bool endsText = false;             // a comment left open: nothing after it is read
 };
 
+/// Told of each block of plain words that holds a T word and has comments (its own or comment
+/// lines directly above it), in order, as the program's own text is read through (readProgram):
+/// what a reader of the tools named in comments needs, without a pass of its own.
+using ToolBlockVisitor = std::function<void(const ReadBlock&)>;
+
 /// How many blocks of one program an N number labels, and the first two of them.
 struct SequenceBlocks {
   std::size_t count = 0;
@@ -179,9 +185,11 @@ class Program {
   Held held() const;
 
   /// Reads source `source`, the last of `sources`, through once (readProgram and
-  /// appendProgramFile call it; `readFor`: the program number a file was read for); returns
-  /// the notes of the machine M codes it names first.
-  std::vector<ReadNote> readThrough(int source, std::optional<int> readFor = std::nullopt);
+  /// appendProgramFile call it; `readFor`: the program number a file was read for; `toolBlocks`,
+  /// when set, told of its blocks with a T word and comments); returns the notes of the
+  /// machine M codes it names first.
+  std::vector<ReadNote> readThrough(int source, std::optional<int> readFor = std::nullopt,
+                                    const ToolBlockVisitor& toolBlocks = {});
 
  private:
   // A reader of one source, about to read block `next`.
@@ -224,6 +232,9 @@ class Program {
 /// as the Program.
 Program readProgram(PagedText text, bool blockDelete, Dialect dialect,
                     MachineMCodes machine = MachineMCodes::Gsk980tdi);
+/// The same, telling `toolBlocks` of the blocks with a T word and comments as it reads through.
+Program readProgram(PagedText text, bool blockDelete, Dialect dialect, MachineMCodes machine,
+                    const ToolBlockVisitor& toolBlocks);
 /// A temporary string would be gone before the Program reads it again.
 template <class Text>
   requires std::is_same_v<Text, std::string>

@@ -22,6 +22,11 @@ struct StatedStock {
   std::string text;  // the statement as written
 };
 
+/// The first statement in the text.
 std::optional<StatedStock> stockStatedIn(PagedText programText);
+
+/// The statement on line `lineNumber`, `line` as written (without its '\n'), if it makes one:
+/// for a walk of the lines that reads them for more than this (machine_evidence.hpp).
+std::optional<StatedStock> stockStatedOn(std::string_view line, int lineNumber);
 
 }  // namespace lathesim::interp

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "app/part_pictures.hpp"
-#include "job/job.hpp"
+#include "setup/job.hpp"
 #include "render/part_image.hpp"
 #include "tests/render/png_pixels.hpp"
 #include "tests/support/lathesim_process.hpp"
@@ -142,10 +142,10 @@ constexpr int kWidthPx = 800, kHeightPx = 600;
 
 /// The pixel of the crash point in the picture of `view` the run draws.
 Eigen::Vector2i crashPixel(const fs::path& nc, render::PartView view) {
-  job::JobRequest request;
+  setup::JobRequest request;
   request.program = nc;
   request.setup = kSetup;
-  const std::optional<job::Job> loaded = job::loadJob(request).value;
+  const std::optional<setup::Job> loaded = setup::loadJob(request).value;
   EXPECT_TRUE(loaded);
   if (!loaded) return {0, 0};
   render::PartImageOptions options = partPictureOptions(loaded->setup, loaded->toolpath, "", kWidthPx, kHeightPx);

@@ -13,9 +13,9 @@
 
 #include "app/collision_diagnostics.hpp"
 #include "app/part_pictures.hpp"
-#include "job/collision_checks.hpp"
+#include "setup/collision_checks.hpp"
 #include "interp/motion/cycle_time.hpp"
-#include "job/job.hpp"
+#include "setup/job.hpp"
 #include "render/drawn_toolpath.hpp"
 #include "render/part_image.hpp"
 #include "sim/simulate.hpp"
@@ -51,17 +51,17 @@ TEST(PartPictureLabels, NoLabelOverprintsAnotherOrADimensionInAnyBundledPart) {
   int pictures = 0;
   for (const fs::path& dir : partDirectories()) {
     SCOPED_TRACE(dir.filename().string());
-    job::JobRequest request;
+    setup::JobRequest request;
     request.program = dir / "program.nc";
     if (fs::exists(dir / "setup.toml")) request.setup = dir / "setup.toml";
-    auto loaded = job::loadJob(request);
+    auto loaded = setup::loadJob(request);
     if (!loaded.value) continue;  // a part whose program alarms draws no picture
-    const job::Job& job = *loaded.value;
-    const double voxel = job.setup.voxelMm.value_or(job::kDefaultVoxelMm);
+    const setup::Job& job = *loaded.value;
+    const double voxel = job.setup.voxelMm.value_or(setup::kDefaultVoxelMm);
     sim::Stock stock(job.setup.stock, voxel);
     sim::ToolOutlines outlines;
     for (const auto& tool : job.setup.tools) outlines.emplace(tool.number, tool.outline);
-    const sim::CollisionChecks checks = job::collisionChecksOf(job.setup);
+    const sim::CollisionChecks checks = setup::collisionChecksOf(job.setup);
     const sim::SimulationResult result = sim::simulate(job.toolpath, outlines, stock, {{}, &checks, {}, {}});
     const sim::Stock& part = result.part ? *result.part : stock;
     render::DrawnToolpath drawn(drawnToleranceMm(job.setup, kWidthPx, kHeightPx));

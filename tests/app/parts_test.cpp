@@ -22,9 +22,9 @@
 #include <toml++/toml.h>
 #include <vector>
 
-#include "job/collision_checks.hpp"
-#include "job/job.hpp"
-#include "job/setup.hpp"
+#include "setup/collision_checks.hpp"
+#include "setup/job.hpp"
+#include "setup/setup.hpp"
 #include "interp/motion/cycle_time.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/output/toolpath_csv.hpp"
@@ -105,17 +105,17 @@ Expected readExpected(const std::string& part) {
   return expected;
 }
 
-job::Setup loadPartSetup(const std::string& part) {
-  const job::SetupResult loaded = job::loadSetup(kPartsDir / part / "setup.toml");
+setup::Setup loadPartSetup(const std::string& part) {
+  const setup::SetupResult loaded = setup::loadSetup(kPartsDir / part / "setup.toml");
   if (!loaded.setup) throw std::runtime_error(part + "/setup.toml does not load");
   return *loaded.setup;
 }
 
 /// Interprets the part's program as loadJob does, naming the file "program.nc", and times
 /// its moves.
-interp::InterpretResult interpretPart(const std::string& part, const job::Setup& setup) {
+interp::InterpretResult interpretPart(const std::string& part, const setup::Setup& setup) {
   interp::InterpretResult result =
-      interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", job::interpreterOptionsOf(setup));
+      interp::interpret(readFile(kPartsDir / part / "program.nc"), "program.nc", setup::interpreterOptionsOf(setup));
   if (result.ok()) (void)interp::assignMoveTimes(result.toolpath, setup.machine);
   return result;
 }
@@ -123,7 +123,7 @@ interp::InterpretResult interpretPart(const std::string& part, const job::Setup&
 /// How far a cycle time may stray from the hand-worked one: 0.5 %.
 constexpr double kCycleTimeTolerance = 0.005;
 
-sim::ToolOutlines outlinesOf(const job::Setup& setup) {
+sim::ToolOutlines outlinesOf(const setup::Setup& setup) {
   sim::ToolOutlines tools;
   for (const auto& tool : setup.tools) tools.emplace(tool.number, tool.outline);
   return tools;
@@ -138,11 +138,11 @@ struct Simulated {
   sim::SimulationResult result;
 };
 
-Simulated simulatePart(const job::Setup& setup, const interp::Toolpath& toolpath, double voxelMm) {
+Simulated simulatePart(const setup::Setup& setup, const interp::Toolpath& toolpath, double voxelMm) {
   sim::Stock stock(setup.stock, voxelMm);
   Simulated out;
   out.stockVolumeMm3 = stock.volumeMm3();
-  const sim::CollisionChecks checks = job::collisionChecksOf(setup);  // holders and the chuck too
+  const sim::CollisionChecks checks = setup::collisionChecksOf(setup);  // holders and the chuck too
   out.result = sim::simulate(toolpath, outlinesOf(setup), stock, {{}, &checks, {}, {}});
   out.stubVolumeMm3 = out.finalVolumeMm3 = stock.volumeMm3();
   for (const auto& off : out.result.partOffs) out.finalVolumeMm3 += off.volumeMm3;
@@ -153,7 +153,7 @@ class Part : public testing::TestWithParam<std::string> {};
 
 TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
   const std::string part = GetParam();
-  const job::Setup setup = loadPartSetup(part);
+  const setup::Setup setup = loadPartSetup(part);
   const Expected expected = readExpected(part);
   const interp::InterpretResult result = interpretPart(part, setup);
 
@@ -221,10 +221,10 @@ TEST_P(Part, GivesItsExpectedDiagnosticOrToolpathAndVolume) {
 // same CSV as the job that collects them.
 TEST_P(Part, StreamsTheSameToolpathAsItHolds) {
   const std::string part = GetParam();
-  const job::Setup setup = loadPartSetup(part);
+  const setup::Setup setup = loadPartSetup(part);
   const std::string text = readFile(kPartsDir / part / "program.nc");
   const auto interpretIn = [&](std::size_t window) {
-    interp::InterpreterOptions options = job::interpreterOptionsOf(setup);
+    interp::InterpreterOptions options = setup::interpreterOptionsOf(setup);
     options.moveWindow = window;
     interp::InterpretResult result = interp::interpret(text, "program.nc", options);
     if (result.ok()) (void)interp::assignMoveTimes(result.toolpath, setup.machine);
@@ -249,13 +249,13 @@ TEST_P(Part, StreamsTheSameToolpathAsItHolds) {
       EXPECT_EQ(pieces.toolpath.partsCatcher[i].movesBefore, whole.toolpath.partsCatcher[i].movesBefore);
   }
 
-  const job::JobRequest request{kPartsDir / part / "program.nc", kPartsDir / part / "setup.toml", {}, {}, {}};
-  const job::Reported<std::optional<job::Job>> heldJob = job::loadJob(request);
+  const setup::JobRequest request{kPartsDir / part / "program.nc", kPartsDir / part / "setup.toml", {}, {}, {}};
+  const setup::Reported<std::optional<setup::Job>> heldJob = setup::loadJob(request);
   std::vector<interp::Move> streamedMoves;
   interp::MoveCollector sink(streamedMoves);
-  const job::Reported<std::optional<job::Job>> streamedJob = job::loadJob(request, sink);
-  const std::optional<job::Job>& held = heldJob.value;
-  const std::optional<job::Job>& streamed = streamedJob.value;
+  const setup::Reported<std::optional<setup::Job>> streamedJob = setup::loadJob(request, sink);
+  const std::optional<setup::Job>& held = heldJob.value;
+  const std::optional<setup::Job>& streamed = streamedJob.value;
   ASSERT_EQ(held.has_value(), streamed.has_value());
   ASSERT_EQ(heldJob.diagnostics.size(), streamedJob.diagnostics.size());
   for (std::size_t i = 0; i < heldJob.diagnostics.size(); ++i)
@@ -289,12 +289,12 @@ TEST(Parts, Seed001TapersDifferByMoreThanTheTolerance) {
   constexpr double kVoxelMm = 0.5;
   std::map<std::string, double> simulatedMm3;
   for (const std::string part : {"seed001-taper-r20", "seed001-taper-r24"}) {
-    const job::Setup setup = loadPartSetup(part);
+    const setup::Setup setup = loadPartSetup(part);
     const interp::InterpretResult result = interpretPart(part, setup);
     ASSERT_TRUE(result.ok()) << part;
     simulatedMm3[part] = simulatePart(setup, result.toolpath, kVoxelMm).finalVolumeMm3;
   }
-  const job::Setup setup = loadPartSetup("seed001-taper-r24");
+  const setup::Setup setup = loadPartSetup("seed001-taper-r24");
   const double tolerance = volumeToleranceMm3(setup.stock, kVoxelMm);
   const double expectedDifference = readExpected("seed001-taper-r20").finalVolumeMm3 -
                                     readExpected("seed001-taper-r24").finalVolumeMm3;

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "job/setup.hpp"
+#include "setup/setup.hpp"
 #include "interp/interpreter.hpp"
 #include "sim/simulate.hpp"
 
@@ -11,7 +11,7 @@ namespace lathesim::app {
 namespace {
 
 sim::SimulationResult simulateProgram(std::string_view program) {
-  const job::Setup setup = job::defaultSetup();  // Φ125 × 112 bar, face at Z2
+  const setup::Setup setup = setup::defaultSetup();  // Φ125 × 112 bar, face at Z2
   interp::InterpreterOptions options;
   options.startPosition = setup.startPosition;
   options.toolNumbers = {1};

@@ -20,7 +20,7 @@
 #include <toml++/toml.h>
 
 #include "batch/child_process.hpp"
-#include "job/setup.hpp"
+#include "setup/setup.hpp"
 #include "tests/render/png_pixels.hpp"
 #include "tests/support/headless_chromium.hpp"
 #include "tests/support/lathesim_process.hpp"
@@ -72,7 +72,7 @@ PartFigures expectedOf(const std::string& partName) {
   figures.removedVolumeMm3 = table["removed_volume_mm3"].value_or(0.0);
   figures.cycleTimeS = table["cycle_time_s"].value<double>();
   figures.diagnostic = table["diagnostic"].value_or(std::string());
-  const auto setup = job::loadSetup(part(partName, "setup.toml")).setup;
+  const auto setup = setup::loadSetup(part(partName, "setup.toml")).setup;
   figures.toleranceMm3 = setup ? test::volumeToleranceMm3(setup->stock, kVoxelMm) : 0;
   return figures;
 }

@@ -6,7 +6,7 @@
 
 #include "batch/build_id.hpp"
 #include "batch/resources.hpp"
-#include "job/setup.hpp"
+#include "setup/setup.hpp"
 #include "sim/stock.hpp"
 #include "tests/support/lathesim_process.hpp"
 
@@ -46,7 +46,7 @@ TEST(EstimatedJobBytes, FromTheSetupsStockAndTheVoxel) {
   EXPECT_NEAR(ratio, 4.0, 1e-6);
   job.settings.setup.reset();  // the default setup, the default voxel
   job.settings.voxelMm.reset();
-  EXPECT_EQ(estimatedJobBytes(job), kProcessBaseBytes + sim::estimatedStockBytes(lathesim::job::defaultSetup().stock, 0.2));
+  EXPECT_EQ(estimatedJobBytes(job), kProcessBaseBytes + sim::estimatedStockBytes(lathesim::setup::defaultSetup().stock, 0.2));
   job.settings.setup = dir.path() / "missing.toml";  // fails fast: the base alone
   EXPECT_EQ(estimatedJobBytes(job), kProcessBaseBytes);
 }
@@ -77,7 +77,7 @@ TEST(EstimatedJobBytes, TheBarRunWouldSimulate) {
   job.settings.options.clear();
   job.program = dir.path() / "plain.nc";
   job.settings.setup = dir.path() / "no-stock.toml";
-  const sim::StockSpec fallback = lathesim::job::defaultSetup().stock;
+  const sim::StockSpec fallback = lathesim::setup::defaultSetup().stock;
   EXPECT_EQ(estimatedJobBytes(job), bytes(fallback.diameterMm, fallback.lengthMm, 0.25));
 }
 

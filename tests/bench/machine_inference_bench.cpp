@@ -21,7 +21,7 @@
 #include "interp/text/file_text.hpp"
 #include "interp/text/machine_evidence.hpp"
 #include "interp/output/toolpath_csv_spool.hpp"
-#include "job/job.hpp"
+#include "setup/job.hpp"
 
 namespace {
 
@@ -45,7 +45,7 @@ const std::filesystem::path& program() {
 }
 
 void expand(benchmark::State& state, bool stated) {
-  job::JobRequest request;
+  setup::JobRequest request;
   request.program = program();
   if (stated) {
     request.overrides.dialect = interp::Dialect::FanucB;
@@ -53,7 +53,7 @@ void expand(benchmark::State& state, bool stated) {
   }
   for (auto _ : state) {
     interp::ToolpathCsvSpool csv;
-    if (!job::loadJob(request, csv).value) state.SkipWithError("the program did not run");
+    if (!setup::loadJob(request, csv).value) state.SkipWithError("the program did not run");
     benchmark::DoNotOptimize(csv);
   }
 }

@@ -15,8 +15,8 @@
 #include <memory>
 #include <sstream>
 
-#include "job/job.hpp"
-#include "job/setup.hpp"
+#include "setup/job.hpp"
+#include "setup/setup.hpp"
 #include "interp/interpreter.hpp"
 #include "sim/move_sweep.hpp"
 #include "sim/simulate.hpp"
@@ -30,19 +30,19 @@ using namespace lathesim;
 const std::string kPart = std::string(LATHESIM_PARTS_DIR) + "/seed000-face-taper/";
 
 struct Seed000 {
-  job::Setup setup;
+  setup::Setup setup;
   interp::Toolpath toolpath;
   sim::ToolOutlines tools;
 };
 
 const Seed000& seed000() {
   static const Seed000 loaded = [] {
-    Seed000 s{*job::loadSetup(kPart + "setup.toml").setup, {}, {}};
+    Seed000 s{*setup::loadSetup(kPart + "setup.toml").setup, {}, {}};
     std::ifstream in(kPart + "program.nc");
     std::ostringstream text;
     text << in.rdbuf();
     for (const auto& tool : s.setup.tools) s.tools.emplace(tool.number, tool.outline);
-    s.toolpath = interp::interpret(text.str(), "program.nc", job::interpreterOptionsOf(s.setup)).toolpath;
+    s.toolpath = interp::interpret(text.str(), "program.nc", setup::interpreterOptionsOf(s.setup)).toolpath;
     return s;
   }();
   return loaded;
@@ -76,14 +76,14 @@ void BM_Simulate(benchmark::State& state) {
 // is that bar's; "relief" simulates the moves before the G76 (the relief grooved for the
 // thread's run-out), so (simulate − relief) / passes is the cost of one thread pass.
 struct Part {
-  job::Setup setup;
+  setup::Setup setup;
   interp::Toolpath toolpath;
   sim::ToolOutlines tools;
 };
 
 Part loadPart(const std::string& name, const std::string& programText = "") {
   const std::string dir = std::string(LATHESIM_PARTS_DIR) + "/" + name + "/";
-  Part p{*job::loadSetup(dir + "setup.toml").setup, {}, {}};
+  Part p{*setup::loadSetup(dir + "setup.toml").setup, {}, {}};
   std::string text = programText;
   if (text.empty()) {
     std::ifstream in(dir + "program.nc");
@@ -92,7 +92,7 @@ Part loadPart(const std::string& name, const std::string& programText = "") {
     text = read.str();
   }
   for (const auto& tool : p.setup.tools) p.tools.emplace(tool.number, tool.outline);
-  p.toolpath = interp::interpret(text, "program.nc", job::interpreterOptionsOf(p.setup)).toolpath;
+  p.toolpath = interp::interpret(text, "program.nc", setup::interpreterOptionsOf(p.setup)).toolpath;
   return p;
 }
 
@@ -157,9 +157,9 @@ void BM_ShortPasses(benchmark::State& state) {
 // Long programs on a Φ50 × 80 bar (the default tool): what a move costs against what it
 // changes. The floor is building that bar once.
 Part programPart(const std::string& program) {
-  Part p{*job::parseSetup("[stock]\ndiameter = 50\nlength = 80\nface_z = 0\n", "bench.toml").setup, {}, {}};
+  Part p{*setup::parseSetup("[stock]\ndiameter = 50\nlength = 80\nface_z = 0\n", "bench.toml").setup, {}, {}};
   for (const auto& tool : p.setup.tools) p.tools.emplace(tool.number, tool.outline);
-  p.toolpath = interp::interpret(program, "bench.nc", job::interpreterOptionsOf(p.setup)).toolpath;
+  p.toolpath = interp::interpret(program, "bench.nc", setup::interpreterOptionsOf(p.setup)).toolpath;
   return p;
 }
 

@@ -11,7 +11,7 @@
 #include "geometry/iso_holder.hpp"
 #include "geometry/iso_insert.hpp"
 #include "geometry/tool_shape.hpp"
-#include "job/comment_tools.hpp"
+#include "setup/comment_tools.hpp"
 #include "tests/fuzz/fuzz_input.hpp"
 
 using namespace lathesim;
@@ -27,6 +27,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto holder = parseIsoHolder(holderCode);
   if (insert.value && holder.value)
     turningTool(*insert.value, *holder.value, tip == 10 ? std::nullopt : std::optional<int>(static_cast<int>(tip)));
-  job::toolNamedIn(std::string(text), 1, 40.0);
+  setup::toolNamedIn(std::string(text), 1, 40.0);
   return 0;
 }

@@ -6,12 +6,12 @@
 #include <cstdint>
 #include <string_view>
 
-#include "job/setup.hpp"
+#include "setup/setup.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const lathesim::job::SetupResult result = lathesim::job::parseSetup(text, "setup.toml");
+  const lathesim::setup::SetupResult result = lathesim::setup::parseSetup(text, "setup.toml");
   for (const auto& d : result.diagnostics) lathesim::interp::format(d);
-  if (result.setup) lathesim::job::travelOf(*result.setup);
+  if (result.setup) lathesim::setup::travelOf(*result.setup);
   return 0;
 }

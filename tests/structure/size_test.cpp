@@ -53,7 +53,7 @@ int lineCount(const std::string& text) {
 TEST(Sizes, TheSourceWalkFindsEveryModule) {
   std::map<std::string, int> perModule;
   for (const fs::path& path : ownSources(LATHESIM_SOURCE_DIR)) ++perModule[path.begin()->string()];
-  for (const char* module : {"geometry", "interp", "sim", "render", "job", "measure", "batch", "app", "tests"})
+  for (const char* module : {"geometry", "interp", "sim", "render", "setup", "measure", "batch", "app", "tests"})
     EXPECT_GT(perModule[module], 0) << module;
   EXPECT_EQ(perModule.count("build"), 0u);
 }

@@ -1,6 +1,6 @@
 // School trainers' programs as they are written (Denford VR Turning, Boxford, Emco): the tool
 // change M06 beside its T word in either order, M06 T01 naming tool 1 with its offset 1, the
-// [BILLET line skipped as a directive (job/ reads it as the bar), and a cut made before any
+// [BILLET line skipped as a directive (setup/ reads it as the bar), and a cut made before any
 // tool is called.
 
 #include <gtest/gtest.h>

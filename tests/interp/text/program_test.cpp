@@ -130,5 +130,54 @@ TEST(ProgramBlocks, SubprogramFileHeldByTheProgram) {
   EXPECT_EQ(program.programStart(1234), 2u);
 }
 
+// The blocks with a T word and comments, told as the text is read through (readProgram's
+// ToolBlockVisitor, for the tools named in comments): those and only those, in order, with the
+// words and comments the Program gives when the block is read again.
+TEST(ProgramBlocks, ToolBlocksWithCommentsAreToldAsTheTextIsReadThrough) {
+  const std::string text =
+      "O1000\n"
+      "(ROUGHING CNMG 120408)\n"
+      "T0101\n"                    // 3: told, its comment above
+      "G00 X40. Z2.\n"
+      "T0202 (DRILL 12)\n"         // 5: told, its own comment
+      "T0303\n"                    // no comment
+      "/T0404 (GROOVE 3MM)\n"      // 7: told unless block delete skips it
+      "M06 T05 (THREAD P1.5)\n"    // 8: told, beside M06
+      "G00 X50. (NO TOOL HERE)\n"  // a comment, no T word
+      "T#1 (TOOL BY VARIABLE)\n"   // Custom Macro B: no plain words
+      "T06 N5 (A B) (C)\n"         // 11: told, two comments
+      "M06 T07\n"                  // sorted for its M code, but no comment
+      "M30\n";
+  for (const bool blockDelete : {false, true}) {
+    SCOPED_TRACE(blockDelete ? "block delete on" : "block delete off");
+    std::vector<int> lines;
+    std::vector<std::string> told;
+    const Program program = readProgram(text, blockDelete, Dialect::FanucA, MachineMCodes::Gsk980tdi,
+                                        [&](const ReadBlock& read) {
+                                          lines.push_back(read.block.line);
+                                          std::string comments;
+                                          for (const auto& c : read.comments.own) comments += "(" + c + ")";
+                                          for (const auto& c : read.comments.above) comments += "^(" + c + ")";
+                                          told.push_back(describe(*read.words) + " " + comments);
+                                        });
+    EXPECT_EQ(lines, (blockDelete ? std::vector<int>{3, 5, 8, 11} : std::vector<int>{3, 5, 7, 8, 11}));
+    // The same blocks read again, one by one, as the Program gives them to the interpreter.
+    std::vector<std::string> again;
+    for (std::size_t ordinal = 0; ordinal < program.blockCount(); ++ordinal) {
+      const ProgramBlock block = program.block(ordinal);
+      const auto words = program.plainWords(block);
+      const BlockComments& comments = program.commentsOf(block);
+      if (!words || !words->has('T') || (comments.own.empty() && comments.above.empty())) continue;
+      std::string said;
+      for (const auto& c : comments.own) said += "(" + c + ")";
+      for (const auto& c : comments.above) said += "^(" + c + ")";
+      again.push_back(describe(*words) + " " + said);
+    }
+    EXPECT_EQ(told, again);
+    ASSERT_FALSE(told.empty());
+    EXPECT_NE(told.front().find("^(ROUGHING CNMG 120408)"), std::string::npos) << told.front();
+  }
+}
+
 }  // namespace
 }  // namespace lathesim::interp

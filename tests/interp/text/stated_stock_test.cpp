@@ -1,11 +1,29 @@
-// The bar a program states: billet lines and stock comments, and what does not count.
+// The bar a program states: billet lines and stock comments, and what does not count. Each
+// case is read twice, by stockStatedIn alone and in the walk of the lines that reads the
+// machine's evidence (machine_evidence.hpp: a run reads the text once for both): they agree.
 
 #include "interp/text/stated_stock.hpp"
 
 #include <gtest/gtest.h>
 
+#include "interp/text/machine_evidence.hpp"
+
 namespace lathesim::interp {
 namespace {
+
+std::optional<StatedStock> statedBar(const std::string& text) {
+  const std::optional<StatedStock> alone = stockStatedIn(text);
+  const std::optional<StatedStock> withEvidence = readMachineEvidence(text).stock;
+  EXPECT_EQ(alone.has_value(), withEvidence.has_value());
+  if (alone && withEvidence) {
+    EXPECT_EQ(alone->diameterMm, withEvidence->diameterMm);
+    EXPECT_EQ(alone->lengthMm, withEvidence->lengthMm);
+    EXPECT_EQ(alone->line, withEvidence->line);
+    EXPECT_EQ(alone->column, withEvidence->column);
+    EXPECT_EQ(alone->text, withEvidence->text);
+  }
+  return withEvidence;
+}
 
 TEST(StatedStock, BilletLinesAndStockCommentsGiveDiameterAndLength) {
   struct Case {
@@ -22,10 +40,14 @@ TEST(StatedStock, BilletLinesAndStockCommentsGiveDiameterAndLength) {
       {"(BAR 25.4x120 LONG)\n", 25.4, 120, 1, 1},
       {"(毛坯 Φ50×60)\n", 50, 60, 1, 1},
       {"(T1 CNMG)\n(STOCK: D=63.5, L=150)\n", 63.5, 150, 2, 1},
+      // The first statement, wherever it stands: after code, a '\r', a blank line, a second one.
+      {"G21 G95\nG00 X44. Z2.\r\n\n(STOCK D40 L80)\r\n(STOCK D50 L90)\n", 40, 80, 4, 1},
+      {"(T1 CNMG)\n(BAR 30 X 90)\n[BILLET X56.4 Z84\n", 30, 90, 2, 1},
+      {"(STOCK D40 L80)", 40, 80, 1, 1},  // no line end
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.text));
-    const auto stated = stockStatedIn(c.text);
+    const auto stated = statedBar(std::string(c.text));
     ASSERT_TRUE(stated.has_value());
     EXPECT_DOUBLE_EQ(stated->diameterMm, c.diameter);
     EXPECT_DOUBLE_EQ(stated->lengthMm, c.length);
@@ -38,8 +60,19 @@ TEST(StatedStock, StatementsWithoutBothNumbersOrKeywordDoNotCount) {
   for (std::string_view text : {"(STOCK ALUMINIUM)\n", "(STOCK D40)\n", "(TOOL D40 L80)\n",
                                 "G00 X40 Z80 (40 X 80)\n", "[TOOLDEF T1 D10\n"}) {
     SCOPED_TRACE(std::string(text));
-    EXPECT_FALSE(stockStatedIn(text).has_value());
+    EXPECT_FALSE(statedBar(std::string(text)).has_value());
   }
+}
+
+// A line that states the bar is evidence of the machine all the same: the walk reads both.
+TEST(StatedStock, TheLineThatStatesTheBarIsStillReadForTheMachine) {
+  const MachineEvidence evidence = readMachineEvidence("G95 F0.2 (STOCK D40 L80)\nG01 Z-23 F0.2\n");
+  ASSERT_TRUE(evidence.stock);
+  EXPECT_EQ(evidence.stock->line, 1);
+  EXPECT_EQ(evidence.stock->column, 10);
+  EXPECT_EQ(evidence.stock->text, "(STOCK D40 L80)");
+  EXPECT_EQ(evidence.count(EvidenceKind::SystemB), 1u);
+  EXPECT_EQ(evidence.bareLengths, 1u);
 }
 
 }  // namespace
@@ -51,11 +84,11 @@ namespace {
 // Hostile lines: std::regex recursed once per character and overflowed the stack on a line of
 // 300 000 characters (a crash); a number of 400 digits made std::stod throw.
 TEST(StatedStock, VeryLongLinesAndNumbersAreReadWithoutHarm) {
-  EXPECT_FALSE(stockStatedIn("G00 X1 Z1\n(STOCK D" + std::string(300000, '1') + ")\nM30\n"));
-  EXPECT_FALSE(stockStatedIn("(STOCK D" + std::string(400, '9') + " L80)\n"));
-  EXPECT_FALSE(stockStatedIn("[BILLET X" + std::string(400, '9') + " Z80\n"));
-  EXPECT_FALSE(stockStatedIn(std::string(100000, '(') + ")\n"));
-  const auto stated = stockStatedIn(std::string(200000, ' ') + "\n(STOCK D40 L80)\n");
+  EXPECT_FALSE(statedBar("G00 X1 Z1\n(STOCK D" + std::string(300000, '1') + ")\nM30\n"));
+  EXPECT_FALSE(statedBar("(STOCK D" + std::string(400, '9') + " L80)\n"));
+  EXPECT_FALSE(statedBar("[BILLET X" + std::string(400, '9') + " Z80\n"));
+  EXPECT_FALSE(statedBar(std::string(100000, '(') + ")\n"));
+  const auto stated = statedBar(std::string(200000, ' ') + "\n(STOCK D40 L80)\n");
   ASSERT_TRUE(stated);
   EXPECT_EQ(stated->line, 2);
 }
