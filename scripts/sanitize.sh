@@ -6,7 +6,7 @@
 #
 #   scripts/sanitize.sh          the whole suite (ctest)
 #   scripts/sanitize.sh ci       what the test command runs (scripts/test.sh), within CI's
-#                                time: every geometry, interp, job and measure test, the
+#                                time: every geometry, interp, setup and measure test, the
 #                                turning writes' route (sim_table_tests: the revolved table,
 #                                its air voxels and the level set built from it), and the
 #                                command's bad-input, exit-status and output-safety tests
@@ -48,7 +48,7 @@ fi
 
 cmake --build "$build" --parallel "$jobs" --target geometry_tests interp_tests setup_tests measure_tests sim_table_tests command_tests lathesim
 status=0
-for suite in geometry interp job measure; do
+for suite in geometry interp setup measure; do
   echo "sanitize: ${suite}_tests"
   "$build/tests/$suite/${suite}_tests" --gtest_brief=1 || status=1
 done
