@@ -47,15 +47,28 @@ if [[ $scope == all ]]; then
 fi
 
 cmake --build "$build" --parallel "$jobs" --target geometry_tests interp_tests setup_tests measure_tests sim_table_tests command_tests lathesim
-status=0
-for suite in geometry interp setup measure; do
-  echo "sanitize: ${suite}_tests"
-  "$build/tests/$suite/${suite}_tests" --gtest_brief=1 || status=1
-done
-echo "sanitize: sim_table_tests"
-"$build/tests/sim/sim_table_tests" --gtest_brief=1 || status=1
+# The suites run as many at a time as there are CPUs (most of them run on one thread), the
+# longest first; each one's output is kept in build-asan/sanitize-NAME.log and shown when it fails.
+run_suite() {  # NAME BINARY [ARGUMENTS…]
+  local name=$1 log="$build/sanitize-$1.log"
+  shift
+  if "$@" --gtest_brief=1 >"$log" 2>&1; then
+    echo "sanitize: $name passed ($(grep -Eo '[0-9]+ tests? from' "$log" | head -n 1 | cut -d' ' -f1) tests)"
+  else
+    cat "$log"
+    echo "sanitize: $name FAILED (log: $log)"
+    return 1
+  fi
+}
+export -f run_suite
+export build
 # The full disk test runs the command seven times over; the file size limit test already
 # takes the same failure path under the sanitizers.
-echo "sanitize: command_tests"
-"$build/tests/app/command_tests" --gtest_brief=1 --gtest_filter='-OutputFailure.FullDisk*' || status=1
-exit $status
+xargs -P "$jobs" -L 1 bash -c 'run_suite "$@"' _ <<SUITES
+measure $build/tests/measure/measure_tests
+interp $build/tests/interp/interp_tests
+sim_table $build/tests/sim/sim_table_tests
+command $build/tests/app/command_tests --gtest_filter=-OutputFailure.FullDisk*
+setup $build/tests/setup/setup_tests
+geometry $build/tests/geometry/geometry_tests
+SUITES
