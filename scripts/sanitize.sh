@@ -65,9 +65,9 @@ export build
 # The full disk test runs the command seven times over; the file size limit test already
 # takes the same failure path under the sanitizers.
 xargs -P "$jobs" -L 1 bash -c 'run_suite "$@"' _ <<SUITES
+sim_table $build/tests/sim/sim_table_tests
 measure $build/tests/measure/measure_tests
 interp $build/tests/interp/interp_tests
-sim_table $build/tests/sim/sim_table_tests
 command $build/tests/app/command_tests --gtest_filter=-OutputFailure.FullDisk*
 setup $build/tests/setup/setup_tests
 geometry $build/tests/geometry/geometry_tests
