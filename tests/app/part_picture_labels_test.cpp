@@ -18,6 +18,7 @@
 #include "setup/job.hpp"
 #include "render/drawn_toolpath.hpp"
 #include "render/part_image.hpp"
+#include "tests/support/label_boxes.hpp"
 #include "sim/simulate.hpp"
 #include "sim/stock.hpp"
 
@@ -34,16 +35,7 @@ std::vector<fs::path> partDirectories() {
   return parts;
 }
 
-/// Whether the segment runs through the label's inside: walked in quarter-pixel steps.
-bool crosses(const render::PictureLabel& l, const std::array<Eigen::Vector2d, 2>& s) {
-  const double length = (s[1] - s[0]).norm();
-  const int steps = std::max(1, static_cast<int>(std::ceil(length * 4)));
-  for (int k = 0; k <= steps; ++k) {
-    const Eigen::Vector2d p = s[0] + (s[1] - s[0]) * (static_cast<double>(k) / steps);
-    if (p.x() > l.left && p.x() < l.right && p.y() > l.bottom && p.y() < l.top) return true;
-  }
-  return false;
-}
+using lathesim::test::crosses;
 
 TEST(PartPictureLabels, NoLabelOverprintsAnotherOrADimensionInAnyBundledPart) {
   ::unsetenv("DISPLAY");

@@ -10,6 +10,7 @@
 
 #include "interp/interpreter.hpp"
 #include "render/part_image.hpp"
+#include "tests/support/label_boxes.hpp"
 #include "tests/render/test_meshes.hpp"
 
 namespace lathesim::render {
@@ -19,16 +20,7 @@ bool overlap(const PictureLabel& a, const PictureLabel& b) {
   return a.left < b.right && b.left < a.right && a.bottom < b.top && b.bottom < a.top;
 }
 
-/// Whether the segment passes through the label's inside: walked in quarter-pixel steps.
-bool crosses(const PictureLabel& l, const std::array<Eigen::Vector2d, 2>& s) {
-  const double length = (s[1] - s[0]).norm();
-  const int steps = std::max(1, static_cast<int>(std::ceil(length * 4)));
-  for (int k = 0; k <= steps; ++k) {
-    const Eigen::Vector2d p = s[0] + (s[1] - s[0]) * (static_cast<double>(k) / steps);
-    if (p.x() > l.left && p.x() < l.right && p.y() > l.bottom && p.y() < l.top) return true;
-  }
-  return false;
-}
+using lathesim::test::crosses;
 
 void expectNoOverprint(const PictureLayout& layout, const std::string& what) {
   for (std::size_t i = 0; i < layout.labels.size(); ++i) {
