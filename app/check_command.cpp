@@ -10,6 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/printed_diagnostics.hpp"
+#include "batch/html_text.hpp"
 #include "interp/base/printable_text.hpp"
 #include "measure/deviation.hpp"
 #include "measure/drawing.hpp"
@@ -164,12 +165,6 @@ Json checkJson(const CheckOptions& options, const Inspection& inspection, const 
   return check;
 }
 
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
-
 std::string where(const RZ& p) {
   char text[96];
   std::snprintf(text, sizeof text, "Z%.3f Ø%.3f", p.y(), diameterOf(p));
@@ -195,10 +190,10 @@ void printSummary(const CheckOptions& options, const Inspection& inspection, con
   std::cout << interp::printable(options.run.program.string()) << " against " << interp::printable(target) << ": "
             << verdictHeadline(inspection.verdict()) << " ("
             << interp::printable(interp::describeMachine(machine)) << ")\n  tolerances: as the drawing states them, else "
-            << inspection.generalTolerance << "; voxel " << fixed(inspection.voxelMm, 3) << " mm: a surface is known to ±"
-            << fixed(d.uncertaintyMm, 3) << " mm, a diameter to ±" << fixed(2 * d.uncertaintyMm, 3) << " mm\n";
+            << inspection.generalTolerance << "; voxel " << batch::fixed(inspection.voxelMm, 3) << " mm: a surface is known to ±"
+            << batch::fixed(d.uncertaintyMm, 3) << " mm, a diameter to ±" << batch::fixed(2 * d.uncertaintyMm, 3) << " mm\n";
   for (const auto& t : inspection.threads) {
-    std::cout << "  thread Z" << fixed(t.callout.zLowMm, 3) << "..Z" << fixed(t.callout.zHighMm, 3);
+    std::cout << "  thread Z" << batch::fixed(t.callout.zLowMm, 3) << "..Z" << batch::fixed(t.callout.zHighMm, 3);
     if (t.line) std::cout << " (line " << *t.line << ")";
     std::cout << ": " << (t.within() ? "as called out" : "NOT as called out");
     for (const auto& i : t.items)
@@ -212,12 +207,12 @@ void printSummary(const CheckOptions& options, const Inspection& inspection, con
   for (const auto& r : d.regions) findings.push_back({r.beyondMm, regionText(r, d.uncertaintyMm, inspection.voxelMm, block)});
   std::stable_sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) { return a.beyondMm > b.beyondMm; });
   for (const auto& f : findings) std::cout << "  " << f.text << '\n';
-  std::cout << "  max excess " << fixed(d.maxExcessMm, 3) << " mm";
+  std::cout << "  max excess " << batch::fixed(d.maxExcessMm, 3) << " mm";
   if (d.maxExcessMm >= 0.0005) std::cout << " at " << where(d.maxExcessAt);
-  std::cout << ", excess volume " << fixed(d.excessVolumeMm3, 1) << " mm³\n";
-  std::cout << "  max gouge " << fixed(d.maxGougeMm, 3) << " mm";
+  std::cout << ", excess volume " << batch::fixed(d.excessVolumeMm3, 1) << " mm³\n";
+  std::cout << "  max gouge " << batch::fixed(d.maxGougeMm, 3) << " mm";
   if (d.maxGougeMm >= 0.0005) std::cout << " at " << where(d.maxGougeAt);
-  std::cout << ", gouge volume " << fixed(d.gougeVolumeMm3, 1) << " mm³\n";
+  std::cout << ", gouge volume " << batch::fixed(d.gougeVolumeMm3, 1) << " mm³\n";
   std::cout << "  outputs in " << interp::printable(options.run.out.string()) << "/\n";
 }
 
@@ -246,20 +241,20 @@ std::string shortLines(const std::vector<int>& lines) {
 }
 
 std::string regionLabel(const measure::DeviationRegion& r) {
-  std::string text = (r.gouge ? "gouge " : "excess ") + fixed(r.maxMm, 3) + " mm, " +
-                     (r.verdict == measure::Verdict::Out ? fixed(r.beyondMm, 3) + " beyond" : "undecided") + "\n" + where(r.at);
+  std::string text = (r.gouge ? "gouge " : "excess ") + batch::fixed(r.maxMm, 3) + " mm, " +
+                     (r.verdict == measure::Verdict::Out ? batch::fixed(r.beyondMm, 3) + " beyond" : "undecided") + "\n" + where(r.at);
   const std::vector<int>& lines = r.madeBy.empty() ? r.lines : r.madeBy;
   if (!lines.empty()) text += ", " + shortLines(lines);
   return text;
 }
 
 std::string sizeLabel(const measure::SizeCheck& s) {
-  if (!s.probed) return "face Z" + fixed(s.nominalMm, 3) + ": not measured, undecided";
-  std::string text = s.diameter ? "Ø" + fixed(s.worstMm, 3) + " (Ø" + fixed(s.nominalMm, 3) + " " +
+  if (!s.probed) return "face Z" + batch::fixed(s.nominalMm, 3) + ": not measured, undecided";
+  std::string text = s.diameter ? "Ø" + batch::fixed(s.worstMm, 3) + " (Ø" + batch::fixed(s.nominalMm, 3) + " " +
                                       limitsText(s.tolerance.upperMm, s.tolerance.lowerMm) + ")"
-                                : "face Z" + fixed(s.worstMm, 3) + " (Z" + fixed(s.nominalMm, 3) + " " +
+                                : "face Z" + batch::fixed(s.worstMm, 3) + " (Z" + batch::fixed(s.nominalMm, 3) + " " +
                                       limitsText(s.tolerance.upperMm, s.tolerance.lowerMm) + ")";
-  text += s.verdict == measure::Verdict::Out ? ", " + fixed(s.outsideMm, 3) + " beyond" : ", undecided";
+  text += s.verdict == measure::Verdict::Out ? ", " + batch::fixed(s.outsideMm, 3) + " beyond" : ", undecided";
   if (!s.lines.empty()) text += "\n" + shortLines(s.lines);
   return text;
 }
@@ -302,8 +297,8 @@ render::RgbImage stageDeviationImages(const CheckOptions& options, const Triangl
   render::DeviationImageOptions image;
   image.title = options.run.program.string() + " against " + target;
   image.toleranceMm = colourToleranceMm;
-  image.caption = verdictHeadline(inspection.verdict()) + " (green: within ±" + fixed(colourToleranceMm, 3) +
-                  " mm); max excess " + fixed(d.maxExcessMm, 3) + " mm, max gouge " + fixed(d.maxGougeMm, 3) + " mm";
+  image.caption = verdictHeadline(inspection.verdict()) + " (green: within ±" + batch::fixed(colourToleranceMm, 3) +
+                  " mm); max excess " + batch::fixed(d.maxExcessMm, 3) + " mm, max gouge " + batch::fixed(d.maxGougeMm, 3) + " mm";
   render::RgbImage deviationPixels;
   const auto deviationPng = out.write("deviation.png", [&](const std::filesystem::path& file) {
     deviationPixels = render::deviationImage(mesh, vertexDeviations(mesh, drawing, threadZones), image);
@@ -335,7 +330,7 @@ void attributeSurfaces(Inspection& inspection, const interp::MoveSpool& moves, c
 
 /// Which ISO 2768-1 class applies where the drawing states no tolerance, and the words saying why.
 std::pair<char, std::string> generalClassOf(const CheckOptions& options, const measure::DrawingResult& file) {
-  if (options.toleranceMm) return {'m', "±" + fixed(*options.toleranceMm, 3) + " mm normal to the surface (--tol)"};
+  if (options.toleranceMm) return {'m', "±" + batch::fixed(*options.toleranceMm, 3) + " mm normal to the surface (--tol)"};
   if (options.generalTolerance) return {*options.generalTolerance, std::string("ISO 2768-") + *options.generalTolerance + " (--general-tolerance)"};
   if (file.generalTolerance) return {*file.generalTolerance, std::string("ISO 2768-") + *file.generalTolerance + " (the drawing's general_tolerance)"};
   return {'m', "ISO 2768-m (the default)"};
@@ -347,7 +342,7 @@ void applyFlatTolerance(std::vector<measure::DrawnLine>& lines, double tolerance
   for (measure::DrawnLine& line : lines) {
     if (line.tolerance) continue;
     const double t = line.diameter() ? 2 * toleranceMm : toleranceMm;
-    line.tolerance = measure::Tolerance{t, -t, "--tol " + fixed(toleranceMm, 3) + " normal to the surface"};
+    line.tolerance = measure::Tolerance{t, -t, "--tol " + batch::fixed(toleranceMm, 3) + " normal to the surface"};
   }
 }
 
@@ -414,7 +409,7 @@ int checkCommand(const CheckOptions& options) {
         section, part, *drawing, [&](const RZ&) { return std::optional<measure::Band>(band); }, uncertainty, threadZones);
     if (!options.toleranceMm)
       inspection.generalTolerance = std::string("ISO 2768-") + generalClass + " for the part's greatest size, " +
-                                    fixed(partSize, 1) + " mm, halved normal to the surface (±" + fixed(colourTolerance, 3) + " mm)";
+                                    batch::fixed(partSize, 1) + " mm, halved normal to the surface (±" + batch::fixed(colourTolerance, 3) + " mm)";
   }
   inspection.deviation.toleranceMm = options.toleranceMm.value_or(0.0);
   measure::attributeGouges(inspection.deviation, *run->moves, outlinesOf(run->job.setup), run->job.setup.stock, voxel);

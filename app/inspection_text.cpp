@@ -4,16 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "batch/html_text.hpp"
 #include "interp/base/printable_text.hpp"
 
 namespace lathesim::app {
 namespace {
-
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
 
 /// A tolerance figure as drawings write it: no trailing zeros ("0.021", "0.2", "0").
 std::string shortMm(double value) {
@@ -63,25 +58,25 @@ std::string sizeText(const measure::SizeCheck& size, double voxelMm, const Block
   std::string text;
   if (!size.probed) {
     const std::string limits = limitsText(size.tolerance.upperMm, size.tolerance.lowerMm);
-    return "face drawn Z" + fixed(size.nominalMm, 3) + " (" + limits +
+    return "face drawn Z" + batch::fixed(size.nominalMm, 3) + " (" + limits +
            (size.tolerance.source == limits ? "" : ", " + size.tolerance.source) + ", drawing line " +
            std::to_string(size.drawn.line) +
            "): undecided: not measured, the part beside it stands over all of it, so no column crosses this face "
            "alone (see the profile's regions there)";
   }
   if (size.diameter) {
-    text = "Ø" + fixed(size.worstMm, 3) + " ±" + fixed(size.uncertaintyMm, 3) + " measured at Z" + fixed(size.worstAt.y(), 3) +
-           " (drawn " + std::string(size.bore ? "bore " : "") + "Ø" + fixed(size.nominalMm, 3) + " ";
+    text = "Ø" + batch::fixed(size.worstMm, 3) + " ±" + batch::fixed(size.uncertaintyMm, 3) + " measured at Z" + batch::fixed(size.worstAt.y(), 3) +
+           " (drawn " + std::string(size.bore ? "bore " : "") + "Ø" + batch::fixed(size.nominalMm, 3) + " ";
   } else {
-    text = "face Z" + fixed(size.worstMm, 3) + " ±" + fixed(size.uncertaintyMm, 3) + " measured at Ø" +
-           fixed(diameterOf(size.worstAt), 3) + " (drawn Z" + fixed(size.nominalMm, 3) + " ";
+    text = "face Z" + batch::fixed(size.worstMm, 3) + " ±" + batch::fixed(size.uncertaintyMm, 3) + " measured at Ø" +
+           batch::fixed(diameterOf(size.worstAt), 3) + " (drawn Z" + batch::fixed(size.nominalMm, 3) + " ";
   }
   const std::string limits = limitsText(size.tolerance.upperMm, size.tolerance.lowerMm);
   text += limits + (size.tolerance.source == limits ? "" : ", " + size.tolerance.source) + ", drawing line " +
           std::to_string(size.drawn.line) + "): ";
-  if (size.diameter) text += fixed(std::abs(off), 3) + (off < 0 ? " undersize" : " oversize");
-  else text += fixed(std::abs(off), 3) + (off < 0 ? " towards −Z" : " towards +Z");
-  if (size.outsideMm > 0) text += ", " + fixed(size.outsideMm, 3) + " beyond its limit";
+  if (size.diameter) text += batch::fixed(std::abs(off), 3) + (off < 0 ? " undersize" : " oversize");
+  else text += batch::fixed(std::abs(off), 3) + (off < 0 ? " towards −Z" : " towards +Z");
+  if (size.outsideMm > 0) text += ", " + batch::fixed(size.outsideMm, 3) + " beyond its limit";
   text += ": " + verdictText(size.verdict, size.outsideMm, voxelMm, size.uncertaintyMm);
   if (size.verdict != measure::Verdict::Within && !size.lines.empty()) {
     text += "; " + madeByText(size.lines, block);
@@ -95,12 +90,12 @@ std::string sizeText(const measure::SizeCheck& size, double voxelMm, const Block
 }
 
 std::string regionText(const measure::DeviationRegion& r, double uncertaintyMm, double voxelMm, const BlockText& block) {
-  std::string text = std::string(r.gouge ? "gouge " : "excess ") + fixed(r.maxMm, 3) + " ±" + fixed(uncertaintyMm, 3) +
-                     " mm normal to the drawing at Z" + fixed(r.at.y(), 3) + " Ø" + fixed(diameterOf(r.at), 3) + " (Z" +
-                     fixed(r.lower.y(), 3) + "..Z" + fixed(r.upper.y(), 3) + ", Ø" + fixed(diameterOf(r.lower), 3) + "..Ø" +
-                     fixed(diameterOf(r.upper), 3) + "), allowed " + limitsText(r.band.upperMm, r.band.lowerMm) +
+  std::string text = std::string(r.gouge ? "gouge " : "excess ") + batch::fixed(r.maxMm, 3) + " ±" + batch::fixed(uncertaintyMm, 3) +
+                     " mm normal to the drawing at Z" + batch::fixed(r.at.y(), 3) + " Ø" + batch::fixed(diameterOf(r.at), 3) + " (Z" +
+                     batch::fixed(r.lower.y(), 3) + "..Z" + batch::fixed(r.upper.y(), 3) + ", Ø" + batch::fixed(diameterOf(r.lower), 3) + "..Ø" +
+                     batch::fixed(diameterOf(r.upper), 3) + "), allowed " + limitsText(r.band.upperMm, r.band.lowerMm) +
                      " there";
-  if (r.beyondMm > 0) text += ", " + fixed(r.beyondMm, 3) + " beyond";
+  if (r.beyondMm > 0) text += ", " + batch::fixed(r.beyondMm, 3) + " beyond";
   text += ": " + verdictText(r.verdict, r.beyondMm, voxelMm, uncertaintyMm);
   const std::vector<int>& lines = r.madeBy.empty() ? r.lines : r.madeBy;
   if (!lines.empty()) text += "; " + madeByText(lines, block);

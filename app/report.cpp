@@ -1,6 +1,7 @@
 #include "app/report.hpp"
 
 #include "app/staged_output.hpp"
+#include "batch/html_text.hpp"
 
 #include <nlohmann/json.hpp>
 #include <cstdio>
@@ -50,12 +51,6 @@ Json threadJson(const measure::MeasuredThread& thread) {
           {"measured", measured}};
 }
 
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
-
 nlohmann::ordered_json valueJson(const interp::ParameterValue& value) {
   if (const auto* name = std::get_if<std::string>(&value)) return *name;
   if (const auto* number = std::get_if<double>(&value)) return *number;
@@ -100,16 +95,16 @@ std::string threadSummary(const measure::MeasuredThread& thread) {
   const measure::ProgrammedThread& p = thread.programmed;
   const measure::ThreadMeasurement& m = thread.measured;
   std::string line = "thread, line " + std::to_string(p.line) + " (" + p.code + ", " +
-                     (p.internal ? "internal" : "external") + "): programmed lead " + fixed(p.leadMm, 4) + " mm, " +
+                     (p.internal ? "internal" : "external") + "): programmed lead " + batch::fixed(p.leadMm, 4) + " mm, " +
                      std::to_string(p.starts) + (p.starts == 1 ? " start, " : " starts, ") +
                      (p.leadAlongZ ? (p.rightHand ? "right" : "left") : "face") + "-hand; ";
   if (m.problem) return line + "not measured: " + *m.problem;
-  return line + "measured lead " + fixed(m.leadMm.mean, 4) + " mm (±" + fixed(m.leadMm.range() / 2, 4) + " over " +
+  return line + "measured lead " + batch::fixed(m.leadMm.mean, 4) + " mm (±" + batch::fixed(m.leadMm.range() / 2, 4) + " over " +
          std::to_string(m.anglesDeg.size()) + " angles), " + std::to_string(m.starts) +
          (m.starts == 1 ? " start, " : " starts, ") + (m.rightHand ? "right" : "left") + "-hand, major Φ" +
-         fixed(m.majorDiameterMm.mean, 3) + ", minor Φ" + fixed(m.minorDiameterMm.mean, 3) + " (programmed root Φ" +
-         fixed(2 * p.rootRadiusMm, 3) + "), pitch Φ" + fixed(m.pitchDiameterMm.mean, 3) + ", flanks " +
-         fixed(m.leftFlankDeg.mean, 1) + "°/" + fixed(m.rightFlankDeg.mean, 1) + "°";
+         batch::fixed(m.majorDiameterMm.mean, 3) + ", minor Φ" + batch::fixed(m.minorDiameterMm.mean, 3) + " (programmed root Φ" +
+         batch::fixed(2 * p.rootRadiusMm, 3) + "), pitch Φ" + batch::fixed(m.pitchDiameterMm.mean, 3) + ", flanks " +
+         batch::fixed(m.leftFlankDeg.mean, 1) + "°/" + batch::fixed(m.rightFlankDeg.mean, 1) + "°";
 }
 
 std::string skippedSummary(const std::vector<interp::SkippedBlock>& skipped) {

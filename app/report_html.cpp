@@ -60,14 +60,8 @@ td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
 .swatch { display: inline-block; width: 12px; height: 12px; vertical-align: -1px; margin-right: 4px; border-radius: 2px; }
 )css";
 
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
-
 std::string grouped(double value, int decimals) {  // 620 466.2
-  std::string text = fixed(std::abs(value), decimals);
+  std::string text = batch::fixed(std::abs(value), decimals);
   const auto point = text.find('.');
   for (long i = static_cast<long>(point == std::string::npos ? text.size() : point) - 3; i > 0; i -= 3)
     text.insert(static_cast<std::size_t>(i), "\u202f");
@@ -105,11 +99,11 @@ std::string summary(const Json& r) {
   const double removed = r.value("removed_volume_mm3", 0.0), stock = r.value("stock_volume_mm3", 0.0);
   html += figure("cycle time (machine)", duration(r.value("cycle_time_s", 0.0)));
   html += figure("final volume, mm³", grouped(r.value("final_volume_mm3", 0.0), 1));
-  html += figure("removed, mm³ (" + fixed(stock > 0 ? 100 * removed / stock : 0, 1) + " % of the bar)", grouped(removed, 1));
+  html += figure("removed, mm³ (" + batch::fixed(stock > 0 ? 100 * removed / stock : 0, 1) + " % of the bar)", grouped(removed, 1));
   html += figure("bar volume, mm³", grouped(stock, 1));
   html += figure("STL's own volume, mm³", grouped(r.value("mesh_volume_mm3", 0.0), 1));
   html += figure("moves", std::to_string(r.value("moves", 0)));
-  html += figure("voxel, mm", fixed(r.value("voxel_mm", 0.0), 3));
+  html += figure("voxel, mm", batch::fixed(r.value("voxel_mm", 0.0), 3));
   const std::size_t collisions = r.at("collisions").size(), warnings = r.at("warnings").size();
   html += figure("collisions", std::to_string(collisions), collisions ? "bad" : "good");
   html += figure("warnings", std::to_string(warnings), warnings ? "warn" : "good");
@@ -161,13 +155,13 @@ std::string sizesTable(const Json& sizes) {
     const std::string source = s.value("tolerance_source", "");
     html += std::string("<tr") + (verdict == "out" ? " class=\"problem-collision\"" : verdict == "undecided" ? " class=\"problem-warning\"" : "") +
             "><td>" + escaped(s.value("kind", "")) + " (drawing line " + std::to_string(s.value("drawing_line", 0)) +
-            ")</td><td class=\"num\">" + sign + fixed(s.value("nominal_mm", 0.0), 3) + "</td><td>" + escaped(limits) +
+            ")</td><td class=\"num\">" + sign + batch::fixed(s.value("nominal_mm", 0.0), 3) + "</td><td>" + escaped(limits) +
             (source == limits ? "" : " (" + escaped(source) + ")") + "</td><td class=\"num\">" +
-            (s.value("probed", true) ? sign + fixed(s.value("worst_mm", 0.0), 3) + " ±" + fixed(s.value("uncertainty_mm", 0.0), 3)
+            (s.value("probed", true) ? sign + batch::fixed(s.value("worst_mm", 0.0), 3) + " ±" + batch::fixed(s.value("uncertainty_mm", 0.0), 3)
                                      : std::string("not measured")) +
             "</td><td>" +
-            (face ? "Ø" + fixed(at.value("diameter", 0.0), 3) : "Z" + fixed(at.value("z", 0.0), 3)) + "</td><td>" +
-            (verdict == "within" ? "within" : verdict == "undecided" ? "UNDECIDED" : "OUT, " + fixed(s.value("beyond_mm", 0.0), 3) + " beyond") +
+            (face ? "Ø" + batch::fixed(at.value("diameter", 0.0), 3) : "Z" + batch::fixed(at.value("z", 0.0), 3)) + "</td><td>" +
+            (verdict == "within" ? "within" : verdict == "undecided" ? "UNDECIDED" : "OUT, " + batch::fixed(s.value("beyond_mm", 0.0), 3) + " beyond") +
             "</td><td>" + (told ? lines : "") + "</td><td>" + (told && valueLine > 0 ? lineLink(valueLine) : "") + "</td></tr>\n";
   }
   return html + "</table>\n";
@@ -177,7 +171,7 @@ std::string checkSection(const Json& r) {
   if (!r.contains("check")) return "";
   const Json& c = r.at("check");
   std::string html = "<h2>Against the drawing</h2>\n<p>" + escaped(c.value("target", "")) + ": max excess " +
-                     fixed(c.value("max_excess_mm", 0.0), 3) + " mm, max gouge " + fixed(c.value("max_gouge_mm", 0.0), 3) +
+                     batch::fixed(c.value("max_excess_mm", 0.0), 3) + " mm, max gouge " + batch::fixed(c.value("max_gouge_mm", 0.0), 3) +
                      " mm; tolerances as the drawing states them, else " + escaped(c.value("general_tolerance", "")) + ".</p>\n";
   html += sizesTable(c.value("sizes", Json::array()));
   if (c.at("regions").empty()) return html + "<p>No region is out of tolerance.</p>\n";
@@ -189,10 +183,10 @@ std::string checkSection(const Json& r) {
                std::to_string(l.get<int>()) + "</a>";
     const Json& at = g.at("at");
     html += "<tr class=\"problem-" + std::string(g.value("kind", "") == "gouge" ? "collision" : "warning") + "\"><td>" +
-            escaped(g.value("kind", "")) + "</td><td class=\"num\">" + fixed(g.value("max_mm", 0.0), 3) + "</td><td>Z" +
-            fixed(at.value("z", 0.0), 3) + " Ø" + fixed(at.value("diameter", 0.0), 3) + "</td><td>" +
-            fixed(g.at("z_range")[0].get<double>(), 2) + " … " + fixed(g.at("z_range")[1].get<double>(), 2) + "</td><td>" +
-            fixed(g.at("diameter_range")[0].get<double>(), 2) + " … " + fixed(g.at("diameter_range")[1].get<double>(), 2) +
+            escaped(g.value("kind", "")) + "</td><td class=\"num\">" + batch::fixed(g.value("max_mm", 0.0), 3) + "</td><td>Z" +
+            batch::fixed(at.value("z", 0.0), 3) + " Ø" + batch::fixed(at.value("diameter", 0.0), 3) + "</td><td>" +
+            batch::fixed(g.at("z_range")[0].get<double>(), 2) + " … " + batch::fixed(g.at("z_range")[1].get<double>(), 2) + "</td><td>" +
+            batch::fixed(g.at("diameter_range")[0].get<double>(), 2) + " … " + batch::fixed(g.at("diameter_range")[1].get<double>(), 2) +
             "</td><td>" + lines + "</td></tr>\n";
   }
   return html + "</table>\n";
@@ -206,17 +200,17 @@ std::string threadsSection(const Json& r) {
   for (const Json& t : r.at("threads")) {
     const Json& p = t.at("programmed");
     const Json& m = t.at("measured");
-    auto mean = [&m](const char* key) { return fixed(m.at(key).value("mean", 0.0), 3); };
+    auto mean = [&m](const char* key) { return batch::fixed(m.at(key).value("mean", 0.0), 3); };
     const std::string measured =
         m.contains("problem")
             ? "not measured: " + escaped(m.value("problem", ""))
-            : "lead " + fixed(m.at("lead_mm").value("mean", 0.0), 4) + " mm, " + std::to_string(m.value("starts", 0)) +
+            : "lead " + batch::fixed(m.at("lead_mm").value("mean", 0.0), 4) + " mm, " + std::to_string(m.value("starts", 0)) +
                   " start(s), " + escaped(m.value("hand", "")) + "-hand, major Ø" + mean("major_diameter_mm") +
                   ", minor Ø" + mean("minor_diameter_mm") + ", pitch Ø" + mean("pitch_diameter_mm");
     const int line = t.value("line", 0);
     html += "<tr><td><a href=\"#L" + std::to_string(line) + "\">" + std::to_string(line) + "</a></td><td>" +
             escaped(t.value("code", "")) + "</td><td>" + escaped(t.value("kind", "")) + "</td><td class=\"num\">" +
-            fixed(p.value("lead_mm", 0.0), 4) + "</td><td>" + measured + "</td></tr>\n";
+            batch::fixed(p.value("lead_mm", 0.0), 4) + "</td><td>" + measured + "</td></tr>\n";
   }
   return html + "</table>\n";
 }
@@ -232,10 +226,10 @@ void writeListingRow(std::ostream& out, int line, std::string_view text, const L
   if (figures) {
     const LineFigures& f = *figures;
     const int barPx = mostTime > 0 ? static_cast<int>(std::lround(60.0 * f.timeS / mostTime)) : 0;
-    time = "<span class=\"bar\" style=\"width:" + std::to_string(barPx) + "px\"></span>" + fixed(f.timeS, 2);
+    time = "<span class=\"bar\" style=\"width:" + std::to_string(barPx) + "px\"></span>" + batch::fixed(f.timeS, 2);
     removed = f.removedMm3 > 0 ? grouped(f.removedMm3, 1) : "";
     if (f.removedMm3 > 0 && mostRemoved > 0)
-      style = " style=\"background:rgba(240,140,30," + fixed(0.08 + 0.47 * f.removedMm3 / mostRemoved, 3) + ")\"";
+      style = " style=\"background:rgba(240,140,30," + batch::fixed(0.08 + 0.47 * f.removedMm3 / mostRemoved, 3) + ")\"";
   }
   out << "<tr id=\"L" << line << "\"" << (flag ? std::string(" class=\"") + flag + "\"" : std::string()) << style
       << "><td class=\"no\">" << line << "</td><td class=\"num\">" << time << "</td><td class=\"num\">" << removed
@@ -325,7 +319,7 @@ void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const int
     out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
            "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>lathesim: "
         << escaped(program) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<header><h1>" << escaped(program)
-        << "</h1><p>setup " << escaped(report.value("setup", "")) << " · voxel " << fixed(report.value("voxel_mm", 0.0), 3)
+        << "</h1><p>setup " << escaped(report.value("setup", "")) << " · voxel " << batch::fixed(report.value("voxel_mm", 0.0), 3)
         << " mm"
         << (report.contains("at_line") ? " · stopped after line " + std::to_string(report.value("at_line", 0)) : "")
         << "</p></header>\n<main>\n";
@@ -338,8 +332,8 @@ void writeReportHtml(const Json& report, const sim::BlockRows& blocks, const int
       for (const Json& c : report.at("collisions")) {
         const Json& at = c.at("position");
         out << "<p class=\"crash-mark\"><span class=\"swatch\" style=\"background:#ff0000\"></span> crash, line "
-            << c.value("line", 0) << ": the red marker at X" << fixed(at.value("x_diameter_mm", 0.0), 3) << " Z"
-            << fixed(at.value("z_mm", 0.0), 3) << " (" << escaped(c.value("message", "")) << ")</p>\n";
+            << c.value("line", 0) << ": the red marker at X" << batch::fixed(at.value("x_diameter_mm", 0.0), 3) << " Z"
+            << batch::fixed(at.value("z_mm", 0.0), 3) << " (" << escaped(c.value("message", "")) << ")</p>\n";
       }
     }
     const std::string stepping = stepSection(steps, report);

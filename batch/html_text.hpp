@@ -1,6 +1,6 @@
 #pragma once
 // Text for the self-contained HTML pages (the batch summary, a run's report.html): escaping,
-// and files carried inside the page as base64.
+// files carried inside the page as base64, and figures as every report prints them.
 
 #include <filesystem>
 #include <string>
@@ -15,5 +15,8 @@ std::string base64(const std::string& bytes);
 
 /// The file's bytes; empty if it cannot be read.
 std::string fileBytes(const std::filesystem::path& file);
+
+/// `value` with `decimals` digits after the point, rounded as printf's %.*f rounds.
+std::string fixed(double value, int decimals);
 
 }  // namespace lathesim::batch

@@ -28,12 +28,6 @@ std::string href(const std::filesystem::path& path) {
   return url;
 }
 
-std::string fixed(double value, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
-
 /// A table cell sorted by `value` (empty: sorts last), showing `html`.
 std::string cell(const std::string& value, const std::string& html, const std::string& cls = "") {
   return "<td" + (cls.empty() ? std::string() : " class=\"" + cls + "\"") + " data-value=\"" + escaped(value) + "\">" +

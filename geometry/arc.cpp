@@ -6,8 +6,6 @@
 namespace lathesim {
 namespace {
 
-constexpr double kTwoPi = 2.0 * M_PI;
-
 }  // namespace
 
 Arc::Arc(const RZ& start, const RZ& end, const RZ& center, bool clockwise)

@@ -8,8 +8,6 @@
 namespace lathesim {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
 // atan2(y, x) to about 1e-11 rad (a z error of 1e-12·lead), in a fraction of libm's time: the
 // hot loop takes one per column of voxels. atan of the ratio in [0, 1], reduced below tan 15°
 // by atan a = π/6 + atan((a − 1/√3)/(1 + a/√3)), then its odd series to a¹⁵.

@@ -44,14 +44,14 @@ constexpr std::array<LengthLetter, 22> kLengths{{
 }};
 
 constexpr std::string_view kClampings = "CMPSDW";
-constexpr std::string_view kClearances = "ABCDEFGNPO";
-constexpr std::string_view kShapes = "CDEMVSTWRHOPABKL";
+constexpr std::string_view kInsertClearanceLetters = "ABCDEFGNPO";
+constexpr std::string_view kInsertShapeLetters = "CDEMVSTWRHOPABKL";
 
 bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 
-class Reader {
+class HolderCodeReader {
  public:
-  explicit Reader(std::string code) : code_(std::move(code)) {}
+  explicit HolderCodeReader(std::string code) : code_(std::move(code)) {}
   ParsedCode<IsoHolder> fail(std::size_t index, std::size_t width, int position, const std::string& what) const {
     const std::string shown = index < code_.size() ? code_.substr(index, width) : std::string();
     return {std::nullopt,
@@ -83,7 +83,7 @@ double IsoHolder::functionalWidthMm() const {
 ParsedCode<IsoHolder> parseIsoHolder(std::string_view given) {
   std::string upper(given);
   for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  const Reader r(upper);
+  const HolderCodeReader r(upper);
   const std::string& code = r.code();
   IsoHolder holder;
   holder.code = code;
@@ -100,7 +100,7 @@ ParsedCode<IsoHolder> parseIsoHolder(std::string_view given) {
     return r.fail(0, 1, 1, "is not a clamping system; expected one of C M P S D W");
   holder.clamping = code[0];
 
-  if (kShapes.find(code[1]) == std::string_view::npos)
+  if (kInsertShapeLetters.find(code[1]) == std::string_view::npos)
     return r.fail(1, 1, 2, "is not an insert shape; expected one of C D E M V S T W R H O P");
   holder.insertShape = code[1];
 
@@ -124,7 +124,7 @@ ParsedCode<IsoHolder> parseIsoHolder(std::string_view given) {
                                degrees(epsilon) + " insert (κr + ε must stay below 180°)");
   }
 
-  if (kClearances.find(code[3]) == std::string_view::npos)
+  if (kInsertClearanceLetters.find(code[3]) == std::string_view::npos)
     return r.fail(3, 1, 4, "is not a clearance angle; expected one of A B C D E F G N P O");
   holder.clearance = code[3];
 

@@ -1,6 +1,8 @@
 #pragma once
 // A point of the lathe's meridian half-plane, the plane every turned shape lives in.
 
+#include <numbers>
+
 #include <Eigen/Core>
 
 namespace lathesim {
@@ -11,5 +13,8 @@ namespace lathesim {
 using RZ = Eigen::Vector2d;
 
 inline double diameterOf(const RZ& p) { return 2.0 * p.x(); }
+
+/// One turn of the spindle, in radians.
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 }  // namespace lathesim

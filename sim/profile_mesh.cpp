@@ -43,8 +43,6 @@
 namespace lathesim::sim {
 namespace {
 
-constexpr int kChunk = RevolvedRegion::kColumn;  // the table's cells per chunk along Z
-
 // A crossing is named by the cell edge it lies on: between classes c and c + 1 at Z cell k
 // (radial), or between Z cells k and k + 1 of class c (axial).
 enum class EdgeAxis : std::uint64_t { Radial = 0, Axial = 1 };

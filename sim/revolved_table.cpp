@@ -5,12 +5,8 @@
 #include <cstring>
 #include <utility>
 
-
 namespace lathesim::sim {
 namespace {
-
-constexpr int kChunk = RevolvedRegion::kColumn;  // 8 cells along Z: one leaf's column
-static_assert(kChunk == 8);
 
 int alignDown(int k) { return k & ~(kChunk - 1); }
 
@@ -25,7 +21,6 @@ int orbitSize(int i, int j) {
   if (i == 0) return 1;
   return j == 0 || j == i ? 4 : 8;
 }
-
 
 }  // namespace
 
@@ -250,7 +245,6 @@ const float* RevolvedTable::column(int i, int j, int k0, std::uint8_t& activeBit
   if (c == kAir || k0 < kBase_ || chunk >= chunks_) return nullptr;
   return cellsOf(c, chunk, activeBits);
 }
-
 
 std::vector<VoxelIndex> RevolvedTable::changedLeaves() {
   std::vector<VoxelIndex> leaves;

@@ -34,6 +34,11 @@
 
 namespace lathesim::sim {
 
+/// The table's cells are kept and written in chunks of this many along Z: one leaf's column
+/// of the level set, so a chunk maps to whole leaves.
+inline constexpr int kChunk = RevolvedRegion::kColumn;
+static_assert(kChunk == 8);
+
 /// A voxel of the level set by index.
 struct VoxelIndex {
   int i, j, k;

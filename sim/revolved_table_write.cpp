@@ -17,8 +17,6 @@
 namespace lathesim::sim {
 namespace {
 
-constexpr int kChunk = RevolvedRegion::kColumn;  // 8 cells along Z: one leaf's column
-
 // A column of cells deep inside the region (ψ < −bg − h everywhere): writeColumn's result
 // without the distances. Each open cell takes the filled value u = −bg and goes inactive.
 // Returns the material voxels lost; sets `changed` when anything did.
@@ -48,7 +46,6 @@ double fill(float* values, std::uint8_t& activeBits, const ColumnWrite& w, bool&
     if (changed[n]) sum += lostOf[n] * columns[n] - airVoxelsLost[n];
   return sum;
 }
-
 
 // A bin of this many classes or more reads the region through a plan of its place (see
 // RevolvedRegion::planColumn): one edge a piece and cell rather than all of them.

@@ -1,5 +1,6 @@
 #pragma once
 // UTF-8 helpers: columns are counted in code points, not bytes.
+// Character classes the way G-code reads them: ASCII only, whatever the locale.
 
 #include <cstddef>
 #include <string_view>
@@ -24,5 +25,11 @@ inline std::size_t codePointLength(std::string_view text, std::size_t at) {
   while (end < text.size() && !startsCodePoint(text[end])) ++end;
   return end - at;
 }
+
+/// '0'–'9' (std::isdigit depends on the locale and on a non-negative argument).
+inline bool isAsciiDigit(char c) { return c >= '0' && c <= '9'; }
+
+/// 'A'–'Z' and 'a'–'z'.
+inline bool isAsciiLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
 }  // namespace lathesim::interp

@@ -5,13 +5,13 @@
 
 #include <cmath>
 
+#include "interp/base/tolerance.hpp"
 #include "interp/compensation/tool_offset.hpp"
 
 namespace lathesim::interp {
 
 std::vector<CycleLeg> noseCompensatedCycle(const std::vector<CycleLeg>& legs, const RZ& start,
                                            bool axial, const NoseComp& comp) {
-  constexpr double kTolMm = 1e-9;
   const CycleLeg* cut = nullptr;
   for (const CycleLeg& leg : legs) {
     if (leg.step == 2) cut = &leg;

@@ -15,13 +15,13 @@
 
 #include <fmt/format.h>
 
+#include "interp/base/tolerance.hpp"
 #include "interp/contour/contour_geometry.hpp"
 #include "interp/compensation/tool_offset.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-constexpr double kTolMm = 1e-9;
 constexpr double kTurnTol = 1e-9;  // |sin| of a corner angle below which the path goes straight on
 
 /// A segment of the output path and the input segment it comes from.

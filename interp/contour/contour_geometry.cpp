@@ -10,7 +10,6 @@
 namespace lathesim::interp {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kLengthTolMm = 1e-9;
 constexpr double kAngleTolRad = 1e-9;
 

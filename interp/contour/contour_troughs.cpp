@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <numbers>
 
+#include "interp/base/tolerance.hpp"
 #include "interp/contour/contour_geometry.hpp"
 
 namespace lathesim::interp {
 namespace {
-
-constexpr double kTolMm = 1e-9;
 
 /// The points of a block where its depth may turn, in order along it: its ends, and for an arc
 /// its highest and lowest X when they lie inside it.

@@ -6,12 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "interp/base/tolerance.hpp"
 #include "interp/contour/contour_geometry.hpp"
 
 namespace lathesim::interp {
 namespace {
-
-constexpr double kTolMm = 1e-9;
 
 // A G71 level steps in X (a radius, written as a diameter), a G72 level in Z.
 double stepOf(const RZ& point, bool turning) { return turning ? point.x() : point.y(); }

@@ -17,10 +17,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interp/base/tolerance.hpp"
+
 namespace lathesim::interp {
 namespace {
-
-constexpr double kTolMm = 1e-9;
 
 double signOf(double value) { return value > kTolMm ? 1.0 : value < -kTolMm ? -1.0 : 0.0; }
 

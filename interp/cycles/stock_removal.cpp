@@ -83,13 +83,13 @@
 
 #include <fmt/format.h>
 
+#include "interp/base/tolerance.hpp"
 #include "interp/contour/contour_geometry.hpp"
 #include "interp/contour/contour_troughs.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-constexpr double kTolMm = 1e-9;
 constexpr double kHalfPi = std::numbers::pi / 2;
 
 Error errorAt(const ContourSegment& segment, std::string message) {

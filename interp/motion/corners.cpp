@@ -5,12 +5,12 @@
 
 #include <fmt/format.h>
 
+#include "interp/base/tolerance.hpp"
 #include "interp/output/toolpath_csv.hpp"
 
 namespace lathesim::interp {
 namespace {
 
-constexpr double kTolMm = 1e-9;
 constexpr double kInLine = 1e-9;  // |sin φ| below this: the two lines are in line
 
 // > 0 when `b` turns counter-clockwise from `a` (Z to the right, X up).

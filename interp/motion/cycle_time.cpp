@@ -11,7 +11,6 @@ namespace lathesim::interp {
 namespace {
 
 constexpr double kSecondsPerMinute = 60.0;
-constexpr double kTwoPi = 2.0 * M_PI;
 
 // Arcs are parametrised in the drawing view (Z to the right, radius up), where CCW is
 // positive: (r, z) = centre + R·(sin ψ, cos ψ).

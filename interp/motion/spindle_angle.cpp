@@ -4,18 +4,12 @@
 
 #include "geometry/arc.hpp"
 #include "interp/motion/spindle_speed.hpp"
+#include "interp/motion/toolpath_clock.hpp"
 
 namespace lathesim::interp {
 namespace {
 
 constexpr double kSecondsPerMinute = 60.0;
-
-// The point a fraction t ∈ [0, 1] along a straight move or an arc.
-RZ pointAlong(const Move& move, double t) {
-  if (!isArc(move.kind)) return move.from + t * (move.to - move.from);
-  const Arc arc(move.from, move.to, move.center, move.kind == MoveKind::ArcCW);
-  return arc.pointAt(t);
-}
 
 double rpmAt(const Move& move, const RZ& point, const MachineLimits& machine) {
   if (move.spindleMode == SpindleMode::Rpm) return constantRpm(move.spindleS, machine);

@@ -5,13 +5,12 @@
 
 #include <fmt/format.h>
 
+#include "interp/base/tolerance.hpp"
 #include "interp/contour/contour_geometry.hpp"
 #include "interp/output/toolpath_csv.hpp"
 
 namespace lathesim::interp {
 namespace {
-
-constexpr double kTolMm = 1e-9;
 
 // The points of the move where it reaches furthest along each axis: its ends, and the
 // arc's extremes between them.

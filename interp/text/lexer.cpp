@@ -33,9 +33,6 @@ std::string controlName(char c) {
   return byte < 0x20 ? std::string(kNames[byte]) : std::string("DEL");
 }
 
-bool isAsciiLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
-bool isAsciiDigit(char c) { return c >= '0' && c <= '9'; }
-
 // The rule in lexer.hpp: does the rest of a line after ';' read as prose?
 bool readsAsProse(std::string_view tail) {
   std::size_t i = 0;

@@ -26,8 +26,6 @@ struct ScannedWord {
   std::string_view text;  // "G95", "Z-23", ",C1."
 };
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 
 // The value of a number as written ("-23", "+.5", "12."); a number of hundreds of digits is
@@ -70,8 +68,8 @@ void scanWords(std::string_view line, std::vector<ScannedWord>& words) {
   while (i < line.size()) {
     const char c = line[i];
     if (c == ';') break;
-    const bool corner = c == ',' && i + 1 < line.size() && isLetter(line[i + 1]);
-    if (!isLetter(c) && !corner) {
+    const bool corner = c == ',' && i + 1 < line.size() && isAsciiLetter(line[i + 1]);
+    if (!isAsciiLetter(c) && !corner) {
       ++i;
       continue;
     }
@@ -87,14 +85,14 @@ void scanWords(std::string_view line, std::vector<ScannedWord>& words) {
     std::size_t number = i;
     if (number < line.size() && (line[number] == '-' || line[number] == '+')) ++number;
     std::size_t end = number;
-    while (end < line.size() && isDigit(line[end])) ++end;
+    while (end < line.size() && isAsciiDigit(line[end])) ++end;
     if (end < line.size() && line[end] == '.') {
       word.hasPoint = true;
       ++end;
-      while (end < line.size() && isDigit(line[end])) ++end;
+      while (end < line.size() && isAsciiDigit(line[end])) ++end;
     }
     const bool digits = std::any_of(line.begin() + static_cast<std::ptrdiff_t>(number),
-                                    line.begin() + static_cast<std::ptrdiff_t>(end), isDigit);
+                                    line.begin() + static_cast<std::ptrdiff_t>(end), isAsciiDigit);
     if (digits) {
       word.hasNumber = true;
       word.value = numberValue(line.substr(i, end - i));
@@ -175,7 +173,7 @@ class EvidenceReader {
              std::equal(word.begin(), word.end(), name.begin(), [](char a, char b) { return a == upper(b); });
     };
     if (opens("CITE")) return false;  // as the lexer tells a citation
-    if (opens("BILLET") && (name.size() == 6 || !isLetter(name[6]))) {
+    if (opens("BILLET") && (name.size() == 6 || !isAsciiLetter(name[6]))) {
       const ScannedWord where{0, codePointCount(text.substr(0, at)) + 1, false, false, 0, {}};
       mark(EvidenceKind::Trainer, where, "[BILLET");
     }
