@@ -24,12 +24,11 @@ using test::lathesim;
 using test::ScratchDir;
 using test::writeFile;
 
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+using test::kPartsDir;
 
-std::string part(const std::string& name, const std::string& file) { return (kPartsDir / name / file).string(); }
+using test::partFile;
 
-/// Nothing was written: the folder does not exist, or it is empty.
-bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_empty(folder); }
+using test::noOutputs;
 
 TEST(BadInput, MalformedNumberIsReportedWithItsLocationAndCaretAndWritesNothing) {
   ScratchDir dir("bad");
@@ -51,10 +50,10 @@ TEST(BadInput, MalformedNumberIsReportedWithItsLocationAndCaretAndWritesNothing)
 // The O0006 part (parts/seed004-o0006): with W = +3 alarms at N40's R word.
 TEST(BadInput, O0006AlarmsAtN40AndWritesNothing) {
   ScratchDir dir("o0006");
-  const std::string program = part("seed004-o0006", "program.nc");
+  const std::string program = partFile("seed004-o0006", "program.nc");
   const fs::path out = dir.path() / "out";
   const ProcessOutcome outcome = lathesim(
-      {"run", program, "--setup", part("seed004-o0006", "setup.toml"), "--out", out.string(), "--voxel", "0.5"},
+      {"run", program, "--setup", partFile("seed004-o0006", "setup.toml"), "--out", out.string(), "--voxel", "0.5"},
       dir.path());
   EXPECT_EQ(outcome.status, 1);
   const auto lines = linesOf(outcome.err);
@@ -71,7 +70,7 @@ TEST(BadInput, UnknownSetupKeyIsNamedAndWritesNothing) {
   const fs::path setup = dir.path() / "setup.toml";
   writeFile(setup, "[stock]\ndiameter = 50\nlength = 60\nface_z = 0\ncolour = \"red\"\n");
   const fs::path out = dir.path() / "out";
-  const ProcessOutcome outcome = lathesim({"run", part("seed001-taper-r24", "program.nc"), "--setup", setup.string(),
+  const ProcessOutcome outcome = lathesim({"run", partFile("seed001-taper-r24", "program.nc"), "--setup", setup.string(),
                                            "--out", out.string(), "--voxel", "0.5"},
                                           dir.path());
   EXPECT_EQ(outcome.status, 1);
@@ -85,7 +84,7 @@ TEST(BadInput, VoxelTooFineForMemoryIsRefusedAndWritesNothing) {
   const fs::path out = dir.path() / "out";
   // No --setup: the default Φ125 × 112 bar, which at 1 µm would need terabytes.
   const ProcessOutcome outcome =
-      lathesim({"run", part("seed000-face-taper", "program.nc"), "--out", out.string(), "--voxel", "0.001"}, dir.path());
+      lathesim({"run", partFile("seed000-face-taper", "program.nc"), "--out", out.string(), "--voxel", "0.001"}, dir.path());
   EXPECT_EQ(outcome.status, 1);
   EXPECT_NE(outcome.err.find("lathesim: error: a 0.001 mm voxel needs about"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find("GiB"), std::string::npos) << outcome.err;
@@ -97,7 +96,7 @@ TEST(BadInput, AtLineThatDoesNotExistOrMakesNoMoveIsNamedAndWritesNothing) {
   ScratchDir dir("at-line-bad");
   const fs::path out = dir.path() / "out";
   const auto atLine = [&](const std::string& line) {
-    return lathesim({"run", part("seed000-face-taper", "program.nc"), "--setup", part("seed000-face-taper", "setup.toml"),
+    return lathesim({"run", partFile("seed000-face-taper", "program.nc"), "--setup", partFile("seed000-face-taper", "setup.toml"),
                      "--out", out.string(), "--voxel", "0.5", "--at-line", line},
                     dir.path());
   };
@@ -133,8 +132,8 @@ TEST(BadInput, AnErrorAtTheLastBlockOfAStreamedRunLeavesNoOutput) {
 
 /// `lathesim check` of seed 001's R-24 program at 0.25 mm with `extra` arguments, into dir/out.
 ProcessOutcome checkSeed001(const ScratchDir& dir, const std::vector<std::string>& extra) {
-  std::vector<std::string> args{"check",   part("seed001-taper-r24", "program.nc"),
-                                "--setup", part("seed001-taper-r24", "setup.toml"),
+  std::vector<std::string> args{"check",   partFile("seed001-taper-r24", "program.nc"),
+                                "--setup", partFile("seed001-taper-r24", "setup.toml"),
                                 "--voxel", "0.25",
                                 "--out",   (dir.path() / "out").string()};
   args.insert(args.end(), extra.begin(), extra.end());

@@ -21,9 +21,9 @@ namespace fs = std::filesystem;
 using test::ProcessOutcome;
 using test::ScratchDir;
 
-const fs::path kBinary = LATHESIM_BINARY;
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
-constexpr double kVoxelMm = 0.25;
+using test::kBinary;
+using test::kPartsDir;
+constexpr double kCheckVoxelMm = 0.25;
 
 struct CheckRun {
   ProcessOutcome outcome;
@@ -62,8 +62,8 @@ TEST(CheckSeed001, CorrectTaperPassesAtTwoVoxels) {
   ASSERT_EQ(run.outcome.status, 0) << run.outcome.out << run.outcome.err;
   EXPECT_NE(run.outcome.out.find("within tolerance"), std::string::npos) << run.outcome.out;
   EXPECT_EQ(run.check.at("within_tolerance"), true);
-  EXPECT_LT(run.check.at("max_excess_mm").get<double>(), kVoxelMm / 2);
-  EXPECT_LT(run.check.at("max_gouge_mm").get<double>(), kVoxelMm / 2);
+  EXPECT_LT(run.check.at("max_excess_mm").get<double>(), kCheckVoxelMm / 2);
+  EXPECT_LT(run.check.at("max_gouge_mm").get<double>(), kCheckVoxelMm / 2);
   EXPECT_EQ(run.check.at("regions"), nlohmann::json::array());
   // The same output files as `run`, and the two deviation pictures.
   std::set<std::string> names;
@@ -90,10 +90,10 @@ TEST(CheckSeed001, WrongTaperFailsWithTheHandWorkedExcess) {
   ASSERT_EQ(run.outcome.status, 3) << run.outcome.out << run.outcome.err;
   EXPECT_NE(run.outcome.out.find("OUT OF tolerance"), std::string::npos) << run.outcome.out;
   const double handExcessMm = 2 * std::sqrt(5.0) / 3;
-  EXPECT_NEAR(run.check.at("max_excess_mm").get<double>(), handExcessMm, kVoxelMm / 2);
-  EXPECT_NEAR(run.check.at("max_excess_at").at("z").get<double>(), -50.0 / 3, 2 * kVoxelMm);
-  EXPECT_NEAR(run.check.at("max_excess_at").at("diameter").get<double>(), 50.0, 2 * kVoxelMm);
-  EXPECT_LT(run.check.at("max_gouge_mm").get<double>(), kVoxelMm / 2);
+  EXPECT_NEAR(run.check.at("max_excess_mm").get<double>(), handExcessMm, kCheckVoxelMm / 2);
+  EXPECT_NEAR(run.check.at("max_excess_at").at("z").get<double>(), -50.0 / 3, 2 * kCheckVoxelMm);
+  EXPECT_NEAR(run.check.at("max_excess_at").at("diameter").get<double>(), 50.0, 2 * kCheckVoxelMm);
+  EXPECT_LT(run.check.at("max_gouge_mm").get<double>(), kCheckVoxelMm / 2);
   // Volume: the ramp's error is a few percent of a voxel layer over the region's surfaces
   // (two cones of about 20 mm and the r 25 strip, around r 22): 0.05·h·2π·22·45 ≈ 78 mm³.
   EXPECT_NEAR(run.check.at("excess_volume_mm3").get<double>(), 6500 * M_PI / 9, 78);
@@ -103,9 +103,9 @@ TEST(CheckSeed001, WrongTaperFailsWithTheHandWorkedExcess) {
   EXPECT_EQ(region.at("kind"), "excess");
   // Beyond 0.5 mm: on the part's cone from −0.2z/√5 = 0.5 (Z−5.59) down to its corner, and on
   // r 25 until (20 + z)/√5 = 0.5 (Z−18.88); the drawn points opposite reach a little lower.
-  EXPECT_NEAR(region.at("z_range")[1].get<double>(), -5.59, 2 * kVoxelMm);
-  EXPECT_LT(region.at("z_range")[0].get<double>(), -18.88 + 2 * kVoxelMm);
-  EXPECT_GT(region.at("z_range")[0].get<double>(), -20.0 - kVoxelMm);
+  EXPECT_NEAR(region.at("z_range")[1].get<double>(), -5.59, 2 * kCheckVoxelMm);
+  EXPECT_LT(region.at("z_range")[0].get<double>(), -18.88 + 2 * kCheckVoxelMm);
+  EXPECT_GT(region.at("z_range")[0].get<double>(), -20.0 - kCheckVoxelMm);
   // report.html carries the deviation pictures and the region, flagged, with its largest excess.
   const std::string html = test::readFile(dir.path() / "out" / "report.html");
   EXPECT_NE(html.find("deviation.png: the part coloured by its deviation"), std::string::npos);
@@ -125,7 +125,7 @@ TEST(CheckSeed001, AgainstAnotherProgramsPart) {
       check(dir, seed001("r20") + std::vector<std::string>{"--target-program", target, "--tol", "0.5"});
   ASSERT_EQ(run.outcome.status, 3) << run.outcome.out << run.outcome.err;
   EXPECT_EQ(run.check.at("target_kind"), "program");
-  EXPECT_NEAR(run.check.at("max_excess_mm").get<double>(), 2 * std::sqrt(5.0) / 3, kVoxelMm / 2);
+  EXPECT_NEAR(run.check.at("max_excess_mm").get<double>(), 2 * std::sqrt(5.0) / 3, kCheckVoxelMm / 2);
   EXPECT_NEAR(run.check.at("excess_volume_mm3").get<double>(), 6500 * M_PI / 9, 78);
 }
 
@@ -155,7 +155,7 @@ TEST(CheckSeed001, AgainstAnStlOfTheDesign) {
   const CheckRun wrong = check(dir, seed001("r20") + std::vector<std::string>{"--target", design.string(), "--tol", "0.5"});
   ASSERT_EQ(wrong.outcome.status, 3) << wrong.outcome.out << wrong.outcome.err;
   EXPECT_EQ(wrong.check.at("target_kind"), "stl");
-  EXPECT_NEAR(wrong.check.at("max_excess_mm").get<double>(), 2 * std::sqrt(5.0) / 3, kVoxelMm / 2);
+  EXPECT_NEAR(wrong.check.at("max_excess_mm").get<double>(), 2 * std::sqrt(5.0) / 3, kCheckVoxelMm / 2);
   EXPECT_NEAR(wrong.check.at("excess_volume_mm3").get<double>(), 6500 * M_PI / 9, 78);
   const CheckRun right = check(dir, seed001("r24") + std::vector<std::string>{"--target", design.string(), "--tol", "0.5"});
   EXPECT_EQ(right.outcome.status, 0) << right.outcome.out << right.outcome.err;

@@ -32,7 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 using interp::linesOf;
 
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+using test::kPartsDir;
 
 using test::readFile;
 using test::lathesim;
@@ -57,17 +57,16 @@ std::vector<interp::CsvRow> goldenToolpath(const std::string& part) {
 }
 
 
-/// Nothing was written: the folder does not exist, or it is empty.
-bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_empty(folder); }
+using test::noOutputs;
 
 // ---------------------------------------------------------------------------------------
 // `lathesim run` on seed001-taper-r24 at 0.25 mm: one run, shared by the tests below.
 
 constexpr const char* kPart = "seed001-taper-r24";
-constexpr double kVoxelMm = 0.25;
+constexpr double kCliVoxelMm = 0.25;
 constexpr double kCsvRoundingMm = 5e-5;  // toolpath.csv writes 4 decimals (a dog-leg's corner has more)
 // Seed 001's bar: Φ50 × 60 (parts/seed001-taper-r24/setup.toml).
-const double kTolerance = volumeToleranceMm3(50.0, 60.0, kVoxelMm);
+const double kTolerance = volumeToleranceMm3(50.0, 60.0, kCliVoxelMm);
 
 class RunSeed001 : public testing::Test {
  protected:

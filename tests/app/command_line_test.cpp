@@ -19,9 +19,9 @@ using test::readFile;
 using test::lathesim;
 using test::writeFile;
 
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+using test::kPartsDir;
 
-std::string part(const std::string& name, const std::string& file) { return (kPartsDir / name / file).string(); }
+using test::partFile;
 
 bool hasRawControlCharacter(const std::string& text) {
   for (char c : text) {
@@ -34,7 +34,7 @@ bool hasRawControlCharacter(const std::string& text) {
 // Every way a command line can be wrong exits 2 and says what is wrong, writing nothing.
 TEST(ExitStatus, BadCommandLinesExitTwo) {
   test::ScratchDir scratch("cmdline");
-  const std::string program = part("seed001-taper-r24", "program.nc");
+  const std::string program = partFile("seed001-taper-r24", "program.nc");
   const std::string out = (scratch.path() / "out").string();
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{}, "subcommand is required"},
@@ -52,7 +52,7 @@ TEST(ExitStatus, BadCommandLinesExitTwo) {
       {{"run", program, "--block-skip", "maybe", "--out", out}, "maybe"},
       {{"run", program, "--max-moves", "0", "--out", out}, "--max-moves"},
       {{"check", program, "--out", out}, "--target"},
-      {{"check", program, "--target", part("seed001-taper-r24", "drawing.toml"), "--tol", "-1", "--out", out}, "--tol"},
+      {{"check", program, "--target", partFile("seed001-taper-r24", "drawing.toml"), "--tol", "-1", "--out", out}, "--tol"},
       {{"expand", program, "--setup", (scratch.path() / "none.toml").string()}, "none.toml"},
       {{"batch"}, "manifest"},
       {{"batch", kPartsDir.string(), "--shard", "3/2", "--out", out}, "3/2"},
@@ -73,8 +73,8 @@ TEST(ExitStatus, BadProgramExitsOneAndGoodRunZero) {
   test::ScratchDir scratch("status");
   writeFile(scratch.path() / "bad.nc", "G00 X20 Z2\nG01 X10.5.5 F0.1\nM30\n");
   EXPECT_EQ(lathesim({"expand", (scratch.path() / "bad.nc").string()}, scratch.path()).status, 1);
-  const auto good = lathesim({"expand", part("seed001-taper-r24", "program.nc"), "--setup",
-                              part("seed001-taper-r24", "setup.toml")},
+  const auto good = lathesim({"expand", partFile("seed001-taper-r24", "program.nc"), "--setup",
+                              partFile("seed001-taper-r24", "setup.toml")},
                              scratch.path());
   EXPECT_EQ(good.status, 0) << good.err;
 }
@@ -83,8 +83,8 @@ TEST(ExitStatus, BadProgramExitsOneAndGoodRunZero) {
 TEST(ExitStatus, MoreMovesThanTheLimitIsABadProgram) {
   test::ScratchDir scratch("max-moves");
   const auto args = [&](const char* limit) {
-    return std::vector<std::string>{"expand", part("seed001-taper-r24", "program.nc"), "--setup",
-                                    part("seed001-taper-r24", "setup.toml"), "--max-moves", limit};
+    return std::vector<std::string>{"expand", partFile("seed001-taper-r24", "program.nc"), "--setup",
+                                    partFile("seed001-taper-r24", "setup.toml"), "--max-moves", limit};
   };
   EXPECT_EQ(lathesim(args("6"), scratch.path()).status, 0);
   const auto refused = lathesim(args("5"), scratch.path());

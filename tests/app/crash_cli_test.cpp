@@ -31,14 +31,14 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using render::test::Png;
-using render::test::Rgb;
+using render::test::PngColour;
 using test::readFile;
 using test::lathesim;
 using test::ScratchDir;
 using test::writeFile;
 
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
-const fs::path kSetup = kPartsDir / "seed001-taper-r20" / "setup.toml";
+using test::kPartsDir;
+const fs::path kTaperSetup = kPartsDir / "seed001-taper-r20" / "setup.toml";
 const fs::path kDrawing = kPartsDir / "seed001-taper-r20" / "drawing.toml";
 constexpr double kCrashMm3 = 550.0 * M_PI / 3.0;
 const RZ kCrashAt(15.0, -1.0);  // where the tool ends: X30 Z-1
@@ -47,7 +47,7 @@ std::string program(const std::string& rapidZ) {
   return "M03 S500;\nG00 X54 Z5;\nG00 X30 Z2;\nG00 Z" + rapidZ + ";\nG00 X54 Z5;\nM30;\n";
 }
 
-std::vector<std::string> runArgs(const fs::path& nc, const fs::path& out, const fs::path& setup = kSetup) {
+std::vector<std::string> runArgs(const fs::path& nc, const fs::path& out, const fs::path& setup = kTaperSetup) {
   return {"run", nc.string(), "--setup", setup.string(), "--out", out.string(), "--voxel", "0.25"};
 }
 
@@ -100,14 +100,14 @@ TEST(Crash, CollisionsWarnKeepsExitZeroWithALocatedWarning) {
 
   // The setup's [sim] collisions says the same; the command line overrides it.
   const fs::path setup = dir.path() / "setup.toml";
-  writeFile(setup, readFile(kSetup) + "\n[sim]\ncollisions = \"warn\"\n");
+  writeFile(setup, readFile(kTaperSetup) + "\n[sim]\ncollisions = \"warn\"\n");
   EXPECT_EQ(lathesim(runArgs(nc, dir.path() / "setup-warn", setup), dir.path()).status, 0);
   auto error = runArgs(nc, dir.path() / "setup-error", setup);
   error.insert(error.end(), {"--collisions", "error"});
   EXPECT_EQ(lathesim(error, dir.path()).status, 4);
 
   const fs::path bad = dir.path() / "bad.toml";
-  writeFile(bad, readFile(kSetup) + "\n[sim]\ncollisions = \"maybe\"\n");
+  writeFile(bad, readFile(kTaperSetup) + "\n[sim]\ncollisions = \"maybe\"\n");
   const auto refused = lathesim(runArgs(nc, dir.path() / "bad-out", bad), dir.path());
   EXPECT_EQ(refused.status, 1);
   EXPECT_NE(refused.err.find("sim.collisions must be \"error\""), std::string::npos) << refused.err;
@@ -122,11 +122,11 @@ TEST(Crash, CheckExitsFourForACrashOverOutOfTolerance) {
   ScratchDir dir("crash-check");
   const fs::path nc = dir.path() / "rapid.nc";
   writeFile(nc, program("-1"));
-  const auto crashed = lathesim({"check", nc.string(), "--setup", kSetup.string(), "--target", kDrawing.string(),
+  const auto crashed = lathesim({"check", nc.string(), "--setup", kTaperSetup.string(), "--target", kDrawing.string(),
                                       "--out", (dir.path() / "out").string(), "--voxel", "0.5"}, dir.path());
   EXPECT_EQ(crashed.status, 4) << crashed.err;
   EXPECT_TRUE(fs::exists(dir.path() / "out" / "report.json"));
-  const auto warned = lathesim({"check", nc.string(), "--setup", kSetup.string(), "--target", kDrawing.string(),
+  const auto warned = lathesim({"check", nc.string(), "--setup", kTaperSetup.string(), "--target", kDrawing.string(),
                                      "--out", (dir.path() / "warn").string(), "--voxel", "0.5", "--collisions", "warn"}, dir.path());
   EXPECT_EQ(warned.status, 3) << warned.err;
 }
@@ -135,8 +135,8 @@ TEST(Crash, CheckExitsFourForACrashOverOutOfTolerance) {
 // The marker, by pixels: pure red (the rapids' dashes are 229, 20, 20), a disc centred where
 // the picture's own frame projects X30 Z-1.
 
-bool crashRed(const Rgb& c) { return c.r >= 240 && c.g <= 25 && c.b <= 25; }
-bool videoRed(const Rgb& c) { return c.r >= 180 && c.g <= 90 && c.b <= 90; }  // H.264 blurs it
+bool crashRed(const PngColour& c) { return c.r >= 240 && c.g <= 25 && c.b <= 25; }
+bool videoRed(const PngColour& c) { return c.r >= 180 && c.g <= 90 && c.b <= 90; }  // H.264 blurs it
 
 constexpr int kWidthPx = 800, kHeightPx = 600;
 
@@ -144,7 +144,7 @@ constexpr int kWidthPx = 800, kHeightPx = 600;
 Eigen::Vector2i crashPixel(const fs::path& nc, render::PartView view) {
   setup::JobRequest request;
   request.program = nc;
-  request.setup = kSetup;
+  request.setup = kTaperSetup;
   const std::optional<setup::Job> loaded = setup::loadJob(request).value;
   EXPECT_TRUE(loaded);
   if (!loaded) return {0, 0};
@@ -159,7 +159,7 @@ int around(const Png& png, const Eigen::Vector2i& p, int half, Test test) {
   return png.count(p.x() - half, p.x() + half + 1, p.y() - half, p.y() + half + 1, test);
 }
 
-bool ffmpegInstalled() { return std::system("ffmpeg -version >/dev/null 2>&1") == 0; }
+using test::ffmpegInstalled;
 
 TEST(Crash, EveryPictureAndTheVideoMarkTheCrashWhereItHappened) {
   ScratchDir dir("crash-pictures");

@@ -15,12 +15,12 @@ namespace {
 
 // Φ40 × 50 bar, face Z0 (Z-50..0). A grooving blade 3 wide (Z) and 10 deep (radial), its
 // programmed point the −X −Z corner. The tool starts at X200 Z10 (r 100).
-constexpr double kVoxelMm = 0.2;
+constexpr double kDogLegVoxelMm = 0.2;
 
 // Line 2 rapids over the bar to X44 Z-23; lines 3–6 plunge twice to Φ30, cutting the groove
 // r 15..20, Z-24..-20 (4 wide, the blade at Z-23 then Z-24). The blade ends at (r 15, Z-24),
 // covering Z-24..-21. Line 7 retracts to X200 Z-22.
-constexpr std::string_view kProgram =
+constexpr std::string_view kDogLegProgram =
     "G99 M03 S500\n"
     "G00 X44 Z-23\n"
     "G01 X30 F0.1\n"
@@ -34,12 +34,12 @@ sim::SimulationResult simulate(interp::RapidPath rapidPath) {
   options.startPosition = RZ(100, 10);
   options.toolNumbers = {1};
   options.control.rapidPath = rapidPath;
-  const interp::InterpretResult result = interp::interpret(kProgram, "groove.nc", options);
+  const interp::InterpretResult result = interp::interpret(kDogLegProgram, "groove.nc", options);
   EXPECT_TRUE(result.ok()) << interp::format(result.diagnostics.at(0));
   sim::ToolOutlines tools;
   const std::vector<RZ> blade{{0, 0}, {10, 0}, {10, 3}, {0, 3}};
   tools.emplace(1, *ConvexPolygon::fromOutline(blade).polygon);
-  sim::Stock stock(sim::StockSpec{40, 50, 0}, kVoxelMm);
+  sim::Stock stock(sim::StockSpec{40, 50, 0}, kDogLegVoxelMm);
   return sim::simulate(result.toolpath, tools, stock);
 }
 
@@ -63,7 +63,7 @@ TEST(DogLegCollision, ARetractThatClearsTheGrooveStraightCatchesItsWallAsADogLeg
   // The level set places the surface to a small fraction of a voxel: 5 % of a voxel layer over
   // the removed ring's surface (section perimeter ≈ 1 + 3.5 + 1 + 4.25 mm at r ≈ 18).
   const double surfaceMm2 = 2 * M_PI * 18 * (1 + 3.5 + 1 + 4.25);
-  EXPECT_NEAR(collision.volumeMm3, 139.9375 * M_PI, 0.05 * kVoxelMm * surfaceMm2);
+  EXPECT_NEAR(collision.volumeMm3, 139.9375 * M_PI, 0.05 * kDogLegVoxelMm * surfaceMm2);
 }
 
 }  // namespace

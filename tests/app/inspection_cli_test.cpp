@@ -16,7 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::ScratchDir;
 
-const fs::path kBinary = LATHESIM_BINARY;
+using test::kBinary;
 
 struct Checked {
   test::ProcessOutcome outcome;

@@ -25,8 +25,8 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using test::readFile;
 
-const fs::path kBinary = LATHESIM_BINARY;
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+using test::kBinary;
+using test::kPartsDir;
 const std::set<std::string> kRunOutputs{"part.stl", "part.png", "toolpath.csv", "toolpath.vtp", "stock.vdb",
                                         "report.json", "report.html"};
 

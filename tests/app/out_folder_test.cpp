@@ -17,8 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kBinary = LATHESIM_BINARY;
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+using test::kBinary;
+using test::kPartsDir;
 
 test::ProcessOutcome lathesim(std::vector<std::string> args, const fs::path& out, const fs::path& scratch) {
   const fs::path part = kPartsDir / "g71-g70-shaft";

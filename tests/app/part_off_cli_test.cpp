@@ -17,12 +17,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kVoxelMm = 0.4;
+constexpr double kPartOffVoxelMm = 0.4;
 
 // 5 % of a voxel layer over a tube's surface (outside, bore and both ends), as the README states.
 double tolerance(double outer, double inner, double length) {
   const double surface = 2 * M_PI * (outer + inner) * length + 2 * M_PI * (outer * outer - inner * inner);
-  return 0.05 * kVoxelMm * surface;
+  return 0.05 * kPartOffVoxelMm * surface;
 }
 
 // A 3 mm blade programmed at its +Z corner, as the parts' setups give it.
@@ -74,7 +74,7 @@ TEST(PartOffCli, ATubePartedOffGivesThePieceAndTheStub) {
   EXPECT_EQ(off["parts_catcher"]["in_place"], true);
   // What is left is the piece and the stub; what the blade took is the kerf.
   EXPECT_NEAR(report["final_volume_mm3"].get<double>(), 14100 * M_PI, tolerance(20, 10, 50));
-  EXPECT_NEAR(report["removed_volume_mm3"].get<double>(), 900 * M_PI, 0.05 * kVoxelMm * (600 + 180) * M_PI);
+  EXPECT_NEAR(report["removed_volume_mm3"].get<double>(), 900 * M_PI, 0.05 * kPartOffVoxelMm * (600 + 180) * M_PI);
   EXPECT_TRUE(report["warnings"].empty()) << report["warnings"].dump(2);
 
   // Each STL as a reader sees it: closed, consistently oriented, and holding its own piece.

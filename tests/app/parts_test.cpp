@@ -37,7 +37,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+using test::kPartsDir;
 
 std::vector<std::string> partNames() {
   std::vector<std::string> names;

@@ -19,11 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using render::test::Png;
-using render::test::Rgb;
+using render::test::PngColour;
 using test::ScratchDir;
 
-const fs::path kBinary = LATHESIM_BINARY;
-const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+using test::kBinary;
+using test::kPartsDir;
 
 std::vector<std::string> partArgs(const std::string& part, const fs::path& out) {
   return {"run", (kPartsDir / part / "program.nc").string(), "--setup", (kPartsDir / part / "setup.toml").string(),
@@ -44,7 +44,7 @@ int partWidthPx(const Png& png) {
   return first < 0 ? 0 : last - first + 1;
 }
 
-bool ffmpegInstalled() { return std::system("ffmpeg -version >/dev/null 2>&1") == 0; }
+using test::ffmpegInstalled;
 
 std::string commandOutput(const std::string& command) {
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
@@ -102,10 +102,10 @@ TEST(PictureThumbnail, IsPartPngInBlockMeansAndAWidthOutOfRangeIsRefused) {
       int sum[3] = {0, 0, 0};
       for (int v = 0; v < kFactor; ++v)
         for (int u = 0; u < kFactor; ++u) {
-          const Rgb c = part.at(x * kFactor + u, y * kFactor + v);
+          const PngColour c = part.at(x * kFactor + u, y * kFactor + v);
           sum[0] += c.r, sum[1] += c.g, sum[2] += c.b;
         }
-      const Rgb t = thumbnail.at(x, y);
+      const PngColour t = thumbnail.at(x, y);
       const double n = kFactor * kFactor;
       // The mean, truncated or rounded: within one level.
       if (std::abs(t.r - sum[0] / n) > 1 || std::abs(t.g - sum[1] / n) > 1 || std::abs(t.b - sum[2] / n) > 1)
@@ -186,7 +186,7 @@ PartMismatch partMismatch(const Png& picture, const Png& frame, int inkMarginPx)
   std::vector<char> ink(static_cast<std::size_t>(w) * h, 0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      const Rgb c = picture.at(x, y);
+      const PngColour c = picture.at(x, y);
       if (c.r - c.g <= 40 || c.b - c.g <= 40) continue;
       for (int v = std::max(0, y - inkMarginPx); v <= std::min(h - 1, y + inkMarginPx); ++v)
         for (int u = std::max(0, x - inkMarginPx); u <= std::min(w - 1, x + inkMarginPx); ++u)
@@ -198,7 +198,7 @@ PartMismatch partMismatch(const Png& picture, const Png& frame, int inkMarginPx)
       if (ink[static_cast<std::size_t>(y) * w + x]) continue;
       const bool inPicture = render::test::partMetal(picture, x, y), inFrame = render::test::partMetal(frame, x, y);
       m.partPixels += inPicture;
-      const Rgb p = picture.at(x, y), f = frame.at(x, y);
+      const PngColour p = picture.at(x, y), f = frame.at(x, y);
       const bool apart = std::abs(p.r - f.r) + std::abs(p.g - f.g) + std::abs(p.b - f.b) > 45;
       m.mismatched += inPicture != inFrame || (inPicture && apart);
     }

@@ -15,18 +15,18 @@
 namespace lathesim::app {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
 // A report with nested objects and arrays (empty ones too) before and after "blocks", and a
 // note quoting bytes that are not UTF-8.
-Json reportAround() {
-  Json report;
+OrderedJson reportAround() {
+  OrderedJson report;
   report["program"] = "part.nc";
-  report["bar"] = {{"diameter_mm", 50.0}, {"length_mm", 112}, {"faces", Json::array({1, 2})}};
-  report["collisions"] = Json::array();
-  report["blocks"] = Json::array();
-  report["notes"] = Json::array({{{"line", 3}, {"message", std::string("comment \xff\xfe here")}}});
-  report["empty"] = Json::object();
+  report["bar"] = {{"diameter_mm", 50.0}, {"length_mm", 112}, {"faces", OrderedJson::array({1, 2})}};
+  report["collisions"] = OrderedJson::array();
+  report["blocks"] = OrderedJson::array();
+  report["notes"] = OrderedJson::array({{{"line", 3}, {"message", std::string("comment \xff\xfe here")}}});
+  report["empty"] = OrderedJson::object();
   report["timing_s"] = {{"total", 1.25}};
   return report;
 }
@@ -40,17 +40,17 @@ TEST(ReportJson, RowsWrittenInPlaceGiveTheTextOfTheWholeTree) {
     const auto file = dir.path() / ("report-" + std::to_string(count) + ".json");
     writeReport(reportAround(), sim::HeldBlockRows(rows), file);
 
-    Json whole = reportAround();
+    OrderedJson whole = reportAround();
     for (const sim::BlockRemoval& b : rows)
       whole["blocks"].push_back(
           {{"line", b.line}, {"column", b.column}, {"removed_volume_mm3", b.removedMm3}, {"time_s", b.timeS}});
-    EXPECT_EQ(test::readFile(file), whole.dump(2, ' ', false, Json::error_handler_t::replace) + "\n") << count << " rows";
+    EXPECT_EQ(test::readFile(file), whole.dump(2, ' ', false, OrderedJson::error_handler_t::replace) + "\n") << count << " rows";
   }
 }
 
 TEST(ReportJson, AnEmptyReportIsAnEmptyObject) {
   test::ScratchDir dir("report-json-empty");
-  writeReport(Json::object(), sim::HeldBlockRows({}), dir.path() / "report.json");
+  writeReport(OrderedJson::object(), sim::HeldBlockRows({}), dir.path() / "report.json");
   EXPECT_EQ(test::readFile(dir.path() / "report.json"), "{}\n");
 }
 

@@ -83,7 +83,7 @@ void expectStreamedAsKept(const fs::path& program, const std::vector<std::string
   EXPECT_FALSE(streamed.report["blocks"].empty()) << program;
 }
 
-bool ffmpegInstalled() { return std::system("ffmpeg -version >/dev/null 2>&1") == 0; }
+using test::ffmpegInstalled;
 
 // Parts that use what the simulation reads beside the moves: cycle starts, threads, a part-off
 // and a parts catcher, work shifts, subprograms, nose radius compensation, dog-leg rapids.

@@ -15,10 +15,10 @@ using Json = nlohmann::json;
 
 // A Φ40 × 60 bar, its face at Z0, a Φ20 quill whose centre's point is at Z0: the cone is r 0
 // at Z0 and r 10 at Z17.32, the quill r 10 from there to Z77.32.
-constexpr const char* kSetup = "[stock]\ndiameter = 40.0\nlength = 60.0\n[machine]\ntailstock = { z = 0.0, diameter = 20.0 }\n";
+constexpr const char* kTailstockSetup = "[stock]\ndiameter = 40.0\nlength = 60.0\n[machine]\ntailstock = { z = 0.0, diameter = 20.0 }\n";
 
 test::ProcessOutcome run(const test::ScratchDir& scratch, const std::string& program) {
-  test::writeFile(scratch.path() / "setup.toml", kSetup);
+  test::writeFile(scratch.path() / "setup.toml", kTailstockSetup);
   test::writeFile(scratch.path() / "part.nc", program);
   return test::lathesim({"run", (scratch.path() / "part.nc").string(), "--setup", (scratch.path() / "setup.toml").string(),
                          "--out", (scratch.path() / "out").string(), "--outputs", "report"},

@@ -17,7 +17,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-constexpr const char* kSetup = R"([stock]
+constexpr const char* kToolTableSetup = R"([stock]
 diameter = 40.0
 length = 60.0
 face_z = 1.0
@@ -52,7 +52,7 @@ tip = 3
 
 // Line 4 is the first move under T0101; G10 on line 8 adds 0.1 to offset 1's Z wear, taken up
 // by the T0101 of line 9; the drill's comment is on line 18, above its T word on line 19.
-constexpr const char* kProgram = R"(G21 G99
+constexpr const char* kToolTableProgram = R"(G21 G99
 T0101
 G97 S1000 M03
 G00 X42 Z3
@@ -95,8 +95,8 @@ const Json& toolNumbered(const Json& tools, int number) {
 TEST(ToolTable, EveryToolWithItsInsertHolderOffsetsAndSource) {
   test::ScratchDir scratch("tool-table");
   const auto setup = scratch.path() / "setup.toml";
-  test::writeFile(setup, kSetup);
-  test::writeFile(scratch.path() / "part.nc", kProgram);
+  test::writeFile(setup, kToolTableSetup);
+  test::writeFile(scratch.path() / "part.nc", kToolTableProgram);
   const Json report = runReport(scratch, {"--setup", setup.string()});
   const Json& tools = report.at("tools");
   ASSERT_EQ(tools.size(), 4u) << tools.dump(2);  // 1, 3, 7 from the setup, 5 from the comment

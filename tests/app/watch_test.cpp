@@ -24,7 +24,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-const std::string kProgram = readFile(fs::path(LATHESIM_PARTS_DIR) / "g71-g70-shaft" / "program.nc");
+const std::string kWatchedProgram = readFile(fs::path(LATHESIM_PARTS_DIR) / "g71-g70-shaft" / "program.nc");
 
 /// The raw answer to `request` from 127.0.0.1:`port` (headers and body).
 std::string ask(int port, const std::string& request) {
@@ -144,7 +144,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 TEST(WatchCommand, FollowsEachSaveAndKeepsTheLastGoodPartThroughAFailedOne) {
   ScratchDir scratch("watch");
-  writeFile(scratch.path() / "shaft.nc", kProgram);
+  writeFile(scratch.path() / "shaft.nc", kWatchedProgram);
   Watch watch(scratch.path(), {"shaft.nc", "--stock", "D52xL100", "--outputs", "report,html", "--out", "out"});
   ASSERT_GT(watch.port(), 0) << watch.firstLine();
   EXPECT_NE(watch.firstLine().find("shaft.nc"), std::string::npos) << "names what it watches";
@@ -160,7 +160,7 @@ TEST(WatchCommand, FollowsEachSaveAndKeepsTheLastGoodPartThroughAFailedOne) {
   EXPECT_NE(page.find("watch/state"), std::string::npos);
 
   // A slip: the page's state carries the located error; the outputs stay the last good run's.
-  save(scratch.path() / "shaft.nc", replaced(kProgram, "N20 G01 Z-15.0", "N20 G01 Q Z-15.0"));
+  save(scratch.path() / "shaft.nc", replaced(kWatchedProgram, "N20 G01 Z-15.0", "N20 G01 Q Z-15.0"));
   const auto failed = watch.stateAfter(2);
   ASSERT_TRUE(failed);
   EXPECT_EQ((*failed)["status"], 1);
@@ -172,7 +172,7 @@ TEST(WatchCommand, FollowsEachSaveAndKeepsTheLastGoodPartThroughAFailedOne) {
 
   // The cure, with the first diameter 2 mm larger: a new part, 2 mm more in diameter over 15 mm
   // of length, so (π/4)(22² − 20²)·15 = 989.6 mm³ more material left.
-  save(scratch.path() / "shaft.nc", replaced(kProgram, "N10 G00 X20.0", "N10 G00 X22.0"));
+  save(scratch.path() / "shaft.nc", replaced(kWatchedProgram, "N10 G00 X20.0", "N10 G00 X22.0"));
   const auto cured = watch.stateAfter(3);
   ASSERT_TRUE(cured);
   EXPECT_EQ((*cured)["status"], 0);
@@ -189,7 +189,7 @@ TEST(WatchCommand, FollowsEachSaveAndKeepsTheLastGoodPartThroughAFailedOne) {
 
 TEST(WatchCommand, ListensOnTheLoopbackInterfaceOnly) {
   ScratchDir scratch("watch-loopback");
-  writeFile(scratch.path() / "shaft.nc", kProgram);
+  writeFile(scratch.path() / "shaft.nc", kWatchedProgram);
   Watch watch(scratch.path(), {"shaft.nc", "--stock", "D52xL100", "--outputs", "report", "--out", "out"});
   ASSERT_GT(watch.port(), 0) << watch.firstLine();
   char hexPort[8];
@@ -203,7 +203,7 @@ TEST(WatchCommand, ListensOnTheLoopbackInterfaceOnly) {
 
 TEST(WatchCommand, ServesTheOutputFolderAndNothingElse) {
   ScratchDir scratch("watch-paths");
-  writeFile(scratch.path() / "shaft.nc", kProgram);
+  writeFile(scratch.path() / "shaft.nc", kWatchedProgram);
   writeFile(scratch.path() / "secret.txt", "not for the browser");
   Watch watch(scratch.path(), {"shaft.nc", "--stock", "D52xL100", "--outputs", "report", "--out", "out"});
   ASSERT_GT(watch.port(), 0) << watch.firstLine();
@@ -222,7 +222,7 @@ TEST(WatchCommand, ServesTheOutputFolderAndNothingElse) {
 
 TEST(WatchCommand, ABadCommandLineOrABusyPortStopsItAtOnce) {
   ScratchDir scratch("watch-bad");
-  writeFile(scratch.path() / "shaft.nc", kProgram);
+  writeFile(scratch.path() / "shaft.nc", kWatchedProgram);
   {
     Watch watch(scratch.path(), {"shaft.nc", "--voxel", "-1"});
     EXPECT_EQ(watch.exitStatus(30), 2) << "no save can cure a bad command line";

@@ -337,7 +337,7 @@ TEST_F(MixedBatch, SummaryPageOpensInChromiumWithoutConsoleErrors) {
   ASSERT_EQ(png.height(), 1000);
   // The status badges in their colours (style in summary_html.cpp): three ok, one out of
   // tolerance, three failed or timed out — each badge some hundreds of pixels.
-  const auto near = [](const render::test::Rgb& c, int r, int g, int b) {
+  const auto near = [](const render::test::PngColour& c, int r, int g, int b) {
     return std::abs(c.r - r) < 12 && std::abs(c.g - g) < 12 && std::abs(c.b - b) < 12;
   };
   const int green = png.count(0, 1400, 0, 1000, [&](auto c) { return near(c, 0x1e, 0x8e, 0x3e); });

@@ -14,7 +14,7 @@ IsoHolder holderOf(std::string_view code) {
   return parsed.value.value_or(IsoHolder{});
 }
 
-CodeProblem problemOf(std::string_view code) {
+CodeProblem holderProblemOf(std::string_view code) {
   const auto parsed = parseIsoHolder(code);
   EXPECT_FALSE(parsed.value) << code;
   return parsed.problem.value_or(CodeProblem{});
@@ -87,30 +87,30 @@ TEST(IsoHolder, OtherLengthsAndEndStyles) {
 }
 
 TEST(IsoHolderErrors, EachPositionNamesItsCharacter) {
-  CodeProblem p = problemOf("QCLNR2525M12");
+  CodeProblem p = holderProblemOf("QCLNR2525M12");
   EXPECT_EQ(p.message, "holder QCLNR2525M12: position 1 'Q' is not a clamping system; expected one of C M P S D W");
-  p = problemOf("PCZNR2525M12");
+  p = holderProblemOf("PCZNR2525M12");
   EXPECT_EQ(p.index, 2u);
   EXPECT_EQ(p.message, "holder PCZNR2525M12: position 3 'Z' is not a holder style; expected one of A B C D E F G H J K L M N P Q R S T U V W Y");
-  p = problemOf("PCLNX2525M12");
+  p = holderProblemOf("PCLNX2525M12");
   EXPECT_EQ(p.message, "holder PCLNX2525M12: position 5 'X' is not a hand for style L; expected R or L");
-  p = problemOf("PSDNR2525M12");
+  p = holderProblemOf("PSDNR2525M12");
   EXPECT_EQ(p.message, "holder PSDNR2525M12: position 5 'R' is not the hand of a symmetric style; expected N");
-  p = problemOf("PCLNR25A5M12");
+  p = holderProblemOf("PCLNR25A5M12");
   EXPECT_EQ(p.index, 7u);
   EXPECT_EQ(p.message, "holder PCLNR25A5M12: position 7 'A5' is not a shank width; expected two digits (mm)");
-  p = problemOf("PCLNR2525I12");
+  p = holderProblemOf("PCLNR2525I12");
   EXPECT_EQ(p.index, 9u);
   EXPECT_NE(p.message.find("position 8 'I' is not a tool length letter"), std::string::npos) << p.message;
-  p = problemOf("PCLNR2525X12");
+  p = holderProblemOf("PCLNR2525X12");
   EXPECT_NE(p.message.find("position 8 'X' is a special length"), std::string::npos) << p.message;
-  p = problemOf("PCLNR2525M1A");
+  p = holderProblemOf("PCLNR2525M1A");
   EXPECT_EQ(p.index, 10u);
   EXPECT_NE(p.message.find("position 9 '1A' is not a cutting-edge length"), std::string::npos) << p.message;
   // H is 107.5°: with an 80° C insert κr + ε = 187.5° > 180°.
-  p = problemOf("SCHCR2525M12");
+  p = holderProblemOf("SCHCR2525M12");
   EXPECT_EQ(p.message, "holder SCHCR2525M12: position 3 'H' has κr 107.5°, which leaves no room for a 80° insert (κr + ε must stay below 180°)");
-  EXPECT_NE(problemOf("PCLNR2525").message.find("too short"), std::string::npos);
+  EXPECT_NE(holderProblemOf("PCLNR2525").message.find("too short"), std::string::npos);
 }
 
 }  // namespace

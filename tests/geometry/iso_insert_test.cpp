@@ -15,7 +15,7 @@ IsoInsert insertOf(std::string_view code) {
   return parsed.value.value_or(IsoInsert{});
 }
 
-CodeProblem problemOf(std::string_view code) {
+CodeProblem insertProblemOf(std::string_view code) {
   const auto parsed = parseIsoInsert(code);
   EXPECT_FALSE(parsed.value) << code;
   return parsed.problem.value_or(CodeProblem{});
@@ -145,39 +145,39 @@ TEST(IsoInsert, OptionalPositionsAndMakersSuffix) {
 }
 
 TEST(IsoInsertErrors, EachPositionNamesItsCharacter) {
-  CodeProblem p = problemOf("TBXG120408");
+  CodeProblem p = insertProblemOf("TBXG120408");
   EXPECT_EQ(p.message, "insert TBXG120408: position 3 'X' is not a tolerance class; expected one of A F C H E G J K L M N U");
   EXPECT_EQ(p.index, 2u);
-  p = problemOf("XNMG120408");
+  p = insertProblemOf("XNMG120408");
   EXPECT_EQ(p.message, "insert XNMG120408: position 1 'X' is not an insert shape; expected one of C D E M V S T W R H O P");
   EXPECT_EQ(p.index, 0u);
-  p = problemOf("CZMG120408");
+  p = insertProblemOf("CZMG120408");
   EXPECT_EQ(p.message, "insert CZMG120408: position 2 'Z' is not a clearance angle; expected one of A B C D E F G N P O");
-  p = problemOf("CNMZ120408");
+  p = insertProblemOf("CNMZ120408");
   EXPECT_EQ(p.message, "insert CNMZ120408: position 4 'Z' is not an insert type; expected one of N R F A M G W T Q U B H C J X");
   EXPECT_EQ(p.index, 3u);
-  p = problemOf("CNMG1X0408");
+  p = insertProblemOf("CNMG1X0408");
   EXPECT_EQ(p.message, "insert CNMG1X0408: position 5 '1X' is not a size code for shape C; expected two digits, the edge length in mm");
   EXPECT_EQ(p.index, 4u);
-  p = problemOf("CNMG120808");
+  p = insertProblemOf("CNMG120808");
   EXPECT_EQ(p.message, "insert CNMG120808: position 6 '08' is not a thickness code; expected one of 01 T1 02 03 T3 04 05 06 07 09");
   EXPECT_EQ(p.index, 6u);
-  p = problemOf("CNMG1204M0");
+  p = insertProblemOf("CNMG1204M0");
   EXPECT_EQ(p.index, 8u);
   EXPECT_NE(p.message.find("position 7 'M0' is not a corner radius"), std::string::npos) << p.message;
-  p = problemOf("RCMT120408");
+  p = insertProblemOf("RCMT120408");
   EXPECT_NE(p.message.find("position 7 '08' is not a round insert's corner; expected 00 (inch diameter) or M0"), std::string::npos)
       << p.message;
-  p = problemOf("CNMG120408Z");
+  p = insertProblemOf("CNMG120408Z");
   EXPECT_EQ(p.index, 10u);
   EXPECT_NE(p.message.find("position 8 'Z' is not an edge condition or hand"), std::string::npos) << p.message;
 }
 
 TEST(IsoInsertErrors, ShortUnsupportedAndImpossible) {
-  EXPECT_NE(problemOf("CNMG1204").message.find("insert CNMG1204: too short"), std::string::npos);
-  EXPECT_NE(problemOf("KNUX160405").message.find("position 1 'K' is a parallelogram or rectangle"), std::string::npos);
+  EXPECT_NE(insertProblemOf("CNMG1204").message.find("insert CNMG1204: too short"), std::string::npos);
+  EXPECT_NE(insertProblemOf("KNUX160405").message.find("position 1 'K' is a parallelogram or rectangle"), std::string::npos);
   // 9.9 mm nose on a 12.70 mm IC (radius must stay below d/2 = 6.35)
-  EXPECT_NE(problemOf("CNMG120499").message.find("position 7 '99' is a nose radius that does not fit"), std::string::npos);
+  EXPECT_NE(insertProblemOf("CNMG120499").message.find("position 7 '99' is a nose radius that does not fit"), std::string::npos);
 }
 
 }  // namespace

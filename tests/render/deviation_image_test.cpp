@@ -1,5 +1,5 @@
 // The drawing-check pictures, read back pixel by pixel at places worked out from their
-// framing: gouge blue, within tolerance green, excess red, on the part and on the colour bar.
+// framing: gouge blue, within tolerance withinToleranceGreen, excess red, on the part and on the colour bar.
 
 #include "render/deviation_image.hpp"
 
@@ -14,14 +14,14 @@ namespace lathesim::render {
 namespace {
 
 using test::Png;
-using test::Rgb;
+using test::PngColour;
 
-bool blue(const Rgb& c) { return c.b > 120 && c.b > c.r + 60 && c.b > c.g + 30; }
-bool green(const Rgb& c) { return c.g > 100 && c.g > c.r + 40 && c.g > c.b + 40; }
-bool red(const Rgb& c) { return c.r > 120 && c.r > c.g + 60 && c.r > c.b + 60; }
-bool dark(const Rgb& c) { return c.r + c.g + c.b < 200; }
+bool blue(const PngColour& c) { return c.b > 120 && c.b > c.r + 60 && c.b > c.g + 30; }
+bool withinToleranceGreen(const PngColour& c) { return c.g > 100 && c.g > c.r + 40 && c.g > c.b + 40; }
+bool red(const PngColour& c) { return c.r > 120 && c.r > c.g + 60 && c.r > c.b + 60; }
+bool dark(const PngColour& c) { return c.r + c.g + c.b < 200; }
 
-std::string describe(const Rgb& c) {
+std::string describe(const PngColour& c) {
   return std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b);
 }
 
@@ -52,13 +52,13 @@ TEST(DeviationImagePng, PartColouredByDeviationWithLabelledBar) {
   ASSERT_EQ(png.width(), 1600);
   ASSERT_EQ(png.height(), 1200);
   EXPECT_TRUE(blue(png.at(162, 528))) << describe(png.at(162, 528));
-  EXPECT_TRUE(green(png.at(430, 528))) << describe(png.at(430, 528));
+  EXPECT_TRUE(withinToleranceGreen(png.at(430, 528))) << describe(png.at(430, 528));
   EXPECT_TRUE(red(png.at(698, 528))) << describe(png.at(698, 528));
   // The colour bar: its box starts at 87 % of the width, from 8 % to 86 % of the height,
-  // the bar itself at the box's left; red at the top, green across the middle, blue below.
+  // the bar itself at the box's left; red at the top, withinToleranceGreen across the middle, blue below.
   const int barX0 = static_cast<int>(0.87 * 1600), barX1 = barX0 + 60;
   EXPECT_GT(png.count(barX0, barX1, 950, 1000, red), 500);
-  EXPECT_GT(png.count(barX0, barX1, 560, 600, green), 500);
+  EXPECT_GT(png.count(barX0, barX1, 560, 600, withinToleranceGreen), 500);
   EXPECT_GT(png.count(barX0, barX1, 130, 180, blue), 500);
   // Its labels in dark text left of the bar, at their values' heights (the bar maps −1 … +1
   // onto y 96 … 1032): "excess" at +0.75 (y 915), "within tolerance" at 0 (564), "gouge" at

@@ -18,12 +18,11 @@ namespace lathesim::render {
 namespace {
 
 using test::Png;
-using test::Rgb;
+using test::PngColour;
 
-bool jaw(const Rgb& c) { return c.b - c.r > 30 && c.b < 210 && c.r < 140; }  // blue steel
-bool green(const Rgb& c) { return c.g - c.r > 20 && c.g - c.b > 12 && c.g < 200; }  // the tailstock's steel green
-bool gold(const Rgb& c) { return c.r > 170 && c.g > 120 && c.b < 90 && c.r > c.b + 110; }
-bool holderGrey(const Rgb& c) {  // the holder's dark steel, darker than the background's lightest grey
+bool jaw(const PngColour& c) { return c.b - c.r > 30 && c.b < 210 && c.r < 140; }  // blue steel
+bool tailstockGreen(const PngColour& c) { return c.g - c.r > 20 && c.g - c.b > 12 && c.g < 200; }  // the tailstock's steel tailstockGreen
+bool holderGrey(const PngColour& c) {  // the holder's dark steel, darker than the background's lightest grey
   return std::abs(c.r - c.g) <= 16 && std::abs(c.b - c.r) <= 24 && c.r > 30 && c.r < 150 && c.b < 170;
 }
 
@@ -77,19 +76,19 @@ TEST(MachinePicture, JawsTailstockAndHolderStandWhereTheSetupPutsThem) {
   ASSERT_EQ(png.width(), 800);
   constexpr int kWindow = 3;  // 7 × 7 px
   EXPECT_EQ(around(png, framePixel(34, -66), kWindow, jaw), 49);         // the top jaw's front
-  EXPECT_EQ(around(png, framePixel(0, 30), kWindow, green), 49);         // the quill, on the axis
-  EXPECT_EQ(around(png, framePixel(0, 10), kWindow, green), 49);         // the cone: r 5.77 at Z10
+  EXPECT_EQ(around(png, framePixel(0, 30), kWindow, tailstockGreen), 49);         // the quill, on the axis
+  EXPECT_EQ(around(png, framePixel(0, 10), kWindow, tailstockGreen), 49);         // the cone: r 5.77 at Z10
   EXPECT_EQ(around(png, framePixel(60, -20), kWindow, holderGrey), 49);  // the holder (the picture's top is r 73)
-  EXPECT_EQ(around(png, framePixel(45, -25), kWindow, gold), 49);        // the insert on it
+  EXPECT_EQ(around(png, framePixel(45, -25), kWindow, test::insertGold), 49);        // the insert on it
   // Nowhere else: beside the cone (r 12 at Z8, the cone is r 4.6 there), beyond the quill
   // (r 14 at Z30), past the holder's end (r 60 at Z−5), beside the insert (r 45 at Z−15, below
   // the holder), and the bar's ghost in front of the jaws (r 20 at Z−40).
-  EXPECT_EQ(around(png, framePixel(12, 8), kWindow, green), 0);
-  EXPECT_EQ(around(png, framePixel(14, 30), kWindow, green), 0);
+  EXPECT_EQ(around(png, framePixel(12, 8), kWindow, tailstockGreen), 0);
+  EXPECT_EQ(around(png, framePixel(14, 30), kWindow, tailstockGreen), 0);
   EXPECT_EQ(around(png, framePixel(60, -5), kWindow, holderGrey), 0);
   EXPECT_EQ(around(png, framePixel(45, -15), kWindow, holderGrey), 0);
   EXPECT_EQ(around(png, framePixel(20, -40), kWindow, jaw), 0);
-  EXPECT_EQ(around(png, framePixel(20, -40), kWindow, green), 0);
+  EXPECT_EQ(around(png, framePixel(20, -40), kWindow, tailstockGreen), 0);
 }
 
 TEST(MachinePicture, TheViewFramesTheTailstocksCone) {

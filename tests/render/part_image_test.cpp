@@ -9,18 +9,16 @@ namespace lathesim::render {
 namespace {
 
 using test::Png;
-using test::Rgb;
+using test::PngColour;
 
-bool blue(const Rgb& c) { return c.b > 150 && c.b > c.r + 80 && c.b > c.g + 60; }
-bool red(const Rgb& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
-bool green(const Rgb& c) { return c.g > 110 && c.g > c.r + 60 && c.g > c.b + 40; }
-// The insert's gold: strong red and green, little blue.
-bool gold(const Rgb& c) { return c.r > 170 && c.g > 120 && c.b < 90 && c.r > c.b + 110; }
+bool blue(const PngColour& c) { return c.b > 150 && c.b > c.r + 80 && c.b > c.g + 60; }
+bool red(const PngColour& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
+bool green(const PngColour& c) { return c.g > 110 && c.g > c.r + 60 && c.g > c.b + 40; }
 // The holder's dark steel grey: dark, and nearly neutral.
-bool steel(const Rgb& c) {
+bool steel(const PngColour& c) {
   return c.r < 110 && c.g < 110 && c.b < 120 && c.r > 30 && std::abs(c.r - c.b) < 30;
 }
-int distance(const Rgb& a, const Rgb& b) {
+int distance(const PngColour& a, const PngColour& b) {
   return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
 }
 
@@ -36,8 +34,8 @@ TEST(PartImagePng, ShadedPartWithBlueFeedAndRedRapidWithoutDisplay) {
   ASSERT_EQ(png.width(), 1600);
   ASSERT_EQ(png.height(), 1200);
   // The part fills the middle; the corner shows background.
-  const Rgb corner = png.at(1590, 1190);
-  const Rgb centre = png.at(800, 600);
+  const PngColour corner = png.at(1590, 1190);
+  const PngColour centre = png.at(800, 600);
   EXPECT_GT(distance(centre, corner), 40)
       << "centre " << centre.r << "," << centre.g << "," << centre.b << " corner " << corner.r
       << "," << corner.g << "," << corner.b;
@@ -76,7 +74,7 @@ TEST(PartImagePng, CloseUpFramesItsBoxWithoutTheToolpath) {
   Png png(dir.path() / "close.png");
   EXPECT_EQ(png.count(0, 800, 0, 600, blue) + png.count(0, 800, 0, 600, red), 0);
   // The part below the edge, background above it.
-  const Rgb below = png.at(400, 150), above = png.at(400, 450);
+  const PngColour below = png.at(400, 150), above = png.at(400, 450);
   EXPECT_GT(distance(below, above), 40);
 }
 
@@ -133,16 +131,16 @@ TEST(PartImagePng, ToolIsDrawnGoldWhereItStandsAndNotWithoutOne) {
   writePartImagePng(part, none, options, dir.path() / "tool.png");
   Png withTool(dir.path() / "tool.png");
   // A 31 × 31 px window about the insert's centre is gold (its edge lines lie outside it).
-  EXPECT_GT(withTool.count(593, 624, 431, 462, gold), 31 * 31 * 9 / 10);
+  EXPECT_GT(withTool.count(593, 624, 431, 462, test::insertGold), 31 * 31 * 9 / 10);
   // Gold only there: nothing below the insert (y < 447 − 27 − 10 px, the part and background).
-  EXPECT_EQ(withTool.count(0, 800, 0, 405, gold), 0);
+  EXPECT_EQ(withTool.count(0, 800, 0, 405, test::insertGold), 0);
   // The holder's shank runs on to Z 130, to the right of the insert and out of the picture.
   EXPECT_GT(withTool.count(650, 800, 437, 457, steel), 200);
 
   PartImageOptions plain{800, 600, "t", {}};
   writePartImagePng(part, none, plain, dir.path() / "plain.png");
   Png without(dir.path() / "plain.png");
-  EXPECT_EQ(without.count(0, 800, 0, 600, gold), 0);
+  EXPECT_EQ(without.count(0, 800, 0, 600, test::insertGold), 0);
 }
 
 TEST(PartImagePng, UnwritablePathThrows) {

@@ -14,17 +14,16 @@ namespace lathesim::render {
 namespace {
 
 using test::Png;
-using test::Rgb;
+using test::PngColour;
 using test::partMetal;
 
 // Colour classes, loose enough for lighting and anti-aliasing, apart from one another; the
 // part's metal is test::partMetal (png_pixels.hpp), which tells it from the background.
-bool ghost(const Rgb& c) { return c.r > 180 && c.r - c.b > 25 && c.g > c.b; }  // amber over the background
-bool jaw(const Rgb& c) { return c.b - c.r > 30 && c.b < 210 && c.r < 140; }     // blue steel, darker than a feed
-bool cutFace(const Rgb& c) { return c.b > 170 && c.b - c.r > 30 && c.g > c.r; }
-bool purple(const Rgb& c) { return c.r - c.g > 40 && c.b - c.g > 40; }
-bool gold(const Rgb& c) { return c.r > 170 && c.g > 120 && c.b < 90 && c.r > c.b + 110; }
-bool redLine(const Rgb& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
+bool ghost(const PngColour& c) { return c.r > 180 && c.r - c.b > 25 && c.g > c.b; }  // amber over the background
+bool jaw(const PngColour& c) { return c.b - c.r > 30 && c.b < 210 && c.r < 140; }     // blue steel, darker than a feed
+bool cutFace(const PngColour& c) { return c.b > 170 && c.b - c.r > 30 && c.g > c.r; }
+bool purple(const PngColour& c) { return c.r - c.g > 40 && c.b - c.g > 40; }
+bool redLine(const PngColour& c) { return c.r > 150 && c.r > c.g + 80 && c.r > c.b + 80; }
 
 /// A Φ40 × 60 part (Z−60..0) in a Φ60 bar, jaws from r 30 to 50 on Z−80..−60, the body behind
 /// to Z−180; Ø40 and the 60 length dimensioned; a 10 mm square insert at (r 25, Z10); a rapid
@@ -87,7 +86,7 @@ TEST(PartViews, FrontViewShowsPartGhostJawToolAndDimensionsWhereTheyStand) {
   EXPECT_EQ(around(png, frontPixel(-10, -45), kWindow, metal), 81);  // the part, below its axis
   EXPECT_EQ(around(png, frontPixel(-25, -30), kWindow, ghost), 81);  // the bar's removed ring
   EXPECT_EQ(around(png, frontPixel(40, -70), kWindow, jaw), 81);     // the top jaw
-  EXPECT_GT(around(png, frontPixel(30, 15), kWindow, gold), 70);     // the insert's middle: r 25–35, Z10–20
+  EXPECT_GT(around(png, frontPixel(30, 15), kWindow, test::insertGold), 70);     // the insert's middle: r 25–35, Z10–20
   EXPECT_EQ(around(png, frontPixel(40, 5), kWindow, ghost), 0);      // beyond the bar: background
   // The 60 length: its line 0.8 of a spacing (27 px) above the dimension band's foot (474 px),
   // from Z−60 to Z0, and its figure centred above it.
@@ -158,7 +157,7 @@ TEST(PartViews, IsoViewFramesTheBarNotTheRapidAndMarksWhereItGoes) {
 // A crash is marked where it happened: a red disc (redder than the rapids' dashes) centred on
 // the point the frame projects it to, in every view, with its label; nothing of that red
 // without one. The front view's projection is the one worked by hand above (frontPixel).
-bool crashRed(const Rgb& c) { return c.r >= 240 && c.g <= 25 && c.b <= 25; }
+bool crashRed(const PngColour& c) { return c.r >= 240 && c.g <= 25 && c.b <= 25; }
 
 TEST(PartViews, ACrashIsARedDiscWhereItHappenedInEveryView) {
   ::unsetenv("DISPLAY");
@@ -187,7 +186,7 @@ TEST(PartViews, ACrashIsARedDiscWhereItHappenedInEveryView) {
     // The label, to the right of the disc.
     const int right = centre.x() + static_cast<int>(1.6 * crashMarkRadiusPx(scene.options.heightPx));
     EXPECT_GT(png.count(right, right + 120, centre.y() - 10, centre.y() + 30,
-                        [](const Rgb& c) { return c.r > 200 && c.g < 120 && c.b < 120; }),
+                        [](const PngColour& c) { return c.r > 200 && c.g < 120 && c.b < 120; }),
               20);
   }
 }

@@ -21,7 +21,7 @@ namespace lathesim::render {
 namespace {
 
 using test::Png;
-using test::Rgb;
+using test::PngColour;
 
 void writeBytes(const std::string& bytes, const std::filesystem::path& file) {
   std::ofstream(file, std::ios::binary) << bytes;
@@ -52,7 +52,7 @@ int differingPixels(const Png& a, const Png& b) {
   int differing = 0;
   for (int y = 0; y < a.height(); ++y)
     for (int x = 0; x < a.width(); ++x) {
-      const Rgb p = a.at(x, y), q = b.at(x, y);
+      const PngColour p = a.at(x, y), q = b.at(x, y);
       differing += p.r != q.r || p.g != q.g || p.b != q.b;
     }
   return differing;

@@ -3,20 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "setup/setup.hpp"
+#include "tests/setup/setup_text.hpp"
 
 namespace lathesim::setup {
 namespace {
 
-SetupResult parse(std::string_view text) { return parseSetup(text, "part.toml"); }
-
-/// The one diagnostic of a file that should fail with exactly one error.
-interp::Diagnostic onlyError(std::string_view text) {
-  const SetupResult result = parse(text);
-  EXPECT_FALSE(result.setup.has_value());
-  EXPECT_EQ(result.diagnostics.size(), 1u);
-  if (result.diagnostics.empty()) return {};
-  return result.diagnostics.front();
-}
+using test::onlyDiagnostic;
+using test::parse;
 
 TEST(OffsetSetup, NoOffsetsByDefault) { EXPECT_TRUE(defaultSetup().offsets.empty()); }
 
@@ -45,44 +38,44 @@ TEST(OffsetSetup, ReadsEveryKeyAndDefaultsTheRestToZero) {
 }
 
 TEST(OffsetSetup, MissingNumberIsAnError) {
-  const auto d = onlyError("[[offset]]\nradius = 0.8\n");
+  const auto d = onlyDiagnostic("[[offset]]\nradius = 0.8\n");
   EXPECT_EQ(d.line, 1);
   EXPECT_EQ(d.message, "offset[1] has no number (add number = 1..99)");
 }
 
 TEST(OffsetSetup, NegativeRadiusIsAnError) {
-  const auto d = onlyError("[[offset]]\nnumber = 1\nradius = -0.8\n");
+  const auto d = onlyDiagnostic("[[offset]]\nnumber = 1\nradius = -0.8\n");
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.message, "offset[1].radius is a nose radius and must be ≥ 0");
 }
 
 TEST(OffsetSetup, TipOutsideZeroToNineIsAnError) {
-  const auto d = onlyError("[[offset]]\nnumber = 1\ntip = 10\n");
+  const auto d = onlyDiagnostic("[[offset]]\nnumber = 1\ntip = 10\n");
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.message, "offset[1].tip must be an integer 0..9");
 }
 
 TEST(OffsetSetup, NonNumericShiftIsAnError) {
-  const auto d = onlyError("[[offset]]\nnumber = 1\nwear_x = \"a lot\"\n");
+  const auto d = onlyDiagnostic("[[offset]]\nnumber = 1\nwear_x = \"a lot\"\n");
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.message, "offset[1].wear_x must be a number of mm");
 }
 
 TEST(OffsetSetup, UnknownKeyIsAnError) {
-  const auto d = onlyError("[[offset]]\nnumber = 1\nnose = 0.8\n");
+  const auto d = onlyDiagnostic("[[offset]]\nnumber = 1\nnose = 0.8\n");
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.message,
             "unknown key 'offset[1].nose' (expected number, x, z, radius, tip, wear_x, wear_z)");
 }
 
 TEST(OffsetSetup, NumberDefinedTwiceIsAnError) {
-  const auto d = onlyError("[[offset]]\nnumber = 2\n[[offset]]\nnumber = 2\n");
+  const auto d = onlyDiagnostic("[[offset]]\nnumber = 2\n[[offset]]\nnumber = 2\n");
   EXPECT_EQ(d.line, 4);
   EXPECT_EQ(d.message, "offset number 2 is defined twice (offset[1] and offset[2])");
 }
 
 TEST(OffsetSetup, NotAnArrayOfTablesIsAnError) {
-  const auto d = onlyError("offset = 3\n");
+  const auto d = onlyDiagnostic("offset = 3\n");
   EXPECT_EQ(d.line, 1);
   EXPECT_EQ(d.message, "offset must be given as [[offset]] tables");
 }

@@ -1,6 +1,7 @@
 // The setup file: defaults, a full valid file, and each error with its message and position.
 
 #include "setup/setup.hpp"
+#include "tests/setup/setup_text.hpp"
 #include "setup/job.hpp"
 
 #include <gtest/gtest.h>
@@ -14,16 +15,8 @@ namespace {
 
 using interp::Diagnostic;
 
-SetupResult parse(std::string_view text) { return parseSetup(text, "part.toml"); }
-
-/// The one diagnostic of a file that should fail with exactly one error.
-Diagnostic onlyError(std::string_view text) {
-  const SetupResult result = parse(text);
-  EXPECT_FALSE(result.setup.has_value());
-  EXPECT_EQ(result.diagnostics.size(), 1u);
-  if (result.diagnostics.empty()) return {};
-  return result.diagnostics.front();
-}
+using test::onlyDiagnostic;
+using test::parse;
 
 std::vector<RZ> verticesOf(const ConvexPolygon& polygon) { return polygon.vertices(); }
 
@@ -133,7 +126,7 @@ TEST(ParseSetup, MachineRapidMaxRpmAndReference) {
 
 TEST(ParseSetupErrors, RapidMustBeTwoPositiveRates) {
   for (const char* value : {"[6000]", "[6000, 0]", "[-1, 8000]", "6000", "[\"fast\", 8000]"}) {
-    const Diagnostic d = onlyError(std::string("[machine]\nrapid = ") + value + "\n");
+    const Diagnostic d = onlyDiagnostic(std::string("[machine]\nrapid = ") + value + "\n");
     EXPECT_EQ(d.message.rfind("machine.rapid must be [X, Z] rapid rates, positive numbers of mm/min, got ", 0), 0u)
         << d.message;
     EXPECT_EQ(d.line, 2);
@@ -141,7 +134,7 @@ TEST(ParseSetupErrors, RapidMustBeTwoPositiveRates) {
 }
 
 TEST(ParseSetupErrors, MaxRpmMustBePositive) {
-  const Diagnostic d = onlyError("[machine]\n\nmax_rpm = 0\n");
+  const Diagnostic d = onlyDiagnostic("[machine]\n\nmax_rpm = 0\n");
   EXPECT_EQ(d.message, "machine.max_rpm must be a positive number of rpm, got 0");
   EXPECT_EQ(d.line, 3);
 }
@@ -184,21 +177,21 @@ TEST(ParseSetup, ControlKeysOverrideThePresetWhateverTheirOrder) {
 }
 
 TEST(ParseSetupErrors, ControlNamesAndValuesAreChecked) {
-  Diagnostic d = onlyError("[control]\nname = \"fanuc-0i-m\"\n");
+  Diagnostic d = onlyDiagnostic("[control]\nname = \"fanuc-0i-m\"\n");
   EXPECT_EQ(d.message, "control.name must be one of \"gsk980tdi\", \"fanuc-0i-t\", \"haas\", \"denford\" (a control preset)");
   EXPECT_EQ(d.line, 2);
-  d = onlyError("[control]\n\nrapid_positioning = \"straight\"\n");
+  d = onlyDiagnostic("[control]\n\nrapid_positioning = \"straight\"\n");
   EXPECT_EQ(d.message, "control.rapid_positioning must be one of \"nonlinear\", \"linear\", got \"straight\"");
   EXPECT_EQ(d.line, 3);
-  d = onlyError("[control]\nrapid = \"linear\"\n");
+  d = onlyDiagnostic("[control]\nrapid = \"linear\"\n");
   EXPECT_EQ(d.message.rfind("unknown key 'control.rapid' (expected name or one of rapid_positioning, ", 0), 0u)
       << d.message;
-  d = onlyError("[control]\ng71_depth = [1, 2]\n");
+  d = onlyDiagnostic("[control]\ng71_depth = [1, 2]\n");
   EXPECT_EQ(d.message, "control.g71_depth must be a string, a number or a list of strings");
 }
 
 TEST(ParseSetupErrors, InitialFeedModeAndPowerOnFeedModeAreOneSetting) {
-  const Diagnostic d = onlyError("[control]\npower_on_feed_mode = \"G99\"\n[machine]\ninitial_feed_mode = \"per_minute\"\n");
+  const Diagnostic d = onlyDiagnostic("[control]\npower_on_feed_mode = \"G99\"\n[machine]\ninitial_feed_mode = \"per_minute\"\n");
   EXPECT_EQ(d.message, "machine.initial_feed_mode and control.power_on_feed_mode both set the feed mode at "
                        "power-on; give control.power_on_feed_mode alone");
   EXPECT_EQ(d.line, 4);
@@ -222,15 +215,15 @@ TEST(ParseSetup, TravelIsStatedOrDerivedFromTheReferenceTheStartAndTheBar) {
   EXPECT_EQ(travel.zMinMm, -300);
   EXPECT_EQ(travel.zMaxMm, 400);
   EXPECT_FALSE(travel.zDerived);
-  EXPECT_EQ(onlyError("[machine]\ntravel_x = [100, -10]\n").message,
+  EXPECT_EQ(onlyDiagnostic("[machine]\ntravel_x = [100, -10]\n").message,
             "machine.travel_x must be [min, max] in mm with min < max, got [100, -10]");
 }
 
 TEST(ParseSetupErrors, DialectAndFeedModeAreNamedChoices) {
-  const Diagnostic d = onlyError("[machine]\ndialect = \"fanuc-c\"\n");
+  const Diagnostic d = onlyDiagnostic("[machine]\ndialect = \"fanuc-c\"\n");
   EXPECT_EQ(d.message, "machine.dialect must be one of \"fanuc-a\", \"fanuc-b\", \"hnc\", \"haas\", got \"fanuc-c\"");
   EXPECT_EQ(d.line, 2);
-  EXPECT_EQ(onlyError("[machine]\ninitial_feed_mode = 99\n").message,
+  EXPECT_EQ(onlyDiagnostic("[machine]\ninitial_feed_mode = 99\n").message,
             "machine.initial_feed_mode must be one of \"per_revolution\", \"per_minute\", got 99");
 }
 
@@ -242,12 +235,12 @@ TEST(ParseSetup, ThreadRunoutInLeads) {
     ASSERT_TRUE(result.setup.has_value()) << text;
     EXPECT_EQ(interpreterOptionsOf(*result.setup).control.threadRunoutLeads, 1.5) << text;
   }
-  EXPECT_EQ(onlyError("[control]\nthread_runout = 1.5\n[machine]\nthread_runout = 1.0\n").message,
+  EXPECT_EQ(onlyDiagnostic("[control]\nthread_runout = 1.5\n[machine]\nthread_runout = 1.0\n").message,
             "machine.thread_runout and control.thread_runout both set the thread run-out; give control.thread_runout "
             "alone");
-  EXPECT_EQ(onlyError("[control]\nthread_runout = 10\n").message,
+  EXPECT_EQ(onlyDiagnostic("[control]\nthread_runout = 10\n").message,
             "control.thread_runout must be a number from 0 to 9.9, got 10");
-  EXPECT_EQ(onlyError("[machine]\nthread_runout = -1\n").message,
+  EXPECT_EQ(onlyDiagnostic("[machine]\nthread_runout = -1\n").message,
             "machine.thread_runout must be a number of leads from 0 to 9.9 (the control's G92/G76 run-out parameter, "
             "GSK No.19 and Fanuc No.5130 in 0.1 lead), got -1");
 }
@@ -256,21 +249,21 @@ TEST(ParseSetup, ThreadRunoutInLeads) {
 TEST(ParseSetup, ThreadRunoutAngle) {
   EXPECT_EQ(interpreterOptionsOf(*parse("").setup).control.threadRunoutAngleDeg, 0);
   EXPECT_EQ(interpreterOptionsOf(*parse("[control]\nthread_runout_angle = 30\n").setup).control.threadRunoutAngleDeg, 30);
-  EXPECT_EQ(onlyError("[control]\nthread_runout_angle = 90\n").message,
+  EXPECT_EQ(onlyDiagnostic("[control]\nthread_runout_angle = 90\n").message,
             "control.thread_runout_angle must be a whole number from 0 to 89, got 90");
-  EXPECT_EQ(onlyError("[control]\nthread_runout_angle = 30.5\n").message,
+  EXPECT_EQ(onlyDiagnostic("[control]\nthread_runout_angle = 30.5\n").message,
             "control.thread_runout_angle must be a whole number from 0 to 89, got 30.5");
 }
 
 TEST(ParseSetupErrors, ReferenceIsAPositionLikeStart) {
-  EXPECT_EQ(onlyError("[machine]\nreference = [200]\n").message,
+  EXPECT_EQ(onlyDiagnostic("[machine]\nreference = [200]\n").message,
             "machine.reference must be [X diameter, Z] in mm, got [200]");
-  EXPECT_EQ(onlyError("[machine]\nreference = [-2, 200]\n").message,
+  EXPECT_EQ(onlyDiagnostic("[machine]\nreference = [-2, 200]\n").message,
             "machine.reference X is a diameter and must not be negative, got [-2, 200]");
 }
 
 TEST(ParseSetupErrors, UnknownMachineKeyListsTheKnownOnes) {
-  const Diagnostic d = onlyError("[machine]\nrapids = [1, 2]\n");
+  const Diagnostic d = onlyDiagnostic("[machine]\nrapids = [1, 2]\n");
   EXPECT_EQ(d.message,
             "unknown key 'machine.rapids' (expected start, rapid, max_rpm, reference, travel_x, travel_z, dialect, "
             "initial_feed_mode, thread_runout, zero, second_reference or tailstock)");
@@ -283,7 +276,7 @@ TEST(ParseSetup, ClockwiseOutlineIsAccepted) {
 }
 
 TEST(ParseSetupErrors, SyntaxErrorCarriesTomlsPosition) {
-  const Diagnostic d = onlyError("[stock]\ndiameter = = 5\n");
+  const Diagnostic d = onlyDiagnostic("[stock]\ndiameter = = 5\n");
   EXPECT_EQ(d.file, "part.toml");
   EXPECT_EQ(d.line, 2);
   EXPECT_GT(d.column, 0);
@@ -292,7 +285,7 @@ TEST(ParseSetupErrors, SyntaxErrorCarriesTomlsPosition) {
 }
 
 TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
-  const Diagnostic d = onlyError("[stock]\ndiameter = 50\n  diamter = 5\n");
+  const Diagnostic d = onlyDiagnostic("[stock]\ndiameter = 50\n  diamter = 5\n");
   EXPECT_EQ(d.message, "unknown key 'stock.diamter' (expected diameter, length, face_z, bore or material)");
   EXPECT_EQ(d.line, 3);
   EXPECT_EQ(d.column, 3);
@@ -300,14 +293,14 @@ TEST(ParseSetupErrors, UnknownKeyIsNamedWithItsSection) {
 }
 
 TEST(ParseSetupErrors, UnknownTopLevelTable) {
-  const Diagnostic d = onlyError("[stock]\ndiameter = 50\n[spindle]\nrpm = 5\n");
+  const Diagnostic d = onlyDiagnostic("[stock]\ndiameter = 50\n[spindle]\nrpm = 5\n");
   EXPECT_EQ(d.message,
             "unknown table 'spindle' (expected stock, machine, control, sim, tool, chuck, offset, work_offset or macro)");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, UnknownTopLevelKey) {
-  const Diagnostic d = onlyError("voxel = 0.2\n");
+  const Diagnostic d = onlyDiagnostic("voxel = 0.2\n");
   EXPECT_EQ(d.message,
             "unknown key 'voxel' (expected stock, machine, control, sim, tool, chuck, offset, work_offset or macro)");
   EXPECT_EQ(d.line, 1);
@@ -315,14 +308,14 @@ TEST(ParseSetupErrors, UnknownTopLevelKey) {
 }
 
 TEST(ParseSetupErrors, UnknownKeyInATool) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 1\n[[tool]]\nnumber = 2\nradius = 0.4\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 1\n[[tool]]\nnumber = 2\nradius = 0.4\n");
   EXPECT_EQ(d.message, "unknown key 'tool[2].radius' (expected number, polygon, kind, thickness, insert, holder, tip, "
                        "width, corner_radius, depth, angle, pitch, nose_radius, diameter, point_angle or length)");
   EXPECT_EQ(d.line, 5);
 }
 
 TEST(ParseSetupErrors, NegativeDiameter) {
-  const Diagnostic d = onlyError("[stock]\ndiameter = -5\n");
+  const Diagnostic d = onlyDiagnostic("[stock]\ndiameter = -5\n");
   EXPECT_EQ(d.message, "stock.diameter must be a positive number of mm, got -5");
   EXPECT_EQ(d.line, 2);
   EXPECT_EQ(d.column, 12);
@@ -341,7 +334,7 @@ TEST(ParseSetupErrors, ABoreMustBePositiveAndInsideTheBar) {
   for (const auto& [text, bore] : {std::pair{"[stock]\ndiameter = 60\nbore = 60\n", "60.0"},
                                    {"[stock]\nbore = 70\ndiameter = 60\n", "70.0"},
                                    {"[stock]\nbore = 130\n", "130.0"}}) {
-    const Diagnostic d = onlyError(text);
+    const Diagnostic d = onlyDiagnostic(text);
     EXPECT_EQ(d.message, "stock.bore (the tube's inside diameter, " + std::string(bore) +
                              " mm) must be smaller than stock.diameter (" +
                              (std::string(text).find("60") != std::string::npos ? "60.0" : "125.0") + " mm)")
@@ -350,27 +343,27 @@ TEST(ParseSetupErrors, ABoreMustBePositiveAndInsideTheBar) {
     EXPECT_EQ(d.column, 8);  // the value
   }
   for (const char* text : {"[stock]\nbore = 0\n", "[stock]\nbore = -5\n"}) {
-    const Diagnostic d = onlyError(text);
+    const Diagnostic d = onlyDiagnostic(text);
     EXPECT_EQ(d.line, 2) << text;
     EXPECT_NE(d.message.find("stock.bore must be a positive number of mm"), std::string::npos) << d.message;
   }
 }
 
 TEST(ParseSetupErrors, ZeroLength) {
-  const Diagnostic d = onlyError("[stock]\nlength = 0.0\n");
+  const Diagnostic d = onlyDiagnostic("[stock]\nlength = 0.0\n");
   EXPECT_EQ(d.message, "stock.length must be a positive number of mm, got 0.0");
   EXPECT_EQ(d.line, 2);
 }
 
 TEST(ParseSetupErrors, NonPositiveVoxel) {
-  const Diagnostic d = onlyError("[sim]\n\nvoxel = -0.2\n");
+  const Diagnostic d = onlyDiagnostic("[sim]\n\nvoxel = -0.2\n");
   EXPECT_EQ(d.message, "sim.voxel must be a positive number of mm, got -0.2");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, MaxMovesIsAWholePositiveNumber) {
   for (const char* value : {"0", "-5", "2.5", "\"many\""}) {
-    const Diagnostic d = onlyError(std::string("[sim]\nmax_moves = ") + value + "\n");
+    const Diagnostic d = onlyDiagnostic(std::string("[sim]\nmax_moves = ") + value + "\n");
     EXPECT_EQ(d.message, std::string("sim.max_moves must be a whole number of moves, 1 or more, got ") + value);
     EXPECT_EQ(d.line, 2);
   }
@@ -381,35 +374,35 @@ TEST(ParseSetupErrors, MaxMovesIsAWholePositiveNumber) {
 }
 
 TEST(ParseSetupErrors, WrongTypeForANumber) {
-  const Diagnostic d = onlyError("[stock]\nface_z = \"2\"\n");
+  const Diagnostic d = onlyDiagnostic("[stock]\nface_z = \"2\"\n");
   EXPECT_EQ(d.message, "stock.face_z must be a number of mm, got \"2\"");
   EXPECT_EQ(d.line, 2);
 }
 
 TEST(ParseSetupErrors, WrongTypeForASection) {
-  const Diagnostic d = onlyError("stock = 125\n");
+  const Diagnostic d = onlyDiagnostic("stock = 125\n");
   EXPECT_EQ(d.message, "stock must be a table ([stock]), got 125");
   EXPECT_EQ(d.line, 1);
 }
 
 TEST(ParseSetupErrors, StartMustBeAPair) {
-  const Diagnostic d = onlyError("[machine]\nstart = [200]\n");
+  const Diagnostic d = onlyDiagnostic("[machine]\nstart = [200]\n");
   EXPECT_EQ(d.message, "machine.start must be [X diameter, Z] in mm, got [200]");
   EXPECT_EQ(d.line, 2);
 }
 
 TEST(ParseSetupErrors, StartMustHoldNumbers) {
-  const Diagnostic d = onlyError("[machine]\nstart = [\"X200\", 200]\n");
+  const Diagnostic d = onlyDiagnostic("[machine]\nstart = [\"X200\", 200]\n");
   EXPECT_EQ(d.message.rfind("machine.start must be [X diameter, Z] in mm, got ", 0), 0u) << d.message;
 }
 
 TEST(ParseSetupErrors, StartDiameterMustNotBeNegative) {
-  const Diagnostic d = onlyError("[machine]\nstart = [-10, 200]\n");
+  const Diagnostic d = onlyDiagnostic("[machine]\nstart = [-10, 200]\n");
   EXPECT_EQ(d.message, "machine.start X is a diameter and must not be negative, got [-10, 200]");
 }
 
 TEST(ParseSetupErrors, NonConvexPolygon) {
-  const Diagnostic d = onlyError(R"([[tool]]
+  const Diagnostic d = onlyDiagnostic(R"([[tool]]
 number = 1
 [[tool]]
 number = 2
@@ -421,62 +414,62 @@ polygon = [[0, 0], [10, 0], [5, 2], [10, 10], [0, 10]]
 }
 
 TEST(ParseSetupErrors, SelfIntersectingPolygon) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 1\npolygon = [[0, 0], [10, 10], [10, 0], [0, 10]]\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 1\npolygon = [[0, 0], [10, 10], [10, 0], [0, 10]]\n");
   EXPECT_EQ(d.message, "tool[1].polygon is self-intersecting (edges 1 and 3 cross)");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, PolygonWithTooFewPoints) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 1\npolygon = [[0, 0], [10, 1]]\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 1\npolygon = [[0, 0], [10, 1]]\n");
   EXPECT_EQ(d.message, "tool[1].polygon needs at least 3 vertices, got 2");
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, PolygonPointsMustBePairs) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 1\npolygon = [[0, 0], [10], [1, 10]]\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 1\npolygon = [[0, 0], [10], [1, 10]]\n");
   EXPECT_EQ(d.message.rfind("tool[1].polygon must be a list of [radial, axial] points in mm, got ", 0), 0u)
       << d.message;
   EXPECT_EQ(d.line, 3);
 }
 
 TEST(ParseSetupErrors, ToolNumberOutOfRange) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 100\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 100\n");
   EXPECT_EQ(d.message, "tool[1].number must be an integer 1..99, got 100");
   EXPECT_EQ(d.line, 2);
   EXPECT_EQ(d.column, 10);
 }
 
 TEST(ParseSetupErrors, ToolNumberZero) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 0\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 0\n");
   EXPECT_EQ(d.message, "tool[1].number must be an integer 1..99, got 0");
 }
 
 TEST(ParseSetupErrors, ToolNumberMustBeAnInteger) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 1.5\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 1.5\n");
   EXPECT_EQ(d.message, "tool[1].number must be an integer 1..99, got 1.5");
 }
 
 TEST(ParseSetupErrors, ToolWithoutNumber) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 1\n\n[[tool]]\npolygon = [[0, 0], [10, 1], [1, 10]]\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 1\n\n[[tool]]\npolygon = [[0, 0], [10, 1], [1, 10]]\n");
   EXPECT_EQ(d.message, "tool[2] has no number (add number = 1..99)");
   EXPECT_EQ(d.line, 4);
 }
 
 TEST(ParseSetupErrors, DuplicateToolNumber) {
-  const Diagnostic d = onlyError("[[tool]]\nnumber = 1\n[[tool]]\nnumber = 2\n[[tool]]\nnumber = 1\n");
+  const Diagnostic d = onlyDiagnostic("[[tool]]\nnumber = 1\n[[tool]]\nnumber = 2\n[[tool]]\nnumber = 1\n");
   EXPECT_EQ(d.message, "tool number 1 is defined twice (tool[1] and tool[3])");
   EXPECT_EQ(d.line, 6);
   EXPECT_EQ(d.column, 10);
 }
 
 TEST(ParseSetupErrors, ToolMustBeAnArrayOfTables) {
-  const Diagnostic d = onlyError("[tool]\nnumber = 1\n");
+  const Diagnostic d = onlyDiagnostic("[tool]\nnumber = 1\n");
   EXPECT_EQ(d.message, "tool must be given as [[tool]] tables, got a table");
   EXPECT_EQ(d.line, 1);
 }
 
 TEST(ParseSetupErrors, EmptyToolList) {
-  const Diagnostic d = onlyError("tool = []\n");
+  const Diagnostic d = onlyDiagnostic("tool = []\n");
   EXPECT_EQ(d.message, "tool lists no tools; give at least one [[tool]] or leave tool out");
   EXPECT_EQ(d.line, 1);
 }
@@ -552,11 +545,11 @@ TEST(ParseSetup, WorkOffsetsAndMachineZero) {
 }
 
 TEST(ParseSetupErrors, WorkOffsetProblemsAreNamed) {
-  EXPECT_EQ(onlyError("[[work_offset]]\ncode = \"G60\"\n").message, "work_offset[1].code must be one of \"G54\" … \"G59\"");
-  EXPECT_EQ(onlyError("[[work_offset]]\nz = 1\n").message, "work_offset[1] has no code (add code = \"G54\" … \"G59\")");
-  EXPECT_EQ(onlyError("[[work_offset]]\ncode = \"G55\"\ny = 1\n").message,
+  EXPECT_EQ(onlyDiagnostic("[[work_offset]]\ncode = \"G60\"\n").message, "work_offset[1].code must be one of \"G54\" … \"G59\"");
+  EXPECT_EQ(onlyDiagnostic("[[work_offset]]\nz = 1\n").message, "work_offset[1] has no code (add code = \"G54\" … \"G59\")");
+  EXPECT_EQ(onlyDiagnostic("[[work_offset]]\ncode = \"G55\"\ny = 1\n").message,
             "unknown key 'work_offset[1].y' (expected code, x, z)");
-  EXPECT_EQ(onlyError("[[work_offset]]\ncode = \"G55\"\n[[work_offset]]\ncode = \"G55\"\n").message,
+  EXPECT_EQ(onlyDiagnostic("[[work_offset]]\ncode = \"G55\"\n[[work_offset]]\ncode = \"G55\"\n").message,
             "G55 is given twice (work_offset[1] and work_offset[2])");
 }
 

@@ -2,6 +2,7 @@
 // keys, and each error with its key, line and the column of the bad character.
 
 #include "setup/setup.hpp"
+#include "tests/setup/setup_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,18 +15,8 @@ namespace {
 using interp::Diagnostic;
 using interp::Severity;
 
-SetupResult parse(std::string_view text) { return parseSetup(text, "part.toml"); }
-
-Diagnostic onlyError(std::string_view text) {
-  const SetupResult result = parse(text);
-  EXPECT_FALSE(result.setup.has_value());
-  int errors = 0;
-  Diagnostic first;
-  for (const auto& d : result.diagnostics)
-    if (d.severity == Severity::Error && errors++ == 0) first = d;
-  EXPECT_EQ(errors, 1);
-  return first;
-}
+using test::onlyError;
+using test::parse;
 
 const ToolDefinition& onlyTool(const SetupResult& result) {
   EXPECT_TRUE(result.setup.has_value()) << (result.diagnostics.empty() ? "" : result.diagnostics[0].message);

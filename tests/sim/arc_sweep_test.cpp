@@ -13,7 +13,7 @@
 namespace lathesim::sim {
 namespace {
 
-constexpr double kVoxelMm = 0.25;
+constexpr double kArcVoxelMm = 0.25;
 
 interp::Move move(interp::MoveKind kind, RZ from, RZ to, RZ center = RZ(0, 0)) {
   return test::turningMove(kind, from, to, 0, 1, center);
@@ -27,9 +27,9 @@ ConvexPolygon squareOutline() {
   return *ConvexPolygon::fromOutline(square).polygon;
 }
 
-ToolOutlines squareTool() { return {{1, squareOutline()}}; }
+ToolOutlines arcSquareTool() { return {{1, squareOutline()}}; }
 
-double tolerance(double changedSurfaceMm2) { return 0.1 * kVoxelMm * changedSurfaceMm2; }
+double tolerance(double changedSurfaceMm2) { return 0.1 * kArcVoxelMm * changedSurfaceMm2; }
 
 TEST(ArcSweep, ConvexCornerRoundByPappus) {
   // Bar Φ40 (r 20), Z -30 … 0. G02 from (20, -5) to (15, 0) about (15, -5), radius 5:
@@ -45,12 +45,12 @@ TEST(ArcSweep, ConvexCornerRoundByPappus) {
   // radius 15 + 5·2/π); 2075.4 mm² in all, tolerance 51.9 mm³. One straight chord instead
   // of the arc would also take the circular segment (25π/4 − 12.5 = 7.13 mm² at r ≈ 18):
   // about 800 mm³ more.
-  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({40.0, 30.0, 0.0}, kArcVoxelMm);
   const double before = stock.volumeMm3();
   interp::Toolpath path;
   path.blockCount = 1;
   path.moves.push_back(move(interp::MoveKind::ArcCW, {20, -5}, {15, 0}, {15, -5}));
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, arcSquareTool(), stock);
   const double exact = 2375.0 * M_PI / 3.0 - 187.5 * M_PI * M_PI;
   EXPECT_NEAR(before - stock.volumeMm3(), exact, tolerance(2075.4));
   ASSERT_EQ(result.blocks.size(), 1u);
@@ -69,14 +69,14 @@ TEST(ArcSweep, ConcaveFilletInOneBlockByPappus) {
   // Changed surfaces: old cylinder r 20 over Z -10…0, 2π·20·10 = 1256.6; face ring 549.8;
   // new cylinder r 15, 2π·15·5 = 471.2; fillet 2π · (5π/2) · (20 − 10/π) = 100π² − 50π
   // = 829.9; 3107.5 mm² in all, tolerance 77.7 mm³.
-  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({40.0, 30.0, 0.0}, kArcVoxelMm);
   const double before = stock.volumeMm3();
   interp::Toolpath path;
   path.blockCount = 1;
   path.moves.push_back(move(interp::MoveKind::Feed, {15, 2}, {15, -5}));
   path.moves.push_back(move(interp::MoveKind::ArcCW, {15, -5}, {20, -10}, {20, -5}));
   path.moves.push_back(move(interp::MoveKind::Feed, {20, -10}, {22, -10}));
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, arcSquareTool(), stock);
   const double exact = 2375.0 * M_PI / 3.0 + 250.0 * M_PI * M_PI;
   EXPECT_NEAR(before - stock.volumeMm3(), exact, tolerance(3107.5));
   ASSERT_EQ(result.blocks.size(), 1u);
@@ -91,12 +91,12 @@ TEST(ArcSweep, BallEndIsAHemisphere) {
   //           = 1000π/3 = 1047.20 mm³
   // Changed surfaces: the face π·100 = 314.2, the cylinder band 2π·10·10 = 628.3, the
   // hemisphere 2π·100 = 628.3; 1570.8 mm² in all, tolerance 39.3 mm³.
-  Stock stock({20.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({20.0, 30.0, 0.0}, kArcVoxelMm);
   const double before = stock.volumeMm3();
   interp::Toolpath path;
   path.blockCount = 1;
   path.moves.push_back(move(interp::MoveKind::ArcCCW, {0, 0}, {10, -10}, {0, -10}));
-  simulate(path, squareTool(), stock);
+  simulate(path, arcSquareTool(), stock);
   EXPECT_NEAR(before - stock.volumeMm3(), 1000.0 * M_PI / 3.0, tolerance(1570.8));
 }
 
@@ -113,12 +113,12 @@ TEST(ArcSweep, ArcsAreFollowedByChordsOfBoundedSagittaAndDwellsSweepNothing) {
 
 TEST(ArcSweep, DwellRemovesNothing) {
   // The tool standing inside the bar (as no real program would) for a dwell removes nothing.
-  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({40.0, 30.0, 0.0}, kArcVoxelMm);
   const double before = stock.volumeMm3();
   interp::Toolpath path;
   path.blockCount = 1;
   path.moves.push_back(move(interp::MoveKind::Dwell, {10, -10}, {10, -10}));
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, arcSquareTool(), stock);
   EXPECT_DOUBLE_EQ(stock.volumeMm3(), before);
   ASSERT_EQ(result.blocks.size(), 1u);
   EXPECT_EQ(result.blocks[0].removedMm3, 0.0);

@@ -208,7 +208,7 @@ struct Program {
   std::string text;
 };
 
-std::string fixed4(double v) {
+std::string cutFixed4(double v) {
   std::ostringstream out;
   out.setf(std::ios::fixed);
   out.precision(4);
@@ -257,8 +257,8 @@ class ProgramMaker {
     const auto latticeZ = [&](int k) { return onProgramGrid(face - k * pitch); };
 
     std::ostringstream g;
-    g << "G99 G97 S800 M03\nG00 X" << fixed4(2 * p.home.x()) << " Z" << fixed4(p.home.y()) << "\n";
-    const auto home = [&] { g << "G00 X" << fixed4(2 * p.home.x()) << "\nG00 Z" << fixed4(clearZ) << "\n"; };
+    g << "G99 G97 S800 M03\nG00 X" << cutFixed4(2 * p.home.x()) << " Z" << cutFixed4(p.home.y()) << "\n";
+    const auto home = [&] { g << "G00 X" << cutFixed4(2 * p.home.x()) << "\nG00 Z" << cutFixed4(clearZ) << "\n"; };
     std::string previous;
     const int cuts = pick(4, 9);
     for (int c = 0; c < cuts; ++c) {
@@ -273,36 +273,36 @@ class ProgramMaker {
       const int kz = pick(0, 2) == 0 ? 0 : pick(1, axialSteps);
       switch (pick(0, 5)) {
         case 0:  // face pass (G01) to a radius or past the axis, then up and out
-          cut << "G00 Z" << fixed4(latticeZ(kz)) << "\nG00 X" << fixed4(2 * clearR) << "\nG01 X"
-              << fixed4(pick(0, 1) ? -p.toolRadialMm : 2 * latticeR(kr)) << " F0.2\nG01 Z" << fixed4(clearZ) << "\n";
+          cut << "G00 Z" << cutFixed4(latticeZ(kz)) << "\nG00 X" << cutFixed4(2 * clearR) << "\nG01 X"
+              << cutFixed4(pick(0, 1) ? -p.toolRadialMm : 2 * latticeR(kr)) << " F0.2\nG01 Z" << cutFixed4(clearZ) << "\n";
           break;
         case 1:  // G94 face cycle, once or twice at the same Z
-          cut << "G00 X" << fixed4(2 * clearR) << " Z" << fixed4(clearZ) << "\nG94 X" << fixed4(2 * latticeR(kr))
-              << " Z" << fixed4(latticeZ(kz)) << " F0.2\n";
-          if (pick(0, 1)) cut << "X" << fixed4(2 * latticeR(kr)) << "\n";
+          cut << "G00 X" << cutFixed4(2 * clearR) << " Z" << cutFixed4(clearZ) << "\nG94 X" << cutFixed4(2 * latticeR(kr))
+              << " Z" << cutFixed4(latticeZ(kz)) << " F0.2\n";
+          if (pick(0, 1)) cut << "X" << cutFixed4(2 * latticeR(kr)) << "\n";
           break;
         case 2:  // turning pass (G01) down to a Z, then out
-          cut << "G00 X" << fixed4(2 * latticeR(kr)) << " Z" << fixed4(clearZ) << "\nG01 Z" << fixed4(latticeZ(kz))
-              << " F0.2\nG01 X" << fixed4(2 * clearR) << "\n";
+          cut << "G00 X" << cutFixed4(2 * latticeR(kr)) << " Z" << cutFixed4(clearZ) << "\nG01 Z" << cutFixed4(latticeZ(kz))
+              << " F0.2\nG01 X" << cutFixed4(2 * clearR) << "\n";
           break;
         case 3:  // G90 turning cycle
-          cut << "G00 X" << fixed4(2 * clearR) << " Z" << fixed4(clearZ) << "\nG90 X" << fixed4(2 * latticeR(kr))
-              << " Z" << fixed4(latticeZ(kz)) << " F0.2\n";
+          cut << "G00 X" << cutFixed4(2 * clearR) << " Z" << cutFixed4(clearZ) << "\nG90 X" << cutFixed4(2 * latticeR(kr))
+              << " Z" << cutFixed4(latticeZ(kz)) << " F0.2\n";
           break;
         case 4: {  // G75 groove, at most 10 steps deep: pecks to the bottom, shifts along Z
           const int kzEnd = std::max(1, kz);
           const int depth = std::min(kr, 10);
           const int width = pick(0, 3);
           const double peck = onProgramGrid(uniform(0.3, 1.0) * p.toolRadialMm);
-          cut << "G00 Z" << fixed4(latticeZ(kzEnd + width)) << "\nG00 X" << fixed4(2 * clearR) << "\nG75 R"
-              << fixed4(0.5 * peck) << "\nG75 X" << fixed4(2 * latticeR(depth)) << " Z" << fixed4(latticeZ(kzEnd))
+          cut << "G00 Z" << cutFixed4(latticeZ(kzEnd + width)) << "\nG00 X" << cutFixed4(2 * clearR) << "\nG75 R"
+              << cutFixed4(0.5 * peck) << "\nG75 X" << cutFixed4(2 * latticeR(depth)) << " Z" << cutFixed4(latticeZ(kzEnd))
               << " P" << std::lround(2000 * peck) << " Q" << std::lround(1000 * p.toolAxialMm) << " F0.05\n";
           break;
         }
         default: {  // G74 pecks on the axis, into the face
           const double peck = onProgramGrid(uniform(0.5, 2.0) * p.toolAxialMm);
-          cut << "G00 X0 Z" << fixed4(clearZ) << "\nG74 R" << fixed4(0.5 * peck) << "\nG74 Z"
-              << fixed4(latticeZ(std::max(1, kz))) << " Q" << std::lround(1000 * peck) << " F0.1\n";
+          cut << "G00 X0 Z" << cutFixed4(clearZ) << "\nG74 R" << cutFixed4(0.5 * peck) << "\nG74 Z"
+              << cutFixed4(latticeZ(std::max(1, kz))) << " Q" << std::lround(1000 * peck) << " F0.1\n";
           break;
         }
       }

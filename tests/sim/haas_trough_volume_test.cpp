@@ -23,11 +23,10 @@
 namespace lathesim::sim {
 namespace {
 
-constexpr double kVoxelMm = 0.2;
-constexpr double kPi = std::numbers::pi;
+constexpr double kTroughVoxelMm = 0.2;
 
 ConvexPolygon vTool() {
-  const double halfWidth = 12.0 * std::tan(15.0 * kPi / 180.0);
+  const double halfWidth = 12.0 * std::tan(15.0 * std::numbers::pi / 180.0);
   const std::vector<RZ> outline = {RZ(0, 0), RZ(12, halfWidth), RZ(12, -halfWidth)};
   return *ConvexPolygon::fromOutline(outline).polygon;
 }
@@ -41,7 +40,7 @@ double leftMm3(const std::string& program) {
   options.toolNumbers = {1};
   const auto result = interp::interpret(program, "test.nc", options);
   EXPECT_TRUE(result.ok()) << (result.diagnostics.empty() ? "" : result.diagnostics.front().message);
-  Stock stock({50.0, 40.0, 0.0}, kVoxelMm);
+  Stock stock({50.0, 40.0, 0.0}, kTroughVoxelMm);
   simulate(result.toolpath, {{1, vTool()}}, stock);
   return stock.volumeMm3();
 }
@@ -51,7 +50,7 @@ double revolvedMm3(const std::vector<RZ>& profile) {
   double volume = 0;
   for (std::size_t i = 0; i + 1 < profile.size(); ++i) {
     const double r1 = profile[i].x(), r2 = profile[i + 1].x();
-    volume += kPi * std::abs(profile[i].y() - profile[i + 1].y()) * (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
+    volume += std::numbers::pi * std::abs(profile[i].y() - profile[i + 1].y()) * (r1 * r1 + r1 * r2 + r2 * r2) / 3.0;
   }
   return volume;
 }
@@ -67,13 +66,13 @@ TEST(HaasTroughVolume, TypeIWithATroughLeavesTheContour) {
   // from Z−32 to Z−40:
   //   π·[100·10 + 5·(100 + 200 + 400)/3 + 7·(400 + 260 + 169)/3 + 169·3 + 5·(169 + 299 + 529)/3
   //      + 2·(529 + 575 + 625)/3] + π·625·8 = π·(7422.333 + 5000) = 39025.9 mm³.
-  const double expected = kPi * (1000.0 + 3500.0 / 3 + 5803.0 / 3 + 507.0 + 4985.0 / 3 + 3458.0 / 3 + 5000.0);
+  const double expected = std::numbers::pi * (1000.0 + 3500.0 / 3 + 5803.0 / 3 + 507.0 + 4985.0 / 3 + 3458.0 / 3 + 5000.0);
   EXPECT_NEAR(revolvedMm3({RZ(10, 0), RZ(10, -10), RZ(20, -15), RZ(13, -22), RZ(13, -25), RZ(23, -30), RZ(25, -32),
                            RZ(25, -40)}),
               expected, 1e-6);
   // Surfaces cut: the faces and walls of the profile, about 2π·17·(32 + 2·15) ≈ 6600 mm².
   EXPECT_NEAR(leftMm3("G99 M03 S800 T101\nG00 X52. Z2.\nG71 P10 Q20 D2. F0.2\n" + kContour), expected,
-              0.1 * kVoxelMm * 6600);
+              0.1 * kTroughVoxelMm * 6600);
 }
 
 TEST(HaasTroughVolume, TypeIIWithAFinishingAllowanceLeavesItOnTheContour) {
@@ -81,10 +80,10 @@ TEST(HaasTroughVolume, TypeIIWithAFinishingAllowanceLeavesItOnTheContour) {
   // (10.5, 2) as the P block Z2. (type II) makes B = (10, 2).
   const double expected = revolvedMm3({RZ(10.5, 0), RZ(10.5, -10), RZ(20.5, -15), RZ(13.5, -22), RZ(13.5, -25),
                                        RZ(23.5, -30), RZ(25, -31.5)}) +
-                          kPi * 625 * 8.5;
+                          std::numbers::pi * 625 * 8.5;
   const std::string contour = "N10 G00 X20. Z2.\n" + kContour.substr(kContour.find('\n') + 1);
   EXPECT_NEAR(leftMm3("G99 M03 S800 T101\nG00 X52. Z2.\nG71 P10 Q20 U1. D2. F0.2\n" + contour), expected,
-              0.1 * kVoxelMm * 6600);
+              0.1 * kTroughVoxelMm * 6600);
 }
 
 }  // namespace

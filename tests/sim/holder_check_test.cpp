@@ -13,7 +13,6 @@
 namespace lathesim::sim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int line) {
   return test::turningMove(kind, from, to, block, line);
@@ -67,7 +66,7 @@ TEST(HolderCheck, RapidAlongsideTheBarIntoTheJawsIsIntoChuck) {
   ASSERT_EQ(result.collisions.size(), 1u);
   EXPECT_EQ(result.collisions[0].kind, "into_chuck");
   EXPECT_EQ(result.collisions[0].line, 7);
-  EXPECT_NEAR(result.collisions[0].volumeMm3, 100.0 * 2.0 * kPi * 40.0, 1e-6);
+  EXPECT_NEAR(result.collisions[0].volumeMm3, 100.0 * 2.0 * std::numbers::pi * 40.0, 1e-6);
 }
 
 TEST(HolderCheck, ArcDippingIntoTheJawsIsFollowedNotCutShort) {
@@ -108,10 +107,10 @@ TEST(HolderCheck, HolderDrivenIntoTheBarIsMeasuredNotCut) {
   ASSERT_EQ(result.collisions.size(), 1u);
   EXPECT_EQ(result.collisions[0].kind, "holder_into_stock");
   EXPECT_EQ(result.collisions[0].line, 9);
-  const double expected = kPi * (25.0 * 25.0 - 20.2 * 20.2) * 9.8;
+  const double expected = std::numbers::pi * (25.0 * 25.0 - 20.2 * 20.2) * 9.8;
   EXPECT_NEAR(result.collisions[0].volumeMm3, expected, 0.01 * expected);
   // Only the cutter removed anything: its groove r 15..17, Z −10..0 = π(17² − 15²)·10 = 2010.6.
-  EXPECT_NEAR(before - stock.volumeMm3(), kPi * (17.0 * 17.0 - 15.0 * 15.0) * 10.0, 0.02 * 2010.6);
+  EXPECT_NEAR(before - stock.volumeMm3(), std::numbers::pi * (17.0 * 17.0 - 15.0 * 15.0) * 10.0, 0.02 * 2010.6);
 }
 
 TEST(HolderCheck, HolderAboveTheBarIsNoCollision) {

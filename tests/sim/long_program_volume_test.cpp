@@ -60,7 +60,7 @@ double blockVolumeByHand(double tipMm, double stepMm, int k) {
   return 2.0 * std::numbers::pi * sum * dr / 3.0;
 }
 
-struct Case {
+struct LongProgramCase {
   double voxelMm;
   double tipMm;   // the tip's radius: the cut is kBarRadiusMm − tipMm deep
   double stepMm;  // each block's move
@@ -69,10 +69,10 @@ struct Case {
 TEST(LongProgramVolume, EveryShortBlockRemovesItsPappusVolume) {
   // Moves from a third of a voxel (a CAM contour at 0.1 mm) to several voxels, depths from
   // 0.7 to 3.3 mm, tips on and off voxel centres.
-  const std::vector<Case> cases{{0.1, 21.73, 0.03}, {0.1, 23.05, 0.1},  {0.1, 24.31, 0.37},
+  const std::vector<LongProgramCase> cases{{0.1, 21.73, 0.03}, {0.1, 23.05, 0.1},  {0.1, 24.31, 0.37},
                                 {0.2, 22.0, 0.03},  {0.2, 21.87, 0.13}, {0.2, 23.4, 0.5},
                                 {0.25, 22.63, 0.07}, {0.25, 21.7, 1.1}};
-  for (const Case& c : cases) {
+  for (const LongProgramCase& c : cases) {
     SCOPED_TRACE(testing::Message() << "voxel " << c.voxelMm << " mm, tip r " << c.tipMm << ", move " << c.stepMm);
     const int blocks = static_cast<int>(std::ceil(2.0 / c.stepMm));  // about 2 mm of Z
     Stock stock({2.0 * kBarRadiusMm, 12.0, 0.0}, c.voxelMm);

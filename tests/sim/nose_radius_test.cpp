@@ -23,14 +23,13 @@
 namespace lathesim::sim {
 namespace {
 
-constexpr double kVoxelMm = 0.1;
+constexpr double kNoseVoxelMm = 0.1;
 constexpr double kNoseMm = 0.8;
-constexpr double kPi = std::numbers::pi;
 
 ConvexPolygon roundedTool() {
   std::vector<RZ> outline;
   for (int degrees = 174; degrees <= 276; degrees += 3) {
-    const double a = degrees * kPi / 180.0;
+    const double a = degrees * std::numbers::pi / 180.0;
     outline.emplace_back(kNoseMm + kNoseMm * std::cos(a), kNoseMm + kNoseMm * std::sin(a));
   }
   outline.emplace_back(10.0, 1.5);
@@ -47,7 +46,7 @@ double removedMm3(std::string_view program) {
   options.offsets[1] = interp::ToolOffset{0, 0, kNoseMm, 3, 0, 0};
   const auto result = interp::interpret(program, "test.nc", options);
   EXPECT_TRUE(result.ok()) << result.diagnostics.front().message;
-  Stock stock({20.0, 12.0, 0.0}, kVoxelMm);
+  Stock stock({20.0, 12.0, 0.0}, kNoseVoxelMm);
   const double before = stock.volumeMm3();
   simulate(result.toolpath, {{1, roundedTool()}}, stock);
   return before - stock.volumeMm3();
@@ -59,12 +58,12 @@ double removedMm3(std::string_view program) {
 //   removed(c) = 2π · L²/2 · (c + 20)/3 = π L² (c + 20)/3.
 double taperRemovedMm3(double c) {
   const double legs = 10.0 - c;
-  return kPi * legs * legs * (c + 20.0) / 3.0;
+  return std::numbers::pi * legs * legs * (c + 20.0) / 3.0;
 }
 
 // Changed surfaces (largest case, c = 6): face ring π(10² − 6²) = 201.1, cylinder band
 // 2π·10·4 = 251.3, cone 2π · 8 · 4√2 = 284.3: 736.7 mm².
-constexpr double kTaperToleranceMm3 = 0.1 * kVoxelMm * 736.7;
+constexpr double kTaperToleranceMm3 = 0.1 * kNoseVoxelMm * 736.7;
 
 TEST(NoseRadius, UncompensatedTaperLeavesTheBandTheGeometryPredicts) {
   // The tip (the programmed point) runs on the drawn line r + z = 6, so the nose centre runs
@@ -121,13 +120,13 @@ TEST(NoseRadius, G90TaperUnderG42LandsOnTheDrawnLine) {
 //   removed(ρ) = π(10² − a²)ρ − 2π · πρ²/4 · (a + 4ρ/(3π)) = π(100 − a²)ρ − π²ρ²a/2 − 2πρ³/3
 double roundRemovedMm3(double rho) {
   const double a = 10.0 - rho;
-  return kPi * (100.0 - a * a) * rho - kPi * kPi * rho * rho * a / 2.0 -
-         2.0 * kPi * rho * rho * rho / 3.0;
+  return std::numbers::pi * (100.0 - a * a) * rho - std::numbers::pi * std::numbers::pi * rho * rho * a / 2.0 -
+         2.0 * std::numbers::pi * rho * rho * rho / 3.0;
 }
 
 // Changed surfaces (largest case, ρ = 4): face ring π(100 − 36) = 201.1, cylinder band
 // 2π·10·4 = 251.3, round 2π · 2π · (6 + 8/π) = 337.4: 789.8 mm².
-constexpr double kRoundToleranceMm3 = 0.1 * kVoxelMm * 789.8;
+constexpr double kRoundToleranceMm3 = 0.1 * kNoseVoxelMm * 789.8;
 
 TEST(NoseRadius, UncompensatedArcLeavesTheSmallerRoundTheGeometryPredicts) {
   // Drawn: G03 R4 from (6, 0) on the face to (10, -4) on the diameter, about (6, -4); the

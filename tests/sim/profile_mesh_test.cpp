@@ -47,13 +47,13 @@ struct Profile {
 
 // The cases, with every dimension moved by `s` (mm): off the voxel grid, and by different
 // fractions of a voxel at each voxel size.
-struct Case {
+struct ProfileMeshCase {
   const char* name;
   std::function<Profile(double s)> make;
 };
 
-const std::vector<Case>& cases() {
-  static const std::vector<Case> all{
+const std::vector<ProfileMeshCase>& cases() {
+  static const std::vector<ProfileMeshCase> all{
       {"stepped shaft",
        [](double s) {
          const double r1 = 7.37 + s, a = 12.3 + s, r2 = 4.11 + s, b = 5.53 + s;
@@ -169,7 +169,7 @@ TEST_P(ProfileMesh, IsClosedExactAndOnTheLevelSet) {
   const double h = GetParam();
   // Shifts of 0 and of odd fractions of this voxel: dimensions on and off voxel centres.
   for (const double shift : {0.0, 0.37 * h}) {
-    for (const Case& c : cases()) {
+    for (const ProfileMeshCase& c : cases()) {
       SCOPED_TRACE(std::string(c.name) + " at " + std::to_string(h) + " mm voxels, shifted " + std::to_string(shift) + " mm");
       const Profile p = c.make(shift);
       Stock stock(barOf(p), h);
@@ -239,7 +239,7 @@ TEST_P(ProfileMesh, IsClosedExactAndOnTheLevelSet) {
 
 TEST_P(ProfileMesh, AgreesWithTheLevelSetsMesh) {
   const double h = GetParam();
-  for (const Case& c : cases()) {
+  for (const ProfileMeshCase& c : cases()) {
     SCOPED_TRACE(std::string(c.name) + " at " + std::to_string(h) + " mm voxels");
     const Profile p = c.make(0.29 * h);
     Stock revolved(barOf(p), h), voxels(barOf(p), h, RevolvedWrites::Voxels);
@@ -283,7 +283,7 @@ double longestProfileEdgeMm(const TriangleMesh& mesh) {
 // not many more (a face across the axis crosses a radius class every few thousandths of a mm).
 TEST_P(ProfileMesh, MeshWithVertexEveryVoxelHasAPointEveryVoxel) {
   const double h = GetParam();
-  for (const Case& c : cases()) {
+  for (const ProfileMeshCase& c : cases()) {
     SCOPED_TRACE(std::string(c.name) + " at " + std::to_string(h) + " mm voxels");
     const Profile p = c.make(0.41 * h);
     Stock stock(barOf(p), h);

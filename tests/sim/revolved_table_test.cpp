@@ -54,7 +54,7 @@ struct Path {
   void feed(RZ from, RZ to, int tool = kSharpTool) { add(interp::MoveKind::Feed, from, to, tool); }
 };
 
-struct Case {
+struct TableCase {
   double voxelMm;
   double boreMm;   // 0: a bar
   double shiftMm;  // moves every cut's radius and Z by this much (on and off voxel centres)
@@ -62,7 +62,7 @@ struct Case {
 };
 
 // A program's worth of revolved cuts on a Φ20 × 16 bar (face at Z0), shifted by `s`.
-interp::Toolpath program(const Case& c) {
+interp::Toolpath program(const TableCase& c) {
   const double s = c.shiftMm;
   Path p;
   p.feed({12.0, 0.0}, {-0.5, 0.0});         // a face pass exactly on the bar's face: ghost sheets
@@ -158,9 +158,9 @@ void expectTheSameStock(const StockSpec& spec, double voxelMm, const interp::Too
 }
 
 TEST(RevolvedTable, GivesWhatTheLevelSetWrittenVoxelByVoxelGives) {
-  const std::vector<Case> cases{{0.1, 0.0, 0.0, false},   {0.1, 0.0, 0.037, true},  {0.13, 0.0, 0.011, false},
+  const std::vector<TableCase> cases{{0.1, 0.0, 0.0, false},   {0.1, 0.0, 0.037, true},  {0.13, 0.0, 0.011, false},
                                 {0.13, 8.0, 0.0, true},   {0.2, 8.0, 0.071, false}, {0.2, 0.0, 0.1, true}};
-  for (const Case& c : cases) {
+  for (const TableCase& c : cases) {
     SCOPED_TRACE(testing::Message() << "voxel " << c.voxelMm << " mm, bore " << c.boreMm << ", shift " << c.shiftMm
                                     << (c.slotMidway ? ", a slot midway" : ""));
     expectTheSameStock(StockSpec{20.0, 16.0, 0.0, c.boreMm}, c.voxelMm, program(c), 3);

@@ -14,13 +14,6 @@ interp::Move move(interp::MoveKind kind, RZ from, RZ to, int block, int line) {
   return test::turningMove(kind, from, to, block, line);
 }
 
-ToolOutlines squareTool() {
-  const std::vector<RZ> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-  ToolOutlines tools;
-  tools.emplace(1, *ConvexPolygon::fromOutline(square).polygon);
-  return tools;
-}
-
 TEST(Simulate, RapidIntoTheBarIsACollisionOnItsLine) {
   Stock stock({40.0, 30.0, 0.0}, 0.25);
   interp::Toolpath path;
@@ -29,7 +22,7 @@ TEST(Simulate, RapidIntoTheBarIsACollisionOnItsLine) {
   // along the surface that removes nothing.
   path.moves.push_back(move(interp::MoveKind::Rapid, {30, -5}, {15, -5}, 0, 3));
   path.moves.push_back(move(interp::MoveKind::Rapid, {15, -5}, {30, -5}, 1, 4));
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, test::squareTool(4), stock);
   ASSERT_EQ(result.collisions.size(), 1u);
   EXPECT_EQ(result.collisions[0].line, 3);
   EXPECT_EQ(result.collisions[0].kind, "rapid_into_stock");
@@ -46,7 +39,7 @@ TEST(Simulate, RapidGrazingTheSurfaceIsNoCollision) {
   path.blockCount = 1;
   // Tool tip running along the bar's own surface (r = 20): nothing to remove.
   path.moves.push_back(move(interp::MoveKind::Rapid, {20, 5}, {20, -25}, 0, 1));
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, test::squareTool(4), stock);
   EXPECT_TRUE(result.collisions.empty()) << "removed " << result.collisions[0].volumeMm3;
 }
 
@@ -57,7 +50,7 @@ TEST(Simulate, FeedsOfOneBlockAreMeasuredTogether) {
   // A G94-like face cut: plunge to the axis at Z-2, retract along Z: removes a 2 mm slice.
   path.moves.push_back(move(interp::MoveKind::Feed, {25, -2}, {0, -2}, 0, 7));
   path.moves.push_back(move(interp::MoveKind::Feed, {0, -2}, {0, 5}, 0, 7));
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, test::squareTool(4), stock);
   ASSERT_EQ(result.blocks.size(), 1u);
   EXPECT_EQ(result.blocks[0].line, 7);
   EXPECT_NEAR(result.blocks[0].removedMm3, M_PI * 400 * 2, 0.1 * 0.25 * (2 * M_PI * 400 + 2 * M_PI * 20 * 2));

@@ -11,7 +11,7 @@
 namespace lathesim::sim {
 namespace {
 
-constexpr double kVoxelMm = 0.25;
+constexpr double kWarningVoxelMm = 0.25;
 
 interp::Move feedMove(RZ from, RZ to, bool spindleOn) {
   interp::Move m = test::turningMove(interp::MoveKind::Feed, from, to, 0, 4);
@@ -20,31 +20,24 @@ interp::Move feedMove(RZ from, RZ to, bool spindleOn) {
   return m;
 }
 
-ToolOutlines squareTool() {
-  const std::vector<RZ> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-  ToolOutlines tools;
-  tools.emplace(1, *ConvexPolygon::fromOutline(square).polygon);
-  return tools;
-}
-
 TEST(StockQuery, SignedDistanceIsNegativeInsidePositiveOutsideZeroOnTheSurface) {
   // Φ40 × 30, face at Z0: r ≤ 20, −30 ≤ Z ≤ 0.
-  const Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
-  EXPECT_LT(stock.signedDistanceAt(RZ(10, -10)), -2 * kVoxelMm);  // deep inside: the band's −3 voxels
-  EXPECT_GT(stock.signedDistanceAt(RZ(30, -10)), 2 * kVoxelMm);
-  EXPECT_NEAR(stock.signedDistanceAt(RZ(19.5, -10)), -0.5, 0.5 * kVoxelMm);  // 0.5 mm under the OD
-  EXPECT_NEAR(stock.signedDistanceAt(RZ(10, 0.5)), 0.5, 0.5 * kVoxelMm);     // 0.5 mm above the face
+  const Stock stock({40.0, 30.0, 0.0}, kWarningVoxelMm);
+  EXPECT_LT(stock.signedDistanceAt(RZ(10, -10)), -2 * kWarningVoxelMm);  // deep inside: the band's −3 voxels
+  EXPECT_GT(stock.signedDistanceAt(RZ(30, -10)), 2 * kWarningVoxelMm);
+  EXPECT_NEAR(stock.signedDistanceAt(RZ(19.5, -10)), -0.5, 0.5 * kWarningVoxelMm);  // 0.5 mm under the OD
+  EXPECT_NEAR(stock.signedDistanceAt(RZ(10, 0.5)), 0.5, 0.5 * kWarningVoxelMm);     // 0.5 mm above the face
 }
 
 TEST(SimulationWarnings, CuttingWithTheSpindleStopped) {
-  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({40.0, 30.0, 0.0}, kWarningVoxelMm);
   interp::Toolpath path;
   path.blockCount = 1;
   // A face cut to the axis at Z-2 with the spindle stopped at 0°: a straight slot 4 mm thick
   // (the default insert) along +x, |y| ≤ 2, Z-2…0: 2·∫ √(400 − y²) dy over |y| ≤ 2 = 159.7 mm³.
   path.moves.push_back(feedMove({25, -2}, {0, -2}, false));
   path.moves.push_back(feedMove({0, -2}, {0, 5}, false));
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, test::squareTool(4), stock);
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_EQ(result.warnings[0].line, 4);
   EXPECT_EQ(result.warnings[0].column, 2);
@@ -56,18 +49,18 @@ TEST(SimulationWarnings, CuttingWithTheSpindleStopped) {
 }
 
 TEST(SimulationWarnings, NoneWhenTheSpindleTurnsOrNothingIsCut) {
-  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({40.0, 30.0, 0.0}, kWarningVoxelMm);
   interp::Toolpath path;
   path.blockCount = 2;
   path.moves.push_back(feedMove({25, -2}, {0, -2}, true));
   interp::Move air = feedMove({25, 10}, {0, 10}, false);  // above the face: cuts nothing
   air.block = 1;
   path.moves.push_back(air);
-  EXPECT_TRUE(simulate(path, squareTool(), stock).warnings.empty());
+  EXPECT_TRUE(simulate(path, test::squareTool(4), stock).warnings.empty());
 }
 
 TEST(SimulationWarnings, CycleStartInsideTheStockAsItIsThen) {
-  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({40.0, 30.0, 0.0}, kWarningVoxelMm);
   interp::Toolpath path;
   path.blockCount = 3;
   // Block 0 faces the bar down to Z-2. Block 1 is a "cycle" starting at (10, -1): material
@@ -82,7 +75,7 @@ TEST(SimulationWarnings, CycleStartInsideTheStockAsItIsThen) {
   }
   path.cycleStarts.push_back({1, 11, 1, RZ(10, -1), "G94"});
   path.cycleStarts.push_back({2, 12, 1, RZ(10, -5), "G90"});
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, test::squareTool(4), stock);
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_EQ(result.warnings[0].line, 12);
   EXPECT_EQ(result.warnings[0].message,
@@ -110,8 +103,8 @@ void faceTo2(interp::Toolpath& path, int block) {
 void expectWarnedOnlyOfAStartInMaterial(const std::function<interp::Toolpath(double startZ)>& pathStartingAt) {
   for (const double startZ : {-1.0, -5.0}) {
     SCOPED_TRACE(startZ);
-    Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
-    const SimulationResult result = simulate(pathStartingAt(startZ), squareTool(), stock);
+    Stock stock({40.0, 30.0, 0.0}, kWarningVoxelMm);
+    const SimulationResult result = simulate(pathStartingAt(startZ), test::squareTool(4), stock);
     if (startZ == -1.0) {
       EXPECT_TRUE(result.warnings.empty()) << result.warnings.front().message;
     } else {
@@ -153,7 +146,7 @@ TEST(SimulationWarnings, CycleStartOfEachRunOfALoopIsCheckedAtThatRun) {
 }
 
 TEST(Simulate, BlockTimesAreTheirMovesTimesAndADwellRemovesNothing) {
-  Stock stock({40.0, 30.0, 0.0}, kVoxelMm);
+  Stock stock({40.0, 30.0, 0.0}, kWarningVoxelMm);
   interp::Toolpath path;
   path.blockCount = 2;
   interp::Move cut = feedMove({25, -2}, {0, -2}, true);
@@ -166,7 +159,7 @@ TEST(Simulate, BlockTimesAreTheirMovesTimesAndADwellRemovesNothing) {
   dwell.line = 5;
   dwell.dwellS = dwell.timeS = 1.5;
   path.moves = {cut, back, dwell};
-  const SimulationResult result = simulate(path, squareTool(), stock);
+  const SimulationResult result = simulate(path, test::squareTool(4), stock);
   ASSERT_EQ(result.blocks.size(), 2u);
   EXPECT_DOUBLE_EQ(result.blocks[0].timeS, 2.5);
   EXPECT_EQ(result.blocks[1].line, 5);  // a dwell-only block is listed, with its time

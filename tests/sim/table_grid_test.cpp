@@ -23,7 +23,7 @@ namespace {
 
 // A bar or tube and its cuts, every length in voxels (so that a case means the same voxels at
 // any voxel size), shifted by `shift` voxels off the voxel centres.
-struct Case {
+struct GridCase {
   double voxelMm;
   double radius, length, faceZ, boreRadius;  // voxels; boreRadius 0: a bar
   double shift;
@@ -35,7 +35,7 @@ RevolvedRegion rectangle(double rhoLow, double zLow, double rhoHigh, double zHig
   return RevolvedRegion({ConvexPolygon::hullOf(corners)});
 }
 
-StockSpec specOf(const Case& c) {
+StockSpec specOf(const GridCase& c) {
   const double h = c.voxelMm, s = c.shift;
   return {2.0 * (c.radius + s) * h, c.length * h, (c.faceZ + s) * h, c.boreRadius > 0.0 ? 2.0 * (c.boreRadius + s) * h : 0.0};
 }
@@ -49,7 +49,7 @@ RevolvedRegion barOf(const StockSpec& spec) {
 
 // Cuts on a bar whose face is at `faceZ` and whose radius is `radius` (voxels): a face cut to the
 // axis, a turning pass, a taper, an arc swept by a sharp tool, and a groove, each `s` voxels off.
-std::vector<RevolvedRegion> cutsOf(const Case& c) {
+std::vector<RevolvedRegion> cutsOf(const GridCase& c) {
   const double h = c.voxelMm, s = c.shift, top = c.faceZ + 10.0, out = c.radius + 10.0;
   const auto mm = [h](double voxels) { return voxels * h; };
   std::vector<RevolvedRegion> cuts;
@@ -144,7 +144,7 @@ double volumeMm3(const StockGrid& stock) {
   return voxels * stock.voxel * stock.voxel * stock.voxel;
 }
 
-void expectTheSameGrid(const Case& c) {
+void expectTheSameGrid(const GridCase& c) {
   const StockSpec spec = specOf(c);
   const BothWays both = bothWays(spec, c.voxelMm, c.cuts ? cutsOf(c) : std::vector<RevolvedRegion>{});
   if (!both.built->table) return;
@@ -177,7 +177,7 @@ TEST(TableGrid, BuildsWhatTheVoxelWritesBuild) {
     for (const double boreRadius : {0.0, 60.0})
       for (const double shift : {0.0, 0.5, 0.37})
         for (const bool cuts : {false, true}) {
-          const Case c{voxelMm, 128.0, 384.0, 0.0, boreRadius, shift, cuts};
+          const GridCase c{voxelMm, 128.0, 384.0, 0.0, boreRadius, shift, cuts};
           SCOPED_TRACE(testing::Message() << "voxel " << voxelMm << " mm, bore radius " << boreRadius << " voxels, shift "
                                           << shift << (cuts ? ", cut" : ", uncut"));
           expectTheSameGrid(c);
@@ -188,7 +188,7 @@ TEST(TableGrid, BuildsWhatTheVoxelWritesBuild) {
 // boundaries and off voxel centres.
 TEST(TableGrid, BuildsWhatTheVoxelWritesBuildOverManyBlocks) {
   for (const bool cuts : {false, true}) {
-    const Case c{0.1, 300.0, 470.0, 37.0, 0.0, 0.29, cuts};
+    const GridCase c{0.1, 300.0, 470.0, 37.0, 0.0, 0.29, cuts};
     SCOPED_TRACE(cuts ? "cut" : "uncut");
     expectTheSameGrid(c);
   }

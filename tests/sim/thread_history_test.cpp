@@ -35,7 +35,7 @@ std::vector<interp::Move> passes(double leadMm, double taperMm, double infeedTan
   return moves;
 }
 
-struct Case {
+struct ThreadCase {
   const char* name;
   double lead, taper, infeedTan, runout, startDeg;
   interp::SpindleDirection direction;
@@ -46,11 +46,11 @@ struct Case {
 // run-out (a second helix per pass), the other hand, a start angle, two voxel sizes.
 TEST(ThreadHistory, BoundedPassesLeaveWhatWholePassesLeave) {
   using D = interp::SpindleDirection;
-  for (const Case c : {Case{"flank infeed", 2.0, 0, kTan30, 0, 0, D::Clockwise, 0.1},
-                       Case{"radial infeed", 1.5, 0, 0, 0, 0, D::Clockwise, 0.1},
-                       Case{"taper and run-out", 2.0, 0.4, kTan30, 1.0, 0, D::Clockwise, 0.1},
-                       Case{"left hand, start angle", 2.5, 0, kTan30, 0.8, 137, D::CounterClockwise, 0.1},
-                       Case{"finer voxel", 1.75, -0.3, kTan30, 0.5, 45, D::Clockwise, 0.07}}) {
+  for (const ThreadCase c : {ThreadCase{"flank infeed", 2.0, 0, kTan30, 0, 0, D::Clockwise, 0.1},
+                       ThreadCase{"radial infeed", 1.5, 0, 0, 0, 0, D::Clockwise, 0.1},
+                       ThreadCase{"taper and run-out", 2.0, 0.4, kTan30, 1.0, 0, D::Clockwise, 0.1},
+                       ThreadCase{"left hand, start angle", 2.5, 0, kTan30, 0.8, 137, D::CounterClockwise, 0.1},
+                       ThreadCase{"finer voxel", 1.75, -0.3, kTan30, 0.5, 45, D::Clockwise, 0.07}}) {
     SCOPED_TRACE(c.name);
     const StockSpec bar{20, 12, 0};
     interp::Toolpath path;

@@ -71,12 +71,29 @@ inline ProcessOutcome runProcess(const fs::path& binary, const std::vector<std::
 }
 
 #ifdef LATHESIM_BINARY
+/// The lathesim command the tests were built with.
+inline const fs::path kBinary = LATHESIM_BINARY;
+
 /// Runs the lathesim command the tests were built with (the target's LATHESIM_BINARY) with
 /// `args`, capturing stdout and stderr through files in `scratch`.
 inline ProcessOutcome lathesim(const std::vector<std::string>& args, const fs::path& scratch) {
   return runProcess(LATHESIM_BINARY, args, scratch);
 }
 #endif
+
+#ifdef LATHESIM_PARTS_DIR
+/// The bundled parts (parts/ in the source tree).
+inline const fs::path kPartsDir = LATHESIM_PARTS_DIR;
+
+/// A bundled part's file, e.g. partFile("seed001-taper-r20", "setup.toml").
+inline std::string partFile(const std::string& name, const std::string& file) { return (kPartsDir / name / file).string(); }
+#endif
+
+/// Nothing was written: the folder does not exist, or it is empty.
+inline bool noOutputs(const fs::path& folder) { return !fs::exists(folder) || fs::is_empty(folder); }
+
+/// Whether ffmpeg (which writes cut.mp4) is on this machine.
+inline bool ffmpegInstalled() { return std::system("ffmpeg -version >/dev/null 2>&1") == 0; }
 
 struct MeasuredOutcome {
   int status = -1;     // the exit status, or -1 if the process did not exit normally
