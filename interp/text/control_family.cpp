@@ -109,10 +109,10 @@ bool mayMatch(const Sign& sign, const UpperLine& line) {
   return std::any_of(sign.needles.begin(), sign.needles.end(), [&](const Needle& needle) { return line.holds(needle); });
 }
 
-const std::array<Sign, 9>& signs() {
+const std::array<Sign, 10>& signs() {
   using std::regex_constants::icase;
   constexpr auto plain = std::regex_constants::ECMAScript;
-  static const std::array<Sign, 9> table{
+  static const std::array<Sign, 10> table{
       Sign{R"(^\s*%PM\b)", plain, "Philips 432/532", {"%PM"}},
       Sign{R"(\bo(\d+|<[^>]*>)\s*(sub|endsub|call|if|elseif|else|endif|while|endwhile|do|repeat|endrepeat|return|break|continue)\b)",
            icase, "LinuxCNC (O-word subroutines)",
@@ -128,6 +128,12 @@ const std::array<Sign, 9>& signs() {
       Sign{R"(\b(DIAMON|DIAMOF|DIAM90|CYCLE9[0-9]|LIMS\s*=)\b)", icase, "Siemens Sinumerik", {"DIAM", "CYCLE9", "LIMS"}},
       // Fagor 8055/8070 program header `%name,MX,` (the attribute field between commas).
       Sign{R"(^\s*%[^,]*,M[A-Z]*,)", icase, "Fagor 8055/8070", {","}, "%"},
+      // Mazak's own EIA/ISO codes, which no Fanuc lathe has: G109 L_ (which turret head the
+      // blocks after it drive, on a multi-turret machine) and G53.5/G52.5 (MAZATROL's work
+      // coordinates on and off), as the Autodesk Mazak mill-turn post writes them. A Mazak
+      // program without them is Fanuc-compatible and runs.
+      Sign{R"(\bG0*(109(?![.\d])|5[23]\.5(?!\d)))", icase, "Mazak EIA/ISO (multi-turret G109, MAZATROL coordinates G53.5/G52.5)",
+           {"109", "53.5", "52.5"}, "G"},
       // The tool call of Fagor and Siemens alike: T the tool, D its offset (Fanuc, GSK and
       // Haas give both in one T word).
       Sign{R"(\bT\s*\d+\s*D\s*\d+\b)", icase, "Fagor 8055/8070 or Siemens Sinumerik (T with its offset in D)",
