@@ -118,11 +118,13 @@ struct PictureLabel {
   std::string text;
   double left = 0, bottom = 0, right = 0, top = 0;
 };
-/// Where the picture partImage draws puts its labels, and its dimension and extension lines
-/// (which no label crosses), found without drawing it.
+/// Where the picture partImage draws puts its labels, its dimension and extension lines
+/// (which no label crosses), and the leader lines that join a moved label to its place (which
+/// cross no other label, no dimension line and no other leader), found without drawing it.
 struct PictureLayout {
   std::vector<PictureLabel> labels;
   std::vector<std::array<Eigen::Vector2d, 2>> dimensionLines;
+  std::vector<std::array<Eigen::Vector2d, 2>> leaders;
 };
 PictureLayout partImageLayout(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);
 /// The same picture's pixels in memory: to draw it in one thread and write it in another, and

@@ -181,6 +181,7 @@ struct PartPicture::Scene {
   std::vector<vtkSmartPointer<vtkProp>> annotations;  // the overlay's, rebuilt with the progress
   std::vector<PlacedLabel> labels;          // as the last show() placed them
   std::vector<PixelSegment> dimensionLines;  // and the lines they keep clear of
+  std::vector<LeaderLine> leaders;          // and the leaders to the labels moved
 
   Scene(const PartImageOptions& o, const interp::Toolpath& t) : options(o), toolpath(t) {}
 };
@@ -341,7 +342,10 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
   take(scaleLabels, legendPx);
   const std::size_t fixedCount = labels.size();
   for (const auto* group : {&crashLabels, &dimensionLabels, &toolLabels, &pathLabels}) take(*group, legendPx);
-  s.labels = placeLabels(labels, fontPx, fixedCount, dimensionLines, clip, thin);
+  LabelPlacement placement = placeLabels(labels, fontPx, fixedCount, dimensionLines, clip);
+  for (const LeaderLine& leader : placement.leaders) thin.line(leader.segment[0], leader.segment[1], leader.colour);
+  s.labels = std::move(placement.labels);
+  s.leaders = std::move(placement.leaders);
   s.dimensionLines = std::move(dimensionLines);
 
   auto add = [&](const vtkSmartPointer<vtkProp>& prop) {
@@ -357,6 +361,7 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
 
 const std::vector<PlacedLabel>& PartPicture::labels() const { return scene_->labels; }
 const std::vector<PixelSegment>& PartPicture::dimensionLines() const { return scene_->dimensionLines; }
+const std::vector<LeaderLine>& PartPicture::leaders() const { return scene_->leaders; }
 
 void PartPicture::writePng(const std::filesystem::path& png) { writeWindowPng(scene_->window, png); }
 RgbImage PartPicture::image() { return windowImage(scene_->window); }

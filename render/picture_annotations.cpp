@@ -32,7 +32,7 @@ std::string coordinate(double value) {
 /// it stays in the picture.
 Label edgeLabel(const Pixel& at, const ClipRectangle& clip, std::string text, const Rgb& colour) {
   const double inset = 10.0, line = 18.0;
-  Label label{at, std::move(text), colour, Justify::Centre, true};
+  Label label{at, std::move(text), colour, Justify::Centre, true, at};
   const double toLeft = at.x() - clip.x0, toRight = clip.x1 - at.x(), toBottom = at.y() - clip.y0, toTop = clip.y1 - at.y();
   const double nearest = std::min({toLeft, toRight, toBottom, toTop});
   if (nearest == toRight) label.justify = Justify::Right, label.at += Pixel(-inset - kArrowPx, inset);
@@ -158,7 +158,7 @@ void drawCrashMarks(const std::vector<CrashMark>& crashes, const PictureFrame& f
       disc.push_back(centre + radiusPx * Pixel(std::cos(a), std::sin(a)));
     }
     marks.polygon(disc, kCrashColour);
-    place(labels, {centre + Pixel(1.6 * radiusPx, 0.6 * radiusPx), crash.label, kCrashColour, Justify::Left, true});
+    place(labels, {centre + Pixel(1.6 * radiusPx, 0.6 * radiusPx), crash.label, kCrashColour, Justify::Left, true, centre});
   }
 }
 
@@ -198,7 +198,7 @@ void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame
     const double up = (n % 2 == 0 ? 0.15 : -0.25) * (top.y() - bottom.y());
     // Beside its line rather than on it: a label never crosses a dimension line (label_layout.hpp).
     labels.push_back({0.5 * (top + bottom) + Pixel(6, up), "Ø" + number(d.diameterMm, decimals), kDimensionColour,
-                      Justify::Left, true});
+                      Justify::Left, true, 0.5 * (top + bottom) + Pixel(0, up)});
   }
   // Lengths: stacked upwards, the shortest lowest; extension lines from each face's outer
   // corner up past the dimension line.
@@ -217,7 +217,7 @@ void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame
     }
     dimensionArrows(Pixel(low.x(), y), Pixel(high.x(), y), lines, marks, dimensionLines);
     labels.push_back({Pixel(0.5 * (low.x() + high.x()), y + 5), number(l.zHighMm - l.zLowMm, decimals),
-                      kDimensionColour, Justify::Centre, true});
+                      kDimensionColour, Justify::Centre, true, Pixel(0.5 * (low.x() + high.x()), y)});
   }
 }
 

@@ -29,6 +29,9 @@ struct Label {
   Rgb colour{0, 0, 0};
   Justify justify = Justify::Left;
   bool backed = false;  // on a pale patch, to read over the part
+  /// The point it tells about (an arrow at the picture's edge, a dimension line): a label
+  /// moved from its place is joined to it by a leader. None: the middle of where it was put.
+  std::optional<Pixel> target{};
 };
 
 /// The rectangle inside which lines are drawn whole; beyond it they are cut and marked.

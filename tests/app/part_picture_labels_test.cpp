@@ -1,7 +1,8 @@
 // The bundled parts' pictures (every directory of parts/, in each of the three views, as
 // `run` draws them: its dimensions from the simulated section, its crashes, its title block):
-// no two labels overlap and none crosses a dimension or extension line. The layout is read
-// from the renderer (render::partImageLayout) without drawing the picture.
+// no two labels overlap, none crosses a dimension or extension line or a leader, and no leader
+// crosses a dimension line or another leader. The layout is read from the renderer
+// (render::partImageLayout) without drawing the picture.
 
 #include <gtest/gtest.h>
 
@@ -34,8 +35,6 @@ std::vector<fs::path> partDirectories() {
   std::sort(parts.begin(), parts.end());
   return parts;
 }
-
-using lathesim::test::crosses;
 
 TEST(PartPictureLabels, NoLabelOverprintsAnotherOrADimensionInAnyBundledPart) {
   ::unsetenv("DISPLAY");
@@ -72,16 +71,7 @@ TEST(PartPictureLabels, NoLabelOverprintsAnotherOrADimensionInAnyBundledPart) {
       ASSERT_GE(layout.labels.size(), 2u) << where;
       EXPECT_EQ(layout.labels[0].text, request.program.string()) << where;
       EXPECT_NE(layout.labels[1].text.find("cycle time"), std::string::npos) << where;
-      for (std::size_t i = 0; i < layout.labels.size(); ++i) {
-        const render::PictureLabel& a = layout.labels[i];
-        for (std::size_t j = i + 1; j < layout.labels.size(); ++j) {
-          const render::PictureLabel& b = layout.labels[j];
-          EXPECT_FALSE(a.left < b.right && b.left < a.right && a.bottom < b.top && b.bottom < a.top)
-              << where << ": '" << a.text << "' over '" << b.text << "'";
-        }
-        for (const auto& line : layout.dimensionLines)
-          EXPECT_FALSE(crosses(a, line)) << where << ": '" << a.text << "' across a dimension line";
-      }
+      for (const std::string& overprint : test::overprints(layout)) ADD_FAILURE() << where << ": " << overprint;
     }
   }
   EXPECT_GE(pictures, 3 * 25) << "the bundled parts that run";
