@@ -67,13 +67,22 @@ bool dogLeg(const std::vector<interp::Move>& moves, std::size_t i) {
   return (alongX && (second.x() > 0) == (first.x() > 0)) || (alongZ && (second.y() > 0) == (first.y() > 0));
 }
 
-/// Where the block of `moves[i]` starts and ends: a rapid's dog-leg legs are one block's move,
-/// and their corner is no point the program names.
+/// Where the block of `moves[i]` starts and ends, in the program's words: a rapid's dog-leg
+/// legs are one block's move, and their corner is no point the program names. A move starts
+/// under the tool offset the move before it ended under (interp/compensation/tool_offset.cpp:
+/// the new offset takes effect with the move), in its own work coordinates.
 RZ blockStart(const std::vector<interp::Move>& moves, std::size_t i) {
-  return i > 0 && dogLeg(moves, i - 1) ? moves[i - 1].from : moves[i].from;
+  const std::size_t first = i > 0 && dogLeg(moves, i - 1) ? i - 1 : i;
+  RZ offsetInForce(0, 0);
+  for (std::size_t k = first; k-- > 0;)
+    if (moves[k].kind != interp::MoveKind::Dwell) {
+      offsetInForce = moves[k].offsetShift;
+      break;
+    }
+  return moves[first].from - moves[first].workShift - offsetInForce;
 }
 RZ blockEnd(const std::vector<interp::Move>& moves, std::size_t i) {
-  return dogLeg(moves, i) ? moves[i + 1].to : moves[i].to;
+  return programmedEnd(dogLeg(moves, i) ? moves[i + 1] : moves[i]);
 }
 
 void dimensionArrows(const Pixel& a, const Pixel& b, Overlay2D& lines, Overlay2D& marks,
@@ -92,6 +101,8 @@ ClipRectangle clipRectangleOf(const PictureFrame& frame) {
   const double inset = 0.012 * std::min(frame.widthPx, frame.heightPx);
   return {inset, inset, frame.widthPx - inset, frame.heightPx - inset};
 }
+
+RZ programmedEnd(const interp::Move& move) { return move.to - move.workShift - move.offsetShift; }
 
 std::string programPoint(const RZ& p) {
   // Appended rather than "X" + …: GCC 12 warns falsely (-Wrestrict) on a literal plus a temporary.
@@ -136,14 +147,12 @@ void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::
   }
 }
 
-void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks,
-                     std::vector<Label>& labels) {
+void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks) {
   const Pixel centre(frame.widthPx / 2.0, frame.heightPx / 2.0), at = frame.pixelOf(position);
   const auto span = clipToRectangle(centre, at, clip.x0, clip.y0, clip.x1, clip.y1);
   if (!span || span->t1 >= 1) return;
   const Pixel edge = centre + span->t1 * (at - centre);
   marks.arrowhead(edge, at - centre, 1.4 * kArrowPx, kToolMarkColour);
-  place(labels, edgeLabel(edge, clip, "tool at " + programPoint(position), kInkColour));
 }
 
 void drawCrashMarks(const std::vector<CrashMark>& crashes, const PictureFrame& frame, const ClipRectangle& clip,
