@@ -38,7 +38,10 @@ render::ToolPicture toolPicture(const setup::Setup& setup, int number, const RZ&
 render::ToolPicture toolPictureAtEnd(const setup::Setup& setup, const interp::Toolpath& toolpath) {
   // The first tool is mounted at start; interp checks every T word against the setup.
   if (toolpath.moves.empty()) return toolPicture(setup, 0, toolpath.startPosition);
-  return toolPicture(setup, toolpath.moves.back().tool, toolpath.moves.back().to);
+  const interp::Move& last = toolpath.moves.back();
+  render::ToolPicture picture = toolPicture(setup, last.tool, last.to);
+  picture.programShift = last.workShift + last.offsetShift;
+  return picture;
 }
 
 }  // namespace lathesim::app

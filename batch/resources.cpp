@@ -6,8 +6,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 
-#include "interp/text/stated_stock.hpp"
+#include "interp/text/file_text.hpp"
+#include "interp/text/machine_evidence.hpp"
 #include "setup/setup.hpp"
 #include "setup/stock_option.hpp"
 #include "sim/stock.hpp"
@@ -34,10 +36,14 @@ std::optional<sim::StockSpec> barOf(const BatchJob& job, const setup::Setup& set
     return std::nullopt;
   }
   if (setup.stockGiven) return setup.stock;
-  std::ifstream in(job.program, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (const auto stated = interp::stockStatedIn(text.str())) return sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
+  // The program's one walk of the lines, as the job reads it (setup::openJob), mapped rather
+  // than copied; a program that cannot be read states no bar (its job stops at once).
+  try {
+    const interp::FileText text = interp::FileText::read(job.program);
+    if (const auto stated = interp::readMachineEvidence(text.text()).stock)
+      return sim::StockSpec{stated->diameterMm, stated->lengthMm, 0.0};
+  } catch (const std::system_error&) {
+  }
   return setup.stock;
 }
 

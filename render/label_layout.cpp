@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <vtkNew.h>
 #include <vtkStdString.h>
@@ -14,6 +15,7 @@ namespace {
 constexpr double kGapPx = 3.0;        // kept free around a label
 constexpr int kRingsTried = 14;       // candidate places out to this many steps each way
 constexpr double kLeaderFromPx = 6.0; // a label moved further than this from its place gets a leader
+constexpr double kLeaderGapPx = 4.0;  // left between a leader's start and the point it tells about
 
 bool inside(const LabelBox& box, const ClipRectangle& bounds) {
   return box.left >= bounds.x0 && box.right <= bounds.x1 && box.bottom >= bounds.y0 && box.top <= bounds.y1;
@@ -70,15 +72,41 @@ LabelBox labelBox(const Label& label, int fontPx) {
   return {label.at.x() + bbox[0], label.at.y() + bbox[2], label.at.x() + bbox[1] + 1, label.at.y() + bbox[3] + 1};
 }
 
-std::vector<PlacedLabel> placeLabels(const std::vector<Label>& labels, const std::vector<int>& fontPx,
-                                     std::size_t fixedCount, const std::vector<PixelSegment>& keepClear,
-                                     const ClipRectangle& bounds, Overlay2D& leaders) {
-  std::vector<PlacedLabel> placed;
+bool segmentsMeet(const PixelSegment& a, const PixelSegment& b) {
+  const auto cross = [](const Pixel& u, const Pixel& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const Pixel r = a[1] - a[0], q = b[1] - b[0], w = b[0] - a[0];
+  const double denominator = cross(r, q);
+  if (denominator == 0) {  // parallel: they meet only if collinear and overlapping
+    if (cross(w, r) != 0) return false;
+    const double length2 = r.squaredNorm();
+    if (length2 == 0) return (a[0] - b[0]).norm() == 0 || (q.squaredNorm() > 0 && cross(w, q) == 0);
+    const double t0 = w.dot(r) / length2, t1 = (b[1] - a[0]).dot(r) / length2;
+    return std::max(t0, t1) >= 0 && std::min(t0, t1) <= 1;
+  }
+  const double t = cross(w, q) / denominator, u = cross(w, r) / denominator;
+  return t >= 0 && t <= 1 && u >= 0 && u <= 1;
+}
+
+LabelPlacement placeLabels(const std::vector<Label>& labels, const std::vector<int>& fontPx, std::size_t fixedCount,
+                           const std::vector<PixelSegment>& keepClear, const ClipRectangle& bounds) {
+  LabelPlacement result;
+  std::vector<PlacedLabel>& placed = result.labels;
   const auto free = [&](const LabelBox& box) {
     const LabelBox clear = grown(box, kGapPx);
     return inside(box, bounds) &&
            std::none_of(placed.begin(), placed.end(), [&](const PlacedLabel& p) { return p.box.overlaps(clear); }) &&
-           std::none_of(keepClear.begin(), keepClear.end(), [&](const PixelSegment& s) { return clear.crossedBy(s[0], s[1]); });
+           std::none_of(keepClear.begin(), keepClear.end(), [&](const PixelSegment& s) { return clear.crossedBy(s[0], s[1]); }) &&
+           std::none_of(result.leaders.begin(), result.leaders.end(),
+                        [&](const LeaderLine& l) { return clear.crossedBy(l.segment[0], l.segment[1]); });
+  };
+  // A leader's way is clear when it passes by every label placed (with the gap kept free around
+  // it), meets no line kept clear and no other leader.
+  const auto clearWay = [&](const PixelSegment& leader) {
+    return std::none_of(placed.begin(), placed.end(),
+                        [&](const PlacedLabel& p) { return grown(p.box, 1.0).crossedBy(leader[0], leader[1]); }) &&
+           std::none_of(keepClear.begin(), keepClear.end(), [&](const PixelSegment& s) { return segmentsMeet(leader, s); }) &&
+           std::none_of(result.leaders.begin(), result.leaders.end(),
+                        [&](const LeaderLine& l) { return segmentsMeet(leader, l.segment); });
   };
   for (std::size_t n = 0; n < labels.size(); ++n) {
     const Label& label = labels[n];
@@ -87,26 +115,36 @@ std::vector<PlacedLabel> placeLabels(const std::vector<Label>& labels, const std
       placed.push_back({label, fontPx[n], box});
       continue;
     }
-    Pixel chosen(0, 0);
-    bool found = false;
-    for (const Pixel& offset : candidateOffsets(box))
-      if (free(shifted(box, offset))) {
+    // From the point the label tells about (or the middle of where it was meant to be), a few
+    // pixels off it, to the nearest point of where it went.
+    const Pixel target = label.target.value_or(Pixel(0.5 * (box.left + box.right), 0.5 * (box.bottom + box.top)));
+    const auto leaderTo = [&](const LabelBox& moved) -> PixelSegment {
+      const Pixel end = nearestPoint(moved, target);
+      const Pixel along = end - target;
+      const double length = along.norm();
+      return {length > kLeaderGapPx ? Pixel(target + along * (kLeaderGapPx / length)) : end, end};
+    };
+    // The nearest free place whose leader's way is clear; failing that, the nearest free place
+    // (without a leader: one that crosses a label would mislead more than none).
+    std::optional<Pixel> chosen, chosenWithoutLeader;
+    for (const Pixel& offset : candidateOffsets(box)) {
+      const LabelBox moved = shifted(box, offset);
+      if (!free(moved)) continue;
+      if (!chosenWithoutLeader) chosenWithoutLeader = offset;
+      if (offset.norm() <= kLeaderFromPx || clearWay(leaderTo(moved))) {
         chosen = offset;
-        found = true;
         break;
       }
-    Label moved = label;
-    moved.at += chosen;
-    const LabelBox movedBox = shifted(box, chosen);
-    placed.push_back({moved, fontPx[n], movedBox});
-    if (found && chosen.norm() > kLeaderFromPx) {
-      // From the middle of where it was meant to be (a dimension line's middle, an arrow's
-      // side) to the nearest point of where it went.
-      const Pixel from(0.5 * (box.left + box.right), 0.5 * (box.bottom + box.top));
-      leaders.line(from, nearestPoint(movedBox, from), label.colour);
     }
+    const bool withLeader = chosen.has_value();
+    const Pixel offset = chosen.value_or(chosenWithoutLeader.value_or(Pixel(0, 0)));
+    Label moved = label;
+    moved.at += offset;
+    const LabelBox movedBox = shifted(box, offset);
+    if (withLeader && offset.norm() > kLeaderFromPx) result.leaders.push_back({leaderTo(movedBox), label.colour});
+    placed.push_back({moved, fontPx[n], movedBox});
   }
-  return placed;
+  return result;
 }
 
 }  // namespace lathesim::render

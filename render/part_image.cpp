@@ -24,6 +24,7 @@ PictureLayout partImageLayout(const TriangleMesh& part, const interp::Toolpath& 
   for (const PlacedLabel& p : picture.labels())
     layout.labels.push_back({p.label.text, p.box.left, p.box.bottom, p.box.right, p.box.top});
   layout.dimensionLines = picture.dimensionLines();
+  for (const LeaderLine& leader : picture.leaders()) layout.leaders.push_back(leader.segment);
   return layout;
 }
 

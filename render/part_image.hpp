@@ -26,6 +26,9 @@ struct ToolPicture {
   std::vector<RZ> insert;  // the cutter; drawn gold
   std::vector<RZ> holder;  // the holder body; may be empty (polygon-only tools); drawn steel grey
   RZ position{0, 0};
+  /// Where the program's zero and the tool offset in force put `position` from the program's
+  /// own words (interp::Move's workShift + offsetShift): a label says position − programShift.
+  RZ programShift{0, 0};
   // Their thickness across the meridian plane (mm), the insert's rake face in the plane and
   // both behind it, as on the machine: the holder's shank height h and the insert's thickness.
   // 0: drawn as thin slabs about the plane, a fixed fraction of the picture thick.
@@ -104,8 +107,11 @@ struct PartImageOptions {
 /// plane (or an arrow to it when it stands outside the picture); dimension lines in purple;
 /// the title, legend and (front and section views) a scale bar.
 /// The picture frames the bar and the front ends of the jaws (without a bar, the part and the
-/// whole jaws; without a part, the toolpath) with a margin, and the tool when it stands near
-/// them; the rest of the chuck runs out of the picture. A close-up frames its box instead.
+/// whole jaws; without a part, the toolpath) with a margin, and the tool with its holder when
+/// it stands near them; the rest of the chuck runs out of the picture. A tool not drawn whole
+/// inside the picture is said so in the title block ("the tool is off the picture, at …",
+/// "… runs off the picture"). Every position a label prints is in the program's own words
+/// (its work coordinates, without the tool offset). A close-up frames its box instead.
 /// Works with no display: an Xvfb server is started for the process if none is reachable.
 /// Throws std::runtime_error if the image cannot be made or written.
 void writePartImagePng(const TriangleMesh& part, const interp::Toolpath& toolpath,
@@ -118,11 +124,13 @@ struct PictureLabel {
   std::string text;
   double left = 0, bottom = 0, right = 0, top = 0;
 };
-/// Where the picture partImage draws puts its labels, and its dimension and extension lines
-/// (which no label crosses), found without drawing it.
+/// Where the picture partImage draws puts its labels, its dimension and extension lines
+/// (which no label crosses), and the leader lines that join a moved label to its place (which
+/// cross no other label, no dimension line and no other leader), found without drawing it.
 struct PictureLayout {
   std::vector<PictureLabel> labels;
   std::vector<std::array<Eigen::Vector2d, 2>> dimensionLines;
+  std::vector<std::array<Eigen::Vector2d, 2>> leaders;
 };
 PictureLayout partImageLayout(const TriangleMesh& part, const interp::Toolpath& toolpath, const PartImageOptions& options);
 /// The same picture's pixels in memory: to draw it in one thread and write it in another, and

@@ -99,14 +99,14 @@ PictureFrame framePicture(const PartImageOptions& options, const interp::Toolpat
     includeCircle(e, view, t.quillRadiusMm, t.coneEndZMm());
   }
   if (e.empty()) e.include(view, Eigen::Vector3d::Zero());
-  if (options.tool && !options.tool->insert.empty()) {
+  if (options.tool && !options.tool->insert.empty()) {  // the tool near: it and its holder, whole
     Extent insert;
     for (const RZ& p : options.tool->insert) insert.include(view, meridianPoint(options.tool->position + p));
     const double nearMm = kToolNearFraction * std::max(e.maxRight - e.minRight, e.maxUp - e.minUp);
     const bool near = insert.minRight < e.maxRight + nearMm && insert.maxRight > e.minRight - nearMm &&
                       insert.minUp < e.maxUp + nearMm && insert.maxUp > e.minUp - nearMm;
     if (near)
-      for (const RZ& p : options.tool->insert) e.include(view, meridianPoint(options.tool->position + p));
+      for (const Eigen::Vector3d& corner : toolCorners(*options.tool, options.tool->position)) e.include(view, corner);
   }
   // The depth of everything drawn, so that the camera clips none of it (across and up, the
   // chuck's body may run out of the picture).
@@ -117,8 +117,7 @@ PictureFrame framePicture(const PartImageOptions& options, const interp::Toolpat
     includeCircle(behind, view, t.quillRadiusMm, t.coneEndZMm() + t.quillLengthMm);
   }
   if (options.tool)  // its holder's back face, behind the plane
-    for (const RZ& p : options.tool->holder)
-      behind.include(view, meridianPoint(options.tool->position + p) - Eigen::Vector3d(0, options.tool->holderHeightMm, 0));
+    for (const Eigen::Vector3d& corner : toolCorners(*options.tool, options.tool->position)) behind.include(view, corner);
   if (!behind.empty()) e.minDepth = std::min(e.minDepth, behind.minDepth), e.maxDepth = std::max(e.maxDepth, behind.maxDepth);
   return frameExtent(view, e, options.widthPx, options.heightPx, kMarginFraction, kDimensionBand);
 }
@@ -128,6 +127,24 @@ bool toolInPicture(const ToolPicture& tool, const RZ& position, const PictureFra
   const ClipRectangle clip = clipRectangleOf(frame);
   return std::any_of(tool.insert.begin(), tool.insert.end(),
                      [&](const RZ& p) { return clip.contains(frame.pixelOf(RZ(position + p))); });
+}
+
+/// The whole tool, insert and holder front and back, is inside the picture.
+bool wholeToolInPicture(const ToolPicture& tool, const RZ& position, const PictureFrame& frame) {
+  const std::vector<Eigen::Vector3d> corners = toolCorners(tool, position);
+  return std::all_of(corners.begin(), corners.end(), [&](const Eigen::Vector3d& corner) {
+    const Pixel p = frame.pixelOf(corner);
+    return p.x() >= 0 && p.x() <= frame.widthPx && p.y() >= 0 && p.y() <= frame.heightPx;
+  });
+}
+
+/// What the title block says of a tool not drawn whole inside the picture (empty: nothing).
+/// `programShift`: as ToolPicture's, for the point the program names.
+std::string toolNote(bool drawn, bool whole, const RZ& position, const RZ& programShift) {
+  const std::string where = programPoint(position - programShift);
+  if (!drawn) return "the tool is off the picture, at " + where + " (the gold arrow at the edge)";
+  if (!whole) return "the tool at " + where + " runs off the picture";
+  return "";
 }
 
 vtkSmartPointer<vtkTextActor> textActor(const Label& label, int fontPx) {
@@ -181,6 +198,7 @@ struct PartPicture::Scene {
   std::vector<vtkSmartPointer<vtkProp>> annotations;  // the overlay's, rebuilt with the progress
   std::vector<PlacedLabel> labels;          // as the last show() placed them
   std::vector<PixelSegment> dimensionLines;  // and the lines they keep clear of
+  std::vector<LeaderLine> leaders;          // and the leaders to the labels moved
 
   Scene(const PartImageOptions& o, const interp::Toolpath& t) : options(o), toolpath(t) {}
 };
@@ -270,16 +288,35 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
   const ClipRectangle clip = clipRectangleOf(s.frame);
   Overlay2D thick, thin, marks;
   // The labels in the order of their claim to their place (label_layout.hpp): the title block
-  // and the legend stay where they are; then crashes, dimensions, the tool, the toolpath.
-  std::vector<Label> titleLabels, scaleLabels, crashLabels, dimensionLabels, toolLabels, pathLabels;
+  // and the legend stay where they are; then crashes, dimensions, the toolpath.
+  std::vector<Label> titleLabels, scaleLabels, crashLabels, dimensionLabels, pathLabels;
   std::vector<PixelSegment> dimensionLines;
+  std::string toolLine;  // in the title block, when the tool is not drawn whole
+  if (shownTool && !o.closeUp) {
+    ToolPicture tool = *shownTool;
+    if (shown) {  // where the move shown puts it, and what the program calls that point
+      tool.position = shown->position;
+      if (!s.toolpath.moves.empty()) {  // moves.size() once all are done: the last
+        const interp::Move& move = s.toolpath.moves[std::min(shown->move, s.toolpath.moves.size() - 1)];
+        tool.programShift = move.workShift + move.offsetShift;
+      }
+    }
+    const bool drawn = toolInPicture(tool, tool.position, s.frame);
+    if (drawn) {
+      s.tool = toolActors(tool, std::max(s.sizeMm * kToolThicknessPerSize, 0.2));
+      for (const auto& actor : s.tool) s.solids->AddActor(actor);
+    } else {
+      drawToolOutside(tool.position, s.frame, clip, marks);
+    }
+    toolLine = toolNote(drawn, wholeToolInPicture(tool, tool.position, s.frame), tool.position, tool.programShift);
+  }
   const int titlePx = std::max(12, o.heightPx / 40);
   const int legendPx = std::max(10, titlePx * 3 / 4);
   const double left = titlePx;
   double lineBelow = o.heightPx - 2 * titlePx;  // the title's baseline, then each line's under it
   titleLabels.push_back({Pixel(left, lineBelow), o.title.empty() ? s.toolpath.programName : o.title, kInkColour,
                          Justify::Left, true});
-  for (const std::string& line : {o.subtitle, caption})
+  for (const std::string& line : {o.subtitle, caption, toolLine})
     if (!line.empty()) {
       lineBelow -= 1.3 * legendPx + (titleLabels.size() == 1 ? 0.4 * titlePx : 0.0);
       titleLabels.push_back({Pixel(left, lineBelow), line, kInkColour, Justify::Left, true});
@@ -298,17 +335,6 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
                    dimensionLines);
   }
   if (o.view != PartView::Iso) drawScaleBar(s.frame, thin, scaleLabels);
-
-  if (shownTool && !o.closeUp) {
-    ToolPicture tool = *shownTool;
-    if (shown) tool.position = shown->position;
-    if (toolInPicture(tool, tool.position, s.frame)) {
-      s.tool = toolActors(tool, std::max(s.sizeMm * kToolThicknessPerSize, 0.2));
-      for (const auto& actor : s.tool) s.solids->AddActor(actor);
-    } else {
-      drawToolOutside(tool.position, s.frame, clip, marks, toolLabels);
-    }
-  }
 
   Overlay2D crashes;  // drawn last: over the toolpath and the tool
   drawCrashMarks(o.crashes, s.frame, clip, crashMarkRadiusPx(o.heightPx), crashes, crashLabels);
@@ -340,8 +366,11 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
          legendPx);
   take(scaleLabels, legendPx);
   const std::size_t fixedCount = labels.size();
-  for (const auto* group : {&crashLabels, &dimensionLabels, &toolLabels, &pathLabels}) take(*group, legendPx);
-  s.labels = placeLabels(labels, fontPx, fixedCount, dimensionLines, clip, thin);
+  for (const auto* group : {&crashLabels, &dimensionLabels, &pathLabels}) take(*group, legendPx);
+  LabelPlacement placement = placeLabels(labels, fontPx, fixedCount, dimensionLines, clip);
+  for (const LeaderLine& leader : placement.leaders) thin.line(leader.segment[0], leader.segment[1], leader.colour);
+  s.labels = std::move(placement.labels);
+  s.leaders = std::move(placement.leaders);
   s.dimensionLines = std::move(dimensionLines);
 
   auto add = [&](const vtkSmartPointer<vtkProp>& prop) {
@@ -357,6 +386,7 @@ void PartPicture::show(const std::optional<interp::ToolpathInstant>& shown, cons
 
 const std::vector<PlacedLabel>& PartPicture::labels() const { return scene_->labels; }
 const std::vector<PixelSegment>& PartPicture::dimensionLines() const { return scene_->dimensionLines; }
+const std::vector<LeaderLine>& PartPicture::leaders() const { return scene_->leaders; }
 
 void PartPicture::writePng(const std::filesystem::path& png) { writeWindowPng(scene_->window, png); }
 RgbImage PartPicture::image() { return windowImage(scene_->window); }

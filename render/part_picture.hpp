@@ -38,9 +38,11 @@ class PartPicture {
   void show(const std::optional<interp::ToolpathInstant>& shown, const std::optional<ToolPicture>& tool,
             const std::string& caption);
 
-  /// The labels as the last show() placed them, and the dimension lines they keep clear of.
+  /// The labels as the last show() placed them, the dimension lines they keep clear of and
+  /// their leaders.
   const std::vector<PlacedLabel>& labels() const;
   const std::vector<PixelSegment>& dimensionLines() const;
+  const std::vector<LeaderLine>& leaders() const;  // from a moved label to what it tells about
 
   void writePng(const std::filesystem::path& png);
   RgbImage image();  // the picture's pixels

@@ -32,7 +32,7 @@ std::string coordinate(double value) {
 /// it stays in the picture.
 Label edgeLabel(const Pixel& at, const ClipRectangle& clip, std::string text, const Rgb& colour) {
   const double inset = 10.0, line = 18.0;
-  Label label{at, std::move(text), colour, Justify::Centre, true};
+  Label label{at, std::move(text), colour, Justify::Centre, true, at};
   const double toLeft = at.x() - clip.x0, toRight = clip.x1 - at.x(), toBottom = at.y() - clip.y0, toTop = clip.y1 - at.y();
   const double nearest = std::min({toLeft, toRight, toBottom, toTop});
   if (nearest == toRight) label.justify = Justify::Right, label.at += Pixel(-inset - kArrowPx, inset);
@@ -67,13 +67,22 @@ bool dogLeg(const std::vector<interp::Move>& moves, std::size_t i) {
   return (alongX && (second.x() > 0) == (first.x() > 0)) || (alongZ && (second.y() > 0) == (first.y() > 0));
 }
 
-/// Where the block of `moves[i]` starts and ends: a rapid's dog-leg legs are one block's move,
-/// and their corner is no point the program names.
+/// Where the block of `moves[i]` starts and ends, in the program's words: a rapid's dog-leg
+/// legs are one block's move, and their corner is no point the program names. A move starts
+/// under the tool offset the move before it ended under (interp/compensation/tool_offset.cpp:
+/// the new offset takes effect with the move), in its own work coordinates.
 RZ blockStart(const std::vector<interp::Move>& moves, std::size_t i) {
-  return i > 0 && dogLeg(moves, i - 1) ? moves[i - 1].from : moves[i].from;
+  const std::size_t first = i > 0 && dogLeg(moves, i - 1) ? i - 1 : i;
+  RZ offsetInForce(0, 0);
+  for (std::size_t k = first; k-- > 0;)
+    if (moves[k].kind != interp::MoveKind::Dwell) {
+      offsetInForce = moves[k].offsetShift;
+      break;
+    }
+  return moves[first].from - moves[first].workShift - offsetInForce;
 }
 RZ blockEnd(const std::vector<interp::Move>& moves, std::size_t i) {
-  return dogLeg(moves, i) ? moves[i + 1].to : moves[i].to;
+  return programmedEnd(dogLeg(moves, i) ? moves[i + 1] : moves[i]);
 }
 
 void dimensionArrows(const Pixel& a, const Pixel& b, Overlay2D& lines, Overlay2D& marks,
@@ -92,6 +101,8 @@ ClipRectangle clipRectangleOf(const PictureFrame& frame) {
   const double inset = 0.012 * std::min(frame.widthPx, frame.heightPx);
   return {inset, inset, frame.widthPx - inset, frame.heightPx - inset};
 }
+
+RZ programmedEnd(const interp::Move& move) { return move.to - move.workShift - move.offsetShift; }
 
 std::string programPoint(const RZ& p) {
   // Appended rather than "X" + …: GCC 12 warns falsely (-Wrestrict) on a literal plus a temporary.
@@ -136,14 +147,12 @@ void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::
   }
 }
 
-void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks,
-                     std::vector<Label>& labels) {
+void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks) {
   const Pixel centre(frame.widthPx / 2.0, frame.heightPx / 2.0), at = frame.pixelOf(position);
   const auto span = clipToRectangle(centre, at, clip.x0, clip.y0, clip.x1, clip.y1);
   if (!span || span->t1 >= 1) return;
   const Pixel edge = centre + span->t1 * (at - centre);
   marks.arrowhead(edge, at - centre, 1.4 * kArrowPx, kToolMarkColour);
-  place(labels, edgeLabel(edge, clip, "tool at " + programPoint(position), kInkColour));
 }
 
 void drawCrashMarks(const std::vector<CrashMark>& crashes, const PictureFrame& frame, const ClipRectangle& clip,
@@ -158,7 +167,7 @@ void drawCrashMarks(const std::vector<CrashMark>& crashes, const PictureFrame& f
       disc.push_back(centre + radiusPx * Pixel(std::cos(a), std::sin(a)));
     }
     marks.polygon(disc, kCrashColour);
-    place(labels, {centre + Pixel(1.6 * radiusPx, 0.6 * radiusPx), crash.label, kCrashColour, Justify::Left, true});
+    place(labels, {centre + Pixel(1.6 * radiusPx, 0.6 * radiusPx), crash.label, kCrashColour, Justify::Left, true, centre});
   }
 }
 
@@ -198,7 +207,7 @@ void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame
     const double up = (n % 2 == 0 ? 0.15 : -0.25) * (top.y() - bottom.y());
     // Beside its line rather than on it: a label never crosses a dimension line (label_layout.hpp).
     labels.push_back({0.5 * (top + bottom) + Pixel(6, up), "Ø" + number(d.diameterMm, decimals), kDimensionColour,
-                      Justify::Left, true});
+                      Justify::Left, true, 0.5 * (top + bottom) + Pixel(0, up)});
   }
   // Lengths: stacked upwards, the shortest lowest; extension lines from each face's outer
   // corner up past the dimension line.
@@ -217,7 +226,7 @@ void drawDimensions(const PartDimensions& dims, int decimals, const PictureFrame
     }
     dimensionArrows(Pixel(low.x(), y), Pixel(high.x(), y), lines, marks, dimensionLines);
     labels.push_back({Pixel(0.5 * (low.x() + high.x()), y + 5), number(l.zHighMm - l.zLowMm, decimals),
-                      kDimensionColour, Justify::Centre, true});
+                      kDimensionColour, Justify::Centre, true, Pixel(0.5 * (low.x() + high.x()), y)});
   }
 }
 

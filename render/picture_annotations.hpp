@@ -29,6 +29,9 @@ struct Label {
   Rgb colour{0, 0, 0};
   Justify justify = Justify::Left;
   bool backed = false;  // on a pale patch, to read over the part
+  /// The point it tells about (an arrow at the picture's edge, a dimension line): a label
+  /// moved from its place is joined to it by a leader. None: the middle of where it was put.
+  std::optional<Pixel> target{};
 };
 
 /// The rectangle inside which lines are drawn whole; beyond it they are cut and marked.
@@ -41,17 +44,22 @@ ClipRectangle clipRectangleOf(const PictureFrame& frame);
 /// A position as a program writes it: "X200 Z-30.5" (X a diameter).
 std::string programPoint(const RZ& p);
 
+/// The point in the program's own words where `move` ends: its end in the setup's frame less
+/// the work shift (G54–G59, G10 L2, G50) and the tool offset's shift it ends under.
+RZ programmedEnd(const interp::Move& move);
+
 /// The toolpath (up to `shown` if given) into `lines` (2 px), cut at `clip`; where a move
 /// leaves or enters the rectangle an arrowhead into `marks` and a label saying where it goes
-/// or comes from (one per place): the block's programmed end or start, never a dog-leg's
-/// corner (a non-linear rapid's two legs are labelled as the one move they are).
+/// or comes from (one per place): the block's programmed end or start in the program's own
+/// words (programmedEnd), never a dog-leg's corner (a non-linear rapid's two legs are
+/// labelled as the one move they are).
 void drawToolpath(const interp::Toolpath& toolpath, const std::optional<interp::ToolpathInstant>& shown,
                   const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& lines, Overlay2D& marks,
                   std::vector<Label>& labels);
 
-/// An arrow at the picture's edge pointing towards a tool standing outside it, labelled.
-void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks,
-                     std::vector<Label>& labels);
+/// An arrow at the picture's edge pointing towards a tool standing outside it (the title
+/// block says where it is).
+void drawToolOutside(const RZ& position, const PictureFrame& frame, const ClipRectangle& clip, Overlay2D& marks);
 
 /// Each crash as a filled disc `radiusPx` wide in kCrashColour at its point (kept inside `clip`
 /// when it lies outside), labelled beside it in the same red.

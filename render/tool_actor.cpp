@@ -1,5 +1,7 @@
 #include "render/tool_actor.hpp"
 
+#include "render/picture_frame.hpp"
+
 #include <array>
 
 #include <vtkActor.h>
@@ -68,6 +70,20 @@ std::vector<vtkSmartPointer<vtkActor>> toolActors(const ToolPicture& tool, doubl
   if (tool.holder.size() >= 3) actors.push_back(slabActor(tool.holder, tool.position, holderLow, holderHigh, kHolderColour));
   if (tool.insert.size() >= 3) actors.push_back(slabActor(tool.insert, tool.position, insertLow, insertHigh, kInsertColour));
   return actors;
+}
+
+std::vector<Eigen::Vector3d> toolCorners(const ToolPicture& tool, const RZ& position) {
+  std::vector<Eigen::Vector3d> corners;
+  const auto add = [&](const std::vector<RZ>& outline, double behindMm) {
+    for (const RZ& p : outline) {
+      corners.push_back(meridianPoint(position + p));
+      if (behindMm > 0) corners.push_back(meridianPoint(position + p) - Eigen::Vector3d(0, behindMm, 0));
+    }
+  };
+  const bool realSize = tool.holderHeightMm > 0 && tool.insertThicknessMm > 0;  // as toolActors draws them
+  add(tool.insert, realSize ? tool.insertThicknessMm : 0.0);
+  add(tool.holder, realSize ? tool.holderHeightMm : 0.0);
+  return corners;
 }
 
 }  // namespace lathesim::render

@@ -21,6 +21,11 @@ namespace lathesim::render {
 /// little thicker, so it shows in front of the holder it sits in).
 std::vector<vtkSmartPointer<vtkActor>> toolActors(const ToolPicture& tool, double thinMm);
 
+/// The corners of the tool drawn at `position` in 3D: every corner of the insert and the
+/// holder on the meridian plane and, drawn at their real size, on their back faces behind it
+/// (slabs drawn thin stand a fraction of a millimetre off the plane: left out).
+std::vector<Eigen::Vector3d> toolCorners(const ToolPicture& tool, const RZ& position);
+
 // Colours (RGB 0–1). The render tests look for the insert's gold.
 inline constexpr Rgb kInsertColour{0.98, 0.76, 0.10};
 inline constexpr Rgb kHolderColour{0.30, 0.33, 0.37};

@@ -2,8 +2,9 @@
 // its getCode() table, which writes the codes a Haas lathe reads for each function), and for
 // the codes it does not write the Haas lathe operator's manual's M-code list as recalled,
 // marked unchecked; the GSK980TDi user manual's M-code table; the Fanuc builders' codes are
-// each builder's (Doosan, Mori Seiki, Romi …), no Fanuc manual fixes them, so they are the
-// common assignments and marked so. A code whose meaning differs between builders of one
+// each builder's (Doosan, Mori Seiki, Romi …), no Fanuc manual fixes them: Doosan's are read
+// from the Autodesk DN Solutions (Doosan) post, the others are the common assignments and
+// marked so. A code whose meaning differs between builders of one
 // family is left out of it: an unknown code is an error, which is better than a guess that
 // hides a move.
 #include "interp/control/machine_m_codes.hpp"
@@ -36,12 +37,23 @@ constexpr std::array kGsk{
 
 constexpr std::string_view kBuilder = "machine builder's code, the common assignment (Doosan/Mori Seiki/Romi "
                                       "manuals differ; unchecked)";
+constexpr std::string_view kDoosanPost =
+    "Autodesk DN Solutions (Doosan) lathe post processor for Fanuc 0i/31i (Puma, Lynx; getCode()), which "
+    "writes it for this function";
+constexpr std::string_view kDoosanPostBuildersDiffer =
+    "Autodesk DN Solutions (Doosan) lathe post processor for Fanuc 0i/31i (getCode(): the parts catcher); "
+    "other builders' chuck code (unchecked)";
 
-// Fanuc 0i-T lathes: M codes above the standard ones are the machine builder's; these are the
-// common ones.
+// Fanuc 0i-T lathes: M codes above the standard ones are the machine builder's. Doosan's are
+// read from the post that writes them; the others are the common ones, unchecked. Where the
+// builders differ (M10/M11: Doosan's parts catcher, others' chuck) the entry names both, and
+// is a warning: either reading moves something near the work that is not simulated. Doosan's
+// air blast M14/M15 is left out: other Fanuc lathes start a live tool with M13–M15, which the
+// common table refuses by name (gcode_table.cpp) rather than skip.
 constexpr std::array kFanuc{
-    MachineMCode{10, "chuck clamp", None, kBuilder},
-    MachineMCode{11, "chuck unclamp: the bar is free in the chuck", Unsimulated, kBuilder},
+    MachineMCode{10, "chuck clamp, or on a Doosan the parts catcher forward", Unsimulated, kDoosanPostBuildersDiffer},
+    MachineMCode{11, "chuck unclamp (the bar free in the chuck), or on a Doosan the parts catcher back", Unsimulated,
+                 kDoosanPostBuildersDiffer},
     MachineMCode{21, "tailstock forward", Unsimulated, kBuilder},
     MachineMCode{22, "tailstock back", Unsimulated, kBuilder},
     MachineMCode{26, "chip conveyor on", None, kBuilder},
@@ -50,9 +62,14 @@ constexpr std::array kFanuc{
     MachineMCode{42, "spindle gear range 2", None, kBuilder},
     MachineMCode{43, "spindle gear range 3", None, kBuilder},
     MachineMCode{44, "spindle gear range 4", None, kBuilder},
-    MachineMCode{68, "chuck clamp", None, kBuilder},
-    MachineMCode{69, "chuck unclamp: the bar is free in the chuck", Unsimulated, kBuilder},
+    MachineMCode{68, "chuck clamp", None, kDoosanPost},
+    MachineMCode{69, "chuck unclamp: the bar is free in the chuck", Unsimulated, kDoosanPost},
     MachineMCode{73, "parts counter", None, kBuilder},
+    MachineMCode{78, "tailstock forward (Doosan)", Unsimulated, kDoosanPost},
+    MachineMCode{79, "tailstock back (Doosan)", Unsimulated, kDoosanPost},
+    MachineMCode{110, "turret interference check off (Doosan)", None, kDoosanPost},
+    MachineMCode{111, "turret interference check on (Doosan)", None, kDoosanPost},
+    MachineMCode{116, "part ejector cycle (Doosan): pushes the part out", Unsimulated, kDoosanPost},
 };
 
 constexpr std::string_view kHaasManual =

@@ -9,6 +9,8 @@
 //   Siemens Sinumerik   DIAMON/DIAMOF, CYCLE95 and the like
 //   Fagor 8055/8070     a `%name,MX,` program header; `T1 D1` (tool, then its offset in D,
 //                       as Siemens writes it too)
+//   Mazak EIA/ISO       G109 (a multi-turret machine's head selection), G53.5/G52.5 (MAZATROL
+//                       work coordinates on/off); plain Fanuc-compatible Mazak EIA runs
 // Text inside ( ) comments is never evidence.
 
 #include <optional>

@@ -65,18 +65,4 @@ std::optional<StatedStock> stockStatedOn(std::string_view written, int lineNumbe
   return found;
 }
 
-std::optional<StatedStock> stockStatedIn(PagedText paged) {
-  const std::string_view programText = paged.view();
-  int lineNumber = 0;
-  std::size_t begin = 0;
-  while (begin < programText.size()) {
-    paged.readingAt(begin);
-    std::size_t end = programText.find('\n', begin);
-    if (end == std::string_view::npos) end = programText.size();
-    if (auto found = stockStatedOn(programText.substr(begin, end - begin), ++lineNumber)) return found;
-    begin = end + 1;
-  }
-  return std::nullopt;
-}
-
 }  // namespace lathesim::interp

@@ -10,8 +10,6 @@
 #include <string>
 #include <string_view>
 
-#include "interp/base/paged_text.hpp"
-
 namespace lathesim::interp {
 
 struct StatedStock {
@@ -22,11 +20,9 @@ struct StatedStock {
   std::string text;  // the statement as written
 };
 
-/// The first statement in the text.
-std::optional<StatedStock> stockStatedIn(PagedText programText);
-
-/// The statement on line `lineNumber`, `line` as written (without its '\n'), if it makes one:
-/// for a walk of the lines that reads them for more than this (machine_evidence.hpp).
+/// The statement on line `lineNumber`, `line` as written (without its '\n'), if it makes one.
+/// A program's first statement is found in the one walk of its lines that reads the machine's
+/// evidence (MachineEvidence::stock, machine_evidence.hpp), for the job and batch alike.
 std::optional<StatedStock> stockStatedOn(std::string_view line, int lineNumber);
 
 }  // namespace lathesim::interp

@@ -91,6 +91,11 @@ const Expected kCorpusOutcomes[] = {
     {"f10_linuxcnc_g7.nc", {}, Refused{2, "LinuxCNC (G7/G8"}},
     {"f11_linuxcnc_g64p.nc", {}, Refused{2, "LinuxCNC (G64"}},
     {"f13_philips.nc", {}, Refused{1, "Philips 432/532"}},
+    // Mazak EIA/ISO: named at its own codes (G109 L1 at line 4, G53.5 at line 5); written as
+    // Fanuc (G99 and G50 S of system A), it runs as Fanuc does.
+    {"m01_mazak_eia_g109.nc", {}, Refused{4, "Mazak EIA/ISO"}},
+    {"m02_mazak_eia_mazatrol_coordinates.nc", {}, Refused{5, "Mazak EIA/ISO"}},
+    {"m03_mazak_eia_fanuc_compatible.nc", Reads{"fanuc-a", "gsk980tdi"}, {}, "G99 at line 4"},
 };
 
 ProcessOutcome expand(const fs::path& program, std::vector<std::string> flags, const fs::path& scratch) {

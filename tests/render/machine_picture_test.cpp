@@ -21,7 +21,7 @@ using test::Png;
 using test::PngColour;
 
 bool jaw(const PngColour& c) { return c.b - c.r > 30 && c.b < 210 && c.r < 140; }  // blue steel
-bool tailstockGreen(const PngColour& c) { return c.g - c.r > 20 && c.g - c.b > 12 && c.g < 200; }  // the tailstock's steel tailstockGreen
+bool tailstockGreen(const PngColour& c) { return c.g - c.r > 20 && c.g - c.b > 12 && c.g < 200; }  // the tailstock's steel green
 bool holderGrey(const PngColour& c) {  // the holder's dark steel, darker than the background's lightest grey
   return std::abs(c.r - c.g) <= 16 && std::abs(c.b - c.r) <= 24 && c.r > 30 && c.r < 150 && c.b < 170;
 }
@@ -52,14 +52,15 @@ PartImageOptions machineScene() {
 // ±30); the jaws' front ends, 0.2 of the bar's length behind their face (Z−72) and 0.25 of its
 // radius past it (r 37.5; the lower jaws reach −0.5·37.5 − 0.866·9 = −26.5, inside the bar's
 // −30); the tailstock's point (Z0) and its cone's foot, r 10 at Z 10/tan 30° = 17.32; the
-// insert (up to r 50, Z−20), near enough to be framed. Across: Z−72..17.32, 89.32 mm; up:
-// −30..50, 80 mm. 800 × 600 px with 6 % margins and 15 % more on top: 704 × 438 px usable,
-// 438 / 80 = 5.475 px/mm (< 704 / 89.32). Centre: Z−27.34 across; up, the band's middle is
-// 255 px, so the picture's centre (300 px) is at 10 + 45 / 5.475 = 18.219.
+// insert (up to r 50, Z−20), near enough to be framed, and with it its holder, whole (up to
+// r 100, Z−30..−10). Across: Z−72..17.32, 89.32 mm; up: −30..100, 130 mm. 800 × 600 px with
+// 6 % margins and 15 % more on top: 704 × 438 px usable, 438 / 130 = 3.3692 px/mm
+// (< 704 / 89.32). Centre: Z−27.34 across; up, the band's middle is 255 px, so the picture's
+// centre (300 px) is at 35 + 45 / 3.3692 = 48.356.
 Eigen::Vector2i framePixel(double r, double z) {
-  const double pxPerMm = 438.0 / 80.0;
+  const double pxPerMm = 438.0 / 130.0;
   return {static_cast<int>(std::lround(400 + (z - (-72 + 10 / std::tan(M_PI / 6)) / 2) * pxPerMm)),
-          static_cast<int>(std::lround(300 + (r - (10 + 45 / pxPerMm)) * pxPerMm))};
+          static_cast<int>(std::lround(300 + (r - (35 + 45 / pxPerMm)) * pxPerMm))};
 }
 
 template <class Test>
@@ -78,7 +79,8 @@ TEST(MachinePicture, JawsTailstockAndHolderStandWhereTheSetupPutsThem) {
   EXPECT_EQ(around(png, framePixel(34, -66), kWindow, jaw), 49);         // the top jaw's front
   EXPECT_EQ(around(png, framePixel(0, 30), kWindow, tailstockGreen), 49);         // the quill, on the axis
   EXPECT_EQ(around(png, framePixel(0, 10), kWindow, tailstockGreen), 49);         // the cone: r 5.77 at Z10
-  EXPECT_EQ(around(png, framePixel(60, -20), kWindow, holderGrey), 49);  // the holder (the picture's top is r 73)
+  EXPECT_EQ(around(png, framePixel(60, -20), kWindow, holderGrey), 49);  // the holder
+  EXPECT_EQ(around(png, framePixel(97, -12), kWindow, holderGrey), 49);  // its far corner, in the picture
   EXPECT_EQ(around(png, framePixel(45, -25), kWindow, test::insertGold), 49);        // the insert on it
   // Nowhere else: beside the cone (r 12 at Z8, the cone is r 4.6 there), beyond the quill
   // (r 14 at Z30), past the holder's end (r 60 at Z−5), beside the insert (r 45 at Z−15, below
@@ -94,7 +96,7 @@ TEST(MachinePicture, JawsTailstockAndHolderStandWhereTheSetupPutsThem) {
 TEST(MachinePicture, TheViewFramesTheTailstocksCone) {
   PartImageOptions options = machineScene();
   const PictureFrame frame = partPictureFrame(options, interp::Toolpath{}, TriangleMesh{});
-  EXPECT_NEAR(frame.pxPerMm, 438.0 / 80.0, 1e-9);
+  EXPECT_NEAR(frame.pxPerMm, 438.0 / 130.0, 1e-9);
   EXPECT_NEAR(frame.centreMm.x(), (-72 + 10 / std::tan(M_PI / 6)) / 2, 1e-9);
   options.tailstock.reset();  // without it the frame ends at the bar's face
   EXPECT_NEAR(partPictureFrame(options, interp::Toolpath{}, TriangleMesh{}).centreMm.x(), -36.0, 1e-9);

@@ -107,16 +107,20 @@ TEST(PartImagePng, ArcsAreDrawnRoundInTheFeedColour) {
 }
 
 // A Φ60 × 60 cylinder (z 0..60) and a 10 mm square insert at r 40, Z 70 (so r 40..50,
-// Z 70..80), no toolpath, no bar, 800 × 600 px. By hand, in the view's axes (22° turn about X):
-//   right = −y·sin22° + z·cos22°: the cylinder gives −30·0.3746 = −11.24 (y = 30, z = 0) to
-//   60·0.9272 + 11.24 = 66.87; the insert, standing within a quarter of that of the part, is
-//   framed too and reaches 80·0.9272 = 74.17. So right ∈ [−11.24, 74.17], centre 31.465.
+// Z 70..80) on a shank r 42..48 up to Z 130, no toolpath, no bar, 800 × 600 px. By hand, in
+// the view's axes (22° turn about X):
+//   right = −y·sin22° + z·cos22°: the cylinder gives −30·0.374607 = −11.238 (y = 30, z = 0);
+//   the tool, standing within a quarter of that of the part, is framed too, with its holder:
+//   its shank's end reaches 130·0.927184 = 120.534. So right ∈ [−11.238, 120.534], 131.772
+//   wide, centre 54.648.
 //   up = r: −30 (the cylinder's underside) to 50 (the insert), centre 10.
-//   6 % margins and 15 % more on top leave 704 × 438 px: 438 / 80 = 5.475 px/mm (< 704/85.41);
-//   the extent's middle sits at 255 px, so the picture's centre (300 px) is up = 10 + 45/5.475.
-// The insert's centre (r 45, y 0, Z 75): right = 75·0.9272 = 69.54, so
-//   x = 400 + (69.54 − 31.465)·5.475 = 608.4 px; y = 300 + (45 − 18.22)·5.475 = 446.6 px (from below).
-// The insert spans ±5 mm = ±27 px up and ±5·0.9272 mm = ±25 px across there.
+//   6 % margins and 15 % more on top leave 704 × 438 px: 704 / 131.772 = 5.3425 px/mm
+//   (< 438 / 80); the extent's middle sits at 255 px, so the picture's centre (300 px) is
+//   up = 10 + 45/5.3425 = 18.423.
+// The insert's centre (r 45, y 0, Z 75): right = 75·0.927184 = 69.539, so
+//   x = 400 + (69.539 − 54.648)·5.3425 = 479.6 px; y = 300 + (45 − 18.423)·5.3425 = 442.0 px (from below).
+// The insert spans ±5 mm = ±26.7 px up and ±5·0.927 mm = ±24.8 px across there. The shank
+// (Z 80..130, r 42..48) runs from x 494 to 752 px, y 426 to 458 px.
 TEST(PartImagePng, ToolIsDrawnGoldWhereItStandsAndNotWithoutOne) {
   ::unsetenv("DISPLAY");
   const TriangleMesh part = test::cylinder(30.0, 60.0, 96, 8);
@@ -131,11 +135,13 @@ TEST(PartImagePng, ToolIsDrawnGoldWhereItStandsAndNotWithoutOne) {
   writePartImagePng(part, none, options, dir.path() / "tool.png");
   Png withTool(dir.path() / "tool.png");
   // A 31 × 31 px window about the insert's centre is gold (its edge lines lie outside it).
-  EXPECT_GT(withTool.count(593, 624, 431, 462, test::insertGold), 31 * 31 * 9 / 10);
-  // Gold only there: nothing below the insert (y < 447 − 27 − 10 px, the part and background).
+  EXPECT_GT(withTool.count(464, 495, 427, 458, test::insertGold), 31 * 31 * 9 / 10);
+  // Gold only there: nothing below the insert (y < 442 − 27 − 10 px, the part and background).
   EXPECT_EQ(withTool.count(0, 800, 0, 405, test::insertGold), 0);
-  // The holder's shank runs on to Z 130, to the right of the insert and out of the picture.
-  EXPECT_GT(withTool.count(650, 800, 437, 457, steel), 200);
+  // The holder's shank to the right of the insert, whole in the picture: steel along it, none
+  // past its end.
+  EXPECT_GT(withTool.count(520, 740, 432, 452, steel), 200 * 18);
+  EXPECT_EQ(withTool.count(765, 800, 420, 465, steel), 0);
 
   PartImageOptions plain{800, 600, "t", {}};
   writePartImagePng(part, none, plain, dir.path() / "plain.png");

@@ -61,7 +61,10 @@ TEST(MachineMCodeTables, TailstockChuckAndProbeArmAreWarnings) {
   } moving[] = {{MachineMCodes::Haas, 21},      {MachineMCodes::Haas, 22},      {MachineMCodes::Haas, 11},
                 {MachineMCodes::Haas, 104},     {MachineMCodes::Haas, 110},     {MachineMCodes::Haas, 59},
                 {MachineMCodes::Fanuc0iT, 21},  {MachineMCodes::Fanuc0iT, 22},  {MachineMCodes::Fanuc0iT, 11},
-                {MachineMCodes::Fanuc0iT, 69},  {MachineMCodes::Gsk980tdi, 10}, {MachineMCodes::Gsk980tdi, 11}};
+                {MachineMCodes::Fanuc0iT, 69},  {MachineMCodes::Gsk980tdi, 10}, {MachineMCodes::Gsk980tdi, 11},
+                // Doosan's tailstock and part ejector; M10, a chuck or Doosan's parts catcher
+                {MachineMCodes::Fanuc0iT, 78},  {MachineMCodes::Fanuc0iT, 79},  {MachineMCodes::Fanuc0iT, 116},
+                {MachineMCodes::Fanuc0iT, 10}};
   for (const auto& m : moving) {
     const MachineMCode* code = findMachineMCode(m.number, m.family);
     ASSERT_NE(code, nullptr) << m.number;
@@ -73,6 +76,17 @@ TEST(MachineMCodeTables, TailstockChuckAndProbeArmAreWarnings) {
   EXPECT_EQ(test::warningsOf(tailstock)[0].message,
             "M21 (tailstock advance) moves something lathesim does not simulate: the program runs on, but a "
             "collision with it is not checked");
+}
+
+// Codes one builder gives a harmless meaning and another a moving one stay out of the Fanuc
+// builders' table: Doosan's air blast M14/M15 is another lathe's live tool, Mazak's M200 its
+// milling mode (the C axis engaged).
+TEST(MachineMCodeTables, CodesThatMoveSomethingOnAnotherBuildersLatheAreNotAccepted) {
+  for (const int number : {14, 15, 200}) {
+    EXPECT_EQ(findMachineMCode(number, MachineMCodes::Fanuc0iT), nullptr) << number;
+    const auto result = run(fmt::format("G00 X40 Z5\nM{}\n", number), withCodes(MachineMCodes::Fanuc0iT));
+    EXPECT_FALSE(result.ok()) << number;
+  }
 }
 
 // Live tool, second spindle and C axis codes are in no machine table: the common table refuses

@@ -26,6 +26,9 @@ TEST(ControlFamily, EachFamilyIsRecognisedWhereItShows) {
       {"%SHAFT,MX,\nG90 G95\n", "Fagor 8055/8070", 1, 1},
       {"G90 G95\nN10 T1 D1\n", "Fagor 8055/8070 or Siemens Sinumerik (T with its offset in D)", 2, 5},
       {"G7 G18\n", "LinuxCNC (G7/G8 diameter and radius modes)", 1, 1},
+      {"G28 U0\nN2 G109 L1\n", "Mazak EIA/ISO (multi-turret G109, MAZATROL coordinates G53.5/G52.5)", 2, 4},
+      {"G21\ng53.5\n", "Mazak EIA/ISO (multi-turret G109, MAZATROL coordinates G53.5/G52.5)", 2, 1},
+      {"G18 G52.5 G99\n", "Mazak EIA/ISO (multi-turret G109, MAZATROL coordinates G53.5/G52.5)", 1, 5},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.text));
@@ -43,7 +46,9 @@ TEST(ControlFamily, FanucProgramsAreNotMistaken) {
                                 "(SET $ PRICE)\nG00 X10\n$ IS NOT FIRST\n",
                                 // Fanuc's T word with its offset, a Haas roughing block's D, a % line
                                 "%\nT0101 (T1 D1 IN THE CRIB)\nG71 P10 Q20 D1.5 U0.4 W0.1 F0.25\n%\n",
-                                "G07.1 C20.\nG08 P1\nG70 P10 Q20\nG17 G18\n"}) {
+                                "G07.1 C20.\nG08 P1\nG70 P10 Q20\nG17 G18\n",
+                                // Fanuc's G53 and G52 without Mazak's .5, numbers that hold 109, 53.5
+                                "G53 X200. Z300.\nG52 Z10.\nG01 X109. Z-53.5 F0.2\nG1090\nG53.55\n"}) {
     SCOPED_TRACE(std::string(text));
     EXPECT_FALSE(recogniseForeignProgram(text).has_value());
   }

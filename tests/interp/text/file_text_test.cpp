@@ -26,7 +26,7 @@
 #include "interp/text/control_family.hpp"
 #include "interp/text/file_text.hpp"
 #include "interp/text/program.hpp"
-#include "interp/text/stated_stock.hpp"
+#include "interp/text/machine_evidence.hpp"
 
 namespace lathesim::interp {
 namespace {
@@ -176,7 +176,7 @@ TEST(FileText, ResidentPagesStayBoundedHoweverLongTheText) {
       run();
       EXPECT_LE(residentBytes(mapping), bound) << pass;
     };
-    afterPass("stated stock", [&] { EXPECT_FALSE(stockStatedIn(paged)); });
+    afterPass("machine evidence and stated stock", [&] { EXPECT_FALSE(readMachineEvidence(paged).stock); });
     afterPass("foreign program", [&] { EXPECT_FALSE(recogniseForeignProgram(paged)); });
     afterPass("line quoted", [&] { EXPECT_EQ(lineOf(paged, 2), "G00 X40 Z2"); });
     afterPass("line starts", [&] { EXPECT_EQ(LineStarts(paged).lineOf(paged.view(), 2), "G00 X40 Z2"); });

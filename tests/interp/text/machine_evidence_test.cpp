@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 namespace lathesim::interp {
 namespace {
 
@@ -61,6 +63,19 @@ TEST(MachineEvidence, EachKindAloneIsFoundWhereItStands) {
       }
     }
   }
+}
+
+// A code is a whole number however it is written (leading zeros, beside codes past 255), and
+// a point makes it another code: what the block index answers must be what the words say.
+TEST(MachineEvidence, CodesAreWholeNumbersAsWritten) {
+  const MachineEvidence leadingZero = readMachineEvidence("G095 F0.2\n");
+  ASSERT_EQ(leadingZero.count(EvidenceKind::SystemB), 1u);
+  EXPECT_EQ(leadingZero.of(EvidenceKind::SystemB).front().column, 1);
+  const MachineEvidence pastTheIndex = readMachineEvidence("G300 M200 G95\n");
+  ASSERT_EQ(pastTheIndex.count(EvidenceKind::SystemB), 1u);
+  EXPECT_EQ(pastTheIndex.of(EvidenceKind::SystemB).front().column, 11);
+  EXPECT_EQ(readMachineEvidence("G95. F0.2\nG20.\nM97.\n").counts, (std::array<std::size_t, kEvidenceKinds>{}));
+  EXPECT_EQ(readMachineEvidence("g95 f0.2\n").count(EvidenceKind::SystemB), 1u);  // in any case
 }
 
 // Codes both systems write with other words, and words in comments, are no evidence.

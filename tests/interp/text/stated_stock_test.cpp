@@ -1,6 +1,6 @@
-// The bar a program states: billet lines and stock comments, and what does not count. Each
-// case is read twice, by stockStatedIn alone and in the walk of the lines that reads the
-// machine's evidence (machine_evidence.hpp: a run reads the text once for both): they agree.
+// The bar a program states: billet lines and stock comments, and what does not count, as the
+// one walk of the lines that reads the machine's evidence finds it (machine_evidence.hpp: a
+// run, and batch sizing its jobs, read the text once for both).
 
 #include "interp/text/stated_stock.hpp"
 
@@ -11,19 +11,7 @@
 namespace lathesim::interp {
 namespace {
 
-std::optional<StatedStock> statedBar(const std::string& text) {
-  const std::optional<StatedStock> alone = stockStatedIn(text);
-  const std::optional<StatedStock> withEvidence = readMachineEvidence(text).stock;
-  EXPECT_EQ(alone.has_value(), withEvidence.has_value());
-  if (alone && withEvidence) {
-    EXPECT_EQ(alone->diameterMm, withEvidence->diameterMm);
-    EXPECT_EQ(alone->lengthMm, withEvidence->lengthMm);
-    EXPECT_EQ(alone->line, withEvidence->line);
-    EXPECT_EQ(alone->column, withEvidence->column);
-    EXPECT_EQ(alone->text, withEvidence->text);
-  }
-  return withEvidence;
-}
+std::optional<StatedStock> statedBar(const std::string& text) { return readMachineEvidence(text).stock; }
 
 TEST(StatedStock, BilletLinesAndStockCommentsGiveDiameterAndLength) {
   struct Case {
