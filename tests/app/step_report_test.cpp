@@ -258,6 +258,18 @@ TEST(StepReport, AProgramPastTheStepLimitStepsSeveralBlocksAStep) {
   EXPECT_NEAR(removed, total, 1e-6 * total);
   EXPECT_FALSE(data["path_left_out"].get<bool>()) << "12,000 moves are within StepRecording::kMaxMoves";
   std::cout << steps.size() << " steps of " << perStep << " blocks, " << html.size() << " bytes\n";
+  // The page says which blocks and lines the step holds; the listing marks all its lines.
+  const bool networkOff = std::system("unshare --net true 2>/dev/null") == 0;  // root only
+  const std::string page = "file://" + (dir.path() / "out" / "report.html").string();
+  const BrowserRun second = openInChromium(dir, page + "#step=2", {"--dump-dom"}, networkOff);
+  const int line = steps[1][0], lastLine = steps[1][11];
+  EXPECT_NE(second.outcome.out.find("step 2 of " + std::to_string(steps.size()) + ": blocks 5–8, lines " +
+                                    std::to_string(line) + "–" + std::to_string(lastLine) + " (4 blocks a step)"),
+            std::string::npos);
+  for (int l = line; l <= lastLine; ++l)
+    EXPECT_TRUE(std::regex_search(second.outcome.out, std::regex("<tr id=\"L" + std::to_string(l) + "\"[^>]*class=\"current\"")))
+        << "line " << l;
+  for (const std::string& console : second.consoleLines) EXPECT_EQ(console.find("Uncaught"), std::string::npos) << console;
 }
 
 TEST(StepReport, ThePageStepsToTheBlockInItsAddressAndStartsAtTheEnd) {
