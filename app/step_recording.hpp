@@ -17,9 +17,9 @@
 // pairs (each then covers 2, 4, 8 … blocks: its time and removed volume their sums, its lines
 // the range they span), and past kMaxMoves moves the toolpath is let go and no longer kept, so
 // what a run holds for the page is bounded whatever the program's length (the streamed run's
-// promise): at most kMaxSteps + 1 steps (about 100 bytes each), kMaxMoves moves of path (at
-// most 40 bytes each) and kMaxSections + 1 sections: under 1.5 MB besides the sections, whose
-// size is that of the stock's profile.
+// promise): at most kMaxSteps + 1 steps (about 100 bytes each) and kMaxMoves moves of path
+// (at most 40 bytes each), about 2.5 MB at the most with the vectors' spare room and a merge's
+// copy, and kMaxSections + 1 sections, each the size of the stock's profile.
 
 #include <array>
 #include <chrono>
