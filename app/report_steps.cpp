@@ -41,6 +41,14 @@ constexpr const char* kScript = R"js(
 (function () {
   const data = JSON.parse(document.getElementById('step-data').textContent);
   const steps = data.steps, sections = data.sections, path = data.path;
+  // A long program's step covers several blocks (data.blocks_per_step, the last fewer): lines s[0] to s[11].
+  const perStep = data.blocks_per_step;
+  const linesOf = s => {
+    if (s[11] === s[0]) return [s[0]];
+    if (s[11] < s[0] || s[11] - s[0] > 1000) return [s[0], s[11]];  // through a subprogram: its ends
+    return Array.from({ length: s[11] - s[0] + 1 }, (_, i) => s[0] + i);
+  };
+  const covers = (s, lines) => linesOf(s).some(l => lines.has(l));
   const slider = document.getElementById('step-slider');
   const canvas = document.getElementById('step-canvas');
   slider.max = String(steps.length - 1);
@@ -157,8 +165,11 @@ constexpr const char* kScript = R"js(
     current = Math.max(0, Math.min(steps.length - 1, step));
     slider.value = String(current);
     const [line, , , removed, time, r, z, feed, spindle, rpm, tool] = steps[current];
-    document.getElementById('step-title').textContent =
-        'block ' + (current + 1) + ' of ' + steps.length + ', line ' + line + ':  ' + lineText(line).trim();
+    const lastLine = steps[current][11], blocks = steps[current][12];
+    document.getElementById('step-title').textContent = perStep === 1
+        ? 'block ' + (current + 1) + ' of ' + steps.length + ', line ' + line + ':  ' + lineText(line).trim()
+        : 'step ' + (current + 1) + ' of ' + steps.length + ': blocks ' + (current * perStep + 1) + '–' +
+          (current * perStep + blocks) + ', lines ' + line + '–' + lastLine + ' (' + perStep + ' blocks a step)';
     const rows = [['removed', removed.toFixed(1) + ' mm³', removedSoFar[current].toFixed(1) + ' mm³ so far'],
                   ['time', time.toFixed(2) + ' s', timeSoFar[current].toFixed(2) + ' s so far'],
                   ['feed', feed ? String(feed) : '—', ''], ['S', String(spindle), Math.round(rpm) + ' rpm at the end'],
@@ -170,7 +181,7 @@ constexpr const char* kScript = R"js(
     while (before >= 0 && steps[before][2] > taken) before--;
     let cutSince = false;
     for (let s = before + 1; s <= current; s++) cutSince = cutSince || steps[s][3] > 0;
-    if (cutSince) rows.push(['section', 'as after block ' + (before + 1), 'sections thinned in a long run']);
+    if (cutSince) rows.push(['section', 'as after ' + (perStep === 1 ? 'block ' : 'step ') + (before + 1), 'sections thinned in a long run']);
     const figures = document.getElementById('step-figures');
     figures.replaceChildren(...rows.map(cells => {
       const tr = document.createElement('tr');
@@ -179,16 +190,16 @@ constexpr const char* kScript = R"js(
     }));
     const around = document.getElementById('step-lines');
     around.replaceChildren();
-    for (let l = Math.max(1, line - 3); l <= line + 3; l++) {
+    const shownLines = linesOf(steps[current]), last = shownLines[shownLines.length - 1];
+    for (let l = Math.max(1, last - 3); l <= last + 3; l++) {
       if (!listingRows.has(l)) continue;
       const div = document.createElement('div');
       div.textContent = String(l).padStart(5) + '  ' + lineText(l);
-      if (l === line) div.className = 'current';
+      if (shownLines.includes(l)) div.className = 'current';
       around.append(div);
     }
     document.querySelectorAll('.listing tr.current').forEach(row => row.classList.remove('current'));
-    const row = listingRows.get(line);
-    if (row) row.classList.add('current');
+    for (const l of shownLines) { const row = listingRows.get(l); if (row) row.classList.add('current'); }
     history.replaceState(null, '', '#step=' + (current + 1));
     draw(current);
   }
@@ -203,8 +214,8 @@ constexpr const char* kScript = R"js(
   document.getElementById('step-next').onclick = () => show(current + 1);
   document.getElementById('step-last').onclick = () => show(steps.length - 1);
   document.getElementById('step-cut').onclick = () => nextWhere(s => s[3] > 0);
-  document.getElementById('step-collision').onclick = () => nextWhere(s => collisionLines.has(s[0]));
-  document.getElementById('step-warning').onclick = () => nextWhere(s => warningLines.has(s[0]));
+  document.getElementById('step-collision').onclick = () => nextWhere(s => covers(s, collisionLines));
+  document.getElementById('step-warning').onclick = () => nextWhere(s => covers(s, warningLines));
   document.addEventListener('keydown', event => {
     if (event.target === slider || event.target.tagName === 'INPUT' || event.altKey || event.ctrlKey || event.metaKey) return;
     const to = { ArrowLeft: current - 1, ArrowRight: current + 1, Home: 0, End: steps.length - 1 }[event.key];
@@ -213,7 +224,7 @@ constexpr const char* kScript = R"js(
     show(to);
   });
   listingRows.forEach((row, line) => row.addEventListener('click', () => {
-    const at = steps.findIndex(s => s[0] >= line);
+    const at = steps.findIndex(s => Math.max(s[0], s[11]) >= line);
     show(at < 0 ? steps.length - 1 : at);
   }));
   window.addEventListener('resize', () => draw(current));
@@ -221,11 +232,11 @@ constexpr const char* kScript = R"js(
   const marks = document.getElementById('step-marks');
   for (const [lines, color, what] of [[warningLines, '#e37400', 'warning'], [collisionLines, '#c5221f', 'collision']])
     steps.forEach((s, i) => {
-      if (!lines.has(s[0]) || (i > 0 && steps[i - 1][0] === s[0])) return;
+      if (!covers(s, lines) || (i > 0 && steps[i - 1][0] === s[0])) return;
       const mark = document.createElement('span');
       mark.style.left = (steps.length > 1 ? 100 * i / (steps.length - 1) : 0) + '%';
       mark.style.background = color;
-      mark.title = what + ', line ' + s[0];
+      mark.title = what + ', line ' + linesOf(s).find(l => lines.has(l));
       mark.className = 'mark-' + what;
       marks.append(mark);
     });
@@ -248,11 +259,19 @@ constexpr const char* kScript = R"js(
 }  // namespace
 
 std::string stepSection(const Json& steps, const Json& report) {
-  if (steps.is_null())
-    return "<h2 id=\"steps\">Step through the program</h2>\n<p class=\"hint\">Left out: the program runs more than " +
-           std::to_string(StepRecording::kMaxSteps) + " blocks or " + std::to_string(StepRecording::kMaxMoves) +
-           " moves, too many to keep while it runs.</p>\n";
-  if (steps.at("steps").empty()) return "";
+  if (steps.is_null() || steps.at("steps").empty()) return "";
+  // A long program's steps cover several blocks each, and its toolpath may be left out: said
+  // plainly above the slider, never shown as if block by block.
+  std::string notes;
+  const std::size_t perStep = steps.value("blocks_per_step", std::size_t{1});
+  if (perStep > 1)
+    notes += "<p class=\"hint\" id=\"step-merged\">Each step here covers " + std::to_string(perStep) +
+             " blocks (the last may cover fewer): the program runs more than " + std::to_string(StepRecording::kMaxSteps) +
+             " blocks, so neighbouring blocks are stepped through together; a step's removed volume and time are "
+             "its blocks' sums, and it shows the stock and the tool as its last block leaves them.</p>\n";
+  if (steps.value("path_left_out", false))
+    notes += "<p class=\"hint\" id=\"step-no-path\">The toolpath is not drawn here: the program makes more than " +
+             std::to_string(StepRecording::kMaxMoves) + " moves, too many to keep while it runs.</p>\n";
   Json data = steps;
   Json collisions = Json::array(), warnings = Json::array();
   for (const Json& c : report.at("collisions")) collisions.push_back(c.value("line", 0));
@@ -262,7 +281,7 @@ std::string stepSection(const Json& steps, const Json& report) {
   std::string json = data.dump();
   // Inside a script element only "</" could end it early.
   for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 2)) json.replace(at, 2, "<\\/");
-  return std::string(kMarkup) + "<script type=\"application/json\" id=\"step-data\">" + json + "</script>\n";
+  return std::string(kMarkup) + notes + "<script type=\"application/json\" id=\"step-data\">" + json + "</script>\n";
 }
 
 std::string stepScript() { return std::string("<script>") + kScript + "</script>\n"; }

@@ -13,7 +13,8 @@
 namespace lathesim::app {
 
 /// The section for `steps` (StepRecording::json) of the run `report` (its collisions' and
-/// warnings' lines); empty when `steps` is null (a program too long to step through says so).
+/// warnings' lines); empty when `steps` is null or holds no step. A long program's page says
+/// how many blocks each step covers, and when its toolpath is not drawn.
 std::string stepSection(const nlohmann::ordered_json& steps, const nlohmann::ordered_json& report);
 
 /// Its script, for the end of the page (it reads the listing's rows).

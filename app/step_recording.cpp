@@ -62,14 +62,15 @@ double rounded(double value, double step) { return std::round(value / step) * st
 
 void StepRecording::take(interp::Move move) {
   const std::size_t index = moves_++;
-  if (leftOut_) return;
-  if (moves_ > kMaxMoves || steps_.size() > kMaxSteps) {  // json() leaves the stepping out
-    leftOut_ = true;
-    steps_ = {}, path_ = {}, sections_ = {};
-    return;
+  if (steps_.empty() || steps_.back().block != move.block) {
+    if (!steps_.empty() && steps_.back().blocks < blocksPerStep_) {  // the step still has room
+      Step& step = steps_.back();
+      step.block = move.block, step.lastLine = move.line, ++step.blocks;
+    } else {
+      steps_.push_back({move.block, move.block, move.line, move.line, move.tool, 1, index, index});
+      if (steps_.size() > kMaxSteps) mergeStepsInPairs();
+    }
   }
-  if (steps_.empty() || steps_.back().block != move.block || steps_.back().endMove != index)
-    steps_.push_back({move.block, move.line, move.tool, index, index});
   Step& step = steps_.back();
   step.endMove = index + 1;
   step.timeS += move.timeS;
@@ -78,12 +79,41 @@ void StepRecording::take(interp::Move move) {
   step.rpm = rpmAtEnd(move);
   step.tool = move.tool;
   step.end = {micrometres(move.to.x()), micrometres(move.to.y())};
+  if (pathLeftOut_) return;
+  if (moves_ > kMaxMoves) {  // json() says the toolpath is left out
+    pathLeftOut_ = true;
+    path_ = {};
+    return;
+  }
   path_.insert(path_.end(), {static_cast<long>(move.kind), step.end[0], step.end[1]});
   if (interp::isArc(move.kind)) path_.insert(path_.end(), {micrometres(move.center.x()), micrometres(move.center.y())});
 }
 
+// Each pair of neighbours as one step (an odd last one stays as it is, with room for more):
+// from then on a step takes twice as many blocks. Sections stay; the page shows the last one
+// taken at or before a step's end.
+void StepRecording::mergeStepsInPairs() {
+  std::vector<Step> merged;
+  merged.reserve(kMaxSteps / 2 + 1);
+  for (std::size_t s = 0; s < steps_.size(); s += 2) {
+    Step step = steps_[s];
+    if (s + 1 < steps_.size()) {
+      const Step& second = steps_[s + 1];
+      step.block = second.block, step.lastLine = second.lastLine, step.blocks += second.blocks;
+      step.endMove = second.endMove;
+      step.timeS += second.timeS;
+      step.feed = second.feed, step.spindleS = second.spindleS, step.rpm = second.rpm;
+      step.tool = second.tool, step.end = second.end;
+    }
+    merged.push_back(step);
+  }
+  steps_ = std::move(merged);
+  blocksPerStep_ *= 2;
+  nextStep_ /= 2;  // the step that holds the one it was at
+}
+
 void StepRecording::take(const sim::Stock& stock, std::size_t afterMove, bool always) {
-  if (leftOut_ || (!always && !sections_.empty() && afterMove < sections_.back().afterMove + everyMoves_)) return;
+  if ((!always && !sections_.empty() && afterMove < sections_.back().afterMove + everyMoves_)) return;
   const auto started = std::chrono::steady_clock::now();
   const double besides = std::chrono::duration<double>(started - started_).count() - secondsSpent_;
   if (!always && secondsSpent_ > kFreeSeconds && secondsSpent_ > kTimeShare * besides) return;  // over its share
@@ -120,7 +150,6 @@ sim::CutObserver StepRecording::observer() {
 void StepRecording::finish(const sim::Stock& stock) { take(stock, moves_, true); }
 
 Json StepRecording::json(const sim::BlockRows& rows, const setup::Setup& setup, const RZ& start) const {
-  if (leftOut_) return nullptr;
   // The sections some step shows (the last taken at or before its end; a block of several
   // groups had one taken before each), the bar's first; each as its change from the one before.
   std::vector<std::size_t> shown{0};
@@ -138,25 +167,29 @@ Json StepRecording::json(const sim::BlockRows& rows, const setup::Setup& setup, 
       polylines.push_back(delta(line, k == 0 ? Polylines{} : sections_[shown[k - 1]].polylines));
     sections.push_back(Json::array({section.afterMove, polylines}));
   }
-  // The rows are one a block run with moves, in the same order as the steps.
+  // The rows are one a block run with moves, in the same order as the blocks the steps cover.
   std::vector<double> removed(steps_.size(), 0.0);
-  std::size_t next = 0;
+  std::size_t next = 0, taken = 0;  // the step being filled, and how many of its blocks' rows it has
   rows.forEach([&](const sim::BlockRemoval& row) {
-    while (next < steps_.size() && steps_[next].block != row.block) ++next;
-    if (next < steps_.size()) removed[next++] = row.removedMm3;
+    while (next < steps_.size() && (taken == steps_[next].blocks || (taken == 0 && steps_[next].firstBlock != row.block)))
+      ++next, taken = 0;
+    if (next < steps_.size()) removed[next] += row.removedMm3, ++taken;
   });
   Json steps = Json::array(), tools = Json::object();
   for (std::size_t s = 0; s < steps_.size(); ++s) {
     const Step& step = steps_[s];
-    steps.push_back(Json::array({step.line, step.firstMove, step.endMove, rounded(removed[s], 0.1),
+    // The volume to 1e-6 mm³, so that the steps add up to the run's total.
+    steps.push_back(Json::array({step.line, step.firstMove, step.endMove, std::round(removed[s] * 1e6) / 1e6,
                                  rounded(step.timeS, 0.01), step.end[0], step.end[1], rounded(step.feed, 0.0001),
-                                 step.spindleS, std::round(step.rpm), step.tool}));
+                                 step.spindleS, std::round(step.rpm), step.tool, step.lastLine, step.blocks}));
     const std::string tool = std::to_string(step.tool);
     if (tools.contains(tool)) continue;
     const render::ToolPicture picture = toolPicture(setup, step.tool, RZ{0, 0});
     tools[tool] = {{"insert", polygon(picture.insert)}, {"holder", polygon(picture.holder)}};
   }
   return {{"every_moves", everyMoves_},
+          {"blocks_per_step", blocksPerStep_},
+          {"path_left_out", pathLeftOut_},
           {"start", {micrometres(start.x()), micrometres(start.y())}},
           {"sections", sections},
           {"steps", steps},

@@ -13,9 +13,13 @@
 // program's page stays small. A long program is thinned, and the page says so: sections take
 // at most kTimeShare of the run's time beside them (past a first kFreeSeconds), skipping
 // blocks when they would take more; past kMaxSections every other section is dropped and
-// sections are taken half as often. Past kMaxSteps blocks or kMaxMoves moves the stepping is
-// left out and what it held is let go: a long program's run holds nothing a block (the
-// streamed run's promise).
+// sections are taken half as often. Past kMaxSteps steps neighbouring steps are merged in
+// pairs (each then covers 2, 4, 8 … blocks: its time and removed volume their sums, its lines
+// the range they span), and past kMaxMoves moves the toolpath is let go and no longer kept, so
+// what a run holds for the page is bounded whatever the program's length (the streamed run's
+// promise): at most kMaxSteps + 1 steps (about 100 bytes each) and kMaxMoves moves of path
+// (at most 40 bytes each), about 2.5 MB at the most with the vectors' spare room and a merge's
+// copy, and kMaxSections + 1 sections, each the size of the stock's profile.
 
 #include <array>
 #include <chrono>
@@ -48,7 +52,7 @@ class StepRecording final : public interp::MoveSink {
   /// Wall time spent taking sections so far (s).
   double secondsSpent() const { return secondsSpent_; }
 
-  /// report.html's "steps" data (see writeReportHtml), or null when the program has too many blocks.
+  /// report.html's "steps" data (see writeReportHtml).
   nlohmann::ordered_json json(const sim::BlockRows& rows, const setup::Setup& setup, const RZ& start) const;
 
  private:
@@ -58,12 +62,15 @@ class StepRecording final : public interp::MoveSink {
     Polylines polylines;
   };
   struct Step {
-    int block = 0, line = 0, tool = 0;
+    int firstBlock = 0, block = 0;  // the ordinals of its first and its last block
+    int line = 0, lastLine = 0, tool = 0;
+    std::size_t blocks = 1;  // how many blocks it covers
     std::size_t firstMove = 0, endMove = 0;
     double timeS = 0, feed = 0, spindleS = 0, rpm = 0;
     std::array<long, 2> end{0, 0};
   };
   void take(const sim::Stock& stock, std::size_t afterMove, bool always);
+  void mergeStepsInPairs();
 
   double toleranceMm_;
   std::size_t everyMoves_ = 1;  // a section at most every so many moves
@@ -72,7 +79,8 @@ class StepRecording final : public interp::MoveSink {
   std::vector<long> path_;  // per move: its kind, where it ends (r, z); an arc its centre too
   std::size_t moves_ = 0;
   std::size_t nextStep_ = 0;  // the observer's place in steps_
-  bool leftOut_ = false;      // past the limits: nothing more is kept
+  std::size_t blocksPerStep_ = 1;
+  bool pathLeftOut_ = false;  // past kMaxMoves
   double secondsSpent_ = 0;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };

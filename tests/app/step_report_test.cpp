@@ -12,6 +12,7 @@
 #include <iostream>
 #include <regex>
 
+#include "app/step_recording.hpp"
 #include "tests/support/headless_chromium.hpp"
 #include "tests/support/lathesim_process.hpp"
 
@@ -197,6 +198,78 @@ TEST(StepReport, ALongCamProgramsPageHoldsEveryBlockInLittleSpace) {
   std::cout << sections.size() << " sections for " << steps.size() << " blocks, " << html.size() << " bytes\n";
   const auto& finished = sectionAfter(data, sections, steps.size() - 1);
   for (double z = -2; z > -58; z -= 7.3) EXPECT_NEAR(radiusAt(finished, z), 17 + 0.3 * std::sin(z / 4), 0.12) << "Z" << z;
+}
+
+// A CAM contour of 12,000 one-line blocks (r = 17 + 0.3 sin(z / 4), Z0 to Z-60), more than
+// StepRecording::kMaxSteps: the page still steps, each step covering 4 blocks (12,000 blocks
+// halved twice to fit), and each step holds exactly the report.json rows of its
+// blocks: their lines from first to last, their removed volume and time summed.
+TEST(StepReport, AProgramPastTheStepLimitStepsSeveralBlocksAStep) {
+  ScratchDir dir("steps-12000");
+  std::string program = "O2001 (CAM FINISH)\nT0101\nG99 G97 S800 M03\nG00 X52.0 Z1.0\nG01 X34.0 Z0 F0.1\n";
+  char block[64];
+  for (int i = 1; i <= 12000; ++i) {
+    const double z = -60.0 * i / 12000;
+    std::snprintf(block, sizeof block, "X%.4f Z%.4f\n", 2 * (17 + 0.3 * std::sin(z / 4)), z);
+    program += block;
+  }
+  program += "G00 X100.0 Z50.0\nM30\n";
+  writeFile(dir.path() / "cam.nc", program);
+  const auto run = runProcess(LATHESIM_BINARY,
+                              {"run", (dir.path() / "cam.nc").string(), "--setup", (kShaft / "setup.toml").string(), "--voxel",
+                               "0.25", "--out", (dir.path() / "out").string(), "--outputs", "report,html"},
+                              dir.path());
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::string html = readFile(dir.path() / "out" / "report.html");
+  const Json report = Json::parse(readFile(dir.path() / "out" / "report.json"));
+  const Json& rows = report["blocks"];
+  ASSERT_GT(rows.size(), 2 * app::StepRecording::kMaxSteps) << "the contour's 12,000 blocks, and those around it";
+  ASSERT_LE(rows.size(), 4 * app::StepRecording::kMaxSteps);
+  const Json data = stepData(html);
+  ASSERT_TRUE(data.is_object()) << "the page steps";
+  const std::size_t perStep = data["blocks_per_step"];
+  EXPECT_EQ(perStep, 4u) << rows.size() << " blocks: 2 a step would make more steps than the limit";
+  EXPECT_NE(html.find("Each step here covers " + std::to_string(perStep) + " blocks"), std::string::npos);
+  const Json& steps = data["steps"];
+  EXPECT_LE(steps.size(), app::StepRecording::kMaxSteps);
+  EXPECT_EQ(steps.size(), (rows.size() + perStep - 1) / perStep);
+  double removed = 0, rowsRemoved = 0;
+  std::size_t row = 0;
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    const Json& step = steps[s];
+    const std::size_t blocks = step[12];
+    EXPECT_EQ(blocks, s + 1 < steps.size() ? perStep : rows.size() - perStep * (steps.size() - 1)) << "step " << s;
+    ASSERT_LE(row + blocks, rows.size()) << "step " << s;
+    EXPECT_EQ(step[0], rows[row]["line"]) << "step " << s << ": its first line";
+    EXPECT_EQ(step[11], rows[row + blocks - 1]["line"]) << "step " << s << ": its last line";
+    if (s > 0) {
+      EXPECT_EQ(step[0].get<int>(), steps[s - 1][11].get<int>() + 1) << "step " << s << ": the lines run on";
+    }
+    double ownRemoved = 0, ownTime = 0;
+    for (std::size_t b = row; b < row + blocks; ++b)
+      ownRemoved += rows[b]["removed_volume_mm3"].get<double>(), ownTime += rows[b]["time_s"].get<double>();
+    EXPECT_NEAR(step[3].get<double>(), ownRemoved, 1e-6) << "step " << s;
+    EXPECT_NEAR(step[4].get<double>(), ownTime, 0.006) << "step " << s;
+    removed += step[3].get<double>(), rowsRemoved += ownRemoved;
+    row += blocks;
+  }
+  EXPECT_EQ(row, rows.size()) << "every block in some step";
+  const double total = report["removed_volume_mm3"];
+  EXPECT_NEAR(removed, total, 1e-6 * total);
+  EXPECT_FALSE(data["path_left_out"].get<bool>()) << "12,000 moves are within StepRecording::kMaxMoves";
+  std::cout << steps.size() << " steps of " << perStep << " blocks, " << html.size() << " bytes\n";
+  // The page says which blocks and lines the step holds; the listing marks all its lines.
+  const bool networkOff = std::system("unshare --net true 2>/dev/null") == 0;  // root only
+  const std::string page = "file://" + (dir.path() / "out" / "report.html").string();
+  const BrowserRun second = openInChromium(dir, page + "#step=2", {"--dump-dom"}, networkOff);
+  const int line = steps[1][0], lastLine = steps[1][11];
+  EXPECT_NE(second.outcome.out.find("step 2 of " + std::to_string(steps.size()) + ": blocks 5–8, lines " +
+                                    std::to_string(line) + "–" + std::to_string(lastLine) + " (4 blocks a step)"),
+            std::string::npos);
+  for (int l = line; l <= lastLine; ++l)
+    EXPECT_TRUE(std::regex_search(second.outcome.out, std::regex("<tr id=\"L" + std::to_string(l) + "\"[^>]*class=\"current\"")))
+        << "line " << l;
+  for (const std::string& console : second.consoleLines) EXPECT_EQ(console.find("Uncaught"), std::string::npos) << console;
 }
 
 TEST(StepReport, ThePageStepsToTheBlockInItsAddressAndStartsAtTheEnd) {
