@@ -219,7 +219,8 @@ TEST_F(RunSeed001, ReportNamesTheControlAndTheTravel) {
   // What the setup did not say: only the travel (it states the bar, its face and the start).
   EXPECT_EQ(r.at("machine").at("assumed"),
             nlohmann::json::parse(R"({"travel_x": [-50.0, 100.0], "travel_z": [-120.0, 100.0]})"));
-  EXPECT_NE(outcome_->out.find("  assumed, as the setup does not say: X travel X-50 to X100, Z travel Z-120 to Z100\n"),
+  EXPECT_NE(outcome_->out.find("  assumed, as " + (kPartsDir / kPart / "setup.toml").string() +
+                               " does not say: X travel X-50 to X100, Z travel Z-120 to Z100\n"),
             std::string::npos)
       << outcome_->out;
   // The machine said aloud: the program (G94 with X and Z, read alike in systems A and B)
