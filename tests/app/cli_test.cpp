@@ -289,6 +289,22 @@ TEST(Cli, OutputsWritesExactlyTheFilesNamedAndTheReport) {
   }
 }
 
+TEST(Cli, AssumptionsWithNoSetupSayTheDefaultSetupGaveThem) {
+  // No --setup, and the program states no bar: the default setup's start, travel and bar
+  // (setup/setup.cpp defaultSetup: X200 Z200, Φ125 × 112, face Z2) are what was assumed.
+  TempDir dir("no-setup-assumed");
+  writeFile(dir.path() / "plain.nc", "G99 M03 S800;\nG00 X130 Z5;\nG00 X60 Z5;\nM30;\n");
+  const Outcome outcome = lathesim({"run", (dir.path() / "plain.nc").string(), "--voxel", "0.5", "--outputs", "report",
+                                    "--out", (dir.path() / "out").string()},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("\n  assumed, as no setup was given (--setup), so lathesim's default setup says: start "
+                             "X200 Z200, X travel X-125 to X200, Z travel Z-222 to Z200, bar Φ125 × 112, bar face at "
+                             "Z2\n"),
+            std::string::npos)
+      << outcome.out;
+}
+
 TEST(Cli, OutputsWithAnUnknownNameIsACommandLineErrorNamingTheValidOnes) {
   TempDir dir("outputs-bad");
   const fs::path part = kPartsDir / "g71-g70-shaft";
