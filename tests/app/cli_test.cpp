@@ -499,7 +499,8 @@ namespace {
 // --stock, the turning tool and the parting blade from their T blocks' comments, a subprogram
 // from --programs. Face Φ40 to Φ36 over 20 mm: removed π(20² − 18²)·20 = 1520π mm³. Its
 // subprogram's G00 X42 retracts up the shoulder at rapid, and the CNMG's nose sweeps 6.6 mm³ of
-// the shoulder's corner: a crash, exit 4, the outputs written (this test once expected 0).
+// the shoulder's corner: a crash, exit 4, the outputs written (this test once expected 0), located
+// in the subprogram's file.
 TEST(Cli, ShopProgramRunsWithoutASetupFile) {
   TempDir dir("shop");
   const fs::path programs = dir.path() / "control";
@@ -514,7 +515,11 @@ TEST(Cli, ShopProgramRunsWithoutASetupFile) {
                                     "--out", out.string(), "--voxel", "0.5"},
                                    dir.path());
   ASSERT_EQ(outcome.status, 4) << outcome.err;
-  EXPECT_NE(outcome.err.find("shaft.nc:8:1: error: rapid into the stock removes"), std::string::npos) << outcome.err;
+  // In the subprogram's file, at its G00 X42 (line 4), with the M98 (line 8) that called it.
+  EXPECT_NE(outcome.err.find((programs / "O7615.nc").string() + ":4:1: error: rapid into the stock removes"),
+            std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find("(called from " + program.string() + ":8)\nG00 X42\n^"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find("warning: tool 1 is mounted from the comment '(CNMG 120408)'"), std::string::npos)
       << outcome.err;
   const nlohmann::json report = nlohmann::json::parse(readFile(out / "report.json"));
