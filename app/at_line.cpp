@@ -11,7 +11,13 @@ ToolpathAtLine toolpathAtLine(const interp::Toolpath& toolpath, int line, int so
                               " (it has lines 1 to " + std::to_string(sourceLineCount) + ")"};
   }
   const auto& moves = toolpath.moves;
-  const auto isOnLine = [line](const interp::Move& m) { return m.line == line; };
+  // A move of a subprogram's file runs under the program's line whose call led there.
+  const auto isOnLine = [&toolpath, line](const interp::Move& m) {
+    int programLine = m.line;
+    for (int source = m.source; source != 0; source = toolpath.sources[static_cast<std::size_t>(source - 1)].caller)
+      programLine = toolpath.sources[static_cast<std::size_t>(source - 1)].callLine;
+    return programLine == line;
+  };
   const auto first = std::find_if(moves.begin(), moves.end(), isOnLine);
   if (first == moves.end()) {
     return {std::nullopt, "--at-line " + std::to_string(line) + ": line " + std::to_string(line) +

@@ -24,7 +24,7 @@ std::string collisionMessage(const sim::Collision& c) {
 
 interp::Diagnostic collisionDiagnostic(const setup::Job& job, const sim::Collision& collision) {
   const auto severity = job.setup.collisionsWarn ? interp::Severity::Warning : interp::Severity::Error;
-  return job.diagnosticAt(severity, collision.line, collision.column, collisionMessage(collision));
+  return job.diagnosticAt(severity, collision.line, collision.column, collisionMessage(collision), collision.source);
 }
 
 render::CrashMark crashMarkOf(const sim::Collision& collision) {

@@ -2,6 +2,7 @@
 
 #include "app/commands.hpp"
 #include "app/run_pipeline.hpp"
+#include "setup/setup.hpp"
 #include "interp/base/printable_text.hpp"
 
 namespace lathesim::app {
@@ -29,8 +30,13 @@ int runCommand(const RunOptions& options) {
             << " mm³ (removed " << figures.stockVolumeMm3 - figures.finalVolumeMm3 << " mm³) at " << figures.voxelMm
             << " mm voxels, " << figures.simulation.collisions.size() << " collision(s); outputs in "
             << interp::printable(options.out.string()) << "/\n";
-  if (!figures.assumed.empty())
-    std::cout << "  assumed, as the setup does not say: " << setup::assumptionsText(figures.assumed) << '\n';
+  if (!figures.assumed.empty()) {  // said of the file looked in, or of the defaults when none was
+    const std::string& setupName = run->job.setup.sourceName;
+    const std::string why = setupName == setup::defaultSetup().sourceName
+                                ? "no setup was given (--setup), so lathesim's default setup says"
+                                : interp::printable(setupName) + " does not say";
+    std::cout << "  assumed, as " << why << ": " << setup::assumptionsText(figures.assumed) << '\n';
+  }
   if (!figures.simulation.partOffs.empty()) {
     const sim::PartOff& off = figures.simulation.partOffs.front();
     std::cout << "  parted off at line " << off.line << ", Z" << off.zMm << ": the part " << off.volumeMm3

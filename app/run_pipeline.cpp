@@ -35,8 +35,8 @@ namespace lathesim::app {
 namespace {
 
 // A warning for the report, also printed on stderr; line 0 when it concerns the whole run.
-void warn(SimulatedRun& run, int line, int column, const std::string& message) {
-  run.figures.warnings.push_back(run.job.warningAt(line, column, message));
+void warn(SimulatedRun& run, int line, int column, const std::string& message, int source = 0) {
+  run.figures.warnings.push_back(run.job.warningAt(line, column, message, source));
   std::cerr << interp::format(run.figures.warnings.back()) << '\n';
 }
 void warn(SimulatedRun& run, const std::string& message) { warn(run, 0, 0, message); }
@@ -236,7 +236,7 @@ std::optional<SimulatedRun> simulateProgram(const RunOptions& options, Stopwatch
   figures.threads =
       measure::measureThreads(run.partStock(), streams ? threadToolpath : run.job.toolpath, outlines, setup.dialect);
   figures.timing.simulateS = clock.lap() - figures.timing.animateS - figures.timing.stepsS;
-  for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message);
+  for (const auto& w : figures.simulation.warnings) warn(run, w.line, w.column, w.message, w.source);
   for (const auto& collision : figures.simulation.collisions) {
     figures.collisions.push_back(collisionDiagnostic(run.job, collision));
     std::cerr << interp::format(figures.collisions.back()) << '\n';

@@ -174,11 +174,22 @@ interp::InterpreterOptions interpreterOptionsOf(const Setup& setup) {
   return options;
 }
 
-interp::Diagnostic Job::warningAt(int line, int column, std::string message) const {
-  return diagnosticAt(interp::Severity::Warning, line, column, std::move(message));
+interp::Diagnostic Job::warningAt(int line, int column, std::string message, int source) const {
+  return diagnosticAt(interp::Severity::Warning, line, column, std::move(message), source);
 }
 
-interp::Diagnostic Job::diagnosticAt(interp::Severity severity, int line, int column, std::string message) const {
+interp::Diagnostic Job::diagnosticAt(interp::Severity severity, int line, int column, std::string message,
+                                     int source) const {
+  if (source != 0) {  // a subprogram's file: read again for the one line quoted
+    std::string quoted;
+    try {
+      quoted = interp::lineOf(interp::FileText::read(toolpath.fileOf(source)).text(), line);
+    } catch (const std::system_error&) {  // gone since it ran: the message still names its place
+    }
+    const std::string calls = toolpath.calledFrom(source);
+    if (!calls.empty()) message += " (" + calls + ")";
+    return {severity, toolpath.fileOf(source), line, column, std::move(message), std::move(quoted)};
+  }
   if (!programLines) programLines.emplace(programText.text());
   return {severity, toolpath.programName, line, column, std::move(message),
           programLines->lineOf(programText.text().view(), line)};

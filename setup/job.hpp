@@ -46,10 +46,13 @@ struct Job {
   // interpretJob to run without reading it again; gone once it has run.
   std::optional<interp::Program> program;
 
-  /// A warning located in the program, ready to print and report.
-  interp::Diagnostic warningAt(int line, int column, std::string message) const;
+  /// A warning located in the program, ready to print and report: in the program's own text,
+  /// or in the subprogram file toolpath.sources names for `source` (Move::source), with the
+  /// calls that led there ("… (called from main.nc:14)").
+  interp::Diagnostic warningAt(int line, int column, std::string message, int source = 0) const;
   /// The same with any severity: an error found after the program ran (a collision).
-  interp::Diagnostic diagnosticAt(interp::Severity severity, int line, int column, std::string message) const;
+  interp::Diagnostic diagnosticAt(interp::Severity severity, int line, int column, std::string message,
+                                  int source = 0) const;
 };
 
 /// What the interpreter needs to know of the setup: start, reference, machine, dialect, tools.

@@ -90,7 +90,8 @@ void PartOffWatch::afterCut(std::span<const interp::Move> group, std::size_t fir
           {head.line, head.column,
            fmt::format("this block cuts where the part was ({:.1f} mm³ of it), but the part parted off at line {} and "
                        "fell: it is no longer held, so nothing of it is cut; part.stl shows it as it fell",
-                       inside, off.line)});
+                       inside, off.line),
+           head.source});
       warnedBlock_ = head.block;
     }
   }
@@ -102,20 +103,22 @@ void PartOffWatch::afterCut(std::span<const interp::Move> group, std::size_t fir
   LoosePiece loose = extentOf(*piece);
   loose.line = head.line;
   loose.column = head.column;
+  loose.source = head.source;
   loose.volumeMm3 = piece->volumeMm3();
   loose.beyondMm3 = materialFrom(stock, loose.zLowMm);
   if (loose.volumeMm3 <= loose.beyondMm3) {  // not most of what lies there: no part-off
-    result.warnings.push_back({head.line, head.column, looseMessage(loose, h)});
+    result.warnings.push_back({head.line, head.column, looseMessage(loose, h), head.source});
     result.loosePieces.push_back(loose);
     return;
   }
-  PartOff off{head.line, head.column, deepestZ(group), loose.volumeMm3, catcherInForce(catchers, first)};
+  PartOff off{head.line, head.column, deepestZ(group), loose.volumeMm3, catcherInForce(catchers, first), head.source};
   if (result.part) {
     result.warnings.push_back(
         {head.line, head.column,
          fmt::format("a second piece parts off here ({:.1f} mm³, at Z{:g}): it falls too, and is in neither part.stl "
                      "nor stub.stl; part.stl is the piece that parted off at line {}",
-                     off.volumeMm3, off.zMm, result.partOffs.front().line)});
+                     off.volumeMm3, off.zMm, result.partOffs.front().line),
+         head.source});
   } else {
     result.part = std::move(piece);
   }

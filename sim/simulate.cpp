@@ -121,7 +121,7 @@ void Simulation::cutGroup() {
   SimulationResult& result = result_;
   if (!block_ || block_->block != head.block) {
     if (block_) finishBlock();
-    block_ = BlockRemoval{head.block, head.line, head.column, 0.0, 0.0};
+    block_ = BlockRemoval{head.block, head.line, head.column, 0.0, 0.0, head.source};
     checkCycleStart(head.block);
   }
   BlockRemoval& block = *block_;

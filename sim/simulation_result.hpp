@@ -2,6 +2,7 @@
 // What a simulation found (sim/simulate.hpp): the material each block removed, the crashes,
 // the warnings, what parted off or fell loose, and the part.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@ struct Collision {
   int tool = 0;    // the tool of the move that collided
   RZ at{0, 0};     // where the tool stood (radius, Z) at the end of the block's first colliding
                    // move: where the machine would have stopped, the tool in what it hit
+  std::uint16_t source = 0;  // the text line and column are in (interp::Toolpath::sources)
 };
 
 struct BlockRemoval {
@@ -31,6 +33,7 @@ struct BlockRemoval {
   int column = 0;
   double removedMm3 = 0.0;
   double timeS = 0.0;  // the machine time of the block's moves
+  std::uint16_t source = 0;  // the text line and column are in (interp::Toolpath::sources)
 };
 
 /// Something the program does that a machine would let it do, but a machinist would not
@@ -39,6 +42,7 @@ struct SimulationWarning {
   int line = 0;
   int column = 0;
   std::string message;
+  std::uint16_t source = 0;  // the text line and column are in (interp::Toolpath::sources)
 };
 
 /// A cut that parted the bar: after it, some material no longer hung together with the
@@ -49,6 +53,7 @@ struct PartOff {
   double zMm = 0;  // Z of that cut's deepest point (its move ending nearest the axis, or past it)
   double volumeMm3 = 0;  // the piece that fell, measured on its level set
   std::optional<interp::PartsCatcherCommand> catcher;  // the parts catcher command in force, if any
+  std::uint16_t source = 0;  // the text line and column are in (interp::Toolpath::sources)
 };
 
 /// A piece a cut set loose that the program did not part off on purpose (part_off.hpp): a skin,
@@ -61,6 +66,7 @@ struct LoosePiece {
   // Its extent in the meridian section (mm): radii and Z of its material.
   double rInnerMm = 0, rOuterMm = 0, zLowMm = 0, zHighMm = 0;
   double beyondMm3 = 0;  // the material that stays, at Z from the piece's lowest Z on
+  std::uint16_t source = 0;  // the text line and column are in (interp::Toolpath::sources)
 };
 
 struct SimulationResult {

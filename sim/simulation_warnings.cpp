@@ -22,7 +22,7 @@ std::optional<SimulationWarning> cycleStartInStock(const interp::CycleStart& sta
                            start.code + " starts at X" + number("%g", diameterOf(start.point)) + " Z" +
                                number("%g", start.point.y()) +
                                " (the cycle start point), which is inside the stock: the cycle's "
-                               "rapid legs start in material; start the cycle clear of the blank"};
+                               "rapid legs start in material; start the cycle clear of the blank", start.source};
 }
 
 std::optional<SimulationWarning> shiftedMoveInStock(const interp::Move& move, const Stock& stock) {
@@ -36,7 +36,7 @@ std::optional<SimulationWarning> shiftedMoveInStock(const interp::Move& move, co
           number("%g", diameterOf(point)) + " Z" + number("%g", point.y()) +
           " of the setup: G50 declared a position the tool is not at, which moved the program's zero to X" +
           number("%g", diameterOf(shift)) + " Z" + number("%g", shift.y()) +
-          " of the setup; check the G50 against [machine] start"};
+          " of the setup; check the G50 against [machine] start", move.source};
 }
 
 std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head, double removedMm3,
@@ -48,7 +48,7 @@ std::optional<SimulationWarning> cutWithSpindleStopped(const interp::Move& head,
                            "cutting with the spindle stopped: this block cuts a straight slot of " +
                                number("%.1f", removedMm3) + " mm³ (the tool's outline, as thick as the insert, at "
                                "spindle angle " + number("%.0f", head.spindleAngleDeg) + "°) " + why +
-                               "; start the spindle before cutting"};
+                               "; start the spindle before cutting", head.source};
 }
 
 std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& move, const interp::Move* before,
@@ -59,7 +59,7 @@ std::optional<SimulationWarning> threadPassStartsInStock(const interp::Move& mov
                            "this thread pass starts at X" + number("%g", diameterOf(move.from)) + " Z" +
                                number("%g", move.from.y()) +
                                ", inside the stock: the cut would be synchronised with the spindle with the tool "
-                               "already in the material; start the pass clear of the part"};
+                               "already in the material; start the pass clear of the part", move.source};
 }
 
 }  // namespace lathesim::sim

@@ -2,6 +2,7 @@
 // The interpreter's output: primitive moves in the setup's frame (the frame of the stock and
 // the start point), each traceable to its source. Every cycle is expanded into these, so sim and render never see G-code.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -77,6 +78,9 @@ struct Move {
   NoseComp noseComp;   // G41/G42 in force as programmed; the toolpath's moves are already
                        // compensated (from/to/center are the imaginary tip's path)
   bool spindleOn = false;
+  // The text its block is in (Toolpath::sources; 0: the program's own): `line` and `column`
+  // are in that text. 16 bits, in what was padding after spindleOn: a Move stays 272 B.
+  std::uint16_t source = 0;
   SpindleDirection spindleDirection = SpindleDirection::Clockwise;  // the last M03/M04
   SpindleMode spindleMode = SpindleMode::Rpm;
   double spindleS = 0;                    // S in force: rpm (G97) or m/min (G96)
@@ -87,7 +91,7 @@ struct Move {
   std::shared_ptr<const CornerRequest> cornerAfter;
   double timeS = 0;   // how long the move takes on the machine (see interp/motion/cycle_time.hpp)
   int block = 0;      // 0-based ordinal of the source block: several blocks may share a line
-  int line = 0;       // 1-based source line of that block
+  int line = 0;       // 1-based line of that block in its text (`source`)
   int column = 0;     // 1-based column where that block starts
   int cycleStep = 0;  // 1–4 inside a G90/G94 cycle (rapid in, cut, retract, rapid back), 1–2 in
                       // G28 (to the intermediate point, to the reference); 0 outside
@@ -105,6 +109,7 @@ struct CycleStart {
   int column = 0;
   RZ point{0, 0};    // (radius mm, Z mm)
   std::string code;  // "G90", "G94", …
+  std::uint16_t source = 0;  // the text the block is in, as Move::source
 };
 
 /// Where the program reached M00 (program stop) or M01 (optional stop): the machine waits for
@@ -125,6 +130,17 @@ struct PartsCatcherCommand {
   bool inPlace = false;
 };
 
+/// A text other than the program's own that moves come from: a subprogram's file (M98 or G65
+/// found it in --programs or beside the program), reached by a call. The same file reached
+/// by calls from different lines is one source per calling line, so that each move names the
+/// call that led to it.
+struct MoveSource {
+  std::string file;    // as found
+  int caller = 0;      // the source of the calling block (Toolpath::sources; 0: the program's own)
+  int callLine = 0;    // of the M98/G65 block in the caller's text; 0 when too many calls were
+  int callColumn = 0;  // told apart to keep them (Toolpath::kMaxSources)
+};
+
 struct Toolpath {
   std::string programName;  // the file name as given
   RZ startPosition{0, 0};   // where the tool stood before the first move
@@ -133,7 +149,29 @@ struct Toolpath {
   std::vector<CycleStart> cycleStarts;  // every cycle block run, in program order
   std::vector<ProgramStop> stops;       // every M00/M01 reached, in program order
   std::vector<PartsCatcherCommand> partsCatcher;  // every parts catcher command reached, in order
+  // The texts moves came from besides the program's own: Move::source n ≥ 1 is sources[n − 1].
+  std::vector<MoveSource> sources;
+  static constexpr std::size_t kMaxSources = 65535;  // Move::source's 16 bits
+
+  /// The file of source `source`: programName for 0.
+  const std::string& fileOf(int source) const {
+    return source == 0 ? programName : sources[static_cast<std::size_t>(source - 1)].file;
+  }
+  /// The calls that led to source `source`, innermost first: "called from O2000.nc:3, from
+  /// main.nc:14"; empty for the program's own text.
+  std::string calledFrom(int source) const;
 };
+
+inline std::string Toolpath::calledFrom(int source) const {
+  std::string calls;
+  while (source != 0) {
+    const MoveSource& called = sources[static_cast<std::size_t>(source - 1)];
+    if (called.callLine == 0) break;
+    calls += (calls.empty() ? "called from " : ", from ") + fileOf(called.caller) + ":" + std::to_string(called.callLine);
+    source = called.caller;
+  }
+  return calls;
+}
 
 inline bool isArc(MoveKind kind) { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }
 

@@ -1,5 +1,6 @@
 #include "interp/cycles/compound_cycle_block.hpp"
 
+#include "interp/state/block_work.hpp"
 
 
 
@@ -8,11 +9,7 @@ namespace compound_detail {
 
 
 Result<CompoundOutcome> CompoundCycle::run() {
-  if (state_.plane != Plane::ZX) {
-    return errorAt(code_.column, fmt::format("{} under {}: this machine has no Y axis, so a "
-                                             "cycle needs the ZX plane; select it with G18",
-                                             code_.text, state_.plane == Plane::XY ? "G17" : "G19"));
-  }
+  if (auto problem = planeProblem(state_.plane, code_.text, "a cycle")) return errorAt(code_.column, *problem);
   Status status = success();
   switch (code_.number) {
     case 70: status = finishing(); break;

@@ -40,11 +40,7 @@ Status runSingleCycle(BlockWork& work, const SingleCycle& cycle, const std::opti
   const int anchor = code ? code->column : block.column;
   const std::string name = writtenGCode(cycle.code, GGroup::Motion, options.dialect);
   warnIfCycleRepeatsAfterG80(work, code, name);
-  if (state.plane != Plane::ZX) {
-    return work.errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
-                                            "needs the ZX plane; select it with G18",
-                                            name, state.plane == Plane::XY ? "G17" : "G19"));
-  }
+  if (auto problem = planeProblem(state.plane, name, "a cycle")) return work.errorAt(anchor, *problem);
   auto axes = work.takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();

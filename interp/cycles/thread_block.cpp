@@ -32,11 +32,7 @@ Status runThreadCut(BlockWork& work, const std::optional<Code>& code) {
   const int anchor = code ? code->column : block.column;
   auto axes = work.takeAxisWords();
   if (!axes.ok()) return axes.error();
-  if (state.plane != Plane::ZX) {
-    return work.errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a thread needs the ZX "
-                                            "plane; select it with G18",
-                                            name, state.plane == Plane::XY ? "G17" : "G19"));
-  }
+  if (auto problem = planeProblem(state.plane, name, "a thread")) return work.errorAt(anchor, *problem);
   auto lead = takeLeadMm(block, state, words, options.control, name, anchor, work.feedGiven);
   if (!lead.ok()) return lead.error();
   auto angle = takeStartAngleDeg(block, name, work.warnings);
@@ -77,11 +73,7 @@ Status runThreadCycle(BlockWork& work, const std::optional<Code>& code) {
   const int anchor = code ? code->column : block.column;
   const std::string name = writtenGCode(92, GGroup::Motion, options.dialect);
   warnIfCycleRepeatsAfterG80(work, code, name);
-  if (state.plane != Plane::ZX) {
-    return work.errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so a cycle "
-                                            "needs the ZX plane; select it with G18",
-                                            name, state.plane == Plane::XY ? "G17" : "G19"));
-  }
+  if (auto problem = planeProblem(state.plane, name, "a cycle")) return work.errorAt(anchor, *problem);
   auto axes = work.takeAxisWords();
   if (!axes.ok()) return axes.error();
   const AxisWords& a = axes.value();

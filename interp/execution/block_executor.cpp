@@ -596,11 +596,7 @@ Status Executor::applyArc(const std::optional<Code>& code) {
                                      "simulated yet; give the corner as its own G01 or G02/G03",
                                      corner.value()->word));
   }
-  if (work_.state.plane != Plane::ZX) {
-    return work_.errorAt(anchor, fmt::format("{} under {}: this machine has no Y axis, so an arc "
-                                             "needs the ZX plane; select it with G18",
-                                             name, work_.state.plane == Plane::XY ? "G17" : "G19"));
-  }
+  if (auto problem = planeProblem(work_.state.plane, name, "an arc")) return work_.errorAt(anchor, *problem);
   if (!work_.state.feed) {
     return work_.errorAt(anchor, fmt::format("feed rate F is not set: give F (e.g. F0.2 mm/rev) "
                                              "before the first {} move",

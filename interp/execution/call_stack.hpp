@@ -55,6 +55,12 @@ class CallStack {
     if (frames_.empty()) return std::nullopt;
     return frames_.front().callFrom;
   }
+  /// The M98/G65 blocks of the running calls, outermost first.
+  std::vector<std::size_t> callBlocks() const {
+    std::vector<std::size_t> blocks;
+    for (const Frame& frame : frames_) blocks.push_back(frame.callFrom);
+    return blocks;
+  }
 
  private:
   struct Frame {

@@ -13,6 +13,7 @@
 #include "interp/execution/block_executor.hpp"
 #include "interp/execution/call_stack.hpp"
 #include "interp/execution/macro_flow.hpp"
+#include "interp/execution/move_sources.hpp"
 #include "interp/state/modal_state.hpp"
 #include "interp/state/move_limit.hpp"
 #include "interp/state/step_guard.hpp"
@@ -37,6 +38,7 @@ class ProgramRunner {
         notes_(notes),
         skipped_(skipped),
         calls_(program),
+        sources_(program, toolpath),
         variables_(options.macroVariables),
         guard_(options.maxSteps),
         flow_(program, variables_, guard_) {
@@ -91,6 +93,7 @@ class ProgramRunner {
   std::vector<SkippedBlock>& skipped_;
   ModalState state_;
   CallStack calls_;
+  MoveSources sources_;
   macro::VariableStore variables_;
   StepGuard guard_;
   MacroFlow flow_;
@@ -204,10 +207,10 @@ Result<std::size_t> ProgramRunner::runWords(std::size_t index, const ParsedBlock
   if (!outcome.ok()) return outcome.error();
 
   BlockOutcome& done = outcome.value();
-  if (source != 0 && calls_.outermostCall()) {  // a subprogram's own file: the main program's call
-    const ProgramBlock& site = program_.block(*calls_.outermostCall());
-    for (Move& move : done.moves) std::tie(move.line, move.column) = std::pair{site.line, site.column};
-    for (CycleStart& start : done.cycleStarts) std::tie(start.line, start.column) = std::pair{site.line, site.column};
+  if (source != 0) {  // a subprogram's own file: its moves name their lines there
+    const std::uint16_t from = sources_.of(source, calls_.callBlocks());
+    for (Move& move : done.moves) move.source = from;
+    for (CycleStart& start : done.cycleStarts) start.source = from;
   }
   for (Error& warning : done.warnings) warn(std::move(warning), index);
   const ProgramFlow flow = done.flow;

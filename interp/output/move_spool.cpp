@@ -12,7 +12,9 @@ namespace {
 struct MoveRecord {
   double from[2], to[2], center[2], offsetShift[2], workShift[2];
   double dwellS, feed, noseRadiusMm, spindleS, spindleLimitRpm, timeS, leadMm, startAngleDeg, spindleAngleDeg;
-  std::int32_t tool, toolOffset, noseTip, block, line, column, cycleStep, starts;
+  std::int32_t tool, toolOffset, noseTip, block, line, column, starts;
+  std::int16_t cycleStep;
+  std::uint16_t source;
   std::uint8_t kind, feedMode, noseSide, spindleOn, spindleDirection, spindleMode, hasSpindleLimit, leadAlongZ;
 };
 static_assert(std::is_trivially_copyable_v<MoveRecord>, "records are spooled as their bytes");
@@ -28,7 +30,7 @@ MoveRecord recordOf(const Move& m) {
   r.spindleLimitRpm = m.spindleLimitRpm.value_or(0.0), r.timeS = m.timeS, r.leadMm = m.thread.leadMm;
   r.startAngleDeg = m.thread.startAngleDeg, r.spindleAngleDeg = m.spindleAngleDeg;
   r.tool = m.tool, r.toolOffset = m.toolOffset, r.noseTip = m.noseComp.tip, r.block = m.block, r.line = m.line;
-  r.column = m.column, r.cycleStep = m.cycleStep, r.starts = m.thread.starts;
+  r.column = m.column, r.cycleStep = static_cast<std::int16_t>(m.cycleStep), r.source = m.source, r.starts = m.thread.starts;
   r.kind = static_cast<std::uint8_t>(m.kind), r.feedMode = static_cast<std::uint8_t>(m.feedMode);
   r.noseSide = static_cast<std::uint8_t>(m.noseComp.side), r.spindleOn = m.spindleOn;
   r.spindleDirection = static_cast<std::uint8_t>(m.spindleDirection), r.spindleMode = static_cast<std::uint8_t>(m.spindleMode);
@@ -47,6 +49,7 @@ Move moveOf(const MoveRecord& r) {
   m.spindleMode = static_cast<SpindleMode>(r.spindleMode), m.spindleS = r.spindleS;
   if (r.hasSpindleLimit) m.spindleLimitRpm = r.spindleLimitRpm;
   m.timeS = r.timeS, m.block = r.block, m.line = r.line, m.column = r.column, m.cycleStep = r.cycleStep;
+  m.source = r.source;
   m.thread = {r.leadMm, r.leadAlongZ != 0, r.startAngleDeg, r.starts};
   m.spindleAngleDeg = r.spindleAngleDeg;
   return m;

@@ -125,4 +125,10 @@ void BlockWork::noteCycleStart(const RZ& start, const std::string& name) {
   cycleStarts.push_back({ordinal, block.line, block.column, start + state.frame.shift(), name});
 }
 
+std::optional<std::string> planeProblem(Plane plane, std::string_view code, std::string_view what) {
+  if (plane == Plane::ZX) return std::nullopt;
+  return fmt::format("{} under {}: this machine has no Y axis, so {} needs the ZX plane; select it with G18", code,
+                     plane == Plane::XY ? "G17" : "G19", what);
+}
+
 }  // namespace lathesim::interp

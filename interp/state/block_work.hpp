@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -72,5 +73,11 @@ struct BlockWork {
   void warnIfSurfaceSpeedUnclamped();
   void warnIfFeedImplausible();
 };
+
+/// Why a block that needs the ZX plane cannot run under `plane` (G17 or G19 in force), or
+/// nullopt under G18: "G90 under G17: this machine has no Y axis, so a cycle needs the ZX
+/// plane; select it with G18". `code` is the code as written, `what` what needs the plane
+/// ("a cycle", "a thread", "an arc").
+std::optional<std::string> planeProblem(Plane plane, std::string_view code, std::string_view what);
 
 }  // namespace lathesim::interp

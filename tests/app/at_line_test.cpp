@@ -41,6 +41,25 @@ TEST(AtLine, ALineRunTwiceStopsAfterItsFirstExecution) {
   EXPECT_EQ(at2.toolpath->moves.size(), 4u);  // lines 1, 5, 6, 2
 }
 
+// A subprogram in a file of its own (O2000.nc) called from line 2 of a 3-line program, its
+// moves on its lines 2 and 3 (blocks 3 and 4): they run under line 2, so --at-line 2 keeps
+// them and the move before, and --at-line 3 of the program is its own move, not the file's.
+TEST(AtLine, AMoveOfASubprogramFileRunsUnderItsCallsLine) {
+  interp::Toolpath path;
+  path.sources.push_back({"O2000.nc", 0, 2, 1});
+  const int lines[] = {1, 2, 3, 3};
+  const int blocks[] = {0, 3, 4, 2};
+  for (int i = 0; i < 4; ++i) path.moves.push_back(moveOn(lines[i], blocks[i], i + 1));
+  path.moves[1].source = path.moves[2].source = 1;
+  path.blockCount = 5;
+  const ToolpathAtLine at2 = toolpathAtLine(path, 2, 3);
+  ASSERT_TRUE(at2.toolpath) << at2.problem;
+  EXPECT_EQ(at2.toolpath->moves.size(), 3u);
+  const ToolpathAtLine at3 = toolpathAtLine(path, 3, 3);
+  ASSERT_TRUE(at3.toolpath) << at3.problem;
+  EXPECT_EQ(at3.toolpath->moves.size(), 4u);  // not cut after the file's line 3
+}
+
 // A cycle on line 4 (block 3) makes 4 moves, after a rapid on line 1: all 4 are kept with
 // it, and its cycle start; a later cycle's start (line 7, block 6) is dropped.
 TEST(AtLine, ACycleLineKeepsAllItsMovesAndOnlyTheCycleStartsBegun) {

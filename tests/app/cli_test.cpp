@@ -218,7 +218,8 @@ TEST_F(RunSeed001, ReportNamesTheControlAndTheTravel) {
   // What the setup did not say: only the travel (it states the bar, its face and the start).
   EXPECT_EQ(r.at("machine").at("assumed"),
             nlohmann::json::parse(R"({"travel_x": [-50.0, 100.0], "travel_z": [-120.0, 100.0]})"));
-  EXPECT_NE(outcome_->out.find("  assumed, as the setup does not say: X travel X-50 to X100, Z travel Z-120 to Z100\n"),
+  EXPECT_NE(outcome_->out.find("  assumed, as " + (kPartsDir / kPart / "setup.toml").string() +
+                               " does not say: X travel X-50 to X100, Z travel Z-120 to Z100\n"),
             std::string::npos)
       << outcome_->out;
   // The machine said aloud: the program (G94 with X and Z, read alike in systems A and B)
@@ -285,6 +286,22 @@ TEST(Cli, OutputsWritesExactlyTheFilesNamedAndTheReport) {
     for (const auto& entry : fs::directory_iterator(out)) written.insert(entry.path().filename().string());
     EXPECT_EQ(written, expected) << "--outputs " << outputs;
   }
+}
+
+TEST(Cli, AssumptionsWithNoSetupSayTheDefaultSetupGaveThem) {
+  // No --setup, and the program states no bar: the default setup's start, travel and bar
+  // (setup/setup.cpp defaultSetup: X200 Z200, Φ125 × 112, face Z2) are what was assumed.
+  TempDir dir("no-setup-assumed");
+  writeFile(dir.path() / "plain.nc", "G99 M03 S800;\nG00 X130 Z5;\nG00 X60 Z5;\nM30;\n");
+  const Outcome outcome = lathesim({"run", (dir.path() / "plain.nc").string(), "--voxel", "0.5", "--outputs", "report",
+                                    "--out", (dir.path() / "out").string()},
+                                   dir.path());
+  ASSERT_EQ(outcome.status, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("\n  assumed, as no setup was given (--setup), so lathesim's default setup says: start "
+                             "X200 Z200, X travel X-125 to X200, Z travel Z-222 to Z200, bar Φ125 × 112, bar face at "
+                             "Z2\n"),
+            std::string::npos)
+      << outcome.out;
 }
 
 TEST(Cli, OutputsWithAnUnknownNameIsACommandLineErrorNamingTheValidOnes) {
@@ -481,7 +498,8 @@ namespace {
 // --stock, the turning tool and the parting blade from their T blocks' comments, a subprogram
 // from --programs. Face Φ40 to Φ36 over 20 mm: removed π(20² − 18²)·20 = 1520π mm³. Its
 // subprogram's G00 X42 retracts up the shoulder at rapid, and the CNMG's nose sweeps 6.6 mm³ of
-// the shoulder's corner: a crash, exit 4, the outputs written (this test once expected 0).
+// the shoulder's corner: a crash, exit 4, the outputs written (this test once expected 0), located
+// in the subprogram's file.
 TEST(Cli, ShopProgramRunsWithoutASetupFile) {
   TempDir dir("shop");
   const fs::path programs = dir.path() / "control";
@@ -496,7 +514,11 @@ TEST(Cli, ShopProgramRunsWithoutASetupFile) {
                                     "--out", out.string(), "--voxel", "0.5"},
                                    dir.path());
   ASSERT_EQ(outcome.status, 4) << outcome.err;
-  EXPECT_NE(outcome.err.find("shaft.nc:8:1: error: rapid into the stock removes"), std::string::npos) << outcome.err;
+  // In the subprogram's file, at its G00 X42 (line 4), with the M98 (line 8) that called it.
+  EXPECT_NE(outcome.err.find((programs / "O7615.nc").string() + ":4:1: error: rapid into the stock removes"),
+            std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find("(called from " + program.string() + ":8)\nG00 X42\n^"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find("warning: tool 1 is mounted from the comment '(CNMG 120408)'"), std::string::npos)
       << outcome.err;
   const nlohmann::json report = nlohmann::json::parse(readFile(out / "report.json"));

@@ -210,7 +210,8 @@ InterpreterOptions searching(std::vector<fs::path> directories) {
 constexpr std::string_view kMain = "G00 X50 Z2\nM98 P17615\nG00 X60\nM30\n";  // line 2 calls O7615 once
 
 TEST(ExternalSubprogram, FoundBesideTheProgramUnderEachNameInOrder) {
-  // Each name alone is found; the moves carry the calling M98's line.
+  // Each name alone is found; its move carries its line in the file (3: G01 U-4), and its
+  // source names the file and the calling M98 (line 2 of the program).
   for (const std::string name : {"O7615", "o7615.NC", "7615.nc", "7615.tap", "O7615.txt"}) {
     SCOPED_TRACE(name);
     ProgramDirectory dir("external_" + std::to_string(std::hash<std::string>{}(name)));
@@ -220,7 +221,13 @@ TEST(ExternalSubprogram, FoundBesideTheProgramUnderEachNameInOrder) {
     test::expectMoves(result.toolpath.moves, {{test::kRapid, 100, 200, 25, 2, 0, 0},
                                               {test::kFeed, 25, 2, 23, 2, 0.1, 0},
                                               {test::kRapid, 23, 2, 30, 2, 0, 0}});
-    EXPECT_EQ(result.toolpath.moves[1].line, 2);
+    EXPECT_EQ(result.toolpath.moves[1].line, 3);
+    const int source = result.toolpath.moves[1].source;
+    EXPECT_EQ(source, 1);
+    EXPECT_EQ(result.toolpath.fileOf(source), (dir.path() / name).string());
+    EXPECT_EQ(result.toolpath.calledFrom(source), "called from test.nc:2");
+    EXPECT_EQ(result.toolpath.moves[0].source, 0);
+    EXPECT_EQ(result.toolpath.moves[2].source, 0);
   }
 }
 

@@ -38,6 +38,7 @@ void expectSameMove(const Move& a, const Move& b) {
   EXPECT_EQ(a.line, b.line);
   EXPECT_EQ(a.column, b.column);
   EXPECT_EQ(a.cycleStep, b.cycleStep);
+  EXPECT_EQ(a.source, b.source);
   EXPECT_EQ(a.thread, b.thread);
   EXPECT_EQ(a.spindleAngleDeg, b.spindleAngleDeg);
 }
@@ -82,6 +83,7 @@ std::vector<Move> someMoves() {
   thread.line = 1000001;
   thread.column = 1;
   thread.cycleStep = 2;
+  thread.source = 65535;  // the last a subprogram's file can be (Toolpath::kMaxSources)
   thread.spindleAngleDeg = 180.0;
 
   Move dwell;
