@@ -83,6 +83,20 @@ double revolvedVolume(const std::vector<Polyline>& section) {
 }
 
 /// The section the page shows after step `s`: the last taken at or before its end.
+// A CAM finishing contour program of `blocks` one-line blocks, r = 17 + 0.3 sin(z / 4) from Z0
+// to Z-60 (never steeper than the sharp tool's 1-in-10 flank), with `decimals` places, for the
+// shaft's Φ50 bar: a rapid in, a feed to the face, the contour, a rapid home.
+std::string camFinishProgram(const char* number, int blocks, int decimals) {
+  std::string program = std::string(number) + " (CAM FINISH)\nT0101\nG99 G97 S800 M03\nG00 X52.0 Z1.0\nG01 X34.0 Z0 F0.1\n";
+  char block[64];
+  for (int i = 1; i <= blocks; ++i) {
+    const double z = -60.0 * i / blocks;
+    std::snprintf(block, sizeof block, "X%.*f Z%.*f\n", decimals, 2 * (17 + 0.3 * std::sin(z / 4)), decimals, z);
+    program += block;
+  }
+  return program + "G00 X100.0 Z50.0\nM30\n";
+}
+
 const std::vector<Polyline>& sectionAfter(const Json& data, const std::vector<std::vector<Polyline>>& sections, std::size_t s) {
   const long end = data["steps"][s][2];
   std::size_t at = 0;
@@ -161,15 +175,7 @@ INSTANTIATE_TEST_SUITE_P(Voxels, ShaftSteps, ::testing::Values(0.2, 0.1));
 // what those blocks removed; the page stays small.
 TEST(StepReport, ALongCamProgramsPageHoldsEveryBlockInLittleSpace) {
   ScratchDir dir("steps-cam");
-  std::string program = "O2000 (CAM FINISH)\nT0101\nG99 G97 S800 M03\nG00 X52.0 Z1.0\nG01 X34.0 Z0 F0.1\n";
-  char block[64];
-  for (int i = 1; i <= 2000; ++i) {
-    const double z = -60.0 * i / 2000;
-    std::snprintf(block, sizeof block, "X%.3f Z%.3f\n", 2 * (17 + 0.3 * std::sin(z / 4)), z);
-    program += block;
-  }
-  program += "G00 X100.0 Z50.0\nM30\n";
-  writeFile(dir.path() / "cam.nc", program);
+  writeFile(dir.path() / "cam.nc", camFinishProgram("O2000", 2000, 3));
   const auto run = runProcess(LATHESIM_BINARY,
                               {"run", (dir.path() / "cam.nc").string(), "--setup", (kShaft / "setup.toml").string(), "--out",
                                (dir.path() / "out").string(), "--outputs", "report,html"},
@@ -206,15 +212,7 @@ TEST(StepReport, ALongCamProgramsPageHoldsEveryBlockInLittleSpace) {
 // blocks: their lines from first to last, their removed volume and time summed.
 TEST(StepReport, AProgramPastTheStepLimitStepsSeveralBlocksAStep) {
   ScratchDir dir("steps-12000");
-  std::string program = "O2001 (CAM FINISH)\nT0101\nG99 G97 S800 M03\nG00 X52.0 Z1.0\nG01 X34.0 Z0 F0.1\n";
-  char block[64];
-  for (int i = 1; i <= 12000; ++i) {
-    const double z = -60.0 * i / 12000;
-    std::snprintf(block, sizeof block, "X%.4f Z%.4f\n", 2 * (17 + 0.3 * std::sin(z / 4)), z);
-    program += block;
-  }
-  program += "G00 X100.0 Z50.0\nM30\n";
-  writeFile(dir.path() / "cam.nc", program);
+  writeFile(dir.path() / "cam.nc", camFinishProgram("O2001", 12000, 4));
   const auto run = runProcess(LATHESIM_BINARY,
                               {"run", (dir.path() / "cam.nc").string(), "--setup", (kShaft / "setup.toml").string(), "--voxel",
                                "0.25", "--out", (dir.path() / "out").string(), "--outputs", "report,html"},
