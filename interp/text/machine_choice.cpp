@@ -60,9 +60,16 @@ std::vector<EvidenceKind> kindsPresent(const MachineEvidence& evidence) {
   return kinds;
 }
 
+// Each code the marks show, once, in the order first seen: a program with ten G94 facing
+// blocks could not be told apart by one code, not by ten.
 std::string marksText(const std::vector<EvidenceMark>& marks) {
+  std::vector<std::string_view> named;
   std::string text;
-  for (const EvidenceMark& m : marks) text += (text.empty() ? "" : ", ") + m.text;
+  for (const EvidenceMark& m : marks) {
+    if (std::find(named.begin(), named.end(), m.text) != named.end()) continue;
+    named.push_back(m.text);
+    text += (text.empty() ? "" : ", ") + m.text;
+  }
   return text;
 }
 

@@ -104,6 +104,14 @@ TEST(MachineChoice, ThinEvidenceTakesTheDefaultSayingWhatCouldNotBeToldApart) {
   EXPECT_NE(choice.because[0].find("the default, fanuc-a"), std::string::npos) << choice.because[0];
 }
 
+TEST(MachineChoice, ThinEvidenceNamesEachUnclearCodeOnce) {
+  const MachineChoice choice =
+      inferred("G00 X40. Z2.\nG94 X0 Z-1. F0.2\nG94 X0 Z-2.\nG90 X35. Z-20.\nG94 X0 Z-3.\nG90 X30. Z-20.\n");
+  ASSERT_EQ(choice.because.size(), 1u);
+  EXPECT_NE(choice.because[0].find("(G94 with X/Z, G90 with X/Z: a cycle in system A"), std::string::npos)
+      << choice.because[0];
+}
+
 TEST(MachineChoice, AStatedDialectWinsAndIsWarnedOfWhereTheProgramDisagrees) {
   const MachineEvidence evidence = readMachineEvidence("G00 X40.\nG95 F0.2\n");
   const MachineChoice choice = chooseMachine(evidence, {Dialect::FanucA, "--dialect", {}, {}});
